@@ -1,0 +1,44 @@
+#include "gpu/gpu_info.hpp"
+
+#include "gpu/gl.hpp"
+
+namespace steerseg::gpu {
+
+namespace {
+
+std::string glString(GLenum name) {
+    const auto* s = reinterpret_cast<const char*>(glGetString(name));
+    return s != nullptr ? s : "";
+}
+
+int glInt(GLenum name) {
+    GLint v = 0;
+    glGetIntegerv(name, &v);
+    return v;
+}
+
+} // namespace
+
+GpuInfo queryGpuInfo() {
+    GpuInfo info;
+    info.vendor = glString(GL_VENDOR);
+    info.renderer = glString(GL_RENDERER);
+    info.version = glString(GL_VERSION);
+    info.shadingLanguage = glString(GL_SHADING_LANGUAGE_VERSION);
+    info.maxComputeWorkGroupInvocations = glInt(GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS);
+    for (GLuint i = 0; i < 3; ++i) {
+        glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_SIZE, i, &info.maxComputeWorkGroupSize[i]);
+        glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, i, &info.maxComputeWorkGroupCount[i]);
+    }
+    info.maxComputeSharedMemoryBytes = glInt(GL_MAX_COMPUTE_SHARED_MEMORY_SIZE);
+    info.maxShaderStorageBlockBytes = glInt(GL_MAX_SHADER_STORAGE_BLOCK_SIZE);
+    info.maxComputeShaderStorageBlocks = glInt(GL_MAX_COMPUTE_SHADER_STORAGE_BLOCKS);
+    info.maxFragmentShaderStorageBlocks = glInt(GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS);
+    info.maxComputeImageUniforms = glInt(GL_MAX_COMPUTE_IMAGE_UNIFORMS);
+    info.max3dTextureSize = glInt(GL_MAX_3D_TEXTURE_SIZE);
+    info.maxTextureSize = glInt(GL_MAX_TEXTURE_SIZE);
+    info.maxAtomicCounterBuffers = glInt(GL_MAX_COMPUTE_ATOMIC_COUNTER_BUFFERS);
+    return info;
+}
+
+} // namespace steerseg::gpu

@@ -1,0 +1,29 @@
+#pragma once
+
+#include <string>
+
+namespace steerseg::gpu {
+
+// What the current GLES context offers, as far as the solver and renderer depend on it.
+struct GpuInfo {
+    std::string vendor;
+    std::string renderer;
+    std::string version;
+    std::string shadingLanguage;
+    int maxComputeWorkGroupInvocations = 0;
+    int maxComputeWorkGroupSize[3] = {0, 0, 0};
+    int maxComputeWorkGroupCount[3] = {0, 0, 0};
+    int maxComputeSharedMemoryBytes = 0;
+    int maxShaderStorageBlockBytes = 0;
+    int maxComputeShaderStorageBlocks = 0;
+    int maxFragmentShaderStorageBlocks = 0;
+    int maxComputeImageUniforms = 0;
+    int max3dTextureSize = 0;
+    int maxTextureSize = 0;
+    int maxAtomicCounterBuffers = 0;
+};
+
+// Reads the limits of the current context.
+GpuInfo queryGpuInfo();
+
+} // namespace steerseg::gpu

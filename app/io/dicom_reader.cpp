@@ -1,0 +1,10 @@
+// PLACEHOLDER: replaced by the real reader in this change.
+#include "io/readers.hpp"
+
+namespace steerseg::io {
+
+Volume readDicom(const std::filesystem::path& path, const ReadLimits&) {
+    throw ScanError(path, "reader not built yet");
+}
+
+} // namespace steerseg::io

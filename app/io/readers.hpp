@@ -1,0 +1,20 @@
+#pragma once
+
+// One reader per format, each in its own file; scan_reader.cpp picks one.
+#include "io/scan_reader.hpp"
+
+namespace steerseg::io {
+
+Volume readNifti(const std::filesystem::path& path, const ReadLimits& limits, std::string& format);
+Volume readNrrd(const std::filesystem::path& path, const ReadLimits& limits);
+Volume readMetaImage(const std::filesystem::path& path, const ReadLimits& limits);
+Volume readMgz(const std::filesystem::path& path, const ReadLimits& limits);
+// A folder of 2D images (sorted by name) or one multi-page TIFF, through OpenImageIO.
+Volume readImageStack(const std::filesystem::path& path, const ReadLimits& limits);
+// A folder holding a DICOM series, or one DICOM file (single- or multi-frame).
+Volume readDicom(const std::filesystem::path& path, const ReadLimits& limits);
+
+// True if the file starts like DICOM Part 10 ("DICM" at offset 128).
+bool looksLikeDicom(const std::filesystem::path& path);
+
+} // namespace steerseg::io

@@ -1,0 +1,95 @@
+#include "io/scan_reader.hpp"
+
+#include "core/sample_phantom.hpp"
+#include "io/readers.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+
+namespace steerseg::io {
+
+ScanError::ScanError(const std::filesystem::path& path, const std::string& problem)
+    : std::runtime_error(path.string() + ": " + problem) {}
+
+namespace {
+
+std::string lowerName(const std::filesystem::path& path) {
+    std::string name = path.filename().string();
+    std::transform(name.begin(), name.end(), name.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return name;
+}
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+bool folderHoldsDicom(const std::filesystem::path& dir) {
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+        if (entry.is_regular_file(ec) && looksLikeDicom(entry.path())) {
+            return true;
+        }
+    }
+    return false;
+}
+
+} // namespace
+
+bool looksLikeDicom(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    char magic[132] = {};
+    if (!in.read(magic, sizeof magic)) {
+        return false;
+    }
+    return std::string_view(magic + 128, 4) == "DICM";
+}
+
+LoadedScan readScan(const std::filesystem::path& path, const ReadLimits& limits) {
+    if (path == kBuiltinSample) {
+        return {makeSamplePhantom(), "builtin"};
+    }
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(status)) {
+        throw ScanError(path, "no such file or folder");
+    }
+    if (std::filesystem::is_directory(status)) {
+        if (std::filesystem::is_empty(path, ec)) {
+            throw ScanError(path, "the folder is empty");
+        }
+        if (folderHoldsDicom(path)) {
+            return {readDicom(path, limits), "dicom"};
+        }
+        return {readImageStack(path, limits), "image-stack"};
+    }
+    if (!std::filesystem::is_regular_file(status)) {
+        throw ScanError(path, "not a regular file");
+    }
+    const std::string name = lowerName(path);
+    if (endsWith(name, ".nii") || endsWith(name, ".nii.gz")) {
+        std::string format;
+        Volume v = readNifti(path, limits, format);
+        return {std::move(v), format};
+    }
+    if (endsWith(name, ".nrrd") || endsWith(name, ".nhdr")) {
+        return {readNrrd(path, limits), "nrrd"};
+    }
+    if (endsWith(name, ".mha") || endsWith(name, ".mhd")) {
+        return {readMetaImage(path, limits), "metaimage"};
+    }
+    if (endsWith(name, ".mgz") || endsWith(name, ".mgh")) {
+        return {readMgz(path, limits), "mgz"};
+    }
+    if (endsWith(name, ".dcm") || looksLikeDicom(path)) {
+        return {readDicom(path, limits), "dicom"};
+    }
+    if (endsWith(name, ".tif") || endsWith(name, ".tiff")) {
+        return {readImageStack(path, limits), "image-stack"};
+    }
+    throw ScanError(path, "unrecognised scan format (expected DICOM, .nii[.gz], .nrrd/.nhdr, "
+                          ".mha/.mhd, .mgz/.mgh, .tif[f] or a folder of images)");
+}
+
+} // namespace steerseg::io

@@ -1,0 +1,39 @@
+#pragma once
+
+#include "core/volume.hpp"
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+namespace steerseg::io {
+
+// A scan that cannot be read. what() is one line naming the file and the problem:
+// "scan.nii.gz: header says 512x512x300 int16 (150 MiB) but the data ends after 12 MiB".
+class ScanError : public std::runtime_error {
+  public:
+    ScanError(const std::filesystem::path& path, const std::string& problem);
+};
+
+// Caps that keep a hostile header from making us allocate or loop beyond reason. A loader
+// never allocates more voxel memory than the file can back (compressed data grows as it is
+// actually decoded), and refuses dimensions past these caps up front.
+struct ReadLimits {
+    std::size_t maxVoxels = std::size_t{1} << 31;   // 2 Gi voxels (an 1290^3 scan)
+    int maxDimension = 65536;                        // per axis
+};
+
+struct LoadedScan {
+    Volume volume;
+    std::string format; // "nifti", "nifti2", "nrrd", "metaimage", "mgz", "dicom", "image-stack", "builtin"
+};
+
+// The pseudo-path naming the built-in sample phantom.
+inline constexpr const char* kBuiltinSample = "builtin:sample";
+
+// Reads any supported scan: a DICOM series folder or file, NIfTI-1/2, NRRD, MetaImage, MGZ, a
+// folder of 2D images or a multi-page TIFF, or kBuiltinSample. Chooses the reader from the
+// folder's contents, the extension and the magic bytes. Throws ScanError.
+LoadedScan readScan(const std::filesystem::path& path, const ReadLimits& limits = {});
+
+} // namespace steerseg::io

@@ -1,0 +1,50 @@
+#include "support/test_data.hpp"
+
+#include <cstdlib>
+#include <unistd.h>
+
+namespace steerseg::test {
+
+std::optional<std::filesystem::path> dataDir() {
+    std::filesystem::path dir;
+    if (const char* env = std::getenv("STEERSEG_DATA_DIR"); env != nullptr && *env != '\0') {
+        dir = env;
+    } else if (const char* src = std::getenv("STEERSEG_SOURCE_DIR"); src != nullptr) {
+        dir = std::filesystem::path(src) / ".." / "shared" / "data";
+    } else {
+        return std::nullopt;
+    }
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec)) {
+        return std::nullopt;
+    }
+    return dir;
+}
+
+std::optional<std::filesystem::path> dataPath(const std::filesystem::path& relative) {
+    auto dir = dataDir();
+    if (!dir) {
+        return std::nullopt;
+    }
+    auto p = *dir / relative;
+    std::error_code ec;
+    if (!std::filesystem::exists(p, ec)) {
+        return std::nullopt;
+    }
+    return p;
+}
+
+std::filesystem::path steersegBinary() {
+    const char* env = std::getenv("STEERSEG_BINARY");
+    return env != nullptr ? std::filesystem::path(env) : std::filesystem::path("steerseg");
+}
+
+std::filesystem::path tempDir(const std::string& name) {
+    auto dir = std::filesystem::temp_directory_path() /
+               ("steerseg-test-" + name + "-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+} // namespace steerseg::test
