@@ -120,8 +120,8 @@ std::vector<double> parseNumberList(const std::string& text, std::size_t count,
         start = comma + 1;
     }
     if (out.size() != count) {
-        throw UsageError(what + ": expected " + std::to_string(count) + " comma-separated numbers, got '" +
-                         text + "'");
+        throw UsageError(what + ": expected " + std::to_string(count) +
+                         " comma-separated numbers, got '" + text + "'");
     }
     return out;
 }

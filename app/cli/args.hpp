@@ -42,6 +42,7 @@ class Args {
 double parseNumber(const std::string& text, const std::string& what);
 long long parseInteger(const std::string& text, const std::string& what);
 // "a,b,c" -> numbers; `count` of them exactly.
-std::vector<double> parseNumberList(const std::string& text, std::size_t count, const std::string& what);
+std::vector<double> parseNumberList(const std::string& text, std::size_t count,
+                                    const std::string& what);
 
 } // namespace steerseg::cli

@@ -25,7 +25,8 @@ int runInfo(std::span<const std::string> words) {
     j["max"] = s.max;
     j["mean"] = s.mean;
     j["format"] = scan.format;
-    j["rescale"] = {{"slope", scan.volume.rescale().slope}, {"intercept", scan.volume.rescale().intercept}};
+    j["rescale"] = {{"slope", scan.volume.rescale().slope},
+                    {"intercept", scan.volume.rescale().intercept}};
     j["world"] = "LPS";
     std::printf("%s\n", j.dump(2).c_str());
     return 0;

@@ -17,8 +17,10 @@ struct Command {
 };
 
 constexpr Command kCommands[] = {
-    {"info", "info PATH: print a scan's geometry and intensity range as JSON", steerseg::cli::runInfo},
-    {"gpu-info", "gpu-info [--platform auto|surfaceless|device]: print the GLES renderer and limits",
+    {"info", "info PATH: print a scan's geometry and intensity range as JSON",
+     steerseg::cli::runInfo},
+    {"gpu-info",
+     "gpu-info [--platform auto|surfaceless|device]: print the GLES renderer and limits",
      steerseg::cli::runGpuInfo},
 };
 
@@ -45,7 +47,8 @@ int main(int argc, char** argv) {
         try {
             return c.run(std::span<const std::string>(words).subspan(1));
         } catch (const steerseg::cli::UsageError& e) {
-            std::fprintf(stderr, "steerseg %s: %s\nusage: steerseg %s\n", c.name, e.what(), c.summary);
+            std::fprintf(stderr, "steerseg %s: %s\nusage: steerseg %s\n", c.name, e.what(),
+                         c.summary);
             return 2;
         } catch (const std::exception& e) {
             std::fprintf(stderr, "steerseg %s: %s\n", c.name, e.what());

@@ -25,8 +25,8 @@ double hashNoise(std::uint32_t n) {
     return (sum - 2.0) / std::sqrt(4.0 / 12.0);
 }
 
-double ellipsoid(double x, double y, double z, double cx, double cy, double cz, double rx, double ry,
-                 double rz) {
+double ellipsoid(double x, double y, double z, double cx, double cy, double cz, double rx,
+                 double ry, double rz) {
     const double dx = (x - cx) / rx;
     const double dy = (y - cy) / ry;
     const double dz = (z - cz) / rz;

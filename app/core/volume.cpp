@@ -9,20 +9,27 @@ namespace steerseg {
 
 std::size_t voxelBytes(VoxelType type) {
     switch (type) {
-    case VoxelType::UInt8: return 1;
+    case VoxelType::UInt8:
+        return 1;
     case VoxelType::Int16:
-    case VoxelType::UInt16: return 2;
-    case VoxelType::Float32: return 4;
+    case VoxelType::UInt16:
+        return 2;
+    case VoxelType::Float32:
+        return 4;
     }
     return 1;
 }
 
 const char* voxelTypeName(VoxelType type) {
     switch (type) {
-    case VoxelType::UInt8: return "uint8";
-    case VoxelType::Int16: return "int16";
-    case VoxelType::UInt16: return "uint16";
-    case VoxelType::Float32: return "float32";
+    case VoxelType::UInt8:
+        return "uint8";
+    case VoxelType::Int16:
+        return "int16";
+    case VoxelType::UInt16:
+        return "uint16";
+    case VoxelType::Float32:
+        return "float32";
     }
     return "unknown";
 }
@@ -62,10 +69,14 @@ Volume::Volume(VoxelType type, const Geometry& geometry) : type_(type), geometry
 
 double Volume::storedAt(std::size_t linear) const {
     switch (type_) {
-    case VoxelType::UInt8: return static_cast<double>(voxels<std::uint8_t>()[linear]);
-    case VoxelType::Int16: return static_cast<double>(voxels<std::int16_t>()[linear]);
-    case VoxelType::UInt16: return static_cast<double>(voxels<std::uint16_t>()[linear]);
-    case VoxelType::Float32: return static_cast<double>(voxels<float>()[linear]);
+    case VoxelType::UInt8:
+        return static_cast<double>(voxels<std::uint8_t>()[linear]);
+    case VoxelType::Int16:
+        return static_cast<double>(voxels<std::int16_t>()[linear]);
+    case VoxelType::UInt16:
+        return static_cast<double>(voxels<std::uint16_t>()[linear]);
+    case VoxelType::Float32:
+        return static_cast<double>(voxels<float>()[linear]);
     }
     return 0.0;
 }
@@ -113,10 +124,18 @@ const IntensityStats& Volume::stats() const {
     if (!stats_) {
         IntensityStats s;
         switch (type_) {
-        case VoxelType::UInt8: s = computeStats(voxels<std::uint8_t>(), rescale_); break;
-        case VoxelType::Int16: s = computeStats(voxels<std::int16_t>(), rescale_); break;
-        case VoxelType::UInt16: s = computeStats(voxels<std::uint16_t>(), rescale_); break;
-        case VoxelType::Float32: s = computeStats(voxels<float>(), rescale_); break;
+        case VoxelType::UInt8:
+            s = computeStats(voxels<std::uint8_t>(), rescale_);
+            break;
+        case VoxelType::Int16:
+            s = computeStats(voxels<std::int16_t>(), rescale_);
+            break;
+        case VoxelType::UInt16:
+            s = computeStats(voxels<std::uint16_t>(), rescale_);
+            break;
+        case VoxelType::Float32:
+            s = computeStats(voxels<float>(), rescale_);
+            break;
         }
         stats_ = std::make_shared<const IntensityStats>(std::move(s));
     }

@@ -77,7 +77,8 @@ class Volume {
         const auto& d = geometry_.dims;
         return static_cast<std::size_t>(i) +
                static_cast<std::size_t>(d.x) *
-                   (static_cast<std::size_t>(j) + static_cast<std::size_t>(d.y) * static_cast<std::size_t>(k));
+                   (static_cast<std::size_t>(j) +
+                    static_cast<std::size_t>(d.y) * static_cast<std::size_t>(k));
     }
     // Stored value at a voxel as double (no rescale).
     [[nodiscard]] double storedAt(std::size_t linear) const;

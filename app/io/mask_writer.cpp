@@ -1,5 +1,6 @@
 // PLACEHOLDER: replaced by the real writer in this change.
 #include "io/mask_writer.hpp"
+
 #include "io/scan_reader.hpp"
 
 namespace steerseg::io {

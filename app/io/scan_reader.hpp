@@ -19,13 +19,14 @@ class ScanError : public std::runtime_error {
 // never allocates more voxel memory than the file can back (compressed data grows as it is
 // actually decoded), and refuses dimensions past these caps up front.
 struct ReadLimits {
-    std::size_t maxVoxels = std::size_t{1} << 31;   // 2 Gi voxels (an 1290^3 scan)
-    int maxDimension = 65536;                        // per axis
+    std::size_t maxVoxels = std::size_t{1} << 31; // 2 Gi voxels (an 1290^3 scan)
+    int maxDimension = 65536;                     // per axis
 };
 
 struct LoadedScan {
     Volume volume;
-    std::string format; // "nifti", "nifti2", "nrrd", "metaimage", "mgz", "dicom", "image-stack", "builtin"
+    std::string
+        format; // "nifti", "nifti2", "nrrd", "metaimage", "mgz", "dicom", "image-stack", "builtin"
 };
 
 // The pseudo-path naming the built-in sample phantom.

@@ -13,11 +13,16 @@ namespace steerseg::platform::egl {
 namespace {
 
 EGLConfig chooseConfig(const Display& display, const ContextConfig& config) {
-    const EGLint attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT,
-                              EGL_SURFACE_TYPE,    config.surfaceType,
-                              EGL_RED_SIZE,        8,
-                              EGL_GREEN_SIZE,      8,
-                              EGL_BLUE_SIZE,       8,
+    const EGLint attribs[] = {EGL_RENDERABLE_TYPE,
+                              EGL_OPENGL_ES3_BIT,
+                              EGL_SURFACE_TYPE,
+                              config.surfaceType,
+                              EGL_RED_SIZE,
+                              8,
+                              EGL_GREEN_SIZE,
+                              8,
+                              EGL_BLUE_SIZE,
+                              8,
                               EGL_NONE};
     EGLint count = 0;
     if (eglChooseConfig(display.display, attribs, nullptr, 0, &count) != EGL_TRUE || count <= 0) {
@@ -37,7 +42,8 @@ EGLConfig chooseConfig(const Display& display, const ContextConfig& config) {
         }
     }
     throw GpuContextError("no EGL config matches native visual " +
-                          std::to_string(config.nativeVisualId) + " on platform " + display.platform);
+                          std::to_string(config.nativeVisualId) + " on platform " +
+                          display.platform);
 }
 
 } // namespace
@@ -54,7 +60,8 @@ Context createEsContext(const Display& display, const ContextConfig& config) {
         result.config = chooseConfig(display, config);
     }
     if (config.surfaceType == 0 && !hasExtension(ext, "EGL_KHR_surfaceless_context")) {
-        throw GpuContextError("EGL_KHR_surfaceless_context missing on platform " + display.platform);
+        throw GpuContextError("EGL_KHR_surfaceless_context missing on platform " +
+                              display.platform);
     }
     EGLint lastError = EGL_SUCCESS;
     for (EGLint minor : {2, 1}) {

@@ -7,8 +7,8 @@
 namespace steerseg::platform::egl {
 
 struct ContextConfig {
-    EGLint surfaceType = 0;      // 0 for surfaceless use, EGL_WINDOW_BIT for windows/GBM
-    EGLint nativeVisualId = 0;   // GBM format to match, 0 for any
+    EGLint surfaceType = 0;    // 0 for surfaceless use, EGL_WINDOW_BIT for windows/GBM
+    EGLint nativeVisualId = 0; // GBM format to match, 0 for any
 };
 
 struct Context {

@@ -11,22 +11,38 @@ namespace steerseg::platform::egl {
 
 std::string errorName(EGLint code) {
     switch (code) {
-    case EGL_SUCCESS: return "EGL_SUCCESS";
-    case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
-    case EGL_BAD_ACCESS: return "EGL_BAD_ACCESS";
-    case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
-    case EGL_BAD_ATTRIBUTE: return "EGL_BAD_ATTRIBUTE";
-    case EGL_BAD_CONFIG: return "EGL_BAD_CONFIG";
-    case EGL_BAD_CONTEXT: return "EGL_BAD_CONTEXT";
-    case EGL_BAD_CURRENT_SURFACE: return "EGL_BAD_CURRENT_SURFACE";
-    case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
-    case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
-    case EGL_BAD_NATIVE_PIXMAP: return "EGL_BAD_NATIVE_PIXMAP";
-    case EGL_BAD_NATIVE_WINDOW: return "EGL_BAD_NATIVE_WINDOW";
-    case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
-    case EGL_BAD_SURFACE: return "EGL_BAD_SURFACE";
-    case EGL_CONTEXT_LOST: return "EGL_CONTEXT_LOST";
-    default: return "EGL error " + std::to_string(code);
+    case EGL_SUCCESS:
+        return "EGL_SUCCESS";
+    case EGL_NOT_INITIALIZED:
+        return "EGL_NOT_INITIALIZED";
+    case EGL_BAD_ACCESS:
+        return "EGL_BAD_ACCESS";
+    case EGL_BAD_ALLOC:
+        return "EGL_BAD_ALLOC";
+    case EGL_BAD_ATTRIBUTE:
+        return "EGL_BAD_ATTRIBUTE";
+    case EGL_BAD_CONFIG:
+        return "EGL_BAD_CONFIG";
+    case EGL_BAD_CONTEXT:
+        return "EGL_BAD_CONTEXT";
+    case EGL_BAD_CURRENT_SURFACE:
+        return "EGL_BAD_CURRENT_SURFACE";
+    case EGL_BAD_DISPLAY:
+        return "EGL_BAD_DISPLAY";
+    case EGL_BAD_MATCH:
+        return "EGL_BAD_MATCH";
+    case EGL_BAD_NATIVE_PIXMAP:
+        return "EGL_BAD_NATIVE_PIXMAP";
+    case EGL_BAD_NATIVE_WINDOW:
+        return "EGL_BAD_NATIVE_WINDOW";
+    case EGL_BAD_PARAMETER:
+        return "EGL_BAD_PARAMETER";
+    case EGL_BAD_SURFACE:
+        return "EGL_BAD_SURFACE";
+    case EGL_CONTEXT_LOST:
+        return "EGL_CONTEXT_LOST";
+    default:
+        return "EGL error " + std::to_string(code);
     }
 }
 
@@ -71,13 +87,14 @@ Display initialise(EGLDisplay display, const std::string& platform) {
 
 Display openSurfacelessDisplay() {
     requireClientExtension("EGL_MESA_platform_surfaceless", "surfaceless");
-    auto getPlatformDisplay =
-        loadProc<PFNEGLGETPLATFORMDISPLAYEXTPROC>("eglGetPlatformDisplayEXT");
+    auto getPlatformDisplay = loadProc<PFNEGLGETPLATFORMDISPLAYEXTPROC>("eglGetPlatformDisplayEXT");
     if (getPlatformDisplay == nullptr) {
-        throw GpuContextError("no EGL display on platform surfaceless: eglGetPlatformDisplayEXT missing");
+        throw GpuContextError(
+            "no EGL display on platform surfaceless: eglGetPlatformDisplayEXT missing");
     }
-    return initialise(getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr),
-                      "surfaceless");
+    return initialise(
+        getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr),
+        "surfaceless");
 }
 
 Display openDeviceDisplay() {
@@ -85,8 +102,7 @@ Display openDeviceDisplay() {
     requireClientExtension("EGL_EXT_platform_device", "device");
     auto queryDevices = loadProc<PFNEGLQUERYDEVICESEXTPROC>("eglQueryDevicesEXT");
     auto queryDeviceString = loadProc<PFNEGLQUERYDEVICESTRINGEXTPROC>("eglQueryDeviceStringEXT");
-    auto getPlatformDisplay =
-        loadProc<PFNEGLGETPLATFORMDISPLAYEXTPROC>("eglGetPlatformDisplayEXT");
+    auto getPlatformDisplay = loadProc<PFNEGLGETPLATFORMDISPLAYEXTPROC>("eglGetPlatformDisplayEXT");
     if (queryDevices == nullptr || queryDeviceString == nullptr || getPlatformDisplay == nullptr) {
         throw GpuContextError("no EGL display on platform device: device entry points missing");
     }
@@ -99,12 +115,14 @@ Display openDeviceDisplay() {
     // Mesa lists its software rasteriser as a device too; a real GPU wins over it.
     std::vector<EGLDeviceEXT> ordered;
     for (EGLint i = 0; i < count; ++i) {
-        if (!hasExtension(queryDeviceString(devices[i], EGL_EXTENSIONS), "EGL_MESA_device_software")) {
+        if (!hasExtension(queryDeviceString(devices[i], EGL_EXTENSIONS),
+                          "EGL_MESA_device_software")) {
             ordered.push_back(devices[i]);
         }
     }
     for (EGLint i = 0; i < count; ++i) {
-        if (hasExtension(queryDeviceString(devices[i], EGL_EXTENSIONS), "EGL_MESA_device_software")) {
+        if (hasExtension(queryDeviceString(devices[i], EGL_EXTENSIONS),
+                         "EGL_MESA_device_software")) {
             ordered.push_back(devices[i]);
         }
     }

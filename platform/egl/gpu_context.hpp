@@ -37,6 +37,7 @@ OffscreenPlatform parseOffscreenPlatform(const std::string& name);
 
 // Creates an offscreen GLES 3.1+ context and makes it current. The environment variable
 // STEERSEG_EGL_PLATFORM (same words as parseOffscreenPlatform) overrides Auto.
-std::unique_ptr<GpuContext> createOffscreenContext(OffscreenPlatform platform = OffscreenPlatform::Auto);
+std::unique_ptr<GpuContext>
+createOffscreenContext(OffscreenPlatform platform = OffscreenPlatform::Auto);
 
 } // namespace steerseg::platform

@@ -62,7 +62,8 @@ OffscreenPlatform parseOffscreenPlatform(const std::string& name) {
     if (name == "device") {
         return OffscreenPlatform::Device;
     }
-    throw GpuContextError("unknown EGL platform \"" + name + "\" (expected auto, surfaceless or device)");
+    throw GpuContextError("unknown EGL platform \"" + name +
+                          "\" (expected auto, surfaceless or device)");
 }
 
 std::unique_ptr<GpuContext> createOffscreenContext(OffscreenPlatform platform) {
@@ -72,9 +73,12 @@ std::unique_ptr<GpuContext> createOffscreenContext(OffscreenPlatform platform) {
         }
     }
     switch (platform) {
-    case OffscreenPlatform::Surfaceless: return openOn(egl::openSurfacelessDisplay());
-    case OffscreenPlatform::Device: return openOn(egl::openDeviceDisplay());
-    case OffscreenPlatform::Auto: break;
+    case OffscreenPlatform::Surfaceless:
+        return openOn(egl::openSurfacelessDisplay());
+    case OffscreenPlatform::Device:
+        return openOn(egl::openDeviceDisplay());
+    case OffscreenPlatform::Auto:
+        break;
     }
     // A hardware device first (NVIDIA headless has no surfaceless platform), then Mesa.
     std::string deviceError;

@@ -35,8 +35,8 @@ TEST_F(ContextTest, RunsComputeShaderAndReadsResultBack) {
     // Sentinel past the end: the shader must not write beyond `count`.
     std::vector<float> sentinel(kCount + 64, -1.0F);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, out.id());
-    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(sentinel.size() * sizeof(float)),
-                    sentinel.data());
+    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0,
+                    static_cast<GLsizeiptr>(sentinel.size() * sizeof(float)), sentinel.data());
     glUseProgram(program.id());
     glUniform1f(glGetUniformLocation(program.id(), "offset"), 3.0F);
     glUniform1ui(glGetUniformLocation(program.id(), "count"), kCount);
@@ -46,8 +46,9 @@ TEST_F(ContextTest, RunsComputeShaderAndReadsResultBack) {
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     gpu::checkGl("dispatch");
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, out.id());
-    const auto* mapped = static_cast<const float*>(glMapBufferRange(
-        GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>((kCount + 64) * sizeof(float)), GL_MAP_READ_BIT));
+    const auto* mapped = static_cast<const float*>(
+        glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0,
+                         static_cast<GLsizeiptr>((kCount + 64) * sizeof(float)), GL_MAP_READ_BIT));
     ASSERT_NE(mapped, nullptr);
     for (GLuint n = 0; n < kCount; ++n) {
         ASSERT_FLOAT_EQ(mapped[n], input[n] * input[n] + 3.0F) << "at " << n;
@@ -65,13 +66,15 @@ TEST_F(ContextTest, ShaderLibraryHasEveryShaderAndRejectsUnknownNames) {
 }
 
 TEST_F(ContextTest, DefinesGoAfterTheVersionLine) {
-    const std::string s = gpu::withDefines("#version 310 es\nvoid main() {}\n", {{"BRICK_SIZE", "8"}});
+    const std::string s =
+        gpu::withDefines("#version 310 es\nvoid main() {}\n", {{"BRICK_SIZE", "8"}});
     EXPECT_EQ(s, "#version 310 es\n#define BRICK_SIZE 8\nvoid main() {}\n");
 }
 
 TEST(OffscreenPlatform, RejectsUnknownPlatformName) {
     EXPECT_THROW(platform::parseOffscreenPlatform("x11"), platform::GpuContextError);
-    EXPECT_EQ(platform::parseOffscreenPlatform("surfaceless"), platform::OffscreenPlatform::Surfaceless);
+    EXPECT_EQ(platform::parseOffscreenPlatform("surfaceless"),
+              platform::OffscreenPlatform::Surfaceless);
 }
 
 } // namespace

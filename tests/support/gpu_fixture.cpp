@@ -15,6 +15,8 @@ void GpuTest::SetUp() {
     context_->makeCurrent();
 }
 
-platform::GpuContext& GpuTest::context() { return *context_; }
+platform::GpuContext& GpuTest::context() {
+    return *context_;
+}
 
 } // namespace steerseg::test

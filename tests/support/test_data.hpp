@@ -26,6 +26,6 @@ std::filesystem::path tempDir(const std::string& name);
     const auto var##_opt = ::steerseg::test::dataPath(relative);                                   \
     if (!var##_opt) {                                                                              \
         GTEST_SKIP() << "real scan data '" << (relative)                                           \
-                     << "' not found (set STEERSEG_DATA_DIR; default ../shared/data)";              \
+                     << "' not found (set STEERSEG_DATA_DIR; default ../shared/data)";             \
     }                                                                                              \
     const std::filesystem::path var = *var##_opt

@@ -6,7 +6,8 @@ namespace steerseg::cli {
 namespace {
 
 TEST(Args, ParsesValuesFlagsAndPositionals) {
-    const std::vector<std::string> w{"scan.nii", "--seed", "1,2,3,4", "--seed=5,6,7,8", "--dense", "--T", "40"};
+    const std::vector<std::string> w{"scan.nii", "--seed", "1,2,3,4", "--seed=5,6,7,8",
+                                     "--dense",  "--T",    "40"};
     const Args a(w, {"seed", "T"}, {"dense"});
     EXPECT_EQ(a.positional(), std::vector<std::string>{"scan.nii"});
     EXPECT_EQ(a.values("seed").size(), 2U);

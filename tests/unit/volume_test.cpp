@@ -46,7 +46,8 @@ TEST(Geometry, IndexWorldRoundTripWithObliqueDirection) {
     g.origin = {-10.0, 5.0, 3.0};
     const double c = std::cos(0.3);
     const double s = std::sin(0.3);
-    g.direction = glm::dmat3(glm::dvec3(c, s, 0.0), glm::dvec3(-s, c, 0.0), glm::dvec3(0.0, 0.0, 1.0));
+    g.direction =
+        glm::dmat3(glm::dvec3(c, s, 0.0), glm::dvec3(-s, c, 0.0), glm::dvec3(0.0, 0.0, 1.0));
     const glm::dvec3 idx(3.0, 4.0, 5.0);
     const glm::dvec3 w = g.indexToWorld(idx);
     const glm::dvec3 back = g.worldToIndex(w);
