@@ -86,11 +86,15 @@ LoadedScan readScan(const std::filesystem::path& path, const ReadLimits& limits)
     if (endsWith(name, ".dcm") || looksLikeDicom(path)) {
         return {readDicom(path, limits), "dicom"};
     }
-    if (endsWith(name, ".tif") || endsWith(name, ".tiff")) {
-        return {readImageStack(path, limits), "image-stack"};
+    // A multi-page TIFF is a stack; any other single 2D image is a one-slice volume.
+    for (const char* ext : {".tif", ".tiff", ".png", ".jpg", ".jpeg", ".bmp", ".pgm", ".ppm",
+                            ".pnm", ".exr", ".webp", ".tga"}) {
+        if (endsWith(name, ext)) {
+            return {readImageStack(path, limits), "image-stack"};
+        }
     }
     throw ScanError(path, "unrecognised scan format (expected DICOM, .nii[.gz], .nrrd/.nhdr, "
-                          ".mha/.mhd, .mgz/.mgh, .tif[f] or a folder of images)");
+                          ".mha/.mhd, .mgz/.mgh, .tif[f], a 2D image or a folder of images)");
 }
 
 } // namespace steerseg::io
