@@ -7,6 +7,7 @@
 #   BENCH_ALPHA        alpha for every case (default 0.2)
 #   BENCH_CASES        space-separated case names (default: lung sts001-ct)
 #   BENCH_JOBS         build parallelism (default 2)
+#   STEERSEG_BINARY    a steerseg binary to compare instead of this checkout's build
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -22,7 +23,7 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSTEERSEG_BENCH_ITK=
   -DSTEERSEG_BUILD_TESTS=OFF >/dev/null
 cmake --build "$build" -j "${BENCH_JOBS:-2}" --target steerseg steerseg-itk-levelset \
   steerseg-mask-dice steerseg-mask-stats >&2
-steerseg=$build/steerseg
+steerseg=${STEERSEG_BINARY:-$build/steerseg}
 itk=$build/bench/steerseg-itk-levelset
 dice=$build/bench/steerseg-mask-dice
 stats=$build/bench/steerseg-mask-stats
