@@ -38,7 +38,8 @@ std::optional<std::filesystem::path> dataPath(const std::filesystem::path& relat
 
 std::filesystem::path steersegBinary() {
     const char* env = std::getenv("STEERSEG_BINARY");
-    return env != nullptr ? std::filesystem::path(env) : std::filesystem::path(STEERSEG_DEFAULT_BINARY);
+    return env != nullptr ? std::filesystem::path(env)
+                          : std::filesystem::path(STEERSEG_DEFAULT_BINARY);
 }
 
 std::filesystem::path tempDir(const std::string& name) {
