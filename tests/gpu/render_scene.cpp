@@ -64,9 +64,8 @@ bool isBlack(const std::uint8_t* px) {
 
 GoldenResult compareGolden(const std::string& name, const render::RgbaImage& actual,
                            int pixelTolerance, double maxDifferingFraction) {
-    const char* source = std::getenv("STEERSEG_SOURCE_DIR");
-    const std::filesystem::path goldenDir =
-        std::filesystem::path(source != nullptr ? source : ".") / "tests" / "golden";
+    // Compiled in (tests/gpu/CMakeLists.txt) so the check never depends on the environment.
+    const std::filesystem::path goldenDir = STEERSEG_GOLDEN_DIR;
     const std::filesystem::path golden = goldenDir / (name + ".png");
     const char* update = std::getenv("STEERSEG_UPDATE_GOLDEN");
     if (update != nullptr && std::string(update) == "1") {
@@ -74,7 +73,8 @@ GoldenResult compareGolden(const std::string& name, const render::RgbaImage& act
         render::writeImage(golden, actual);
         return {true, "rewrote " + golden.string()};
     }
-    const std::filesystem::path here = std::filesystem::current_path();
+    const std::filesystem::path here =
+        std::filesystem::read_symlink("/proc/self/exe").parent_path(); // beside the binary
     const std::filesystem::path actualPath = here / (name + ".actual.png");
     const std::filesystem::path diffPath = here / (name + ".diff.png");
     if (!std::filesystem::exists(golden)) {
