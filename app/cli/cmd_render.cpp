@@ -50,31 +50,32 @@ render::ClipPlane parseClip(const std::string& text) {
     return {true, n, v[3]};
 }
 
-// Applies the display options shared by every view kind.
-void applyDisplayOptions(const Args& args, const Volume& volume, render::ViewParams& p) {
+// Display options that need no scan; checked before the scan is read (which may take seconds).
+void parseDisplayOptions(const Args& args, render::ViewParams& p) {
     if (auto preset = args.value("preset")) {
-        const render::TfPreset which = usage([&] { return render::parseTfPreset(*preset); });
-        p.transfer = render::transferPreset(which, volume.stats());
-        p.window = render::windowPreset(which, volume.stats());
+        (void)usage([&] { return render::parseTfPreset(*preset); });
     }
     if (auto window = args.value("window")) {
         const std::vector<double> v = parseNumberList(*window, 2, "--window");
         if (!(v[1] > 0.0)) {
             throw UsageError("--window: width must be positive");
         }
-        p.window = {v[0], v[1]};
     }
     if (auto zoom = args.number("zoom")) {
         if (!(*zoom > 0.0) || *zoom > 1000.0) {
             throw UsageError("--zoom: expected a factor in (0, 1000]");
         }
         p.zoom = *zoom;
-        p.camera.zoom(*zoom);
     }
     if (auto pan = args.value("pan")) {
         const std::vector<double> v = parseNumberList(*pan, 2, "--pan");
         p.pan = {v[0], v[1]};
-        p.camera.pan(v[0], v[1]);
+    }
+    if (auto orbit = args.value("orbit")) {
+        (void)parseNumberList(*orbit, 2, "--orbit");
+    }
+    if (auto camera = args.value("camera")) {
+        (void)usage([&] { return render::parseCameraPreset(*camera); });
     }
     if (auto roi = args.value("roi")) {
         p.roi = usage([&] { return render::parseRoiMode(*roi); });
@@ -88,10 +89,22 @@ void applyDisplayOptions(const Args& args, const Volume& volume, render::ViewPar
     p.labels = !args.flag("no-labels");
 }
 
+// Presets and window from the scan's intensities, then the options that override them.
+void applyIntensityOptions(const Args& args, const Volume& volume, render::ViewParams& p) {
+    if (auto preset = args.value("preset")) {
+        const render::TfPreset which = render::parseTfPreset(*preset);
+        p.transfer = render::transferPreset(which, volume.stats());
+        p.window = render::windowPreset(which, volume.stats());
+    }
+    if (auto window = args.value("window")) {
+        const std::vector<double> v = parseNumberList(*window, 2, "--window");
+        p.window = {v[0], v[1]};
+    }
+}
+
 void applyCamera(const Args& args, const Geometry& g, render::ViewParams& p) {
     if (auto camera = args.value("camera")) {
-        const render::CameraPreset which =
-            usage([&] { return render::parseCameraPreset(*camera); });
+        const render::CameraPreset which = render::parseCameraPreset(*camera);
         p.camera =
             render::Camera::preset(which, render::volumeCentre(g), render::volumeExtentMm(g));
     }
@@ -101,19 +114,20 @@ void applyCamera(const Args& args, const Geometry& g, render::ViewParams& p) {
     }
 }
 
-void applySlice(const Args& args, const Geometry& g, render::ViewParams& p) {
+// Options checked before the scan is read (reading the scan may take seconds).
+void parseSliceOptions(const Args& args, render::ViewParams& p) {
     if (auto slice = args.integer("slice")) {
         if (p.kind == render::ViewKind::Volume3d) {
             throw UsageError("--slice applies to axial, coronal and sagittal views");
         }
-        const int axis = render::sliceAxisFor(g, p.kind);
-        if (*slice < 0 || *slice >= g.dims[axis]) {
-            throw UsageError("--slice " + std::to_string(*slice) + " is outside 0.." +
-                             std::to_string(g.dims[axis] - 1) + " (index axis " +
-                             std::to_string(axis) + ")");
+        if (*slice < 0 || *slice > 65535) {
+            throw UsageError("--slice must be a voxel index >= 0");
         }
         p.slice = static_cast<int>(*slice);
     }
+}
+
+void parseSpeedOptions(const Args& args, render::ViewParams& p) {
     const auto target = args.number("T");
     const auto eps = args.number("eps");
     if (args.flag("speed")) {
@@ -122,6 +136,17 @@ void applySlice(const Args& args, const Geometry& g, render::ViewParams& p) {
         }
         p.content = render::SliceContent::Speed;
         p.speed = {*target, *eps};
+    }
+}
+
+void checkSliceRange(const Geometry& g, render::ViewParams& p) {
+    if (p.slice >= 0) {
+        const int axis = render::sliceAxisFor(g, p.kind);
+        if (p.slice >= g.dims[axis]) {
+            throw UsageError("--slice " + std::to_string(p.slice) + " is outside 0.." +
+                             std::to_string(g.dims[axis] - 1) + " (index axis " +
+                             std::to_string(axis) + ")");
+        }
     }
 }
 
@@ -143,8 +168,13 @@ int runRender(std::span<const std::string> words) {
         throw UsageError("--mask and the segmentation options exclude each other");
     }
 
+    parseDisplayOptions(args, p);
+    parseSliceOptions(args, p);
+    parseSpeedOptions(args, p);
+
     const io::LoadedScan scan = io::readScan(input);
     const Geometry& g = scan.volume.geometry();
+    checkSliceRange(g, p);
     if (args.value("mask") || segment) {
         // The level set comes from the solver (LevelSetSolver init from a mask or seeds, then
         // poolView()); the renderer never builds its own copy of phi.
@@ -158,8 +188,7 @@ int runRender(std::span<const std::string> words) {
     p.transfer = defaults.transfer;
     p.window = defaults.window;
     applyCamera(args, g, p);
-    applyDisplayOptions(args, scan.volume, p);
-    applySlice(args, g, p);
+    applyIntensityOptions(args, scan.volume, p);
     renderer.render(p, nullptr);
     render::writeImage(output, renderer.readback());
     return 0;
