@@ -140,9 +140,19 @@ void main() {
                 }
                 prevPhi = phi;
                 vec3 blockLo;
-                bool occupied = blockOccupied(p, blockLo);
+                bool blockUsed = blockOccupied(p, blockLo);
+                // ROI inside: nothing of the scan outside the surface.
+                bool occupied = blockUsed && !(hasSurface != 0 && roiMode == 1 && phi > 0.0);
+                float v = occupied ? scanAt(p) : 0.0;
                 if (occupied) {
-                    float v = scanAt(p);
+                    // The value alone may already rule the sample out (no gradient needed).
+                    float bin = v * float(TF_BINS - 1);
+                    int lo = clamp(int(floor(bin)), 0, TF_BINS - 1);
+                    int hi = clamp(int(ceil(bin)), 0, TF_BINS - 1);
+                    occupied = texelFetch(occupancy, ivec2(hi + 1, 0), 0).r -
+                                   texelFetch(occupancy, ivec2(lo, 0), 0).r > 0.5;
+                }
+                if (occupied) {
                     vec3 g = 0.5 * vec3(scanAt(p + vec3(1, 0, 0)) - scanAt(p - vec3(1, 0, 0)),
                                         scanAt(p + vec3(0, 1, 0)) - scanAt(p - vec3(0, 1, 0)),
                                         scanAt(p + vec3(0, 0, 1)) - scanAt(p - vec3(0, 0, 1)));
@@ -160,7 +170,7 @@ void main() {
                             break;
                         }
                     }
-                } else if (hasSurface == 0) {
+                } else if (!blockUsed && hasSurface == 0) {
                     // Nothing to see in this block: jump to where the ray leaves it, keeping
                     // samples on the same lattice.
                     vec2 bh = boxHits(origin, dir, blockLo, blockLo + 8.0);
