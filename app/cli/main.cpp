@@ -22,6 +22,13 @@ constexpr Command kCommands[] = {
     {"gpu-info",
      "gpu-info [--platform auto|surfaceless|device]: print the GLES renderer and limits",
      steerseg::cli::runGpuInfo},
+    {"render",
+     "render --input SCAN --view 3d|axial|coronal|sagittal [--slice N] [--clip nx,ny,nz,d] [--roi "
+     "inside|dim|off] [--surface opaque|translucent|hidden] [--preset bone|soft|mr] [--window L,W] "
+     "[--camera anterior|lateral|superior] [--orbit YAW,PITCH] [--zoom F] [--pan R,U] [--speed --T "
+     "T --eps E] [--no-labels] [--mask MASK | --seed ... ] [--size WxH] --output PNG: draw one "
+     "view to an image",
+     steerseg::cli::runRender},
 };
 
 void printUsage(std::FILE* out) {
