@@ -22,6 +22,12 @@ constexpr Command kCommands[] = {
     {"gpu-info",
      "gpu-info [--platform auto|surfaceless|device]: print the GLES renderer and limits",
      steerseg::cli::runGpuInfo},
+    {"segment",
+     "segment --input PATH --seed i,j,k,r [--seed ...] [--erase i,j,k,r ...] --T v --eps v --alpha "
+     "a "
+     "(--iterations N | --time t | --converge [--max-iterations N]) [--dense] --output MASK "
+     "[--report REPORT.json]: level-set segmentation on the GPU",
+     steerseg::cli::runSegment},
 };
 
 void printUsage(std::FILE* out) {
