@@ -28,7 +28,7 @@ TimeStepRule timeStepRule(const LevelSetParams& p) {
 }
 
 float stableTimeStep(const TimeStepRule& rule, float maxDataRate) {
-    return rule.courant / (maxDataRate + rule.fixedRate);
+    return 1.0F / (maxDataRate / rule.courant + rule.fixedRate);
 }
 
 void validateSphere(const Sphere& s, const glm::ivec3& dims) {

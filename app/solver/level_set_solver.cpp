@@ -67,7 +67,7 @@ LevelSetSolver::LevelSetSolver(std::span<const float> intensities, const glm::iv
         throw std::runtime_error("volume larger than the GPU's 3D texture limit (" +
                                  std::to_string(info.max3dTextureSize) + ")");
     }
-    const int localSize = std::min(b * b * b, 512);
+    const int localSize = std::min(b * b * b, 64);
     programs_ = std::make_unique<solver_detail::SolverPrograms>(b, localSize);
     pool_ = std::make_unique<solver_detail::GpuBrickPool>(
         dims, b, static_cast<std::size_t>(info.maxShaderStorageBlockBytes));
@@ -326,7 +326,7 @@ void LevelSetSolver::managePool() {
     if (ctrl.freeCount < margin && pool_->capacity() < pool_->maxCapacity()) {
         pool_->grow(used + used / 4 + ctrl.requestCount + 16, ctrl);
         ++stats_.poolGrowths;
-    } else if (used + used / 4 + 64 < pool_->capacity() / 2) {
+    } else if (used + used / 4 + 16 < pool_->capacity() / 2) {
         pool_->shrink(used + used / 4 + 16, ctrl);
         ++stats_.poolShrinks;
     }

@@ -89,36 +89,45 @@ int ReferenceSolver::step(int n, float timeLimit) {
     int done = 0;
     for (; done < n; ++done) {
         // Time step from the fastest data speed in the narrow band (as the GPU's measure pass).
+        std::vector<std::size_t> band;
         float maxRate = 0.0F;
         for (int k = 0; k < dims_.z; ++k) {
             for (int j = 0; j < dims_.y; ++j) {
                 for (int i = 0; i < dims_.x; ++i) {
-                    if (inNarrowBand(stencil(i, j, k))) {
-                        const float d = thresholdSpeed(intensities_[index(i, j, k)], params_);
+                    PhiStencil s;
+                    s.c = at(i, j, k);
+                    s.xm = at(i - 1, j, k);
+                    s.xp = at(i + 1, j, k);
+                    s.ym = at(i, j - 1, k);
+                    s.yp = at(i, j + 1, k);
+                    s.zm = at(i, j, k - 1);
+                    s.zp = at(i, j, k + 1);
+                    if (inNarrowBand(s)) {
+                        band.push_back(index(i, j, k));
+                        const float d = thresholdSpeed(intensities_[band.back()], params_);
                         maxRate = std::max(maxRate, std::abs(params_.alpha * d));
                     }
                 }
             }
         }
-        float dt = std::min(stableTimeStep(rule, maxRate), timeLimit - time_);
+        const float dt = std::min(stableTimeStep(rule, maxRate), timeLimit - time_);
         if (!(dt > 0.0F)) {
             break;
         }
+        // Voxels off the band keep their clamped value (their rate clamps back to it).
+        next_ = phi_;
         bool changed = false;
-        for (int k = 0; k < dims_.z; ++k) {
-            for (int j = 0; j < dims_.y; ++j) {
-                for (int i = 0; i < dims_.x; ++i) {
-                    const std::size_t at = index(i, j, k);
-                    const PhiStencil s = stencil(i, j, k);
-                    float out = s.c;
-                    if (inNarrowBand(s)) {
-                        const float d = thresholdSpeed(intensities_[at], params_);
-                        out = clampPhi(s.c + dt * phiRate(s, d, params_.alpha));
-                    }
-                    changed = changed || ((out < 0.0F) != (s.c < 0.0F));
-                    next_[at] = out;
-                }
-            }
+        for (const std::size_t at : band) {
+            const int i = static_cast<int>(at % static_cast<std::size_t>(dims_.x));
+            const int j = static_cast<int>((at / static_cast<std::size_t>(dims_.x)) %
+                                           static_cast<std::size_t>(dims_.y));
+            const int k = static_cast<int>(
+                at / (static_cast<std::size_t>(dims_.x) * static_cast<std::size_t>(dims_.y)));
+            const PhiStencil s = stencil(i, j, k);
+            const float d = thresholdSpeed(intensities_[at], params_);
+            const float out = clampPhi(s.c + dt * phiRate(s, d, params_.alpha));
+            changed = changed || ((out < 0.0F) != (s.c < 0.0F));
+            next_[at] = out;
         }
         phi_.swap(next_);
         time_ += dt;

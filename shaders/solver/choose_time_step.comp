@@ -1,5 +1,5 @@
 #version 310 es
-// One thread: dt = courant / (max |alpha * D| + fixedRate) (TimeStepRule in
+// One thread: dt = 1 / (max |alpha * D| / courant + fixedRate) (TimeStepRule in
 // app/solver/level_set_params.hpp), cut to reach timeLimit exactly; no step while stalled.
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
@@ -10,7 +10,7 @@ uniform float fixedRate;
 uniform float timeLimit;
 
 void main() {
-    float dt = courant / (uintBitsToFloat(ctrl.maxRateBits) + fixedRate);
+    float dt = 1.0 / (uintBitsToFloat(ctrl.maxRateBits) / courant + fixedRate);
     dt = min(dt, timeLimit - ctrl.time);
     if (ctrl.stalled != 0u || !(dt > 0.0)) {
         dt = 0.0;

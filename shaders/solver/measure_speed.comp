@@ -5,6 +5,7 @@
 #include "solver/solver_common.glsl"
 #include "solver/speed_threshold.glsl"
 #include "solver/phi_stencil.glsl"
+#include "solver/phi_tile.glsl"
 layout(local_size_x = LOCAL_SIZE) in;
 
 uniform float alpha;
@@ -15,20 +16,20 @@ void main() {
     if (n == NO_BRICK) {
         return;
     }
+    ivec3 origin = brickCoord(slotBrick[activeList[n]]) * BRICK_SIZE;
+    loadTile(origin);
     if (gl_LocalInvocationIndex == 0u) {
         groupMax = 0u;
     }
     barrier();
-    ivec3 origin = brickCoord(slotBrick[activeList[n]]) * BRICK_SIZE;
     float localMax = 0.0;
     for (uint v = gl_LocalInvocationIndex; v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
-        ivec3 g = origin + localVoxel(v);
+        ivec3 l = localVoxel(v);
+        ivec3 g = origin + l;
         if (any(greaterThanEqual(g, volumeDims))) {
             continue;
         }
-        if (inNarrowBand(phiAt(g), phiAt(g - ivec3(1, 0, 0)), phiAt(g + ivec3(1, 0, 0)),
-                         phiAt(g - ivec3(0, 1, 0)), phiAt(g + ivec3(0, 1, 0)),
-                         phiAt(g - ivec3(0, 0, 1)), phiAt(g + ivec3(0, 0, 1)))) {
+        if (tileInNarrowBand(l)) {
             localMax = max(localMax, abs(alpha * dataSpeed(g)));
         }
     }

@@ -7,17 +7,16 @@
 #include "solver/speed_threshold.glsl"
 #include "solver/phi_stencil.glsl"
 #include "solver/brick_state.glsl"
+#include "solver/phi_tile.glsl"
 layout(local_size_x = LOCAL_SIZE) in;
 
 layout(std430, binding = PHI_NEXT_BINDING) writeonly buffer PhiNext { float phiNext[]; };
 
 uniform float alpha;
 
-const int APRON = BRICK_SIZE + 2;
-shared float tile[APRON * APRON * APRON];
 shared uint changedSide;
 
-float t(ivec3 l) { return tile[(l.x + 1) + APRON * ((l.y + 1) + APRON * (l.z + 1))]; }
+float t(ivec3 l) { return tileAt(l); }
 
 PhiStencil stencilAt(ivec3 l) {
     PhiStencil s;
@@ -50,11 +49,7 @@ void main() {
     }
     uint slot = activeList[n];
     ivec3 origin = brickCoord(slotBrick[slot]) * BRICK_SIZE;
-    for (uint a = gl_LocalInvocationIndex; a < uint(APRON * APRON * APRON); a += uint(LOCAL_SIZE)) {
-        int i = int(a);
-        ivec3 l = ivec3(i % APRON, (i / APRON) % APRON, i / (APRON * APRON)) - 1;
-        tile[a] = phiAt(origin + l);
-    }
+    loadTile(origin);
     beginBrickState();
     if (gl_LocalInvocationIndex == 0u) {
         changedSide = 0u;
@@ -67,7 +62,7 @@ void main() {
         PhiStencil s = stencilAt(l);
         float out_ = s.c;
         if (all(lessThan(g, volumeDims))) {
-            if (dt > 0.0 && inNarrowBand(s.c, s.xm, s.xp, s.ym, s.yp, s.zm, s.zp)) {
+            if (dt > 0.0 && tileInNarrowBand(l)) {
                 out_ = clamp(s.c + dt * phiRate(s, dataSpeed(g), alpha), -PHI_FAR, PHI_FAR);
             }
             noteVoxelState(out_);
