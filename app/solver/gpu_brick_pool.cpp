@@ -64,7 +64,7 @@ GpuBrickPool::GpuBrickPool(const glm::ivec3& dims, int brickSize, std::size_t ma
       maxBlockBytes_(maxBlockBytes),
       brickCount_(static_cast<std::uint32_t>(grid_.x * grid_.y * grid_.z)) {
     if (static_cast<std::size_t>(brickCount_) * 4 > maxBlockBytes_ ||
-        maxCapacity() < kMinCapacity) {
+        maxBlockBytes_ < brickBytes()) {
         throw std::runtime_error("volume too large for the GPU's shader storage block limit (" +
                                  std::to_string(maxBlockBytes_ >> 20) + " MiB)");
     }

@@ -285,7 +285,8 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
         remaining -= done;
         const auto sinceChange = static_cast<int>(ctrl.iteration - ctrl.lastChange);
         converged_ = sinceChange >= options_.convergeIterations &&
-                     ctrl.time - ctrl.lastChangeTime >= options_.convergeTime;
+                     (ctrl.time - ctrl.lastChangeTime >= options_.convergeTime ||
+                      sinceChange >= 10 * options_.convergeIterations);
         stats_.peakActiveBricks = std::max(stats_.peakActiveBricks, ctrl.peakActive);
         if (ctrl.stalled != 0) {
             ++stats_.stalls;

@@ -23,11 +23,14 @@ struct SolverPrograms;
 int defaultBrickSize();
 
 struct SolverOptions {
-    int brickSize = 0;           // 0: defaultBrickSize(); 4, 8 or 16
-    bool dense = false;          // every brick active, never retired (benchmark baseline)
-    int checkInterval = 16;      // iterations between reads of the GPU's counters
-    int convergeIterations = 20; // converged: no voxel changed side for this many iterations...
-    float convergeTime = 1.0F;   // ...spanning at least this much evolved time
+    int brickSize = 0;      // 0: defaultBrickSize(); 4, 8 or 16
+    bool dense = false;     // every brick active, never retired (benchmark baseline)
+    int checkInterval = 16; // iterations between reads of the GPU's counters
+    // Converged: no voxel changed side for convergeIterations iterations spanning at least
+    // convergeTime of evolution, or for 10 * convergeIterations iterations (a front held by a
+    // strongly negative speed elsewhere takes tiny steps).
+    int convergeIterations = 20;
+    float convergeTime = 0.5F;
 };
 
 struct StepResult {
