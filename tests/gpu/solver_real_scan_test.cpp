@@ -90,7 +90,7 @@ void runCase(const std::filesystem::path& image, const std::filesystem::path& ma
 
     // Agreement with the reference over the first iterations (asserted).
     constexpr int kCompared = 40;
-    constexpr int kMaxIterations = 200; // the expert comparison stops here if not converged
+    constexpr int kMaxIterations = 80; // the expert comparison stops here if not converged
     constexpr int kCheckEvery = 40;
     LevelSetSolver gpu(c.values, c.dims);
     ReferenceSolver cpu(c.values, c.dims);
