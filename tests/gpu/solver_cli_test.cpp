@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -19,8 +20,13 @@ struct RunResult {
     std::string output;
 };
 
+std::string binary() {
+    return std::getenv("STEERSEG_BINARY") != nullptr ? steersegBinary().string()
+                                                     : std::string(STEERSEG_CLI_PATH);
+}
+
 RunResult runSegment(const std::string& arguments) {
-    const std::string command = steersegBinary().string() + " segment " + arguments + " 2>&1";
+    const std::string command = binary() + " segment " + arguments + " 2>&1";
     RunResult r;
     FILE* pipe = popen(command.c_str(), "r");
     if (pipe == nullptr) {
