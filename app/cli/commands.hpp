@@ -10,5 +10,6 @@ namespace steerseg::cli {
 int runGpuInfo(std::span<const std::string> args);
 int runInfo(std::span<const std::string> args);
 int runRender(std::span<const std::string> args);
+int runSegment(std::span<const std::string> args);
 
 } // namespace steerseg::cli

@@ -29,6 +29,12 @@ constexpr Command kCommands[] = {
      "T --eps E] [--no-labels] [--mask MASK | --seed ... ] [--size WxH] --output PNG: draw one "
      "view to an image",
      steerseg::cli::runRender},
+    {"segment",
+     "segment --input PATH --seed i,j,k,r [--seed ...] [--erase i,j,k,r ...] --T v --eps v --alpha "
+     "a "
+     "(--iterations N | --time t | --converge [--max-iterations N]) [--dense] --output MASK "
+     "[--report REPORT.json]: level-set segmentation on the GPU",
+     steerseg::cli::runSegment},
 };
 
 void printUsage(std::FILE* out) {
