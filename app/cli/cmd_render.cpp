@@ -1,6 +1,7 @@
 // steerseg render: one view of a scan (and its segmentation) to an image file, offscreen.
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/segmentation_options.hpp"
 #include "io/scan_reader.hpp"
 #include "platform/egl/gpu_context.hpp"
 #include "render/render_names.hpp"
@@ -8,17 +9,46 @@
 #include "render/slice_frame.hpp"
 
 #include <cstdio>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace steerseg::cli {
 
 namespace {
 
-const std::vector<std::string> kValueOptions = {
-    "input",  "output", "view",  "slice",      "clip", "roi",     "size", "preset",
-    "window", "camera", "orbit", "zoom",       "pan",  "surface", "mask", "seed",
-    "T",      "eps",    "alpha", "iterations", "time", "converge"};
-const std::vector<std::string> kFlagOptions = {"speed", "no-labels"};
+std::vector<std::string> valueOptions() {
+    std::vector<std::string> names = {"input", "output", "view",   "slice",   "clip",
+                                      "roi",   "size",   "preset", "window",  "camera",
+                                      "orbit", "zoom",   "pan",    "surface", "mask"};
+    const std::vector<std::string> segmentation = segmentationValueOptions();
+    names.insert(names.end(), segmentation.begin(), segmentation.end());
+    return names;
+}
+
+std::vector<std::string> flagOptions() {
+    std::vector<std::string> names = {"speed", "no-labels"};
+    const std::vector<std::string> segmentation = segmentationFlagOptions();
+    names.insert(names.end(), segmentation.begin(), segmentation.end());
+    return names;
+}
+
+// The mask as the solver's starting level set: same grid as the scan, inside where > 0.5.
+std::vector<std::uint8_t> readMaskFor(const std::string& path, const Geometry& scanGeometry) {
+    const io::LoadedScan mask = io::readScan(path);
+    if (mask.volume.dims() != scanGeometry.dims) {
+        throw std::runtime_error(
+            path + ": mask is " + std::to_string(mask.volume.dims().x) + "x" +
+            std::to_string(mask.volume.dims().y) + "x" + std::to_string(mask.volume.dims().z) +
+            " but the scan is " + std::to_string(scanGeometry.dims.x) + "x" +
+            std::to_string(scanGeometry.dims.y) + "x" + std::to_string(scanGeometry.dims.z));
+    }
+    std::vector<std::uint8_t> inside(mask.volume.geometry().voxelCount());
+    for (std::size_t n = 0; n < inside.size(); ++n) {
+        inside[n] = mask.volume.rescale().apply(mask.volume.storedAt(n)) > 0.5 ? 1 : 0;
+    }
+    return inside;
+}
 
 template <typename F> auto usage(F&& parse) -> decltype(parse()) {
     try {
@@ -153,7 +183,7 @@ void checkSliceRange(const Geometry& g, render::ViewParams& p) {
 } // namespace
 
 int runRender(std::span<const std::string> words) {
-    const Args args(words, kValueOptions, kFlagOptions);
+    const Args args(words, valueOptions(), flagOptions());
     if (!args.positional().empty()) {
         throw UsageError("unexpected argument '" + args.positional().front() + "'");
     }
@@ -162,10 +192,13 @@ int runRender(std::span<const std::string> words) {
     render::ViewParams p;
     p.kind = usage([&] { return render::parseViewKind(args.value("view").value_or("3d")); });
     p.size = parseSize(args.value("size").value_or("512x512"));
-    const bool segment = args.value("seed") || args.value("iterations") || args.value("time") ||
-                         args.value("converge") || args.value("alpha");
+    const bool segment = wantsSegmentation(args);
     if (args.value("mask") && segment) {
         throw UsageError("--mask and the segmentation options exclude each other");
+    }
+    std::optional<SegmentationRequest> request;
+    if (segment) {
+        request = parseSegmentation(args);
     }
 
     parseDisplayOptions(args, p);
@@ -175,13 +208,19 @@ int runRender(std::span<const std::string> words) {
     const io::LoadedScan scan = io::readScan(input);
     const Geometry& g = scan.volume.geometry();
     checkSliceRange(g, p);
-    if (args.value("mask") || segment) {
-        // The level set comes from the solver (LevelSetSolver init from a mask or seeds, then
-        // poolView()); the renderer never builds its own copy of phi.
-        throw std::runtime_error("drawing a segmentation needs the level-set solver, which this "
-                                 "build does not include yet");
+    if (request) {
+        checkSpheresInside(*request, g.dims);
     }
     auto context = platform::createOffscreenContext();
+    // The level set comes from the solver's brick pool; the renderer never copies phi.
+    std::unique_ptr<LevelSetSolver> solver;
+    if (const auto mask = args.value("mask")) {
+        solver = std::make_unique<LevelSetSolver>(scan.volume);
+        solver->initFromMask(readMaskFor(*mask, g));
+    } else if (request) {
+        solver = std::make_unique<LevelSetSolver>(scan.volume, request->options);
+        (void)runSegmentation(*solver, *request);
+    }
     render::Renderer renderer(scan.volume);
     const render::ViewParams defaults = renderer.defaultParams(p.kind, p.size);
     p.camera = defaults.camera;
@@ -189,7 +228,8 @@ int runRender(std::span<const std::string> words) {
     p.window = defaults.window;
     applyCamera(args, g, p);
     applyIntensityOptions(args, scan.volume, p);
-    renderer.render(p, nullptr);
+    const BrickPoolView pool = solver ? solver->poolView() : BrickPoolView{};
+    renderer.render(p, solver ? &pool : nullptr);
     render::writeImage(output, renderer.readback());
     return 0;
 }

@@ -1,6 +1,7 @@
 // steerseg render end to end: the image is written with the asked size and shows the scan;
 // bad options exit 2 with a one-line reason, runtime failures exit 1.
 #include "render/image.hpp"
+#include "support/cli_run.hpp"
 #include "support/test_data.hpp"
 
 #include <cstdlib>
@@ -11,10 +12,7 @@ namespace steerseg::test {
 namespace {
 
 int runSteerseg(const std::string& arguments) {
-    const char* env = std::getenv("STEERSEG_BINARY");
-    const std::string binary = env != nullptr ? env : STEERSEG_CLI_BINARY;
-    const int status = std::system((binary + " " + arguments + " 2>/dev/null").c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return test::runSteerseg(arguments).exitCode;
 }
 
 TEST(RenderCli, WritesEachViewOfTheSampleAtTheAskedSize) {
@@ -56,6 +54,48 @@ TEST(RenderCli, UnreadableScanOrUnwritableOutputFailsWithStatusOne) {
     EXPECT_EQ(runSteerseg("render --input builtin:sample --size 16x16 --output "
                           "/nonexistent-dir/out.png"),
               1);
+}
+
+// Yellow contour pixels in an axial slice image.
+int yellowPixels(const render::RgbaImage& img) {
+    int n = 0;
+    for (int y = 0; y < img.height; ++y) {
+        for (int x = 0; x < img.width; ++x) {
+            const auto p = img.at(x, y);
+            n += (p[0] > 200 && p[1] > 200 && p[2] < 80) ? 1 : 0;
+        }
+    }
+    return n;
+}
+
+// The segmentation shown comes from the solver: seeds segment first, and a mask written by
+// `segment` draws the same contour when given back with --mask.
+TEST(RenderCli, DrawsTheSegmentationFromSeedsOrFromAMask) {
+    const auto dir = tempDir("render-cli-seg");
+    const std::string seg = "--seed 80,56,52,5 --T 800 --eps 100 --alpha 0.8 --iterations 60";
+    const auto mask = dir / "lesion.nii.gz";
+    ASSERT_EQ(
+        test::runSteerseg("segment --input builtin:sample " + seg + " --output " + mask.string())
+            .exitCode,
+        0);
+    const auto fromSeeds = dir / "seeds.png";
+    const auto fromMask = dir / "mask.png";
+    const std::string view = " --view axial --slice 52 --size 96x96 --no-labels --output ";
+    ASSERT_EQ(runSteerseg("render --input builtin:sample " + seg + view + fromSeeds.string()), 0);
+    ASSERT_EQ(runSteerseg("render --input builtin:sample --mask " + mask.string() + view +
+                          fromMask.string()),
+              0);
+    const render::RgbaImage a = render::readImage(fromSeeds);
+    const render::RgbaImage b = render::readImage(fromMask);
+    EXPECT_GT(yellowPixels(a), 20) << "no contour drawn from the seeds' segmentation";
+    EXPECT_GT(yellowPixels(b), 20) << "no contour drawn from the mask";
+    EXPECT_NEAR(yellowPixels(a), yellowPixels(b), 0.2 * yellowPixels(a));
+    // A mask and a segmentation to run are two sources of the level set: refused.
+    EXPECT_EQ(runSteerseg("render --input builtin:sample --mask " + mask.string() +
+                          " --seed 1,1,1,1 --T 1 --eps 1 --alpha 0.5 --iterations 1 --output " +
+                          (dir / "x.png").string()),
+              2);
+    std::filesystem::remove_all(dir);
 }
 
 } // namespace

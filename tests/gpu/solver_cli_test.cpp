@@ -1,5 +1,6 @@
 // `steerseg segment` end to end: bad parameters give exit status 2 and a clear message; a run on
 // the built-in sample writes a mask and a report with the documented fields.
+#include "support/cli_run.hpp"
 #include "support/test_data.hpp"
 
 #include <array>
@@ -20,25 +21,9 @@ struct RunResult {
     std::string output;
 };
 
-std::string binary() {
-    return std::getenv("STEERSEG_BINARY") != nullptr ? steersegBinary().string()
-                                                     : std::string(STEERSEG_CLI_PATH);
-}
-
 RunResult runSegment(const std::string& arguments) {
-    const std::string command = binary() + " segment " + arguments + " 2>&1";
-    RunResult r;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (pipe == nullptr) {
-        return r;
-    }
-    std::array<char, 4096> buffer{};
-    while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) {
-        r.output += buffer.data();
-    }
-    const int raw = pclose(pipe);
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    return r;
+    const CliRun run = runSteerseg("segment " + arguments);
+    return {run.exitCode, run.out + run.err};
 }
 
 const std::string kBase = "--input builtin:sample --output /nonexistent/never.nii.gz ";

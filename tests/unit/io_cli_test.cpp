@@ -1,6 +1,7 @@
 // `steerseg info` end to end: a corrupt scan gives exit code 1 and one line on stderr; the
 // built-in sample gives exit code 0 and JSON.
 #include "io_test_files.hpp"
+#include "support/cli_run.hpp"
 #include "support/test_data.hpp"
 
 #include <fstream>
@@ -12,40 +13,15 @@
 namespace steerseg {
 namespace {
 
-struct CliRun {
-    int exitCode = -1;
-    std::string out;
-    std::string err;
-};
-
-std::string slurp(const std::filesystem::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-CliRun runInfo(const std::string& scan, const std::filesystem::path& dir) {
-    const auto binary = test::steersegBinary();
-    if (!std::filesystem::exists(binary)) {
-        throw std::runtime_error("steerseg binary not found at " + binary.string() +
-                                 " (set STEERSEG_BINARY)");
-    }
-    const std::string cmd = "'" + binary.string() + "' info '" + scan + "' >'" +
-                            (dir / "out").string() + "' 2>'" + (dir / "err").string() + "'";
-    const int status = std::system(cmd.c_str());
-    CliRun r;
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(dir / "out");
-    r.err = slurp(dir / "err");
-    return r;
+test::CliRun runInfo(const std::string& scan) {
+    return test::runSteerseg("info '" + scan + "'");
 }
 
 TEST(CliInfo, CorruptFileGivesExitOneAndOneLine) {
     const auto dir = test::tempDir("cli-corrupt");
     auto bytes = test::niftiFile(test::obliqueGeometry({8, 8, 8}), std::vector<std::byte>(100));
     test::writeFile(dir / "corrupt.nii", bytes);
-    const CliRun r = runInfo((dir / "corrupt.nii").string(), dir);
+    const test::CliRun r = runInfo((dir / "corrupt.nii").string());
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_TRUE(r.out.empty()) << r.out;
     ASSERT_FALSE(r.err.empty());
@@ -56,7 +32,7 @@ TEST(CliInfo, CorruptFileGivesExitOneAndOneLine) {
 
 TEST(CliInfo, BuiltinSampleGivesJson) {
     const auto dir = test::tempDir("cli-sample");
-    const CliRun r = runInfo("builtin:sample", dir);
+    const test::CliRun r = runInfo("builtin:sample");
     EXPECT_EQ(r.exitCode, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out); // throws, failing the test, if not JSON
     EXPECT_EQ(j.at("format"), "builtin");
