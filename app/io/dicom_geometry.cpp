@@ -13,7 +13,7 @@ namespace {
 
 std::string mm(double value) {
     char text[64];
-    std::snprintf(text, sizeof text, "%.3g", value);
+    std::snprintf(text, sizeof text, "%.4g", value);
     return text;
 }
 
@@ -69,7 +69,7 @@ SliceStack stackSlices(const std::filesystem::path& where, const SliceStackInput
             }
         }
         spacing = (along[out.order[n - 1]] - along[out.order[0]]) / static_cast<double>(n - 1);
-        const double slack = kSpacingSlackRelative * spacing + kSpacingSlackMm;
+        const double slack = kSpacingSlackRelative * spacing + kPositionSlackMm;
         std::size_t worst = 0;
         for (std::size_t k = 0; k + 1 < n; ++k) {
             if (std::abs(steps[k] - spacing) > std::abs(steps[worst] - spacing)) {

