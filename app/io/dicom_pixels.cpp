@@ -1,5 +1,6 @@
 #include "io/dicom_pixels.hpp"
 
+#include "io/dicom_codestream.hpp"
 #include "io/load_checks.hpp"
 
 #include <cstring>
@@ -271,6 +272,7 @@ DicomPixels::DicomPixels(const DicomHeader& header) : d_(std::make_unique<Decode
                            bv != nullptr ? static_cast<std::uint64_t>(bv->GetLength()) : 0U,
                            "pixel data");
         }
+        checkCompressedFrames(file, image);
         d_->buffer.resize(expected);
         if (!image.GetBuffer(d_->buffer.data())) {
             throw ScanError(file, "cannot decode the pixel data (" + encoding + ")");
