@@ -153,6 +153,8 @@ DicomHeader readDicomHeader(const std::filesystem::path& path, const ReadLimits&
     h.columns = readInteger(sf, ds, gdcm::Tag(0x0028, 0x0011), 0);
     h.samplesPerPixel = readInteger(sf, ds, gdcm::Tag(0x0028, 0x0002), 1);
     h.bitsAllocated = readInteger(sf, ds, gdcm::Tag(0x0028, 0x0100), 0);
+    h.bitsStored = readInteger(sf, ds, gdcm::Tag(0x0028, 0x0101), h.bitsAllocated);
+    h.highBit = readInteger(sf, ds, gdcm::Tag(0x0028, 0x0102), h.bitsStored - 1);
     h.isSigned = readInteger(sf, ds, gdcm::Tag(0x0028, 0x0103), 0) == 1;
     h.photometric = readText(ds, gdcm::Tag(0x0028, 0x0004));
     const std::string frames = readText(ds, gdcm::Tag(0x0028, 0x0008));

@@ -31,6 +31,8 @@ struct DicomHeader {
     int frames = 1;
     int samplesPerPixel = 1;
     int bitsAllocated = 0;
+    int bitsStored = 0;
+    int highBit = 0;
     bool isSigned = false;
     std::string photometric;
     // Pixel data is stored raw (not JPEG/RLE/deflate), so the file must hold every byte of it.

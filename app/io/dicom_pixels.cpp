@@ -6,7 +6,6 @@
 #include <cstring>
 #include <fstream>
 #include <gdcmImage.h>
-#include <gdcmImageReader.h>
 #include <gdcmReader.h>
 #include <limits>
 #include <new>
@@ -149,7 +148,8 @@ std::optional<std::uintmax_t> zeroPaddingStart(const std::filesystem::path& file
 struct DicomPixels::Decoded {
     std::filesystem::path file;
     std::unique_ptr<std::istringstream> stream; // the data set without its padding
-    gdcm::ImageReader reader;
+    gdcm::Reader reader;
+    gdcm::Image image;
     std::vector<char> buffer;
     gdcm::PixelFormat format;
     bool monochrome1 = false;
@@ -211,35 +211,52 @@ DicomPixels::DicomPixels(const DicomHeader& header) : d_(std::make_unique<Decode
             d_->reader.SetFileName(file.string().c_str());
         }
         if (!d_->reader.Read()) {
-            throw ScanError(file, "GDCM cannot read the image (damaged or truncated file, or an "
-                                  "unsupported encoding)");
+            throw ScanError(file, "GDCM cannot read the file (damaged or truncated)");
         }
-        const gdcm::Image& image = d_->reader.GetImage();
-        const char* syntax =
-            d_->reader.GetFile().GetHeader().GetDataSetTransferSyntax().GetString();
+        const gdcm::DataSet& ds = d_->reader.GetFile().GetDataSet();
+        const gdcm::TransferSyntax ts = d_->reader.GetFile().GetHeader().GetDataSetTransferSyntax();
+        const char* syntax = ts.GetString();
         const std::string encoding = syntax != nullptr ? syntax : "unknown transfer syntax";
-        const unsigned nd = image.GetNumberOfDimensions();
-        const unsigned* dims = image.GetDimensions();
-        const std::size_t frames = nd > 2 ? dims[2] : 1;
-        if (nd < 2 || static_cast<int>(dims[0]) != header.columns ||
-            static_cast<int>(dims[1]) != header.rows ||
-            frames != static_cast<std::size_t>(header.frames)) {
-            throw ScanError(file, "GDCM sees other image dimensions than the header's " +
-                                      std::to_string(header.columns) + "x" +
-                                      std::to_string(header.rows) + "x" +
-                                      std::to_string(header.frames));
+        if (!ds.FindDataElement(kPixelData) || ds.GetDataElement(kPixelData).IsEmpty()) {
+            throw ScanError(file, "the image has no pixel data (7fe0,0010)");
         }
+        std::string photometric = header.photometric.empty() ? "MONOCHROME2" : header.photometric;
+        if (header.samplesPerPixel != 1 ||
+            (photometric != "MONOCHROME1" && photometric != "MONOCHROME2")) {
+            throw ScanError(file, "colour image (" + photometric + ", " +
+                                      std::to_string(header.samplesPerPixel) +
+                                      " samples per pixel): only greyscale scans can be segmented");
+        }
+        const int allocated = header.bitsAllocated;
+        if ((allocated != 8 && allocated != 16 && allocated != 32) || header.bitsStored < 1 ||
+            header.bitsStored > allocated || header.highBit >= allocated ||
+            header.highBit + 1 < header.bitsStored) {
+            throw ScanError(file, "unsupported pixel format: " + std::to_string(allocated) +
+                                      " bits allocated, " + std::to_string(header.bitsStored) +
+                                      " stored, high bit " + std::to_string(header.highBit));
+        }
+        // The image is described from our own header reading: gdcm::ImageReader would derive
+        // geometry through gdcm::ImageHelper, which asserts (aborts) on malformed attributes.
+        gdcm::Image& image = d_->image;
+        image.SetNumberOfDimensions(header.frames > 1 ? 3U : 2U);
+        image.SetDimension(0, static_cast<unsigned>(header.columns));
+        image.SetDimension(1, static_cast<unsigned>(header.rows));
+        if (header.frames > 1) {
+            image.SetDimension(2, static_cast<unsigned>(header.frames));
+        }
+        image.SetPixelFormat(gdcm::PixelFormat(1, static_cast<unsigned short>(allocated),
+                                               static_cast<unsigned short>(header.bitsStored),
+                                               static_cast<unsigned short>(header.highBit),
+                                               header.isSigned ? 1 : 0));
+        image.SetPhotometricInterpretation(
+            gdcm::PhotometricInterpretation::GetPIType(photometric.c_str()));
+        image.SetTransferSyntax(ts);
+        image.SetDataElement(ds.GetDataElement(kPixelData));
+        // No SetNeedByteSwap: gdcm::Reader already byte-swaps big-endian OW pixel data.
+        const std::size_t frames = static_cast<std::size_t>(header.frames);
+        const unsigned dims[2] = {image.GetDimension(0), image.GetDimension(1)};
         const gdcm::PhotometricInterpretation pi = image.GetPhotometricInterpretation();
         d_->format = image.GetPixelFormat();
-        if (d_->format.GetSamplesPerPixel() != 1 ||
-            (pi != gdcm::PhotometricInterpretation::MONOCHROME1 &&
-             pi != gdcm::PhotometricInterpretation::MONOCHROME2)) {
-            const char* name = gdcm::PhotometricInterpretation::GetPIString(pi);
-            throw ScanError(file, std::string("colour image (") + (name != nullptr ? name : "?") +
-                                      ", " + std::to_string(d_->format.GetSamplesPerPixel()) +
-                                      " samples per pixel): only greyscale scans can be "
-                                      "segmented");
-        }
         d_->monochrome1 = pi == gdcm::PhotometricInterpretation::MONOCHROME1;
         switch (d_->format.GetScalarType()) {
         case gdcm::PixelFormat::UINT8:
@@ -287,19 +304,6 @@ DicomPixels::DicomPixels(const DicomHeader& header) : d_(std::make_unique<Decode
 }
 
 DicomPixels::~DicomPixels() = default;
-
-DicomPixels::GdcmGeometry DicomPixels::gdcmGeometry() const {
-    const gdcm::Image& image = d_->reader.GetImage();
-    GdcmGeometry g;
-    const double* s = image.GetSpacing();
-    const double* o = image.GetOrigin();
-    const double* c = image.GetDirectionCosines();
-    g.spacing = {s[0], s[1], image.GetNumberOfDimensions() > 2 ? s[2] : 1.0};
-    g.origin = {o[0], o[1], o[2]};
-    g.row = {c[0], c[1], c[2]};
-    g.column = {c[3], c[4], c[5]};
-    return g;
-}
 
 void DicomPixels::copyFrames(std::span<const std::size_t> sliceOfFrame,
                              std::span<const DicomFramePlane> planes, const PixelPlan& plan,

@@ -33,16 +33,6 @@ class DicomPixels {
     DicomPixels(const DicomPixels&) = delete;
     DicomPixels& operator=(const DicomPixels&) = delete;
 
-    // The geometry GDCM derives for the file (used for multi-frame files without per-frame
-    // positions): spacing (i, j, k), origin, row and column directions.
-    struct GdcmGeometry {
-        glm::dvec3 spacing{1.0};
-        glm::dvec3 origin{0.0};
-        glm::dvec3 row{1, 0, 0};
-        glm::dvec3 column{0, 1, 0};
-    };
-    [[nodiscard]] GdcmGeometry gdcmGeometry() const;
-
     // Copies frame f into slice sliceOfFrame[f] of `out` (whose dims match the frames), applying
     // planes[f].rescale if plan.realUnits. MONOCHROME1 values are inverted (see docs/dicom.md).
     void copyFrames(std::span<const std::size_t> sliceOfFrame,

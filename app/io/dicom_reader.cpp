@@ -24,21 +24,26 @@ struct Layout {
     std::vector<std::vector<std::size_t>> slices;
 };
 
-// A multi-frame file without per-frame positions: frames stacked in file order with the
-// geometry GDCM derives (Frame Increment Pointer, SpacingBetweenSlices, ...); frames that are
-// time points (cine) are stacked 1 mm apart since they have no spatial spacing.
-Layout stackFramesAsGdcmSays(const std::filesystem::path& where, const DicomHeader& h,
-                             const DicomPixels& pixels) {
-    const auto gg = pixels.gdcmGeometry();
+// A multi-frame file without per-frame positions (legacy multi-frame: NM, US, XA, old MR cine):
+// frames stacked in file order from the file's position and orientation (origin 0 and identity
+// if absent), SpacingBetweenSlices, else SliceThickness, else 1 mm, which is what GDCM reports
+// for these files too except where its Frame Increment Pointer names Frame Time: time points
+// are stacked 1 mm apart, not at a spacing in milliseconds.
+Layout stackFramesInFileOrder(const std::filesystem::path& where, const DicomHeader& h) {
     Layout out;
     Geometry& g = out.geometry;
     g.dims = {h.columns, h.rows, h.frames};
-    const double k = h.framesAreTimePoints || !std::isfinite(gg.spacing.z) || gg.spacing.z <= 0.0
+    const glm::dvec2 ps = h.pixelSpacing.value_or(glm::dvec2(1.0));
+    const double k = h.framesAreTimePoints
                          ? 1.0
-                         : gg.spacing.z;
-    g.spacing = {gg.spacing.x, gg.spacing.y, k};
-    g.origin = gg.origin;
-    g.direction = glm::dmat3(gg.row, gg.column, glm::cross(gg.row, gg.column));
+                         : positiveOr(h.spacingBetweenSlices, positiveOr(h.sliceThickness, 1.0));
+    g.spacing = {ps.x, ps.y, k};
+    g.origin = h.planes.front().position.value_or(glm::dvec3(0.0));
+    if (h.orientation) {
+        const glm::dvec3 row = glm::normalize(h.orientation->first);
+        const glm::dvec3 col = glm::normalize(h.orientation->second);
+        g.direction = glm::dmat3(row, col, glm::normalize(glm::cross(row, col)));
+    }
     checkGeometry(where, g);
     out.slices.emplace_back(static_cast<std::size_t>(h.frames));
     for (std::size_t f = 0; f < out.slices[0].size(); ++f) {
@@ -111,15 +116,10 @@ Volume assemble(const std::filesystem::path& where, const std::vector<DicomHeade
                static_cast<int>(std::min<std::size_t>(slices, 1U << 30))},
               limits);
 
-    // GDCM's geometry for a multi-frame file is known only after reading it; it is decoded once.
-    std::optional<DicomPixels> firstPixels;
-    Layout layout;
-    if (files.size() == 1 && files.front().frames > 1 && !files.front().framesFromGroups) {
-        firstPixels.emplace(files.front());
-        layout = stackFramesAsGdcmSays(where, files.front(), *firstPixels);
-    } else {
-        layout = stackByPosition(where, files);
-    }
+    const Layout layout =
+        files.size() == 1 && files.front().frames > 1 && !files.front().framesFromGroups
+            ? stackFramesInFileOrder(where, files.front())
+            : stackByPosition(where, files);
 
     PixelPlan plan = planPixels(files);
     for (int attempt = 0;; ++attempt) {
@@ -127,10 +127,6 @@ Volume assemble(const std::filesystem::path& where, const std::vector<DicomHeade
             Volume volume(plan.type, layout.geometry);
             volume.setRescale(plan.shared);
             for (std::size_t i = 0; i < files.size(); ++i) {
-                if (i == 0 && firstPixels) {
-                    firstPixels->copyFrames(layout.slices[i], files[i].planes, plan, volume);
-                    continue;
-                }
                 const DicomPixels pixels(files[i]);
                 pixels.copyFrames(layout.slices[i], files[i].planes, plan, volume);
             }

@@ -4,12 +4,16 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <zlib.h>
 
 namespace steerseg::io {
 
 namespace {
 
+// Deflated data sets (rare: mostly structured reports) are inflated in memory to be checked.
+constexpr std::size_t kMaxInflatedBytes = std::size_t{256} << 20;
 constexpr std::uint32_t kUndefined = 0xffffffffU;
 constexpr std::uint32_t kItem = 0xfffee000U;
 constexpr std::uint32_t kItemEnd = 0xfffee00dU;
@@ -17,6 +21,19 @@ constexpr std::uint32_t kSequenceEnd = 0xfffee0ddU;
 constexpr std::uint32_t kPixelData = 0x7fe00010U;
 
 enum class Syntax { ExplicitLittle, ImplicitLittle, ExplicitBig };
+
+bool validVr(const std::array<char, 2>& vr) {
+    static constexpr const char* kAll[] = {"AE", "AS", "AT", "CS", "DA", "DS", "DT", "FD", "FL",
+                                           "IS", "LO", "LT", "OB", "OD", "OF", "OL", "OV", "OW",
+                                           "PN", "SH", "SL", "SQ", "SS", "ST", "SV", "TM", "UC",
+                                           "UI", "UL", "UN", "UR", "US", "UT", "UV"};
+    for (const char* v : kAll) {
+        if (vr[0] == v[0] && vr[1] == v[1]) {
+            return true;
+        }
+    }
+    return false;
+}
 
 // VRs whose explicit length field is 4 bytes after 2 reserved ones.
 bool longVr(const std::array<char, 2>& vr) {
@@ -32,7 +49,7 @@ bool longVr(const std::array<char, 2>& vr) {
 
 class Walker {
   public:
-    Walker(const std::filesystem::path& path, std::ifstream& in, std::uint64_t size)
+    Walker(const std::filesystem::path& path, std::istream& in, std::uint64_t size)
         : path_(path), in_(in), size_(size) {}
 
     std::uint64_t pos = 0;
@@ -87,7 +104,7 @@ class Walker {
                 return; // trailing padding
             }
             const std::uint32_t t = tag(end, big);
-            if (t == stop) {
+            if (stop != 0 && t == stop) {
                 if (u32(end, big) != 0) {
                     failTag(t, "(a delimiter) has a non-zero length");
                 }
@@ -105,7 +122,7 @@ class Walker {
             } else {
                 std::array<char, 2> vr{};
                 read(vr.data(), 2, end);
-                if (vr[0] < 'A' || vr[0] > 'Z' || vr[1] < 'A' || vr[1] > 'Z') {
+                if (!validVr(vr)) {
                     failTag(t, "has no valid VR");
                 }
                 const std::string v(vr.data(), 2);
@@ -220,9 +237,50 @@ class Walker {
     }
 
     const std::filesystem::path& path_;
-    std::ifstream& in_;
+    std::istream& in_;
     std::uint64_t size_;
 };
+
+// The data set after the meta header, inflated (raw deflate, RFC 1951), up to a size cap.
+std::string inflateDataSet(const std::filesystem::path& path, std::istream& in, std::uint64_t from,
+                           std::uint64_t size) {
+    std::string packed(static_cast<std::size_t>(size - from), '\0');
+    in.clear();
+    in.seekg(static_cast<std::streamoff>(from));
+    if (!in.read(packed.data(), static_cast<std::streamsize>(packed.size()))) {
+        throw ScanError(path, "cannot read the deflated data set");
+    }
+    z_stream z{};
+    if (inflateInit2(&z, -MAX_WBITS) != Z_OK) {
+        throw ScanError(path, "cannot start inflating the data set");
+    }
+    std::string out;
+    std::array<char, 65536> chunk{};
+    z.next_in = reinterpret_cast<Bytef*>(packed.data());
+    z.avail_in = static_cast<uInt>(packed.size());
+    int rc = Z_OK;
+    while (rc != Z_STREAM_END) {
+        z.next_out = reinterpret_cast<Bytef*>(chunk.data());
+        z.avail_out = static_cast<uInt>(chunk.size());
+        rc = inflate(&z, Z_NO_FLUSH);
+        if (rc != Z_OK && rc != Z_STREAM_END) {
+            inflateEnd(&z);
+            throw ScanError(path, "the deflated data set is corrupt");
+        }
+        out.append(chunk.data(), chunk.size() - z.avail_out);
+        if (out.size() > kMaxInflatedBytes) {
+            inflateEnd(&z);
+            throw ScanError(path, "the deflated data set inflates past " +
+                                      std::to_string(kMaxInflatedBytes >> 20) + " MiB");
+        }
+        if (rc == Z_OK && z.avail_in == 0 && z.avail_out != 0) {
+            inflateEnd(&z);
+            throw ScanError(path, "the deflated data set is truncated");
+        }
+    }
+    inflateEnd(&z);
+    return out;
+}
 
 } // namespace
 
@@ -250,6 +308,9 @@ void checkDicomStructure(const std::filesystem::path& path) {
         w.tag(size, false);
         std::array<char, 2> vr{};
         w.read(vr.data(), 2, size);
+        if (!validVr(vr)) {
+            w.failTag(t, "(meta header) has no valid VR");
+        }
         std::uint32_t length = 0;
         if (longVr(vr)) {
             (void)w.u16(size, false);
@@ -273,7 +334,11 @@ void checkDicomStructure(const std::filesystem::path& path) {
     }
     Syntax syntax = Syntax::ExplicitLittle;
     if (syntaxUid == "1.2.840.10008.1.2.1.99") {
-        return; // deflated: GDCM inflates it and checks the result
+        std::istringstream inflated(inflateDataSet(path, in, w.pos, size));
+        const auto inflatedSize = static_cast<std::uint64_t>(inflated.str().size());
+        Walker data(path, inflated, inflatedSize);
+        data.elements(inflatedSize, Syntax::ExplicitLittle, 0, 0, true);
+        return;
     }
     if (syntaxUid == "1.2.840.10008.1.2") {
         syntax = Syntax::ImplicitLittle;

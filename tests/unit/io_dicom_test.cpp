@@ -3,6 +3,7 @@
 #include "dicom_test_support.hpp"
 
 #include <cmath>
+#include <cstdlib>
 
 namespace steerseg::test {
 namespace {
@@ -169,6 +170,28 @@ TEST(IoDicom, CineMultiFrameStacksFramesOneMillimetreApart) {
     EXPECT_EQ(v.dims(), glm::ivec3(256, 256, 16));
     // The Frame Increment Pointer names Frame Time (69.47 ms): time points, not slices.
     EXPECT_DOUBLE_EQ(v.geometry().spacing.z, 1.0);
+}
+
+// The seed corpus holds two synthetic 3-frame files with the same pixels: an enhanced one with
+// per-frame positions z = 4, 0, 2 mm (functional groups) and a legacy one without geometry.
+TEST(IoDicom, EnhancedMultiFrameSortsFramesByPosition) {
+    const char* source = std::getenv("STEERSEG_SOURCE_DIR");
+    ASSERT_NE(source, nullptr);
+    const fs::path corpus = fs::path(source) / "tests/fuzz/corpus/dicom";
+    const Volume enhanced = readDicom(corpus / "mf_enhanced.dcm", {});
+    const Volume legacy = readDicom(corpus / "mf_legacy.dcm", {});
+    EXPECT_EQ(enhanced.dims(), glm::ivec3(16, 16, 3));
+    EXPECT_DOUBLE_EQ(enhanced.geometry().spacing.x, 0.5); // shared Pixel Measures
+    EXPECT_DOUBLE_EQ(enhanced.geometry().spacing.z, 2.0);
+    expectNear3(enhanced.geometry().origin, {-4, -4, 0}, 1e-12);
+    EXPECT_DOUBLE_EQ(legacy.geometry().spacing.z, 1.0);
+    // k = 0, 1, 2 hold file frames 1, 2, 0; the enhanced file also carries rescale -1024.
+    const int frameOf[3] = {1, 2, 0};
+    for (int k = 0; k < 3; ++k) {
+        for (const auto& [i, j] : {std::pair{0, 0}, {5, 9}, {15, 15}}) {
+            EXPECT_DOUBLE_EQ(enhanced.valueAt(i, j, k), legacy.valueAt(i, j, frameOf[k]) - 1024.0);
+        }
+    }
 }
 
 // --- cross-format: the same real values at the same world positions ---------------------------
