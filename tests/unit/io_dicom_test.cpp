@@ -3,7 +3,6 @@
 #include "dicom_test_support.hpp"
 
 #include <cmath>
-#include <cstdlib>
 
 namespace steerseg::test {
 namespace {
@@ -175,9 +174,7 @@ TEST(IoDicom, CineMultiFrameStacksFramesOneMillimetreApart) {
 // The seed corpus holds two synthetic 3-frame files with the same pixels: an enhanced one with
 // per-frame positions z = 4, 0, 2 mm (functional groups) and a legacy one without geometry.
 TEST(IoDicom, EnhancedMultiFrameSortsFramesByPosition) {
-    const char* source = std::getenv("STEERSEG_SOURCE_DIR");
-    ASSERT_NE(source, nullptr);
-    const fs::path corpus = fs::path(source) / "tests/fuzz/corpus/dicom";
+    const fs::path corpus = STEERSEG_DICOM_CORPUS;
     const Volume enhanced = readDicom(corpus / "mf_enhanced.dcm", {});
     const Volume legacy = readDicom(corpus / "mf_legacy.dcm", {});
     EXPECT_EQ(enhanced.dims(), glm::ivec3(16, 16, 3));
