@@ -99,6 +99,8 @@ class Walker {
     // Returns when the delimiter `stop` (item or sequence end) is consumed.
     void elements(std::uint64_t end, Syntax syntax, int depth, std::uint32_t stop, bool topLevel) {
         const bool big = syntax == Syntax::ExplicitBig;
+        std::uint32_t previous = 0;
+        bool first = true;
         while (pos < end) {
             if (topLevel && allZeroFrom(pos, end)) {
                 return; // trailing padding
@@ -113,6 +115,12 @@ class Walker {
             if (t == kItem || t == kItemEnd || t == kSequenceEnd) {
                 failTag(t, "(an item tag) appears outside a sequence");
             }
+            // GDCM falls back to guessing (and asserts) on unordered or command-group tags.
+            if ((!first && t <= previous) || (t >> 16) <= 0x0002) {
+                failTag(t, "is out of order or in a group that does not belong in a data set");
+            }
+            previous = t;
+            first = false;
             std::uint32_t length = 0;
             bool maySequence = false;
             Syntax inner = syntax;
