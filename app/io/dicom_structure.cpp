@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <zlib.h>
@@ -306,6 +307,8 @@ void checkDicomStructure(const std::filesystem::path& path) {
     }
     // The meta header (group 0002) is always explicit VR little endian.
     std::string syntaxUid;
+    std::optional<std::uint64_t> groupLength;
+    std::uint64_t groupStart = 0;
     while (w.pos + 8 <= size) {
         const std::uint64_t at = w.pos;
         const std::uint32_t t = w.tag(size, false);
@@ -335,7 +338,17 @@ void checkDicomStructure(const std::filesystem::path& path) {
         if (length == kUndefined || length > size - w.pos) {
             w.failTag(t, "(meta header) claims more bytes than the file holds");
         }
-        if (t == 0x00020010U) {
+        if (t == 0x00020000U) {
+            std::array<unsigned char, 4> v{};
+            if (length != 4) {
+                w.failTag(t, "(meta group length) is not 4 bytes");
+            }
+            w.read(v.data(), 4, size);
+            groupLength = static_cast<std::uint64_t>(v[0]) | static_cast<std::uint64_t>(v[1]) << 8 |
+                          static_cast<std::uint64_t>(v[2]) << 16 |
+                          static_cast<std::uint64_t>(v[3]) << 24;
+            groupStart = w.pos;
+        } else if (t == 0x00020010U) {
             std::string uid(length, '\0');
             w.read(uid.data(), length, size);
             while (!uid.empty() && (uid.back() == '\0' || uid.back() == ' ')) {
@@ -345,6 +358,11 @@ void checkDicomStructure(const std::filesystem::path& path) {
         } else {
             w.pos += length;
         }
+    }
+    // GDCM reads the meta header by its group length and asserts where that ends mid-element.
+    if (groupLength && w.pos - groupStart != *groupLength) {
+        w.fail("the meta header's group length (" + std::to_string(*groupLength) +
+               ") does not match its elements (" + std::to_string(w.pos - groupStart) + ")");
     }
     Syntax syntax = Syntax::ExplicitLittle;
     if (syntaxUid == "1.2.840.10008.1.2.1.99") {
