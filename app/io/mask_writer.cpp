@@ -1,12 +1,173 @@
-// PLACEHOLDER: replaced by the real writer in this change.
+// Masks as NIfTI-1 (.nii, .nii.gz) or gzip NRRD (.nrrd), on the scan's own grid and world
+// coordinates, so they overlay it in ITK-SNAP and 3D Slicer.
 #include "io/mask_writer.hpp"
 
+#include "io/affine.hpp"
+#include "io/file_write.hpp"
+#include "io/load_checks.hpp"
 #include "io/scan_reader.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cstring>
+#include <nifti2_io.h>
+#include <string>
 
 namespace steerseg::io {
 
-void writeMask(const std::filesystem::path& path, const Geometry&, std::span<const std::uint8_t>) {
-    throw ScanError(path, "writer not built yet");
+namespace {
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+    return s.size() >= suffix.size() &&
+           s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string lowerName(const std::filesystem::path& path) {
+    std::string name = path.filename().string();
+    std::transform(name.begin(), name.end(), name.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return name;
+}
+
+// Appends the voxels as 0/1 bytes in pieces, so that no second full-size copy is made.
+void appendMask(GzipWriter& writer, std::span<const std::uint8_t> mask) {
+    std::array<std::byte, 64 * 1024> chunk{};
+    for (std::size_t at = 0; at < mask.size(); at += chunk.size()) {
+        const std::size_t n = std::min(chunk.size(), mask.size() - at);
+        for (std::size_t k = 0; k < n; ++k) {
+            chunk[k] = mask[at + k] != 0 ? std::byte{1} : std::byte{0};
+        }
+        writer.append(std::span(chunk).first(n));
+    }
+}
+
+std::vector<std::byte> binaryMask(std::span<const std::uint8_t> mask) {
+    std::vector<std::byte> out(mask.size());
+    std::transform(mask.begin(), mask.end(), out.begin(),
+                   [](std::uint8_t v) { return v != 0 ? std::byte{1} : std::byte{0}; });
+    return out;
+}
+
+// NIfTI-1 header (348 bytes) plus the 4-byte "no extensions" flag; data follows at 352.
+std::array<std::byte, 352> niftiHeader(const Geometry& g) {
+    nifti_1_header h{};
+    h.sizeof_hdr = 348;
+    h.dim[0] = 3;
+    for (int a = 0; a < 3; ++a) {
+        h.dim[a + 1] = static_cast<short>(g.dims[a]);
+        h.pixdim[a + 1] = static_cast<float>(g.spacing[a]);
+    }
+    for (int a = 4; a < 8; ++a) {
+        h.dim[a] = 1;
+        h.pixdim[a] = 1.0f;
+    }
+    h.datatype = NIFTI_TYPE_UINT8;
+    h.bitpix = 8;
+    h.vox_offset = 352.0f;
+    h.scl_slope = 0.0f; // no scaling: the stored 0/1 are the values
+    h.scl_inter = 0.0f;
+    h.xyzt_units = NIFTI_UNITS_MM;
+    h.qform_code = NIFTI_XFORM_SCANNER_ANAT;
+    h.sform_code = NIFTI_XFORM_SCANNER_ANAT;
+    std::strncpy(h.descrip, "steerseg mask", sizeof h.descrip - 1);
+    std::memcpy(h.magic, "n+1", 4);
+
+    const Affine ras = flipRasLps(affineOf(g));
+    nifti_dmat44 m{};
+    for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) {
+            m.m[r][c] = ras.linear[c][r];
+        }
+        m.m[r][3] = ras.offset[r];
+    }
+    m.m[3][3] = 1.0;
+    float* rows[3] = {h.srow_x, h.srow_y, h.srow_z};
+    for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 4; ++c) {
+            rows[r][c] = static_cast<float>(m.m[r][c]);
+        }
+    }
+    double qb = 0, qc = 0, qd = 0, qx = 0, qy = 0, qz = 0, dx = 0, dy = 0, dz = 0, qfac = 1;
+    nifti_dmat44_to_quatern(m, &qb, &qc, &qd, &qx, &qy, &qz, &dx, &dy, &dz, &qfac);
+    h.quatern_b = static_cast<float>(qb);
+    h.quatern_c = static_cast<float>(qc);
+    h.quatern_d = static_cast<float>(qd);
+    h.qoffset_x = static_cast<float>(qx);
+    h.qoffset_y = static_cast<float>(qy);
+    h.qoffset_z = static_cast<float>(qz);
+    h.pixdim[0] = static_cast<float>(qfac);
+
+    std::array<std::byte, 352> out{};
+    std::memcpy(out.data(), &h, sizeof h);
+    return out;
+}
+
+std::string number(double v) {
+    std::array<char, 32> text{};
+    const auto result = std::to_chars(text.data(), text.data() + text.size(), v);
+    return std::string(text.data(), result.ptr);
+}
+
+std::string vectorText(const glm::dvec3& v) {
+    return "(" + number(v.x) + "," + number(v.y) + "," + number(v.z) + ")";
+}
+
+std::string nrrdHeader(const Geometry& g) {
+    const Affine lps = affineOf(g);
+    std::string h = "NRRD0004\n"
+                    "# Complete NRRD file format specification at:\n"
+                    "# http://teem.sourceforge.net/nrrd/format.html\n"
+                    "# steerseg mask: 1 inside, 0 outside\n"
+                    "type: uint8\n"
+                    "dimension: 3\n"
+                    "space: left-posterior-superior\n";
+    h += "sizes: " + std::to_string(g.dims.x) + " " + std::to_string(g.dims.y) + " " +
+         std::to_string(g.dims.z) + "\n";
+    h += "space directions: " + vectorText(lps.linear[0]) + " " + vectorText(lps.linear[1]) + " " +
+         vectorText(lps.linear[2]) + "\n";
+    h += "kinds: domain domain domain\n"
+         "endian: little\n"
+         "encoding: gzip\n";
+    h += "space origin: " + vectorText(lps.offset) + "\n\n";
+    return h;
+}
+
+} // namespace
+
+void writeMask(const std::filesystem::path& path, const Geometry& geometry,
+               std::span<const std::uint8_t> mask) {
+    checkGeometry(path, geometry);
+    if (geometry.voxelCount() == 0 || mask.size() != geometry.voxelCount()) {
+        throw ScanError(path, "mask has " + std::to_string(mask.size()) + " voxels but the grid " +
+                                  dimsText(geometry.dims) + " has " +
+                                  std::to_string(geometry.voxelCount()));
+    }
+    const std::string name = lowerName(path);
+    if (endsWith(name, ".nii.gz") || endsWith(name, ".nii")) {
+        if (std::max({geometry.dims.x, geometry.dims.y, geometry.dims.z}) > 32767) {
+            throw ScanError(path, "NIfTI-1 holds at most 32767 voxels per axis; write .nrrd");
+        }
+        const auto header = niftiHeader(geometry);
+        if (endsWith(name, ".gz")) {
+            GzipWriter writer; // one gzip member holds header and voxels
+            writer.append(header);
+            appendMask(writer, mask);
+            writeFileAtomically(path, {writer.finish()});
+        } else {
+            const std::vector<std::byte> voxels = binaryMask(mask);
+            writeFileAtomically(path, {header, voxels});
+        }
+        return;
+    }
+    if (endsWith(name, ".nrrd")) {
+        const std::string header = nrrdHeader(geometry);
+        GzipWriter writer;
+        appendMask(writer, mask);
+        writeFileAtomically(path, {std::as_bytes(std::span(header)), writer.finish()});
+        return;
+    }
+    throw ScanError(path, "unsupported mask format (use .nii.gz, .nii or .nrrd)");
 }
 
 } // namespace steerseg::io

@@ -5,6 +5,8 @@
 
 namespace steerseg::io {
 
+class SeekableSource;
+
 Volume readNifti(const std::filesystem::path& path, const ReadLimits& limits, std::string& format);
 Volume readNrrd(const std::filesystem::path& path, const ReadLimits& limits);
 Volume readMetaImage(const std::filesystem::path& path, const ReadLimits& limits);
@@ -13,6 +15,17 @@ Volume readMgz(const std::filesystem::path& path, const ReadLimits& limits);
 Volume readImageStack(const std::filesystem::path& path, const ReadLimits& limits);
 // A folder holding a DICOM series, or one DICOM file (single- or multi-frame).
 Volume readDicom(const std::filesystem::path& path, const ReadLimits& limits);
+
+// The same readers over an open source (a file, or bytes in memory for fuzz targets). `path`
+// names the scan in messages; detached data files (.nhdr, .mhd) are looked up beside it.
+Volume readNiftiFrom(const std::filesystem::path& path, SeekableSource& file,
+                     const ReadLimits& limits, std::string& format);
+Volume readNrrdFrom(const std::filesystem::path& path, SeekableSource& file,
+                    const ReadLimits& limits);
+Volume readMetaImageFrom(const std::filesystem::path& path, SeekableSource& file,
+                         const ReadLimits& limits);
+Volume readMgzFrom(const std::filesystem::path& path, SeekableSource& file,
+                   const ReadLimits& limits);
 
 // True if the file starts like DICOM Part 10 ("DICM" at offset 128).
 bool looksLikeDicom(const std::filesystem::path& path);
