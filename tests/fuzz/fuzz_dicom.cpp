@@ -8,7 +8,8 @@
 
 // GDCM's codecs leak small buffers on some corrupt streams (JPEGLSCodec::Decode): not ours.
 extern "C" const char* __lsan_default_suppressions() {
-    return "leak:libgdcmMSFF.so\nleak:libgdcmDSED.so\nleak:libCharLS.so\nleak:libopenjp2.so\n";
+    return "leak:libgdcmMSFF.so\nleak:libgdcmDSED.so\nleak:libgdcmjpeg\nleak:libCharLS.so\nleak:"
+           "libopenjp2.so\n";
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
