@@ -211,6 +211,9 @@ class Walker {
             const std::uint32_t t = tag(end, big);
             const std::uint32_t length = u32(end, big);
             if (t == kSequenceEnd) {
+                if (length != 0) {
+                    failTag(t, "(a sequence delimiter) has a non-zero length");
+                }
                 return;
             }
             if (t != kItem) {
@@ -238,6 +241,9 @@ class Walker {
             const std::uint32_t t = tag(end, false);
             const std::uint32_t length = u32(end, false);
             if (t == kSequenceEnd) {
+                if (length != 0) {
+                    failTag(t, "(a sequence delimiter) has a non-zero length");
+                }
                 return;
             }
             if (t != kItem || length == kUndefined || length > end - pos) {
