@@ -57,7 +57,7 @@ float ReferenceSolver::at(int i, int j, int k) const {
     return phi_[index(i, j, k)];
 }
 
-PhiStencil ReferenceSolver::stencil(int i, int j, int k) const {
+PhiStencil ReferenceSolver::faceStencil(int i, int j, int k) const {
     PhiStencil s;
     s.c = at(i, j, k);
     s.xm = at(i - 1, j, k);
@@ -66,6 +66,11 @@ PhiStencil ReferenceSolver::stencil(int i, int j, int k) const {
     s.yp = at(i, j + 1, k);
     s.zm = at(i, j, k - 1);
     s.zp = at(i, j, k + 1);
+    return s;
+}
+
+PhiStencil ReferenceSolver::stencil(int i, int j, int k) const {
+    PhiStencil s = faceStencil(i, j, k);
     s.xpyp = at(i + 1, j + 1, k);
     s.xpym = at(i + 1, j - 1, k);
     s.xmyp = at(i - 1, j + 1, k);
@@ -94,14 +99,7 @@ int ReferenceSolver::step(int n, float timeLimit) {
         for (int k = 0; k < dims_.z; ++k) {
             for (int j = 0; j < dims_.y; ++j) {
                 for (int i = 0; i < dims_.x; ++i) {
-                    PhiStencil s;
-                    s.c = at(i, j, k);
-                    s.xm = at(i - 1, j, k);
-                    s.xp = at(i + 1, j, k);
-                    s.ym = at(i, j - 1, k);
-                    s.yp = at(i, j + 1, k);
-                    s.zm = at(i, j, k - 1);
-                    s.zp = at(i, j, k + 1);
+                    const PhiStencil s = faceStencil(i, j, k);
                     if (inNarrowBand(s)) {
                         band.push_back(index(i, j, k));
                         const float d = thresholdSpeed(intensities_[band.back()], params_);

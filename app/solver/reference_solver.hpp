@@ -36,6 +36,8 @@ class ReferenceSolver {
 
   private:
     [[nodiscard]] float at(int i, int j, int k) const;
+    // Centre and the six face neighbours (enough for the narrow-band test and up-wind terms).
+    [[nodiscard]] struct PhiStencil faceStencil(int i, int j, int k) const;
     [[nodiscard]] struct PhiStencil stencil(int i, int j, int k) const;
     [[nodiscard]] std::size_t index(int i, int j, int k) const;
 
