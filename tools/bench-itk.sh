@@ -7,6 +7,8 @@
 #   BENCH_ALPHA        alpha for every case (default 0.2)
 #   BENCH_CASES        space-separated case names (default: lung sts001-ct)
 #   BENCH_JOBS         build parallelism (default 2)
+#   BENCH_DENSE        1 (default) also runs steerseg --dense to convergence; 0 skips it (slow
+#                      on llvmpipe)
 #   STEERSEG_BINARY    a steerseg binary to compare instead of this checkout's build
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -88,7 +90,9 @@ for name in $cases; do
   ss_cell="n/a"; dense_cell="n/a"; speedup="n/a"; d_pair="n/a"; d_ss_expert="n/a"
   fixed_cell="n/a"; fixed_speedup="n/a"; d_fixed="n/a"
   if ((have_segment)); then
-    for variant in sparse dense; do
+    variants=(sparse)
+    [[ ${BENCH_DENSE:-1} == 1 ]] && variants+=(dense)
+    for variant in "${variants[@]}"; do
       extra=()
       [[ $variant == dense ]] && extra=(--dense)
       echo "bench-itk: $name: steerseg ($variant) to convergence" >&2
@@ -98,7 +102,7 @@ for name in $cases; do
     r=$dir/steerseg-sparse.json
     ss_cell="$(json "$r" iterations) / $(fmt 3 "$(json "$r" evolved_time)") / $(fmt 2 "$(json "$r" solve_seconds)")"
     r=$dir/steerseg-dense.json
-    dense_cell="$(json "$r" iterations) / $(fmt 3 "$(json "$r" evolved_time)") / $(fmt 2 "$(json "$r" solve_seconds)")"
+    [[ -f $r ]] && dense_cell="$(json "$r" iterations) / $(fmt 3 "$(json "$r" evolved_time)") / $(fmt 2 "$(json "$r" solve_seconds)")"
     speedup="$(awk -v a="$itk_s" -v b="$(json "$dir/steerseg-sparse.json" solve_seconds)" 'BEGIN { printf "%.1fx", a / b }')"
     d_pair=$(dice_of "$dir/itk.nii.gz" "$dir/steerseg-sparse.nii.gz")
     d_ss_expert=$(dice_of "$dir/steerseg-sparse.nii.gz" "$expert")
