@@ -1,15 +1,16 @@
 // Frame time of the renderer's 3D and slice views at display sizes, on the built-in sample or
-// a scan file, with the level set drawn from a brick pool. Until the solver lands the pool is
-// the phantom lesion's analytic sphere packed by the test-only packer (tests/support), so
-// "with solver steps" is not measured here yet.
-//   render_frame_bench [--scan PATH] [--frames N] [--save DIR] [--docs DIR]
-// --save writes the last frame of each case as PNG; --docs only writes the README's four
-// 256x256 pictures of the scan and its sphere and exits.
+// a scan file, with the level set drawn straight from the solver's brick pool: once with the
+// surface still, once with one solver iteration between frames (the interactive case).
+//   render_frame_bench [--scan PATH] [--frames N] [--size WxH] [--save DIR] [--docs DIR]
+// The sample's lesion is segmented from a seed at its centre (T and eps around its intensity);
+// another scan gets a sphere at its centre. --size replaces the two display sizes (1280x800,
+// 1920x1080) by one; --save writes the last frame of each case as PNG; --docs only writes the
+// README's four 256x256 pictures and exits.
 #include "core/sample_phantom.hpp"
 #include "io/scan_reader.hpp"
 #include "platform/egl/gpu_context.hpp"
 #include "render/renderer.hpp"
-#include "support/pool_packer.hpp"
+#include "solver/level_set_solver.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -26,14 +27,20 @@ using namespace steerseg;
 struct Case {
     const char* name;
     render::ViewKind kind;
-    glm::ivec2 size;
     bool surface;
     bool clip;
+    bool stepping; // one solver iteration before each frame
 };
 
-double frameMs(render::Renderer& renderer, const render::ViewParams& p, const BrickPoolView* pool) {
+// One frame: optionally a solver iteration, then the view of the current level set.
+double frameMs(render::Renderer& renderer, const render::ViewParams& p, LevelSetSolver* solver,
+               bool stepping) {
     const auto start = std::chrono::steady_clock::now();
-    renderer.render(p, pool);
+    if (solver != nullptr && stepping) {
+        solver->step(1);
+    }
+    const BrickPoolView view = solver != nullptr ? solver->poolView() : BrickPoolView{};
+    renderer.render(p, solver != nullptr ? &view : nullptr);
     glFinish();
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();
@@ -70,6 +77,7 @@ void writeDocImages(render::Renderer& renderer, const BrickPoolView& view, const
 int main(int argc, char** argv) {
     std::string scanPath = io::kBuiltinSample;
     int frames = 3;
+    std::vector<glm::ivec2> sizes = {{1280, 800}, {1920, 1080}};
     std::filesystem::path saveDir;
     std::filesystem::path docsDir;
     for (int n = 1; n + 1 < argc; n += 2) {
@@ -78,6 +86,15 @@ int main(int argc, char** argv) {
             scanPath = argv[n + 1];
         } else if (key == "--frames") {
             frames = std::clamp(std::atoi(argv[n + 1]), 1, 1000);
+        } else if (key == "--size") {
+            int w = 0;
+            int h = 0;
+            if (std::sscanf(argv[n + 1], "%dx%d", &w, &h) != 2 || w < 1 || h < 1 || w > 8192 ||
+                h > 8192) {
+                std::fprintf(stderr, "render_frame_bench: --size expects WxH\n");
+                return 2;
+            }
+            sizes = {{w, h}};
         } else if (key == "--save") {
             saveDir = argv[n + 1];
         } else if (key == "--docs") {
@@ -85,7 +102,8 @@ int main(int argc, char** argv) {
         } else {
             std::fprintf(
                 stderr,
-                "usage: render_frame_bench [--scan PATH] [--frames N] [--save DIR] [--docs DIR]\n");
+                "usage: render_frame_bench [--scan PATH] [--frames N] [--size WxH] [--save DIR] "
+                "[--docs DIR]\n");
             return 2;
         }
     }
@@ -97,60 +115,60 @@ int main(int argc, char** argv) {
                     reinterpret_cast<const char*>(glGetString(GL_RENDERER)), scanPath.c_str(),
                     g.dims.x, g.dims.y, g.dims.z);
         render::Renderer renderer(scan.volume);
-        // A sphere around the sample's lesion (or the volume's centre for another scan).
+        LevelSetSolver solver(scan.volume);
         glm::dvec3 centre = 0.5 * glm::dvec3(g.dims - 1);
-        double radius = 0.15 * std::min({g.dims.x, g.dims.y, g.dims.z});
         if (scanPath == io::kBuiltinSample) {
             centre = {kPhantomLesion.i, kPhantomLesion.j, kPhantomLesion.k};
-            radius = kPhantomLesion.radiusMm / std::min({g.spacing.x, g.spacing.y, g.spacing.z});
+            solver.addSphere({glm::vec3(centre), 5.0F});
+            solver.setParams({static_cast<float>(kPhantomLesion.intensity), 100.0F, 0.8F});
+            solver.runUntilConverged(2000);
+        } else {
+            const float r = 0.15F * static_cast<float>(std::min({g.dims.x, g.dims.y, g.dims.z}));
+            solver.addSphere({glm::vec3(centre), r});
+            const IntensityStats& st = scan.volume.stats();
+            solver.setParams(
+                {static_cast<float>(st.mean), static_cast<float>(st.max - st.min), 0.5F});
         }
-        // Round in millimetres, phi in units of the smallest spacing.
-        const double unit = std::min({g.spacing.x, g.spacing.y, g.spacing.z});
-        const std::vector<float> phi = test::densePhi(g.dims, [&](glm::ivec3 v) {
-            const double mm = glm::length((glm::dvec3(v) - centre) * g.spacing);
-            return static_cast<float>(mm / unit - radius);
-        });
-        test::GpuPool pool(test::packPhi(phi, g.dims, 8, 4.0F));
-        const BrickPoolView view = pool.view();
+        const BrickPoolView view = solver.poolView();
 
         if (!docsDir.empty()) {
             writeDocImages(renderer, view, centre, docsDir);
             return 0;
         }
         const Case cases[] = {
-            {"3d", render::ViewKind::Volume3d, {1280, 800}, false, false},
-            {"3d+surface", render::ViewKind::Volume3d, {1280, 800}, true, false},
-            {"3d+surface+clip", render::ViewKind::Volume3d, {1280, 800}, true, true},
-            {"axial+contour", render::ViewKind::Axial, {1280, 800}, true, false},
-            {"3d", render::ViewKind::Volume3d, {1920, 1080}, false, false},
-            {"3d+surface", render::ViewKind::Volume3d, {1920, 1080}, true, false},
-            {"3d+surface+clip", render::ViewKind::Volume3d, {1920, 1080}, true, true},
-            {"axial+contour", render::ViewKind::Axial, {1920, 1080}, true, false},
+            {"3d", render::ViewKind::Volume3d, false, false, false},
+            {"3d+surface", render::ViewKind::Volume3d, true, false, false},
+            {"3d+surface+clip", render::ViewKind::Volume3d, true, true, false},
+            {"3d+surface+solver", render::ViewKind::Volume3d, true, false, true},
+            {"axial+contour", render::ViewKind::Axial, true, false, false},
+            {"axial+solver", render::ViewKind::Axial, true, false, true},
         };
         std::setvbuf(stdout, nullptr, _IOLBF, 0); // progress shows while slow cases run
         std::printf("%-18s %-10s %10s %10s %8s\n", "view", "size", "min ms", "median ms", "fps");
-        for (const Case& c : cases) {
-            render::ViewParams p = renderer.defaultParams(c.kind, c.size);
-            p.slice = static_cast<int>(centre.z);
-            p.camera.orbit(20.0, 15.0);
-            if (c.clip) {
-                p.clip = {true, {0.0, -1.0, 0.0}, -centre.y};
-            }
-            const BrickPoolView* pv = c.surface ? &view : nullptr;
-            frameMs(renderer, p, pv); // warm-up: program build, first dispatch
-            std::vector<double> times;
-            for (int f = 0; f < frames; ++f) {
-                times.push_back(frameMs(renderer, p, pv));
-            }
-            std::sort(times.begin(), times.end());
-            const double median = times[times.size() / 2];
-            std::printf("%-18s %4dx%-5d %10.1f %10.1f %8.1f\n", c.name, c.size.x, c.size.y,
-                        times.front(), median, 1000.0 / median);
-            if (!saveDir.empty()) {
-                std::filesystem::create_directories(saveDir);
-                render::writeImage(
-                    saveDir / (std::string(c.name) + "_" + std::to_string(c.size.x) + ".png"),
-                    renderer.readback());
+        for (const glm::ivec2& size : sizes) {
+            for (const Case& c : cases) {
+                render::ViewParams p = renderer.defaultParams(c.kind, size);
+                p.slice = static_cast<int>(centre.z);
+                p.camera.orbit(20.0, 15.0);
+                if (c.clip) {
+                    p.clip = {true, {0.0, -1.0, 0.0}, -centre.y};
+                }
+                LevelSetSolver* s = c.surface ? &solver : nullptr;
+                frameMs(renderer, p, s, c.stepping); // warm-up: program build, first dispatch
+                std::vector<double> times;
+                for (int f = 0; f < frames; ++f) {
+                    times.push_back(frameMs(renderer, p, s, c.stepping));
+                }
+                std::sort(times.begin(), times.end());
+                const double median = times[times.size() / 2];
+                std::printf("%-18s %4dx%-5d %10.1f %10.1f %8.1f\n", c.name, size.x, size.y,
+                            times.front(), median, 1000.0 / median);
+                if (!saveDir.empty()) {
+                    std::filesystem::create_directories(saveDir);
+                    render::writeImage(
+                        saveDir / (std::string(c.name) + "_" + std::to_string(size.x) + ".png"),
+                        renderer.readback());
+                }
             }
         }
         return 0;
