@@ -12,6 +12,10 @@ extern "C" const char* __lsan_default_suppressions() {
            "libopenjp2.so\n";
 }
 
+extern "C" const char* __lsan_default_options() {
+    return "print_suppressions=0";
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static const std::filesystem::path file =
         std::filesystem::temp_directory_path() /
