@@ -22,6 +22,19 @@ constexpr Command kCommands[] = {
     {"gpu-info",
      "gpu-info [--platform auto|surfaceless|device]: print the GLES renderer and limits",
      steerseg::cli::runGpuInfo},
+    {"render",
+     "render --input SCAN --view 3d|axial|coronal|sagittal [--slice N] [--clip nx,ny,nz,d] [--roi "
+     "inside|dim|off] [--surface opaque|translucent|hidden] [--preset bone|soft|mr] [--window L,W] "
+     "[--camera anterior|lateral|superior] [--orbit YAW,PITCH] [--zoom F] [--pan R,U] [--speed --T "
+     "T --eps E] [--no-labels] [--mask MASK | --seed ... ] [--size WxH] --output PNG: draw one "
+     "view to an image",
+     steerseg::cli::runRender},
+    {"segment",
+     "segment --input PATH --seed i,j,k,r [--seed ...] [--erase i,j,k,r ...] --T v --eps v --alpha "
+     "a "
+     "(--iterations N | --time t | --converge [--max-iterations N]) [--dense] --output MASK "
+     "[--report REPORT.json]: level-set segmentation on the GPU",
+     steerseg::cli::runSegment},
 };
 
 void printUsage(std::FILE* out) {

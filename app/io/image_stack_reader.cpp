@@ -6,6 +6,7 @@
 // alpha is ignored. Spacing: 2D image files rarely carry a physical pixel size, and their DPI
 // (often a default 72) is about printing, so pixels are 1 mm unless the file gives a resolution
 // in pixels per centimetre (as microscopy TIFFs do); slices are 1 mm apart. Origin 0, axes LPS.
+#include "io/file_name.hpp"
 #include "io/load_checks.hpp"
 #include "io/readers.hpp"
 
@@ -25,13 +26,6 @@ namespace OIIO = OIIO_NAMESPACE;
 
 const std::set<std::string> kImageExtensions = {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".bmp",
                                                 ".pgm", ".ppm", ".pnm",  ".exr", ".webp", ".tga"};
-
-std::string lowerExtension(const std::filesystem::path& p) {
-    std::string e = p.extension().string();
-    std::transform(e.begin(), e.end(), e.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return e;
-}
 
 // "slice2" before "slice10": digit runs compare as numbers.
 bool naturalLess(const std::string& a, const std::string& b) {
@@ -198,7 +192,7 @@ std::vector<SliceSource> listSlices(const std::filesystem::path& path) {
         for (const auto& entry : std::filesystem::directory_iterator(path)) {
             const auto name = entry.path().filename().string();
             if (entry.is_regular_file() && !name.empty() && name.front() != '.' &&
-                kImageExtensions.count(lowerExtension(entry.path())) > 0) {
+                kImageExtensions.count(lowerCase(entry.path().extension().string())) > 0) {
                 files.push_back(entry.path());
             }
         }

@@ -3,6 +3,7 @@
 #include "io/mask_writer.hpp"
 
 #include "io/affine.hpp"
+#include "io/file_name.hpp"
 #include "io/file_write.hpp"
 #include "io/load_checks.hpp"
 #include "io/scan_reader.hpp"
@@ -17,18 +18,6 @@
 namespace steerseg::io {
 
 namespace {
-
-bool endsWith(const std::string& s, const std::string& suffix) {
-    return s.size() >= suffix.size() &&
-           s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-std::string lowerName(const std::filesystem::path& path) {
-    std::string name = path.filename().string();
-    std::transform(name.begin(), name.end(), name.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return name;
-}
 
 // Appends the voxels as 0/1 bytes in pieces, so that no second full-size copy is made.
 void appendMask(GzipWriter& writer, std::span<const std::uint8_t> mask) {
@@ -143,13 +132,13 @@ void writeMask(const std::filesystem::path& path, const Geometry& geometry,
                                   dimsText(geometry.dims) + " has " +
                                   std::to_string(geometry.voxelCount()));
     }
-    const std::string name = lowerName(path);
-    if (endsWith(name, ".nii.gz") || endsWith(name, ".nii")) {
+    const std::string name = lowerFileName(path);
+    if (hasSuffix(name, ".nii.gz") || hasSuffix(name, ".nii")) {
         if (std::max({geometry.dims.x, geometry.dims.y, geometry.dims.z}) > 32767) {
             throw ScanError(path, "NIfTI-1 holds at most 32767 voxels per axis; write .nrrd");
         }
         const auto header = niftiHeader(geometry);
-        if (endsWith(name, ".gz")) {
+        if (hasSuffix(name, ".gz")) {
             GzipWriter writer; // one gzip member holds header and voxels
             writer.append(header);
             appendMask(writer, mask);
@@ -160,7 +149,7 @@ void writeMask(const std::filesystem::path& path, const Geometry& geometry,
         }
         return;
     }
-    if (endsWith(name, ".nrrd")) {
+    if (hasSuffix(name, ".nrrd")) {
         const std::string header = nrrdHeader(geometry);
         GzipWriter writer;
         appendMask(writer, mask);

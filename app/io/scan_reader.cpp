@@ -1,6 +1,7 @@
 #include "io/scan_reader.hpp"
 
 #include "core/sample_phantom.hpp"
+#include "io/file_name.hpp"
 #include "io/readers.hpp"
 
 #include <algorithm>
@@ -13,18 +14,6 @@ ScanError::ScanError(const std::filesystem::path& path, const std::string& probl
     : std::runtime_error(path.string() + ": " + problem) {}
 
 namespace {
-
-std::string lowerName(const std::filesystem::path& path) {
-    std::string name = path.filename().string();
-    std::transform(name.begin(), name.end(), name.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return name;
-}
-
-bool endsWith(const std::string& s, const std::string& suffix) {
-    return s.size() >= suffix.size() &&
-           s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
 
 bool folderHoldsDicom(const std::filesystem::path& dir) {
     std::error_code ec;
@@ -68,29 +57,33 @@ LoadedScan readScan(const std::filesystem::path& path, const ReadLimits& limits)
     if (!std::filesystem::is_regular_file(status)) {
         throw ScanError(path, "not a regular file");
     }
-    const std::string name = lowerName(path);
-    if (endsWith(name, ".nii") || endsWith(name, ".nii.gz")) {
+    const std::string name = lowerFileName(path);
+    if (hasSuffix(name, ".nii") || hasSuffix(name, ".nii.gz")) {
         std::string format;
         Volume v = readNifti(path, limits, format);
         return {std::move(v), format};
     }
-    if (endsWith(name, ".nrrd") || endsWith(name, ".nhdr")) {
+    if (hasSuffix(name, ".nrrd") || hasSuffix(name, ".nhdr")) {
         return {readNrrd(path, limits), "nrrd"};
     }
-    if (endsWith(name, ".mha") || endsWith(name, ".mhd")) {
+    if (hasSuffix(name, ".mha") || hasSuffix(name, ".mhd")) {
         return {readMetaImage(path, limits), "metaimage"};
     }
-    if (endsWith(name, ".mgz") || endsWith(name, ".mgh")) {
+    if (hasSuffix(name, ".mgz") || hasSuffix(name, ".mgh")) {
         return {readMgz(path, limits), "mgz"};
     }
-    if (endsWith(name, ".dcm") || looksLikeDicom(path)) {
+    if (hasSuffix(name, ".dcm") || looksLikeDicom(path)) {
         return {readDicom(path, limits), "dicom"};
     }
-    if (endsWith(name, ".tif") || endsWith(name, ".tiff")) {
-        return {readImageStack(path, limits), "image-stack"};
+    // A multi-page TIFF is a stack; any other single 2D image is a one-slice volume.
+    for (const char* ext : {".tif", ".tiff", ".png", ".jpg", ".jpeg", ".bmp", ".pgm", ".ppm",
+                            ".pnm", ".exr", ".webp", ".tga"}) {
+        if (hasSuffix(name, ext)) {
+            return {readImageStack(path, limits), "image-stack"};
+        }
     }
     throw ScanError(path, "unrecognised scan format (expected DICOM, .nii[.gz], .nrrd/.nhdr, "
-                          ".mha/.mhd, .mgz/.mgh, .tif[f] or a folder of images)");
+                          ".mha/.mhd, .mgz/.mgh, .tif[f], a 2D image or a folder of images)");
 }
 
 } // namespace steerseg::io

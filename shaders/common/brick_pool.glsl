@@ -22,13 +22,21 @@
 #ifndef PHI_POOL_BINDING
 #define PHI_POOL_BINDING 1
 #endif
+// Readers leave these as they are; the solver's passes that allocate bricks define them empty
+// (before including this file) to write the page table and the pool.
+#ifndef PAGE_TABLE_ACCESS
+#define PAGE_TABLE_ACCESS readonly
+#endif
+#ifndef PHI_POOL_ACCESS
+#define PHI_POOL_ACCESS readonly
+#endif
 
 const uint BRICK_VOXELS = uint(BRICK_SIZE * BRICK_SIZE * BRICK_SIZE);
 const uint BRICK_INSIDE = 0xFFFFFFFEu;
 const uint BRICK_OUTSIDE = 0xFFFFFFFFu;
 
-layout(std430, binding = PAGE_TABLE_BINDING) readonly buffer PageTable { uint pageTable[]; };
-layout(std430, binding = PHI_POOL_BINDING) readonly buffer PhiPool { float phiPool[]; };
+layout(std430, binding = PAGE_TABLE_BINDING) PAGE_TABLE_ACCESS buffer PageTable { uint pageTable[]; };
+layout(std430, binding = PHI_POOL_BINDING) PHI_POOL_ACCESS buffer PhiPool { float phiPool[]; };
 
 uniform ivec3 volumeDims; // voxels
 uniform ivec3 brickGrid;  // bricks per axis = ceil(volumeDims / BRICK_SIZE)

@@ -11,6 +11,8 @@ std::optional<std::filesystem::path> dataDir() {
         dir = env;
     } else if (const char* src = std::getenv("STEERSEG_SOURCE_DIR"); src != nullptr) {
         dir = std::filesystem::path(src) / ".." / "shared" / "data";
+    } else if (const char* built = STEERSEG_DEFAULT_SOURCE_DIR; *built != '\0') {
+        dir = std::filesystem::path(built) / ".." / "shared" / "data";
     } else {
         return std::nullopt;
     }
@@ -36,7 +38,8 @@ std::optional<std::filesystem::path> dataPath(const std::filesystem::path& relat
 
 std::filesystem::path steersegBinary() {
     const char* env = std::getenv("STEERSEG_BINARY");
-    return env != nullptr ? std::filesystem::path(env) : std::filesystem::path("steerseg");
+    return env != nullptr ? std::filesystem::path(env)
+                          : std::filesystem::path(STEERSEG_DEFAULT_BINARY);
 }
 
 std::filesystem::path tempDir(const std::string& name) {

@@ -101,7 +101,8 @@ void writeFile(const std::filesystem::path& path, const std::string& text) {
 
 std::vector<std::byte> concat(const std::string& text, const std::vector<std::byte>& bytes) {
     std::vector<std::byte> out(text.size());
-    std::memcpy(out.data(), text.data(), text.size());
+    std::transform(text.begin(), text.end(), out.begin(),
+                   [](char c) { return static_cast<std::byte>(c); });
     out.insert(out.end(), bytes.begin(), bytes.end());
     return out;
 }

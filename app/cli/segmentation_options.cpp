@@ -1,0 +1,136 @@
+#include "cli/segmentation_options.hpp"
+
+#include "gpu/gl.hpp"
+
+#include <chrono>
+#include <stdexcept>
+
+namespace steerseg::cli {
+
+namespace {
+
+Sphere parseSphere(const std::string& text, const std::string& what) {
+    const std::vector<double> v = parseNumberList(text, 4, what);
+    return {glm::vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])),
+            static_cast<float>(v[3])};
+}
+
+RunMode parseRunMode(const Args& args) {
+    const auto iterations = args.integer("iterations");
+    const auto time = args.number("time");
+    const bool converge = args.flag("converge");
+    if (static_cast<int>(iterations.has_value()) + static_cast<int>(time.has_value()) +
+            static_cast<int>(converge) !=
+        1) {
+        throw UsageError("give exactly one of --iterations N, --time t, --converge");
+    }
+    const auto maxIterations = args.integer("max-iterations");
+    if (maxIterations && iterations) {
+        throw UsageError("--max-iterations goes with --time or --converge");
+    }
+    RunMode mode;
+    const long long count = maxIterations.value_or(iterations.value_or(100000));
+    if (count < 1 || count > 100000000) {
+        throw UsageError("iteration counts must be between 1 and 100000000");
+    }
+    mode.iterations = static_cast<int>(count);
+    if (time) {
+        if (*time < 0.0 || *time > 1e7) {
+            throw UsageError("--time must be between 0 and 1e7");
+        }
+        mode.kind = RunMode::Time;
+        mode.time = static_cast<float>(*time);
+    } else if (converge) {
+        mode.kind = RunMode::Converge;
+    }
+    return mode;
+}
+
+void checkInside(const std::vector<Sphere>& spheres, const glm::ivec3& dims, const char* what) {
+    for (const Sphere& s : spheres) {
+        try {
+            validateSphere(s, dims);
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(std::string(what) + ": " + e.what());
+        }
+    }
+}
+
+} // namespace
+
+std::vector<std::string> segmentationValueOptions() {
+    return {"seed", "erase",          "T",         "eps", "alpha", "iterations",
+            "time", "max-iterations", "brick-size"};
+}
+
+std::vector<std::string> segmentationFlagOptions() {
+    return {"converge", "dense"};
+}
+
+bool wantsSegmentation(const Args& args) {
+    return !args.values("seed").empty() || args.value("iterations") || args.value("time") ||
+           args.flag("converge") || args.value("alpha");
+}
+
+SegmentationRequest parseSegmentation(const Args& args) {
+    SegmentationRequest r;
+    r.params.T = static_cast<float>(parseNumber(args.required("T"), "--T"));
+    r.params.eps = static_cast<float>(parseNumber(args.required("eps"), "--eps"));
+    r.params.alpha = static_cast<float>(parseNumber(args.required("alpha"), "--alpha"));
+    try {
+        validateParams(r.params);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+    for (const std::string& s : args.values("seed")) {
+        r.seeds.push_back(parseSphere(s, "--seed"));
+    }
+    for (const std::string& s : args.values("erase")) {
+        r.erases.push_back(parseSphere(s, "--erase"));
+    }
+    if (r.seeds.empty()) {
+        throw UsageError("give at least one --seed i,j,k,r");
+    }
+    r.mode = parseRunMode(args);
+    r.options.dense = args.flag("dense");
+    const long long brick = args.integer("brick-size").value_or(0);
+    if (brick != 0 && brick != 4 && brick != 8 && brick != 16) {
+        throw UsageError("--brick-size must be 4, 8 or 16");
+    }
+    r.options.brickSize = static_cast<int>(brick);
+    return r;
+}
+
+void checkSpheresInside(const SegmentationRequest& request, const glm::ivec3& dims) {
+    checkInside(request.seeds, dims, "--seed");
+    checkInside(request.erases, dims, "--erase");
+}
+
+SegmentationRun runSegmentation(LevelSetSolver& solver, const SegmentationRequest& request) {
+    for (const Sphere& s : request.seeds) {
+        solver.addSphere(s);
+    }
+    for (const Sphere& s : request.erases) {
+        solver.removeSphere(s);
+    }
+    solver.setParams(request.params);
+    const auto start = std::chrono::steady_clock::now();
+    SegmentationRun run;
+    switch (request.mode.kind) {
+    case RunMode::Iterations:
+        run.result = solver.step(request.mode.iterations);
+        break;
+    case RunMode::Time:
+        run.result = solver.evolveUntil(request.mode.time, request.mode.iterations);
+        break;
+    case RunMode::Converge:
+        run.result = solver.runUntilConverged(request.mode.iterations);
+        break;
+    }
+    glFinish();
+    run.solveSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return run;
+}
+
+} // namespace steerseg::cli

@@ -1,0 +1,56 @@
+#pragma once
+
+#include "render/camera.hpp"
+#include "render/transfer_function.hpp"
+
+#include <glm/glm.hpp>
+
+namespace steerseg::render {
+
+enum class ViewKind { Volume3d, Axial, Coronal, Sagittal };
+// How the level-set surface acts as a region of interest for the scan's volume rendering.
+enum class RoiMode { Off, Inside, Dim };
+enum class SurfaceMode { Hidden, Opaque, Translucent };
+// What a slice view shows under the contour: the scan, or the data term of the speed function.
+enum class SliceContent { Scan, Speed };
+
+// Display mapping of real-unit intensities to grey: [level - width/2, level + width/2] -> [0, 1].
+struct WindowLevel {
+    double level = 0.0;
+    double width = 1.0;
+};
+
+// The clipping plane n . (i, j, k) = d in voxel indices; the half-space n . p > d is cut away.
+struct ClipPlane {
+    bool enabled = false;
+    glm::dvec3 normal{0.0, 0.0, 1.0};
+    double d = 0.0;
+};
+
+// The data term of the segmentation speed, D(I) = eps - |I - T| (real units).
+struct SpeedParams {
+    double target = 0.0;  // T
+    double epsilon = 1.0; // eps
+};
+
+// Everything one frame depends on. Plain data so the UI can keep one per view.
+struct ViewParams {
+    ViewKind kind = ViewKind::Volume3d;
+    glm::ivec2 size{256, 256};
+    Camera camera;              // 3D view
+    TransferFunction transfer;  // 3D view
+    WindowLevel window;         // slices and the textured clip plane
+    ClipPlane clip;             // 3D view
+    RoiMode roi = RoiMode::Off; // 3D view
+    SurfaceMode surface = SurfaceMode::Opaque;
+    float dimFactor = 0.15F; // RoiMode::Dim: opacity kept outside the surface
+    int slice = -1;          // slice views: index along the view's axis; -1 = middle
+    double zoom = 1.0;       // slice views: 1 = the slice fits the image
+    glm::dvec2 pan{0.0};     // slice views: centre offset in mm (screen right, up)
+    SliceContent content = SliceContent::Scan;
+    SpeedParams speed;
+    bool contour = true; // slice views: yellow contour of phi = 0
+    bool labels = true;  // slice views: orientation letters
+};
+
+} // namespace steerseg::render

@@ -1,0 +1,26 @@
+#pragma once
+
+#include "gpu/gl_handle.hpp"
+#include "render/image.hpp"
+
+#include <glm/glm.hpp>
+
+namespace steerseg::render {
+
+// The RGBA8 image the compute shaders write (immutable storage, so it can be bound as an
+// image); reallocated when the size changes. Read back for files, or sampled by a UI.
+class RenderTarget {
+  public:
+    void ensureSize(const glm::ivec2& size);
+    [[nodiscard]] GLuint texture() const { return texture_.id(); }
+    [[nodiscard]] glm::ivec2 size() const { return size_; }
+    // Waits for the GPU and copies the picture out (row 0 = top).
+    [[nodiscard]] RgbaImage readback() const;
+
+  private:
+    gpu::Texture texture_;
+    gpu::Framebuffer framebuffer_;
+    glm::ivec2 size_{0};
+};
+
+} // namespace steerseg::render

@@ -1,0 +1,49 @@
+#pragma once
+
+#include "core/volume.hpp"
+#include "gpu/gl_handle.hpp"
+#include "render/render_params.hpp"
+#include "render/render_target.hpp"
+#include "render/scan_texture.hpp"
+#include "render/slice_view.hpp"
+#include "render/volume_view.hpp"
+#include "solver/brick_pool_view.hpp"
+
+#include <optional>
+
+namespace steerseg::render {
+
+// The renderer of one scan: the scan on the GPU, the 3D view and the slice views, and the
+// picture they draw into. Every call saves and restores the GL state it touches, so a UI can
+// draw on top in the same context. Needs a current GLES 3.1 context for its whole life.
+class Renderer {
+  public:
+    explicit Renderer(const Volume& scan);
+
+    // Draws one view into target(); `pool` is the level set (the solver's poolView(), valid
+    // for this call) or null for the scan alone. Returns the slice frame for slice views.
+    std::optional<SliceFrame> render(const ViewParams& params, const BrickPoolView* pool);
+
+    [[nodiscard]] const RenderTarget& target() const { return target_; }
+    [[nodiscard]] RgbaImage readback() const { return target_.readback(); }
+    [[nodiscard]] const Geometry& geometry() const { return geometry_; }
+    [[nodiscard]] const ScanTexture& scan() const { return scan_; }
+
+    // Default parameters for this scan: MR-style presets, anterior camera, middle slice.
+    [[nodiscard]] ViewParams defaultParams(ViewKind kind, const glm::ivec2& size) const;
+
+  private:
+    Geometry geometry_;
+    IntensityStats stats_;
+    ScanTexture scan_;
+    RenderTarget target_;
+    gpu::Buffer empty_;
+    VolumeView volume_;
+    SliceView slices_;
+};
+
+// World position of the volume's centre and the length of its diagonal (camera presets).
+glm::dvec3 volumeCentre(const Geometry& g);
+double volumeExtentMm(const Geometry& g);
+
+} // namespace steerseg::render

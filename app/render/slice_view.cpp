@@ -1,0 +1,48 @@
+#include "render/slice_view.hpp"
+
+#include "gpu/gl_error.hpp"
+
+#include <algorithm>
+#include <glm/gtc/type_ptr.hpp>
+#include <string_view>
+
+namespace steerseg::render {
+
+int glyphIndex(char side) {
+    constexpr std::string_view kFont = "AILPRS";
+    const auto at = kFont.find(side);
+    return at == std::string_view::npos ? -1 : static_cast<int>(at);
+}
+
+SliceFrame SliceView::draw(const RenderInputs& in, const ViewParams& params) {
+    const SliceFrame frame = sliceFrame(in.geometry, params);
+    const GLuint program = program_.get(in.pool);
+    glUseProgram(program);
+    bindCommon(program, in, params);
+    const glm::vec3 origin(frame.origin);
+    const glm::vec3 right(frame.stepRight);
+    const glm::vec3 down(frame.stepDown);
+    glUniform3fv(uniform(program, "sliceOrigin"), 1, glm::value_ptr(origin));
+    glUniform3fv(uniform(program, "sliceAxisU"), 1, glm::value_ptr(right));
+    glUniform3fv(uniform(program, "sliceAxisV"), 1, glm::value_ptr(down));
+    glUniform1i(uniform(program, "showSpeed"), params.content == SliceContent::Speed ? 1 : 0);
+    const double range = in.scan.rangeMax() - in.scan.rangeMin();
+    glUniform2f(uniform(program, "speedParams"),
+                static_cast<float>(in.scan.normalise(params.speed.target)),
+                static_cast<float>(params.speed.epsilon / range));
+    glUniform1i(uniform(program, "showContour"), params.contour ? 1 : 0);
+    if (params.labels) {
+        glUniform4i(uniform(program, "labelGlyphs"), glyphIndex(frame.labels[0]),
+                    glyphIndex(frame.labels[1]), glyphIndex(frame.labels[2]),
+                    glyphIndex(frame.labels[3]));
+    } else {
+        glUniform4i(uniform(program, "labelGlyphs"), -1, -1, -1, -1);
+    }
+    glUniform1i(uniform(program, "labelScale"),
+                std::max(1, std::min(params.size.x, params.size.y) / 160));
+    dispatchPixels(params.size);
+    gpu::checkGl("drawing a slice view");
+    return frame;
+}
+
+} // namespace steerseg::render

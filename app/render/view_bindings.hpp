@@ -1,0 +1,46 @@
+#pragma once
+
+#include "core/volume.hpp"
+#include "gpu/gl_handle.hpp"
+#include "gpu/program.hpp"
+#include "render/render_params.hpp"
+#include "render/render_target.hpp"
+#include "render/scan_texture.hpp"
+#include "solver/brick_pool_view.hpp"
+
+#include <string>
+
+namespace steerseg::render {
+
+// What both views read: the scan, its geometry, the level set (may be null), where to draw.
+struct RenderInputs {
+    const ScanTexture& scan;
+    const Geometry& geometry;
+    const BrickPoolView* pool;
+    GLuint emptyBuffer; // bound in place of the pool when there is none
+    const RenderTarget& target;
+};
+
+// A compute program built for the pool's BRICK_SIZE / PHI_FAR, rebuilt when they change.
+class PoolProgram {
+  public:
+    explicit PoolProgram(std::string shader) : shader_(std::move(shader)) {}
+    GLuint get(const BrickPoolView* pool);
+
+  private:
+    std::string shader_;
+    gpu::Program program_;
+    int brickSize_ = 0;
+    float phiFar_ = 0.0F;
+};
+
+// Binds the scan (texture unit 0), the pool SSBOs (0, 1), the target (image unit 0) and sets
+// the uniforms of shaders/render/view_common.glsl. The program must be current.
+void bindCommon(GLuint program, const RenderInputs& in, const ViewParams& params);
+
+// Dispatches one invocation per pixel (8x8 work groups) and orders the writes before reads.
+void dispatchPixels(const glm::ivec2& size);
+
+GLint uniform(GLuint program, const char* name);
+
+} // namespace steerseg::render

@@ -1,0 +1,335 @@
+#include "solver/gpu_brick_pool.hpp"
+
+#include "gpu/gl_error.hpp"
+#include "solver/level_set_params.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace steerseg::solver_detail {
+
+namespace {
+
+constexpr std::uint32_t kMinCapacity = 16;
+
+gpu::Buffer makeBuffer(std::size_t bytes, const void* data = nullptr) {
+    return gpu::createBuffer(GL_SHADER_STORAGE_BUFFER,
+                             static_cast<GLsizeiptr>(std::max<std::size_t>(bytes, 4)), data,
+                             GL_DYNAMIC_COPY);
+}
+
+void copyBuffer(const gpu::Buffer& from, const gpu::Buffer& to, std::size_t fromOffset,
+                std::size_t toOffset, std::size_t bytes) {
+    glBindBuffer(GL_COPY_READ_BUFFER, from.id());
+    glBindBuffer(GL_COPY_WRITE_BUFFER, to.id());
+    glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER,
+                        static_cast<GLintptr>(fromOffset), static_cast<GLintptr>(toOffset),
+                        static_cast<GLsizeiptr>(bytes));
+}
+
+void writeBuffer(const gpu::Buffer& b, std::size_t offset, const void* data, std::size_t bytes) {
+    if (bytes == 0) {
+        return;
+    }
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, b.id());
+    glBufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(offset),
+                    static_cast<GLsizeiptr>(bytes), data);
+}
+
+template <typename T> std::vector<T> readBuffer(const gpu::Buffer& b, std::size_t count) {
+    std::vector<T> out(count);
+    if (count == 0) {
+        return out;
+    }
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, b.id());
+    const void* mapped = glMapBufferRange(
+        GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(count * sizeof(T)), GL_MAP_READ_BIT);
+    if (mapped == nullptr) {
+        gpu::checkGl("mapping a solver buffer");
+        throw gpu::GlError("mapping a solver buffer failed");
+    }
+    std::memcpy(out.data(), mapped, count * sizeof(T));
+    glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+    return out;
+}
+
+} // namespace
+
+GpuBrickPool::GpuBrickPool(const glm::ivec3& dims, int brickSize, std::size_t maxBlockBytes)
+    : dims_(dims), grid_((dims + brickSize - 1) / brickSize), brickSize_(brickSize),
+      maxBlockBytes_(maxBlockBytes),
+      brickCount_(static_cast<std::uint32_t>(grid_.x * grid_.y * grid_.z)) {
+    if (static_cast<std::size_t>(brickCount_) * 4 > maxBlockBytes_ ||
+        maxBlockBytes_ < brickBytes()) {
+        throw std::runtime_error("volume too large for the GPU's shader storage block limit (" +
+                                 std::to_string(maxBlockBytes_ >> 20) + " MiB)");
+    }
+    const std::vector<std::uint32_t> outside(brickCount_, kBrickOutside);
+    pageTable_ = makeBuffer(brickCount_ * 4, outside.data());
+    requests_ = makeBuffer(brickCount_ * 4);
+    const std::vector<std::uint32_t> zeros(brickCount_, 0);
+    wantEpoch_ = makeBuffer(brickCount_ * 4, zeros.data());
+    const ControlBlock ctrl{};
+    control_ = makeBuffer(sizeof ctrl, &ctrl);
+}
+
+std::size_t GpuBrickPool::brickBytes() const {
+    return static_cast<std::size_t>(brickSize_) * static_cast<std::size_t>(brickSize_) *
+           static_cast<std::size_t>(brickSize_) * sizeof(float);
+}
+
+std::uint32_t GpuBrickPool::maxCapacity() const {
+    return static_cast<std::uint32_t>(
+        std::min<std::size_t>(brickCount_, maxBlockBytes_ / brickBytes()));
+}
+
+std::size_t GpuBrickPool::levelSetBytes() const {
+    return 2 * static_cast<std::size_t>(capacity_) * brickBytes() +
+           static_cast<std::size_t>(brickCount_) * 4;
+}
+
+std::size_t GpuBrickPool::bookkeepingBytes() const {
+    return static_cast<std::size_t>(capacity_) * 4 * 4 +
+           static_cast<std::size_t>(brickCount_) * 4 * 2 + sizeof(ControlBlock);
+}
+
+void GpuBrickPool::allocateSlotBuffers(std::uint32_t capacity) {
+    capacity_ = capacity;
+    phi_[0] = makeBuffer(capacity * brickBytes());
+    phi_[1] = makeBuffer(capacity * brickBytes());
+    slotBrick_ = makeBuffer(capacity * 4);
+    freeList_ = makeBuffer(capacity * 4);
+    activeList_ = makeBuffer(capacity * 4);
+    slotState_ = makeBuffer(capacity * 4);
+    current_ = 0;
+}
+
+void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
+    const int b = brickSize_;
+    const std::size_t bv = brickBytes() / sizeof(float);
+    auto at = [&](int i, int j, int k) {
+        i = std::min(i, dims_.x - 1);
+        j = std::min(j, dims_.y - 1);
+        k = std::min(k, dims_.z - 1);
+        return phi[static_cast<std::size_t>(i) +
+                   static_cast<std::size_t>(dims_.x) *
+                       (static_cast<std::size_t>(j) +
+                        static_cast<std::size_t>(dims_.y) * static_cast<std::size_t>(k))];
+    };
+    std::vector<std::uint32_t> page(brickCount_, kBrickOutside);
+    std::vector<std::uint32_t> usedBricks;
+    for (std::uint32_t n = 0; n < brickCount_; ++n) {
+        const glm::ivec3 o =
+            glm::ivec3(static_cast<int>(n) % grid_.x, (static_cast<int>(n) / grid_.x) % grid_.y,
+                       static_cast<int>(n) / (grid_.x * grid_.y)) *
+            b;
+        bool negative = false;
+        bool positive = false;
+        bool live = false;
+        for (int k = o.z; k < std::min(o.z + b, dims_.z); ++k) {
+            for (int j = o.y; j < std::min(o.y + b, dims_.y); ++j) {
+                for (int i = o.x; i < std::min(o.x + b, dims_.x); ++i) {
+                    const float p = at(i, j, k);
+                    live = live || std::abs(p) < kPhiFar;
+                    negative = negative || p < 0.0F;
+                    positive = positive || p >= 0.0F;
+                }
+            }
+        }
+        if (dense || live || (negative && positive)) {
+            page[n] = static_cast<std::uint32_t>(usedBricks.size());
+            usedBricks.push_back(n);
+        } else {
+            page[n] = negative ? kBrickInside : kBrickOutside;
+        }
+    }
+    const auto used = static_cast<std::uint32_t>(usedBricks.size());
+    if (used > maxCapacity()) {
+        throw std::runtime_error("the level set needs " + std::to_string(used) +
+                                 " bricks, more than the GPU's storage block holds (" +
+                                 std::to_string(maxCapacity()) + ")");
+    }
+    const std::uint32_t capacity =
+        dense ? brickCount_ : std::min(maxCapacity(), std::max(kMinCapacity, used + used / 2 + 16));
+    allocateSlotBuffers(capacity);
+
+    std::vector<float> pool(static_cast<std::size_t>(capacity) * bv, kPhiFar);
+    std::vector<std::uint32_t> slotBrick(capacity, kNoBrick);
+    for (std::uint32_t s = 0; s < used; ++s) {
+        const std::uint32_t n = usedBricks[s];
+        slotBrick[s] = n;
+        const glm::ivec3 o =
+            glm::ivec3(static_cast<int>(n) % grid_.x, (static_cast<int>(n) / grid_.x) % grid_.y,
+                       static_cast<int>(n) / (grid_.x * grid_.y)) *
+            b;
+        std::size_t v = s * bv;
+        for (int k = 0; k < b; ++k) {
+            for (int j = 0; j < b; ++j) {
+                for (int i = 0; i < b; ++i) {
+                    pool[v++] = at(o.x + i, o.y + j, o.z + k);
+                }
+            }
+        }
+    }
+    std::vector<std::uint32_t> freeList;
+    for (std::uint32_t s = capacity; s > used; --s) {
+        freeList.push_back(s - 1);
+    }
+    writeBuffer(phi_[current_], 0, pool.data(), pool.size() * sizeof(float));
+    writeBuffer(slotBrick_, 0, slotBrick.data(), slotBrick.size() * 4);
+    writeBuffer(freeList_, 0, freeList.data(), freeList.size() * 4);
+    writeBuffer(pageTable_, 0, page.data(), page.size() * 4);
+
+    ControlBlock ctrl = readControl();
+    ctrl.requestCount = 0;
+    ctrl.activeCount = 0;
+    ctrl.popped = 0;
+    ctrl.stalled = 0;
+    ctrl.freeCount = capacity - used;
+    writeControl(ctrl);
+    gpu::checkGl("uploading the level set");
+}
+
+std::vector<float> GpuBrickPool::download() const {
+    const auto page = readBuffer<std::uint32_t>(pageTable_, brickCount_);
+    const std::size_t bv = brickBytes() / sizeof(float);
+    const auto pool = readBuffer<float>(phi_[current_], capacity_ * bv);
+    std::vector<float> phi(static_cast<std::size_t>(dims_.x) * static_cast<std::size_t>(dims_.y) *
+                           static_cast<std::size_t>(dims_.z));
+    const int b = brickSize_;
+    for (int k = 0; k < dims_.z; ++k) {
+        for (int j = 0; j < dims_.y; ++j) {
+            for (int i = 0; i < dims_.x; ++i) {
+                const auto brick =
+                    static_cast<std::size_t>(i / b + grid_.x * (j / b + grid_.y * (k / b)));
+                const std::uint32_t slot = page[brick];
+                float value = kPhiFar;
+                if (slot == kBrickInside) {
+                    value = -kPhiFar;
+                } else if (slot != kBrickOutside) {
+                    value = pool[slot * bv +
+                                 static_cast<std::size_t>(i % b + b * (j % b + b * (k % b)))];
+                }
+                phi[static_cast<std::size_t>(i) +
+                    static_cast<std::size_t>(dims_.x) *
+                        (static_cast<std::size_t>(j) +
+                         static_cast<std::size_t>(dims_.y) * static_cast<std::size_t>(k))] = value;
+            }
+        }
+    }
+    return phi;
+}
+
+void GpuBrickPool::grow(std::uint32_t newCapacity, const ControlBlock& ctrl) {
+    newCapacity = std::min(newCapacity, maxCapacity());
+    if (newCapacity <= capacity_) {
+        return;
+    }
+    const std::uint32_t old = capacity_;
+    gpu::Buffer oldPhi = std::move(phi_[current_]);
+    gpu::Buffer oldSlotBrick = std::move(slotBrick_);
+    gpu::Buffer oldFree = std::move(freeList_);
+    gpu::Buffer oldState = std::move(slotState_);
+    allocateSlotBuffers(newCapacity);
+    copyBuffer(oldPhi, phi_[current_], 0, 0, old * brickBytes());
+    copyBuffer(oldSlotBrick, slotBrick_, 0, 0, old * 4);
+    copyBuffer(oldState, slotState_, 0, 0, old * 4);
+    copyBuffer(oldFree, freeList_, 0, 0, ctrl.freeCount * 4);
+    const std::vector<std::uint32_t> none(newCapacity - old, kNoBrick);
+    writeBuffer(slotBrick_, old * 4, none.data(), none.size() * 4);
+    std::vector<std::uint32_t> added;
+    for (std::uint32_t s = newCapacity; s > old; --s) {
+        added.push_back(s - 1);
+    }
+    writeBuffer(freeList_, ctrl.freeCount * 4, added.data(), added.size() * 4);
+    ControlBlock next = ctrl;
+    next.freeCount += static_cast<std::uint32_t>(added.size());
+    next.stalled = 0;
+    writeControl(next);
+    gpu::checkGl("growing the brick pool");
+}
+
+void GpuBrickPool::shrink(std::uint32_t newCapacity, const ControlBlock& ctrl) {
+    const std::uint32_t used = capacity_ - ctrl.freeCount;
+    newCapacity = std::max({newCapacity, used, kMinCapacity});
+    if (newCapacity >= capacity_) {
+        return;
+    }
+    // Plan on the CPU from the small slot map; the bricks themselves move on the GPU.
+    auto slotBrick = readBuffer<std::uint32_t>(slotBrick_, capacity_);
+    auto state = readBuffer<std::uint32_t>(slotState_, capacity_);
+    auto page = readBuffer<std::uint32_t>(pageTable_, brickCount_);
+    std::vector<std::uint32_t> lowFree;
+    for (std::uint32_t s = 0; s < newCapacity; ++s) {
+        if (slotBrick[s] == kNoBrick) {
+            lowFree.push_back(s);
+        }
+    }
+    std::size_t nextFree = 0;
+    for (std::uint32_t s = newCapacity; s < capacity_; ++s) {
+        if (slotBrick[s] == kNoBrick) {
+            continue;
+        }
+        const std::uint32_t to = lowFree[nextFree++];
+        copyBuffer(phi_[current_], phi_[current_], s * brickBytes(), to * brickBytes(),
+                   brickBytes());
+        slotBrick[to] = slotBrick[s];
+        state[to] = state[s];
+        page[slotBrick[s]] = to;
+    }
+    std::vector<std::uint32_t> freeList(lowFree.begin() + static_cast<std::ptrdiff_t>(nextFree),
+                                        lowFree.end());
+    gpu::Buffer oldPhi = std::move(phi_[current_]);
+    allocateSlotBuffers(newCapacity);
+    copyBuffer(oldPhi, phi_[current_], 0, 0, newCapacity * brickBytes());
+    writeBuffer(slotBrick_, 0, slotBrick.data(), newCapacity * 4);
+    writeBuffer(slotState_, 0, state.data(), newCapacity * 4);
+    writeBuffer(freeList_, 0, freeList.data(), freeList.size() * 4);
+    writeBuffer(pageTable_, 0, page.data(), page.size() * 4);
+    ControlBlock next = ctrl;
+    next.freeCount = static_cast<std::uint32_t>(freeList.size());
+    writeControl(next);
+    gpu::checkGl("shrinking the brick pool");
+}
+
+void GpuBrickPool::bind() const {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPageTable, pageTable_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPhiPool, phi_[current_].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPhiNext, phi_[current_ ^ 1].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kControl, control_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSlotBrick, slotBrick_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFreeList, freeList_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kActiveList, activeList_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRequests, requests_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWantEpoch, wantEpoch_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSlotState, slotState_.id());
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, control_.id());
+}
+
+ControlBlock GpuBrickPool::readControl() const {
+    const auto words = readBuffer<std::uint32_t>(control_, sizeof(ControlBlock) / 4);
+    ControlBlock ctrl{};
+    std::memcpy(&ctrl, words.data(), sizeof ctrl);
+    return ctrl;
+}
+
+void GpuBrickPool::writeControl(const ControlBlock& ctrl) {
+    writeBuffer(control_, 0, &ctrl, sizeof ctrl);
+}
+
+BrickPoolView GpuBrickPool::view() const {
+    BrickPoolView v;
+    v.pageTableBuffer = pageTable_.id();
+    v.phiPoolBuffer = phi_[current_].id();
+    v.volumeDims = dims_;
+    v.brickGrid = grid_;
+    v.brickSize = brickSize_;
+    v.phiFar = kPhiFar;
+    return v;
+}
+
+} // namespace steerseg::solver_detail

@@ -1,0 +1,108 @@
+#pragma once
+
+#include "gpu/gl_handle.hpp"
+#include "solver/brick_pool_view.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <span>
+#include <vector>
+
+namespace steerseg::solver_detail {
+
+// Binding points of shaders/solver/solver_common.glsl (0 and 1 from common/brick_pool.glsl).
+enum Binding : GLuint {
+    kPageTable = 0,
+    kPhiPool = 1,
+    kPhiNext = 2,
+    kControl = 3,
+    kSlotBrick = 4,
+    kFreeList = 5,
+    kActiveList = 6,
+    kRequests = 7,
+    kWantEpoch = 8,
+    kSlotState = 9,
+};
+
+// Host mirror of solver_common.glsl's Control block (std430, 4-byte members).
+struct ControlBlock {
+    std::uint32_t allocArgs[3];
+    std::uint32_t brickArgs[3];
+    std::uint32_t listArgs[3];
+    std::uint32_t requestCount;
+    std::uint32_t activeCount;
+    std::uint32_t freeCount;
+    std::uint32_t popped;
+    std::uint32_t stalled;
+    std::uint32_t maxRateBits;
+    float dt;
+    float time;
+    std::uint32_t iteration;
+    std::uint32_t lastChange;
+    float lastChangeTime;
+    std::uint32_t peakActive;
+};
+static_assert(sizeof(ControlBlock) == 21 * 4);
+
+inline constexpr std::uint32_t kNoBrick = 0xFFFFFFFFu;
+
+// The sparse level-set storage on the GPU: page table, the two phi pools (current / next), and
+// the bookkeeping the passes share (slot -> brick, free list, active list, requests, states).
+// Capacity changes copy on the GPU; only a shrink reads the small slot map back to plan moves.
+class GpuBrickPool {
+  public:
+    // Throws std::runtime_error if the page table alone exceeds the storage block limit.
+    GpuBrickPool(const glm::ivec3& dims, int brickSize, std::size_t maxBlockBytes);
+
+    // Replaces the level set by a dense phi (uniform bricks become constants). `dense`: every
+    // brick gets a slot (the dense benchmark mode). Resets the control block.
+    void upload(std::span<const float> phi, bool dense);
+    // Dense phi of the current buffer (tests, mask output; not per iteration).
+    [[nodiscard]] std::vector<float> download() const;
+
+    // Grows to newCapacity slots, copying on the GPU; `ctrl` must be fresh.
+    void grow(std::uint32_t newCapacity, const ControlBlock& ctrl);
+    // Moves used slots below newCapacity (GPU copies) and drops the rest.
+    void shrink(std::uint32_t newCapacity, const ControlBlock& ctrl);
+
+    void bind() const;
+    void swapPhi() { current_ ^= 1; }
+
+    [[nodiscard]] ControlBlock readControl() const;
+    void writeControl(const ControlBlock& ctrl);
+
+    [[nodiscard]] std::uint32_t capacity() const { return capacity_; }
+    [[nodiscard]] std::uint32_t maxCapacity() const;
+    [[nodiscard]] std::uint32_t brickCount() const { return brickCount_; }
+    [[nodiscard]] std::size_t brickBytes() const;
+    // Both phi pools plus the page table.
+    [[nodiscard]] std::size_t levelSetBytes() const;
+    // Slot map, free and active lists, states, requests and epochs.
+    [[nodiscard]] std::size_t bookkeepingBytes() const;
+    [[nodiscard]] BrickPoolView view() const;
+    [[nodiscard]] const glm::ivec3& brickGrid() const { return grid_; }
+    [[nodiscard]] int brickSize() const { return brickSize_; }
+
+  private:
+    void allocateSlotBuffers(std::uint32_t capacity);
+
+    glm::ivec3 dims_;
+    glm::ivec3 grid_;
+    int brickSize_;
+    std::size_t maxBlockBytes_;
+    std::uint32_t brickCount_;
+    std::uint32_t capacity_ = 0;
+    int current_ = 0;
+    gpu::Buffer pageTable_;
+    gpu::Buffer phi_[2];
+    gpu::Buffer control_;
+    gpu::Buffer slotBrick_;
+    gpu::Buffer freeList_;
+    gpu::Buffer activeList_;
+    gpu::Buffer requests_;
+    gpu::Buffer wantEpoch_;
+    gpu::Buffer slotState_;
+};
+
+} // namespace steerseg::solver_detail

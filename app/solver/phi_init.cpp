@@ -1,0 +1,107 @@
+#include "solver/phi_init.hpp"
+
+#include "solver/phi_stencil.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace steerseg {
+
+namespace {
+
+std::size_t voxelCount(const glm::ivec3& d) {
+    return static_cast<std::size_t>(d.x) * static_cast<std::size_t>(d.y) *
+           static_cast<std::size_t>(d.z);
+}
+
+std::size_t linear(const glm::ivec3& d, int i, int j, int k) {
+    return static_cast<std::size_t>(i) +
+           static_cast<std::size_t>(d.x) *
+               (static_cast<std::size_t>(j) +
+                static_cast<std::size_t>(d.y) * static_cast<std::size_t>(k));
+}
+
+} // namespace
+
+std::vector<float> maskToPhi(std::span<const std::uint8_t> mask, const glm::ivec3& d) {
+    if (mask.size() != voxelCount(d)) {
+        throw std::invalid_argument("mask has " + std::to_string(mask.size()) +
+                                    " voxels but the volume has " + std::to_string(voxelCount(d)));
+    }
+    // |phi| starts clamped; each boundary voxel (a face neighbour has the other label) lowers
+    // |phi| of the other label's voxels within reach. Cost follows the surface, not the volume.
+    std::vector<float> magnitude(mask.size(), kPhiFar);
+    const int reach = static_cast<int>(std::ceil(kPhiFar + 0.5F));
+    auto label = [&](int i, int j, int k) { return mask[linear(d, i, j, k)] != 0; };
+    for (int k = 0; k < d.z; ++k) {
+        for (int j = 0; j < d.y; ++j) {
+            for (int i = 0; i < d.x; ++i) {
+                const bool in = label(i, j, k);
+                const bool boundary = (i > 0 && label(i - 1, j, k) != in) ||
+                                      (i + 1 < d.x && label(i + 1, j, k) != in) ||
+                                      (j > 0 && label(i, j - 1, k) != in) ||
+                                      (j + 1 < d.y && label(i, j + 1, k) != in) ||
+                                      (k > 0 && label(i, j, k - 1) != in) ||
+                                      (k + 1 < d.z && label(i, j, k + 1) != in);
+                if (!boundary) {
+                    continue;
+                }
+                for (int c = std::max(0, k - reach); c <= std::min(d.z - 1, k + reach); ++c) {
+                    for (int b = std::max(0, j - reach); b <= std::min(d.y - 1, j + reach); ++b) {
+                        for (int a = std::max(0, i - reach); a <= std::min(d.x - 1, i + reach);
+                             ++a) {
+                            if (label(a, b, c) == in) {
+                                continue;
+                            }
+                            const float dist =
+                                std::sqrt(static_cast<float>((a - i) * (a - i) + (b - j) * (b - j) +
+                                                             (c - k) * (c - k))) -
+                                0.5F;
+                            float& m = magnitude[linear(d, a, b, c)];
+                            m = std::min(m, dist);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    std::vector<float> phi(mask.size());
+    for (std::size_t n = 0; n < mask.size(); ++n) {
+        phi[n] = mask[n] != 0 ? -magnitude[n] : magnitude[n];
+    }
+    return phi;
+}
+
+std::vector<std::uint8_t> thresholdMask(std::span<const float> values, float lo, float hi) {
+    if (std::isnan(lo) || std::isnan(hi) || lo > hi) {
+        throw std::invalid_argument("threshold range [" + std::to_string(lo) + ", " +
+                                    std::to_string(hi) + "] is empty");
+    }
+    std::vector<std::uint8_t> mask(values.size());
+    std::transform(values.begin(), values.end(), mask.begin(),
+                   [&](float v) { return static_cast<std::uint8_t>(v >= lo && v <= hi); });
+    return mask;
+}
+
+void applySphere(std::vector<float>& phi, const glm::ivec3& d, const Sphere& s, bool add) {
+    for (int k = 0; k < d.z; ++k) {
+        for (int j = 0; j < d.y; ++j) {
+            for (int i = 0; i < d.x; ++i) {
+                const float sd = sphereDistance(s, glm::vec3(i, j, k));
+                float& p = phi[linear(d, i, j, k)];
+                p = clampPhi(add ? std::min(p, sd) : std::max(p, -sd));
+            }
+        }
+    }
+}
+
+std::vector<std::uint8_t> insideMask(std::span<const float> phi) {
+    std::vector<std::uint8_t> mask(phi.size());
+    std::transform(phi.begin(), phi.end(), mask.begin(),
+                   [](float p) { return static_cast<std::uint8_t>(p < 0.0F); });
+    return mask;
+}
+
+} // namespace steerseg

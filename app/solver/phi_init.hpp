@@ -1,0 +1,29 @@
+#pragma once
+
+// Initial level sets on the CPU (run once, not per iteration): both solvers start from these.
+
+#include "solver/level_set_params.hpp"
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <span>
+#include <vector>
+
+namespace steerseg {
+
+// Clamped signed distance (voxel units, negative inside) to the boundary of a binary mask
+// (non-zero = inside): phi = +-(distance to the nearest voxel of the other label - 0.5), so the
+// zero level set lies half-way between inside and outside voxel centres. Throws
+// std::invalid_argument when mask.size() does not match dims.
+std::vector<float> maskToPhi(std::span<const std::uint8_t> mask, const glm::ivec3& dims);
+
+// 1 where lo <= value <= hi. Throws std::invalid_argument for lo > hi or NaN bounds.
+std::vector<std::uint8_t> thresholdMask(std::span<const float> values, float lo, float hi);
+
+// Union (add) or difference (remove) of a dense phi with a sphere, clamped.
+void applySphere(std::vector<float>& phi, const glm::ivec3& dims, const Sphere& sphere, bool add);
+
+// 1 where phi < 0.
+std::vector<std::uint8_t> insideMask(std::span<const float> phi);
+
+} // namespace steerseg

@@ -1,0 +1,86 @@
+#pragma once
+
+// The discretisation of one explicit level-set step at one voxel, on the CPU. The GPU's
+// shaders/solver/phi_stencil.glsl is the same arithmetic line for line: keep them in step.
+// Unit voxel spacing; neighbours outside the volume repeat the border voxel.
+
+#include "solver/level_set_params.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace steerseg {
+
+// phi at the centre, its 6 face neighbours and 12 edge neighbours (the 21 derivatives of the
+// paper need no corner voxels). Names: p = +1, m = -1 along the axis.
+struct PhiStencil {
+    float c = 0.0F;
+    float xm = 0.0F, xp = 0.0F, ym = 0.0F, yp = 0.0F, zm = 0.0F, zp = 0.0F;
+    float xpyp = 0.0F, xpym = 0.0F, xmyp = 0.0F, xmym = 0.0F;
+    float xpzp = 0.0F, xpzm = 0.0F, xmzp = 0.0F, xmzm = 0.0F;
+    float ypzp = 0.0F, ypzm = 0.0F, ymzp = 0.0F, ymzm = 0.0F;
+};
+
+// Osher-Sethian up-wind |grad phi| for a front moving outward (direction > 0) or inward.
+inline float upwindGradient(const PhiStencil& s, float direction) {
+    const float dm[3] = {s.c - s.xm, s.c - s.ym, s.c - s.zm};
+    const float dp[3] = {s.xp - s.c, s.yp - s.c, s.zp - s.c};
+    float sum = 0.0F;
+    for (int a = 0; a < 3; ++a) {
+        const float back = direction > 0.0F ? std::max(dm[a], 0.0F) : std::min(dm[a], 0.0F);
+        const float ahead = direction > 0.0F ? std::min(dp[a], 0.0F) : std::max(dp[a], 0.0F);
+        sum += back * back + ahead * ahead;
+    }
+    return std::sqrt(sum);
+}
+
+// H * |grad phi| with central differences (H = div(grad phi / |grad phi|)); 0 where the
+// gradient vanishes (far from the surface).
+inline float curvatureTimesGradient(const PhiStencil& s) {
+    const float x = 0.5F * (s.xp - s.xm);
+    const float y = 0.5F * (s.yp - s.ym);
+    const float z = 0.5F * (s.zp - s.zm);
+    const float g2 = x * x + y * y + z * z;
+    if (g2 < 1e-12F) {
+        return 0.0F;
+    }
+    const float xx = s.xp - 2.0F * s.c + s.xm;
+    const float yy = s.yp - 2.0F * s.c + s.ym;
+    const float zz = s.zp - 2.0F * s.c + s.zm;
+    const float xy = 0.25F * (s.xpyp - s.xpym - s.xmyp + s.xmym);
+    const float xz = 0.25F * (s.xpzp - s.xpzm - s.xmzp + s.xmzm);
+    const float yz = 0.25F * (s.ypzp - s.ypzm - s.ymzp + s.ymzm);
+    const float num = (yy + zz) * x * x + (xx + zz) * y * y + (xx + yy) * z * z -
+                      2.0F * (x * y * xy + x * z * xz + y * z * yz);
+    return num / g2;
+}
+
+// The narrow band: voxels whose phi can change (the centre or a face neighbour is not clamped).
+inline bool inNarrowBand(const PhiStencil& s) {
+    const float m = std::min({std::abs(s.c), std::abs(s.xm), std::abs(s.xp), std::abs(s.ym),
+                              std::abs(s.yp), std::abs(s.zm), std::abs(s.zp)});
+    return m < kPhiFar;
+}
+
+// d(phi)/dt for data speed D = eps - |I - T| (from the speed function) and curvature weight.
+inline float phiRate(const PhiStencil& s, float dataSpeed, float alpha) {
+    const float f = alpha * dataSpeed;
+    const float data = -f * upwindGradient(s, f);
+    const float curvature = (1.0F - alpha) * curvatureTimesGradient(s);
+    // Rescaling: Godunov |grad phi| taken from the surface's side (information flows outward).
+    const float rescale =
+        kRescaleWeight * s.c * (1.0F - upwindGradient(s, s.c >= 0.0F ? 1.0F : -1.0F));
+    return data + curvature + rescale;
+}
+
+inline float clampPhi(float phi) {
+    return std::clamp(phi, -kPhiFar, kPhiFar);
+}
+
+// The paper's threshold speed D(I) = eps - |I - T|. The GPU twin is
+// shaders/solver/speed_threshold.glsl.
+inline float thresholdSpeed(float intensity, const LevelSetParams& p) {
+    return p.eps - std::abs(intensity - p.T);
+}
+
+} // namespace steerseg

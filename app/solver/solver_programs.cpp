@@ -1,0 +1,42 @@
+#include "solver/solver_programs.hpp"
+
+#include "gpu/program.hpp"
+#include "solver/level_set_params.hpp"
+
+#include <cstdio>
+#include <string>
+
+namespace steerseg::solver_detail {
+
+namespace {
+
+gpu::Defines definesFor(int brickSize, int localSize) {
+    char far[32];
+    std::snprintf(far, sizeof far, "%.1f", static_cast<double>(kPhiFar));
+    char rescale[32];
+    std::snprintf(rescale, sizeof rescale, "%.4f", static_cast<double>(kRescaleWeight));
+    return {{"BRICK_SIZE", std::to_string(brickSize)},
+            {"PHI_FAR", far},
+            {"RESCALE_WEIGHT", rescale},
+            {"LOCAL_SIZE", std::to_string(localSize)}};
+}
+
+} // namespace
+
+SolverPrograms::SolverPrograms(int brickSize, int localSize) {
+    const gpu::Defines d = definesFor(brickSize, localSize);
+    beginIteration = gpu::buildComputeProgram("solver/begin_iteration.comp", d);
+    allocateBricks = gpu::buildComputeProgram("solver/allocate_bricks.comp", d);
+    buildActiveList = gpu::buildComputeProgram("solver/build_active_list.comp", d);
+    prepareDispatch = gpu::buildComputeProgram("solver/prepare_dispatch.comp", d);
+    measureSpeed = gpu::buildComputeProgram("solver/measure_speed.comp", d);
+    chooseTimeStep = gpu::buildComputeProgram("solver/choose_time_step.comp", d);
+    updatePhi = gpu::buildComputeProgram("solver/update_phi.comp", d);
+    classifyBricks = gpu::buildComputeProgram("solver/classify_bricks.comp", d);
+    retireBricks = gpu::buildComputeProgram("solver/retire_bricks.comp", d);
+    markWantedBricks = gpu::buildComputeProgram("solver/mark_wanted_bricks.comp", d);
+    requestEditBricks = gpu::buildComputeProgram("solver/request_edit_bricks.comp", d);
+    applySphere = gpu::buildComputeProgram("solver/apply_sphere.comp", d);
+}
+
+} // namespace steerseg::solver_detail

@@ -1,0 +1,36 @@
+#pragma once
+
+#include "gpu/gl_handle.hpp"
+
+namespace steerseg::solver_detail {
+
+// The solver's compute passes (shaders/solver/*.comp), compiled for one brick size. Binding
+// points and the control block layout are shared with shaders/solver/solver_common.glsl.
+struct SolverPrograms {
+    gpu::Program beginIteration;
+    gpu::Program allocateBricks;
+    gpu::Program buildActiveList;
+    gpu::Program prepareDispatch;
+    gpu::Program measureSpeed;
+    gpu::Program chooseTimeStep;
+    gpu::Program updatePhi;
+    gpu::Program classifyBricks;
+    gpu::Program retireBricks;
+    gpu::Program markWantedBricks;
+    gpu::Program requestEditBricks;
+    gpu::Program applySphere;
+
+    SolverPrograms(int brickSize, int localSize);
+
+    // Calls f(program) for each program (to set uniforms shared by all).
+    template <typename F> void forEach(F&& f) {
+        for (gpu::Program* p :
+             {&beginIteration, &allocateBricks, &buildActiveList, &prepareDispatch, &measureSpeed,
+              &chooseTimeStep, &updatePhi, &classifyBricks, &retireBricks, &markWantedBricks,
+              &requestEditBricks, &applySphere}) {
+            f(*p);
+        }
+    }
+};
+
+} // namespace steerseg::solver_detail

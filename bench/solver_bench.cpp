@@ -1,0 +1,110 @@
+// Sparse packed-brick solver benchmark: iterations/s and level-set bytes against the number of
+// active bricks, sparse against dense (same kernels, every brick active) at several active
+// fractions, and brick sizes 4 / 8 / 16. Prints markdown tables. Not a test: numbers depend on
+// the machine (llvmpipe on a shared 2-core box is noisy; run it alone).
+//   solver_bench [--size N] [--iterations N] [--dense-size N]
+#include "gpu/gpu_info.hpp"
+#include "platform/egl/gpu_context.hpp"
+#include "solver/level_set_solver.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+using namespace steerseg;
+
+namespace {
+
+struct Measurement {
+    double iterationsPerSecond = 0.0;
+    SolverStats stats;
+};
+
+// A static-ish workload: a sphere of radius r under a zero data speed (T = intensity) and a
+// little curvature, so the active set stays the same while every pass does its full work.
+Measurement measure(int size, float radius, const SolverOptions& options, int iterations) {
+    const glm::ivec3 d(size);
+    const std::vector<float> volume(static_cast<std::size_t>(size) * size * size, 100.0F);
+    LevelSetSolver solver(volume, d, options);
+    solver.addSphere({glm::vec3(static_cast<float>(size) / 2.0F), radius});
+    solver.setParams({100.0F, 0.0F, 0.9F});
+    solver.step(options.checkInterval); // warm-up: programs, pool growth
+    glFinish();
+    const auto start = std::chrono::steady_clock::now();
+    const StepResult r = solver.step(iterations);
+    glFinish();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return {r.iterations / seconds, solver.stats()};
+}
+
+double mib(std::size_t bytes) {
+    return static_cast<double>(bytes) / (1024.0 * 1024.0);
+}
+
+int argOr(int argc, char** argv, const std::string& name, int fallback) {
+    for (int i = 1; i + 1 < argc; ++i) {
+        if (argv[i] == name) {
+            return std::atoi(argv[i + 1]);
+        }
+    }
+    return fallback;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    const int size = argOr(argc, argv, "--size", 128);
+    const int iterations = argOr(argc, argv, "--iterations", 32);
+    const int denseSize = argOr(argc, argv, "--dense-size", 256);
+    auto context = platform::createOffscreenContext();
+    std::printf("renderer: %s, volume %d^3, %d timed iterations each\n\n",
+                gpu::queryGpuInfo().renderer.c_str(), size, iterations);
+
+    std::printf("## Brick size (sphere r = %d, sparse)\n\n", size / 4);
+    std::printf("| brick | active bricks | active voxels | iterations/s | voxel-updates/s (M) |\n");
+    std::printf("|---|---|---|---|---|\n");
+    for (const int b : {4, 8, 16}) {
+        SolverOptions o;
+        o.brickSize = b;
+        const Measurement m = measure(size, static_cast<float>(size) / 4.0F, o, iterations);
+        const double voxels = static_cast<double>(m.stats.activeBricks) * b * b * b;
+        std::printf("| %d | %u | %.0f | %.1f | %.1f |\n", b, m.stats.activeBricks, voxels,
+                    m.iterationsPerSecond, voxels * m.iterationsPerSecond / 1e6);
+    }
+
+    std::printf("\n## Sparse vs dense (brick %d)\n\n", defaultBrickSize());
+    std::printf("| sphere r | active bricks | active %% | sparse it/s | dense it/s | speed-up | "
+                "level-set MiB | active bricks' MiB + page table | ratio | dense phi MiB |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+    SolverOptions denseOptions;
+    denseOptions.dense = true;
+    const Measurement dense =
+        measure(size, static_cast<float>(size) / 8.0F, denseOptions, iterations);
+    for (const float fraction : {0.06F, 0.12F, 0.25F, 0.4F}) {
+        const float r = fraction * static_cast<float>(size);
+        const Measurement m = measure(size, r, SolverOptions{}, iterations);
+        const std::size_t brickBytes = static_cast<std::size_t>(defaultBrickSize()) *
+                                       defaultBrickSize() * defaultBrickSize() * 4;
+        const std::size_t activeBytes =
+            m.stats.activeBricks * brickBytes + static_cast<std::size_t>(m.stats.totalBricks) * 4;
+        std::printf("| %.0f | %u | %.1f | %.1f | %.2f | %.1fx | %.2f | %.2f | %.2f | %.1f |\n",
+                    static_cast<double>(r), m.stats.activeBricks,
+                    100.0 * m.stats.activeBricks / m.stats.totalBricks, m.iterationsPerSecond,
+                    dense.iterationsPerSecond, m.iterationsPerSecond / dense.iterationsPerSecond,
+                    mib(m.stats.levelSetBytes), mib(activeBytes),
+                    static_cast<double>(m.stats.levelSetBytes) / static_cast<double>(activeBytes),
+                    mib(m.stats.densePhiBytes));
+    }
+
+    if (denseSize > 0) {
+        const Measurement big =
+            measure(denseSize, static_cast<float>(denseSize) / 4.0F, denseOptions, 4);
+        std::printf("\nDense mode at %d^3: %.2f iterations/s, level set %.1f MiB (%u bricks)\n",
+                    denseSize, big.iterationsPerSecond, mib(big.stats.levelSetBytes),
+                    big.stats.activeBricks);
+    }
+    return 0;
+}

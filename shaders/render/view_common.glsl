@@ -1,0 +1,48 @@
+// Shared by the renderer's compute shaders: the scan texture, window/level and the level set
+// read straight from the solver's brick pool (common/brick_pool.glsl).
+precision highp sampler3D;
+precision highp sampler2D;
+
+#include "common/brick_pool.glsl"
+
+layout(rgba8, binding = 0) uniform writeonly highp image2D outImage;
+layout(binding = 0) uniform sampler3D scanTex; // normalised intensity, linear filtering
+
+uniform ivec2 outSize;
+uniform int hasSurface;     // 0: no level set bound
+uniform vec2 windowRange;   // normalised intensity at black, 1 / window width
+
+const vec3 CONTOUR_YELLOW = vec3(1.0, 0.92, 0.0);
+
+// Scan intensity at a continuous voxel-index position (voxel centres at integers).
+float scanAt(vec3 p) {
+    return texture(scanTex, (p + 0.5) / vec3(volumeDims)).r;
+}
+
+float windowed(float v) {
+    return clamp((v - windowRange.x) * windowRange.y, 0.0, 1.0);
+}
+
+// phi, with a shortcut for constant bricks: when every corner of the trilinear cell lies in
+// one brick stored as inside/outside, no pool read is needed.
+float phiFast(vec3 p) {
+    ivec3 lo = clamp(ivec3(floor(p)), ivec3(0), volumeDims - 1) / BRICK_SIZE;
+    ivec3 hi = clamp(ivec3(floor(p)) + 1, ivec3(0), volumeDims - 1) / BRICK_SIZE;
+    if (lo == hi) {
+        uint slot = pageTable[brickIndex(lo)];
+        if (slot == BRICK_INSIDE) {
+            return -PHI_FAR;
+        }
+        if (slot == BRICK_OUTSIDE) {
+            return PHI_FAR;
+        }
+    }
+    return phiTrilinear(p);
+}
+
+vec3 phiGradient(vec3 p) {
+    const float h = 0.5;
+    return vec3(phiTrilinear(p + vec3(h, 0, 0)) - phiTrilinear(p - vec3(h, 0, 0)),
+                phiTrilinear(p + vec3(0, h, 0)) - phiTrilinear(p - vec3(0, h, 0)),
+                phiTrilinear(p + vec3(0, 0, h)) - phiTrilinear(p - vec3(0, 0, h)));
+}

@@ -1,0 +1,41 @@
+#version 310 es
+// One group per active brick: the largest data speed |alpha * D| in the narrow band, which sets
+// the next time step (choose_time_step.comp).
+#include "common/brick_pool.glsl"
+#include "solver/solver_common.glsl"
+#include "solver/speed_threshold.glsl"
+#include "solver/phi_stencil.glsl"
+#include "solver/phi_tile.glsl"
+layout(local_size_x = LOCAL_SIZE) in;
+
+uniform float alpha;
+shared uint groupMax;
+
+void main() {
+    uint n = activeListIndex();
+    if (n == NO_BRICK) {
+        return;
+    }
+    ivec3 origin = brickCoord(slotBrick[activeList[n]]) * BRICK_SIZE;
+    loadTile(origin);
+    if (gl_LocalInvocationIndex == 0u) {
+        groupMax = 0u;
+    }
+    barrier();
+    float localMax = 0.0;
+    for (uint v = gl_LocalInvocationIndex; v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
+        ivec3 l = localVoxel(v);
+        ivec3 g = origin + l;
+        if (any(greaterThanEqual(g, volumeDims))) {
+            continue;
+        }
+        if (tileInNarrowBand(l)) {
+            localMax = max(localMax, abs(alpha * dataSpeed(g)));
+        }
+    }
+    atomicMax(groupMax, floatBitsToUint(localMax));
+    barrier();
+    if (gl_LocalInvocationIndex == 0u) {
+        atomicMax(ctrl.maxRateBits, groupMax);
+    }
+}

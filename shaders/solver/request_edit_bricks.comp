@@ -1,0 +1,39 @@
+#version 310 es
+// One thread per brick of a sphere edit's bounding box: constant bricks the edit changes either
+// ask for a slot (the surface crosses them) or switch constant at once (fully covered).
+#define PAGE_TABLE_ACCESS
+#include "common/brick_pool.glsl"
+#include "solver/solver_common.glsl"
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+layout(std430, binding = REQUESTS_BINDING) writeonly buffer Requests { uint requests[]; };
+layout(std430, binding = WANT_EPOCH_BINDING) buffer WantEpoch { uint wantEpoch[]; };
+
+uniform ivec3 boxMin;  // bricks
+uniform ivec3 boxSize; // bricks
+uniform vec3 centre;   // voxels
+uniform float radius;  // voxels
+uniform bool addMode;  // true: union with the sphere, false: cut it out
+uniform uint epoch;
+
+void main() {
+    ivec3 b = boxMin + ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(ivec3(gl_GlobalInvocationID), boxSize)) || !brickInGrid(b)) {
+        return;
+    }
+    uint brick = brickIndex(b);
+    uint old = pageTable[brick];
+    // Only the constant on the edit's far side changes: outside under an add, inside under a cut.
+    if (old != (addMode ? BRICK_OUTSIDE : BRICK_INSIDE)) {
+        return;
+    }
+    vec3 lo = vec3(b * BRICK_SIZE);
+    vec3 hi = vec3(min(b * BRICK_SIZE + BRICK_SIZE, volumeDims) - 1);
+    float nearest = length(clamp(centre, lo, hi) - centre) - radius;
+    float farthest = length(max(abs(lo - centre), abs(hi - centre))) - radius;
+    if (farthest <= -PHI_FAR) {
+        pageTable[brick] = addMode ? BRICK_INSIDE : BRICK_OUTSIDE;
+    } else if (nearest < PHI_FAR && atomicExchange(wantEpoch[brick], epoch) != epoch) {
+        requests[atomicAdd(ctrl.requestCount, 1u)] = brick;
+    }
+}

@@ -1,0 +1,35 @@
+#version 310 es
+// One thread per active brick: a brick that became uniform (all -PHI_FAR or all +PHI_FAR) and
+// has no live face neighbour gives its slot back and becomes BRICK_INSIDE / BRICK_OUTSIDE.
+#define PAGE_TABLE_ACCESS
+#include "common/brick_pool.glsl"
+#include "solver/solver_common.glsl"
+layout(local_size_x = 64) in;
+
+layout(std430, binding = FREE_LIST_BINDING) buffer FreeList { uint freeList[]; };
+
+void main() {
+    uint n = gl_GlobalInvocationID.x;
+    if (n >= ctrl.activeCount) {
+        return;
+    }
+    uint slot = activeList[n];
+    uint state = slotState[slot];
+    if (state == STATE_LIVE || state == STATE_MIXED) {
+        return;
+    }
+    uint brick = slotBrick[slot];
+    ivec3 b = brickCoord(brick);
+    for (int f = 0; f < 6; ++f) {
+        ivec3 nb = b + FACE_NEIGHBOURS[f];
+        if (brickInGrid(nb)) {
+            uint s = pageTable[brickIndex(nb)];
+            if (s < BRICK_INSIDE && slotState[s] == STATE_LIVE) {
+                return;
+            }
+        }
+    }
+    pageTable[brick] = state == STATE_INSIDE ? BRICK_INSIDE : BRICK_OUTSIDE;
+    slotBrick[slot] = NO_BRICK;
+    freeList[atomicAdd(ctrl.freeCount, 1u)] = slot;
+}

@@ -1,0 +1,66 @@
+// Bookkeeping buffers of the sparse solver (host mirror: app/solver/gpu_brick_pool.hpp).
+// Include after common/brick_pool.glsl. Slots are pool slots; "brick" is a brick's linear index.
+#ifndef LOCAL_SIZE
+#define LOCAL_SIZE 512
+#endif
+#define PHI_NEXT_BINDING 2
+#define CONTROL_BINDING 3
+#define SLOT_BRICK_BINDING 4
+#define FREE_LIST_BINDING 5
+#define ACTIVE_LIST_BINDING 6
+#define REQUESTS_BINDING 7
+#define WANT_EPOCH_BINDING 8
+#define SLOT_STATE_BINDING 9
+
+const uint NO_BRICK = 0xFFFFFFFFu;
+// Per-slot state after the last update: does the brick hold the surface's narrow band?
+const uint STATE_LIVE = 0u;    // some voxel has |phi| < PHI_FAR
+const uint STATE_INSIDE = 1u;  // every voxel at -PHI_FAR: may retire to BRICK_INSIDE
+const uint STATE_OUTSIDE = 2u; // every voxel at +PHI_FAR: may retire to BRICK_OUTSIDE
+const uint STATE_MIXED = 3u;   // clamped values of both signs: kept
+
+// Groups over the active list are laid out 2D (x < 1024) to stay under the 65535 group limit.
+const uint GROUPS_PER_ROW = 1024u;
+
+layout(std430, binding = CONTROL_BINDING) coherent buffer Control {
+    uint allocArgs[3]; // indirect dispatch: one group per requested brick
+    uint brickArgs[3]; // indirect dispatch: one group per active brick
+    uint listArgs[3];  // indirect dispatch: one thread per active brick, 64 per group
+    uint requestCount; // bricks asking for a slot (neighbours of the band, sphere edits)
+    uint activeCount;  // entries of activeList
+    uint freeCount;    // entries of freeList
+    uint popped;       // slots taken from freeList by the current allocation pass
+    uint stalled;      // non-zero: a request found no free slot; iterations pause until the host grows the pool
+    uint maxRateBits;  // max |alpha * D| over the narrow band, as float bits (non-negative)
+    float dt;          // this iteration's time step (0: no step)
+    float time;        // evolved time
+    uint iteration;    // iterations performed
+    uint lastChange;   // iteration in which a voxel last changed side
+    float lastChangeTime;
+    uint peakActive;
+} ctrl;
+
+layout(std430, binding = SLOT_BRICK_BINDING) buffer SlotBrick { uint slotBrick[]; };
+layout(std430, binding = ACTIVE_LIST_BINDING) buffer ActiveList { uint activeList[]; };
+layout(std430, binding = SLOT_STATE_BINDING) buffer SlotState { uint slotState[]; };
+
+ivec3 brickCoord(uint brick) {
+    int b = int(brick);
+    return ivec3(b % brickGrid.x, (b / brickGrid.x) % brickGrid.y, b / (brickGrid.x * brickGrid.y));
+}
+
+bool brickInGrid(ivec3 b) { return all(greaterThanEqual(b, ivec3(0))) && all(lessThan(b, brickGrid)); }
+
+ivec3 localVoxel(uint n) {
+    int i = int(n);
+    return ivec3(i % BRICK_SIZE, (i / BRICK_SIZE) % BRICK_SIZE, i / (BRICK_SIZE * BRICK_SIZE));
+}
+
+// Index into the active list of this work group (one group per active brick), or NO_BRICK.
+uint activeListIndex() {
+    uint n = gl_WorkGroupID.x + gl_WorkGroupID.y * GROUPS_PER_ROW;
+    return n < ctrl.activeCount ? n : NO_BRICK;
+}
+
+const ivec3 FACE_NEIGHBOURS[6] = ivec3[6](ivec3(-1, 0, 0), ivec3(1, 0, 0), ivec3(0, -1, 0),
+                                          ivec3(0, 1, 0), ivec3(0, 0, -1), ivec3(0, 0, 1));

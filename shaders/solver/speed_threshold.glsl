@@ -1,0 +1,12 @@
+// The data term of the speed, D(I) = eps - |I - T| (Lefohn et al. 2003): positive (grow) where
+// the intensity lies within T +/- eps. CPU twin: thresholdSpeed() in app/solver/phi_stencil.hpp.
+// Another speed function replaces this file, keeping dataSpeed(voxel)'s meaning: the outward
+// speed in voxels per unit time before the alpha weighting.
+precision highp sampler3D;
+uniform highp sampler3D scan; // real-unit intensities (R32F), uploaded once
+uniform float targetT;
+uniform float halfWidth;
+
+float dataSpeed(ivec3 voxel) {
+    return halfWidth - abs(texelFetch(scan, voxel, 0).r - targetT);
+}

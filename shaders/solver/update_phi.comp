@@ -1,0 +1,83 @@
+#version 310 es
+// One group per active brick: phi_next = clamp(phi + dt * rate) (phi_stencil.glsl) from the brick
+// and a one-voxel apron staged in shared memory; records the brick's new state and whether any
+// voxel changed side (convergence).
+#include "common/brick_pool.glsl"
+#include "solver/solver_common.glsl"
+#include "solver/speed_threshold.glsl"
+#include "solver/phi_stencil.glsl"
+#include "solver/brick_state.glsl"
+#include "solver/phi_tile.glsl"
+layout(local_size_x = LOCAL_SIZE) in;
+
+layout(std430, binding = PHI_NEXT_BINDING) writeonly buffer PhiNext { float phiNext[]; };
+
+uniform float alpha;
+
+shared uint changedSide;
+
+float t(ivec3 l) { return tileAt(l); }
+
+PhiStencil stencilAt(ivec3 l) {
+    PhiStencil s;
+    s.c = t(l);
+    s.xm = t(l + ivec3(-1, 0, 0));
+    s.xp = t(l + ivec3(1, 0, 0));
+    s.ym = t(l + ivec3(0, -1, 0));
+    s.yp = t(l + ivec3(0, 1, 0));
+    s.zm = t(l + ivec3(0, 0, -1));
+    s.zp = t(l + ivec3(0, 0, 1));
+    s.xpyp = t(l + ivec3(1, 1, 0));
+    s.xpym = t(l + ivec3(1, -1, 0));
+    s.xmyp = t(l + ivec3(-1, 1, 0));
+    s.xmym = t(l + ivec3(-1, -1, 0));
+    s.xpzp = t(l + ivec3(1, 0, 1));
+    s.xpzm = t(l + ivec3(1, 0, -1));
+    s.xmzp = t(l + ivec3(-1, 0, 1));
+    s.xmzm = t(l + ivec3(-1, 0, -1));
+    s.ypzp = t(l + ivec3(0, 1, 1));
+    s.ypzm = t(l + ivec3(0, 1, -1));
+    s.ymzp = t(l + ivec3(0, -1, 1));
+    s.ymzm = t(l + ivec3(0, -1, -1));
+    return s;
+}
+
+void main() {
+    uint n = activeListIndex();
+    if (n == NO_BRICK) {
+        return;
+    }
+    uint slot = activeList[n];
+    ivec3 origin = brickCoord(slotBrick[slot]) * BRICK_SIZE;
+    loadTile(origin);
+    beginBrickState();
+    if (gl_LocalInvocationIndex == 0u) {
+        changedSide = 0u;
+    }
+    barrier();
+    float dt = ctrl.dt;
+    for (uint v = gl_LocalInvocationIndex; v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
+        ivec3 l = localVoxel(v);
+        ivec3 g = origin + l;
+        PhiStencil s = stencilAt(l);
+        float out_ = s.c;
+        if (all(lessThan(g, volumeDims))) {
+            if (dt > 0.0 && tileInNarrowBand(l)) {
+                out_ = clamp(s.c + dt * phiRate(s, dataSpeed(g), alpha), -PHI_FAR, PHI_FAR);
+            }
+            noteVoxelState(out_);
+            if ((out_ < 0.0) != (s.c < 0.0)) {
+                atomicOr(changedSide, 1u);
+            }
+        }
+        phiNext[slot * BRICK_VOXELS + v] = out_;
+    }
+    barrier();
+    if (gl_LocalInvocationIndex == 0u) {
+        slotState[slot] = brickState();
+        if (changedSide != 0u) {
+            atomicMax(ctrl.lastChange, ctrl.iteration);
+            ctrl.lastChangeTime = ctrl.time;
+        }
+    }
+}

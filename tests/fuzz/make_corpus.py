@@ -1,0 +1,125 @@
+#!/usr/bin/env python3
+"""Writes the fuzzers' seed corpora: a few tiny valid and near-valid files per format.
+
+Run from anywhere: python3 tests/fuzz/make_corpus.py. Deterministic, so the committed files only
+change when this script does.
+"""
+import gzip
+import os
+import struct
+import zlib
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def out(fmt, name, data):
+    d = os.path.join(HERE, "corpus", fmt)
+    os.makedirs(d, exist_ok=True)
+    if isinstance(data, str):
+        data = data.encode()
+    with open(os.path.join(d, name), "wb") as f:
+        f.write(data)
+
+
+def gz(data):
+    return gzip.compress(data, mtime=0)
+
+
+VOX = bytes(range(8))  # 2x2x2 uint8
+
+
+def nifti1(dtype=2, bitpix=8, dims=(2, 2, 2), data=VOX, endian="<", sform=1, qform=1,
+           slope=0.0, vox_offset=352.0, magic=b"n+1\0", ndim=3, extra_dims=(1, 1, 1, 1)):
+    h = bytearray(348)
+    e = endian
+    struct.pack_into(e + "i", h, 0, 348)
+    struct.pack_into(e + "8h", h, 40, ndim, *dims, *extra_dims)
+    struct.pack_into(e + "hh", h, 70, dtype, bitpix)
+    struct.pack_into(e + "8f", h, 76, 1.0, 0.9, 1.1, 2.5, 1, 1, 1, 1)
+    struct.pack_into(e + "3f", h, 108, vox_offset, slope, 0.0)
+    struct.pack_into(e + "hh", h, 252, qform, sform)
+    struct.pack_into(e + "6f", h, 256, 0.1, 0.2, 0.3, -10.0, 20.0, 5.0)
+    struct.pack_into(e + "12f", h, 280, -0.9, 0, 0, 10, 0, 1.1, 0, -20, 0, 0, 2.5, 5)
+    h[344:348] = magic
+    return bytes(h) + b"\0" * 4 + data
+
+
+def nifti2(dtype=16, bitpix=32, dims=(2, 2, 1), data=struct.pack("<4f", 0, 1.5, -2, 3)):
+    h = bytearray(540)
+    struct.pack_into("<i", h, 0, 540)
+    h[4:12] = b"n+2\0\r\n\x1a\n"
+    struct.pack_into("<hh", h, 12, dtype, bitpix)
+    struct.pack_into("<8q", h, 16, 3, *dims, 1, 1, 1, 1)
+    struct.pack_into("<8d", h, 104, 1, 1, 1, 1, 1, 1, 1, 1)
+    struct.pack_into("<q", h, 168, 544)
+    struct.pack_into("<2i", h, 344, 0, 2)
+    struct.pack_into("<12d", h, 400, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0)
+    return bytes(h) + b"\0" * 4 + data
+
+
+def nifti():
+    out("nifti", "uint8.nii", nifti1())
+    out("nifti", "uint8.nii.gz", gz(nifti1()))
+    out("nifti", "int16_big.nii", nifti1(4, 16, data=struct.pack(">8h", *range(-4, 4)), endian=">"))
+    out("nifti", "qform_only_slope.nii", nifti1(sform=0, slope=2.0))
+    out("nifti", "float64.nii", nifti1(64, 64, dims=(2, 1, 1), data=struct.pack("<2d", 1.5, -2.5)))
+    out("nifti", "4d.nii", nifti1(ndim=4, extra_dims=(2, 1, 1, 1), data=VOX * 2))
+    out("nifti", "nifti2_float.nii", nifti2())
+    out("nifti", "truncated.nii", nifti1()[:352 + 3])
+    out("nifti", "pair_header.nii", nifti1(magic=b"ni1\0"))
+
+
+def nrrd():
+    base = ("NRRD0004\n# seed\ntype: {t}\ndimension: 3\nspace: {s}\nsizes: 2 2 2\n"
+            "space directions: (1,0,0) (0,1.5,0) (0,0,2)\nspace origin: (-1,2,3)\n")
+    out("nrrd", "raw.nrrd", (base.format(t="uchar", s="left-posterior-superior")
+                             + "encoding: raw\n\n").encode() + VOX)
+    out("nrrd", "gzip_short.nrrd", (base.format(t="short", s="right-anterior-superior")
+                                    + "endian: big\nencoding: gzip\n\n").encode()
+        + gz(struct.pack(">8h", *range(8))))
+    out("nrrd", "ascii_float.nrrd", base.format(t="float", s="LAS")
+        + "encoding: ascii\n\n0 1.5 2 3\n4 5 6 -7\n")
+    out("nrrd", "2d_spacings.nrrd", b"NRRD0001\ntype: uint16\ndimension: 2\nsizes: 2 2\n"
+        b"spacings: 0.5 nan\nendian: little\nencoding: raw\nbyte skip: 2\n\nXX" + struct.pack("<4H", 1, 2, 3, 4))
+    out("nrrd", "detached.nhdr", base.format(t="uint8", s="LPS")
+        + "encoding: raw\ndata file: missing.raw\nline skip: 1\n")
+    out("nrrd", "no_sizes.nrrd", "NRRD0004\ntype: uint8\ndimension: 3\nencoding: raw\n\n")
+
+
+def metaimage():
+    head = ("ObjectType = Image\nNDims = 3\nBinaryData = True\nTransformMatrix = 0 1 0 -1 0 0 0 0 1\n"
+            "Offset = 1 2 3\nElementSpacing = 0.5 0.5 2\nDimSize = 2 2 2\n")
+    out("metaimage", "raw.mha", (head + "ElementType = MET_UCHAR\nElementDataFile = LOCAL\n").encode() + VOX)
+    data = struct.pack("<8f", *[float(v) for v in range(8)])
+    out("metaimage", "zlib_float.mha", (head + "ElementType = MET_FLOAT\nCompressedData = True\n"
+                                        "ElementDataFile = LOCAL\n").encode() + zlib.compress(data))
+    out("metaimage", "big_short.mha", (head + "ElementType = MET_SHORT\nBinaryDataByteOrderMSB = True\n"
+                                       "ElementDataFile = LOCAL\n").encode() + struct.pack(">8h", *range(8)))
+    out("metaimage", "ascii_2d.mha", "NDims = 2\nDimSize = 2 2\nElementType = MET_DOUBLE\nBinaryData = False\n"
+        "ElementDataFile = LOCAL\n1 2 3 4\n")
+    out("metaimage", "detached.mhd", head + "ElementType = MET_UCHAR\nHeaderSize = -1\nElementDataFile = d.raw\n")
+
+
+def mgh(mtype=0, dims=(2, 2, 2), data=VOX, good=1):
+    h = bytearray(284)
+    struct.pack_into(">7i", h, 0, 1, *dims, 1, mtype, 0)
+    struct.pack_into(">h", h, 28, good)
+    struct.pack_into(">3f", h, 30, 1.0, 1.5, 2.0)
+    struct.pack_into(">9f", h, 42, -1, 0, 0, 0, 0, -1, 0, 1, 0)
+    struct.pack_into(">3f", h, 78, 5.0, -3.0, 12.0)
+    return bytes(h) + data
+
+
+def mgz():
+    out("mgz", "uchar.mgh", mgh())
+    out("mgz", "float.mgz", gz(mgh(3, data=struct.pack(">8f", *[v / 2 for v in range(8)]))))
+    out("mgz", "short_noras.mgz", gz(mgh(4, data=struct.pack(">8h", *range(8)), good=0)))
+    out("mgz", "int_truncated.mgz", gz(mgh(1, data=struct.pack(">4i", 1, 2, 3, 4))))
+    out("mgz", "frames.mgh", mgh()[:16] + struct.pack(">i", 3) + mgh()[20:] + VOX * 2)
+
+
+if __name__ == "__main__":
+    nifti()
+    nrrd()
+    metaimage()
+    mgz()

@@ -1,0 +1,134 @@
+// The renderer's host API: GL state left as found, bad inputs refused, probe statistics,
+// transfer-function baking and the skipping grid.
+#include "gpu/gl_handle.hpp"
+#include "render/probe.hpp"
+#include "render/renderer.hpp"
+#include "render/scan_texture.hpp"
+#include "render/transfer_function.hpp"
+#include "render_scene.hpp"
+#include "support/gpu_fixture.hpp"
+
+#include <cmath>
+
+namespace steerseg::test {
+namespace {
+
+using render::ViewKind;
+
+Geometry cube(int n) {
+    Geometry g;
+    g.dims = {n, n, n};
+    return g;
+}
+
+class RenderApi : public GpuTest {};
+
+TEST_F(RenderApi, RestoresTheGlStateItChanges) {
+    const Volume scan = makeHeadScene();
+    render::Renderer renderer(scan);
+    gpu::Texture tex2d = gpu::createTexture();
+    gpu::Texture tex3d = gpu::createTexture();
+    gpu::Buffer ssbo = gpu::createBuffer(GL_SHADER_STORAGE_BUFFER, 64, nullptr, GL_STATIC_DRAW);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, tex2d.id());
+    glBindTexture(GL_TEXTURE_3D, tex3d.id());
+    glActiveTexture(GL_TEXTURE2);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, ssbo.id());
+    glPixelStorei(GL_PACK_ALIGNMENT, 8);
+    GpuPool pool(spherePool(scan.dims(), kHeadLesionCentre, kHeadLesionRadius));
+    const BrickPoolView view = pool.view();
+    for (ViewKind kind : {ViewKind::Volume3d, ViewKind::Axial}) {
+        renderer.render(renderer.defaultParams(kind, {32, 32}), &view);
+        (void)renderer.readback();
+        GLint value = 0;
+        glGetIntegerv(GL_ACTIVE_TEXTURE, &value);
+        EXPECT_EQ(value, GL_TEXTURE2);
+        glGetIntegerv(GL_CURRENT_PROGRAM, &value);
+        EXPECT_EQ(value, 0);
+        glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 1, &value);
+        EXPECT_EQ(static_cast<GLuint>(value), ssbo.id());
+        glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 0, &value);
+        EXPECT_EQ(value, 0);
+        glGetIntegerv(GL_PACK_ALIGNMENT, &value);
+        EXPECT_EQ(value, 8);
+        glActiveTexture(GL_TEXTURE0);
+        glGetIntegerv(GL_TEXTURE_BINDING_2D, &value);
+        EXPECT_EQ(static_cast<GLuint>(value), tex2d.id());
+        glGetIntegerv(GL_TEXTURE_BINDING_3D, &value);
+        EXPECT_EQ(static_cast<GLuint>(value), tex3d.id());
+        glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &value);
+        EXPECT_EQ(value, 0);
+        glActiveTexture(GL_TEXTURE2);
+    }
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+TEST_F(RenderApi, RefusesAPoolOfOtherDimensionsAndBadSizes) {
+    const Volume scan = makeScan(cube(16), [](glm::ivec3) { return 1.0F; });
+    render::Renderer renderer(scan);
+    GpuPool pool(spherePool({16, 16, 12}, glm::dvec3(8.0), 4.0));
+    const BrickPoolView view = pool.view();
+    EXPECT_THROW(renderer.render(renderer.defaultParams(ViewKind::Axial, {16, 16}), &view),
+                 std::invalid_argument);
+    EXPECT_THROW(renderer.render(renderer.defaultParams(ViewKind::Axial, {0, 16}), nullptr),
+                 std::invalid_argument);
+}
+
+TEST_F(RenderApi, SkipGridCoversEachBlockWithItsApron) {
+    const glm::ivec3 dims{20, 9, 9};
+    std::vector<float> values(static_cast<std::size_t>(dims.x * dims.y * dims.z), 0.0F);
+    values[8] = 1.0F; // voxel (8, 0, 0): first voxel of block 1, apron of block 0
+    const std::vector<float> mm = render::blockMinMax(values, dims);
+    ASSERT_EQ(mm.size(), 3u * 2u * 2u * 2u);
+    EXPECT_EQ(mm[1], 1.0F); // block (0,0,0) max: apron reaches voxel 8
+    EXPECT_EQ(mm[3], 1.0F); // block (1,0,0)
+    EXPECT_EQ(mm[5], 0.0F); // block (2,0,0) starts at 16, apron from 15
+}
+
+TEST(RenderTransfer, BakesTentTimesGradientRampAndMarksOccupiedBins) {
+    render::TransferFunction tf;
+    tf.widgets.push_back({50.0, 10.0, 0.5, {1.0, 0.0, 0.0}, 1.0});
+    const std::vector<std::uint8_t> lut = render::bakeTransferLut(tf, 0.0, 255.0);
+    auto alpha = [&](int bin, int grad) {
+        return lut[4 * (static_cast<std::size_t>(grad) * render::kTfIntensityBins +
+                        static_cast<std::size_t>(bin)) +
+                   3];
+    };
+    EXPECT_EQ(alpha(50, render::kTfGradientBins - 1), 255);
+    EXPECT_EQ(alpha(50, 0), 0);                                    // below the gradient threshold
+    EXPECT_EQ(alpha(100, 31), 0);                                  // outside the tent
+    EXPECT_EQ(lut[4 * (31 * render::kTfIntensityBins + 50)], 255); // red
+    const std::vector<std::uint8_t> used = render::occupiedBins(lut);
+    EXPECT_EQ(used[50], 1);
+    EXPECT_EQ(used[30], 0);
+    EXPECT_EQ(used[70], 0);
+}
+
+TEST(RenderProbe, MeanAndStddevInASphere) {
+    Geometry g = cube(9);
+    g.spacing = {1.0, 1.0, 2.0};
+    Volume v(VoxelType::Float32, g);
+    auto out = v.voxels<float>();
+    for (int k = 0; k < 9; ++k) {
+        for (int j = 0; j < 9; ++j) {
+            for (int i = 0; i < 9; ++i) {
+                out[v.linearIndex(i, j, k)] = (i % 2 == 0) ? 300.0F : 100.0F;
+            }
+        }
+    }
+    // Radius 1 mm around (4,4,4): the centre and its four +-i/+-j neighbours (k is 2 mm away).
+    const render::ProbeStats s = render::probe(v, {4.0, 4.0, 4.0}, 1.0);
+    EXPECT_EQ(s.count, 5u);
+    EXPECT_DOUBLE_EQ(s.mean, (3 * 300.0 + 2 * 100.0) / 5.0);
+    const double var = (3 * 300.0 * 300.0 + 2 * 100.0 * 100.0) / 5.0 - s.mean * s.mean;
+    EXPECT_NEAR(s.stddev, std::sqrt(var), 1e-9);
+    const render::SuggestedSpeed speed = render::suggestSpeed(s, 2.0);
+    EXPECT_DOUBLE_EQ(speed.target, s.mean);
+    EXPECT_DOUBLE_EQ(speed.epsilon, 2.0 * s.stddev);
+    EXPECT_EQ(render::probe(v, {-50.0, 0.0, 0.0}, 2.0).count, 0u);
+    EXPECT_THROW(render::probe(v, {4.0, 4.0, NAN}, 1.0), std::invalid_argument);
+}
+
+} // namespace
+} // namespace steerseg::test

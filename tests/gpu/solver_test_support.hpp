@@ -1,0 +1,97 @@
+#pragma once
+
+// Shared helpers of the solver tests: synthetic volumes and mask comparisons.
+
+#include "solver/level_set_params.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <numbers>
+#include <span>
+#include <vector>
+
+namespace steerseg::test {
+
+inline std::size_t voxelIndex(const glm::ivec3& d, int i, int j, int k) {
+    return static_cast<std::size_t>(i) +
+           static_cast<std::size_t>(d.x) *
+               (static_cast<std::size_t>(j) +
+                static_cast<std::size_t>(d.y) * static_cast<std::size_t>(k));
+}
+
+inline std::size_t countOf(const glm::ivec3& d) {
+    return static_cast<std::size_t>(d.x) * static_cast<std::size_t>(d.y) *
+           static_cast<std::size_t>(d.z);
+}
+
+// A volume of `background` with a ball of `value` (centre, radius in voxels).
+inline std::vector<float> ballVolume(const glm::ivec3& d, float background, float value,
+                                     glm::vec3 centre, float radius) {
+    std::vector<float> v(countOf(d), background);
+    for (int k = 0; k < d.z; ++k) {
+        for (int j = 0; j < d.y; ++j) {
+            for (int i = 0; i < d.x; ++i) {
+                if (glm::length(glm::vec3(i, j, k) - centre) <= radius) {
+                    v[voxelIndex(d, i, j, k)] = value;
+                }
+            }
+        }
+    }
+    return v;
+}
+
+inline std::size_t insideCount(std::span<const std::uint8_t> mask) {
+    std::size_t n = 0;
+    for (std::uint8_t m : mask) {
+        n += m != 0 ? 1 : 0;
+    }
+    return n;
+}
+
+inline double dice(std::span<const std::uint8_t> a, std::span<const std::uint8_t> b) {
+    std::size_t both = 0;
+    std::size_t sum = 0;
+    for (std::size_t n = 0; n < a.size(); ++n) {
+        both += (a[n] != 0 && b[n] != 0) ? 1 : 0;
+        sum += (a[n] != 0 ? 1 : 0) + (b[n] != 0 ? 1 : 0);
+    }
+    return sum == 0 ? 1.0 : 2.0 * static_cast<double>(both) / static_cast<double>(sum);
+}
+
+// Radius of the ball with the mask's volume.
+inline double equivalentRadius(std::span<const std::uint8_t> mask) {
+    return std::cbrt(3.0 * static_cast<double>(insideCount(mask)) / (4.0 * std::numbers::pi));
+}
+
+// Voxels where the masks differ that are not next to the surface of `reference` (a face
+// neighbour with the other label): GPU and CPU float rounding may only move the surface by a
+// voxel.
+inline std::size_t differencesOffSurface(const glm::ivec3& d, std::span<const std::uint8_t> a,
+                                         std::span<const std::uint8_t> reference) {
+    std::size_t off = 0;
+    for (int k = 0; k < d.z; ++k) {
+        for (int j = 0; j < d.y; ++j) {
+            for (int i = 0; i < d.x; ++i) {
+                const std::size_t n = voxelIndex(d, i, j, k);
+                if (a[n] == reference[n]) {
+                    continue;
+                }
+                bool surface = false;
+                const int step[6][3] = {{-1, 0, 0}, {1, 0, 0},  {0, -1, 0},
+                                        {0, 1, 0},  {0, 0, -1}, {0, 0, 1}};
+                for (const auto& s : step) {
+                    const int x = i + s[0], y = j + s[1], z = k + s[2];
+                    if (x >= 0 && y >= 0 && z >= 0 && x < d.x && y < d.y && z < d.z &&
+                        reference[voxelIndex(d, x, y, z)] != reference[n]) {
+                        surface = true;
+                    }
+                }
+                off += surface ? 0 : 1;
+            }
+        }
+    }
+    return off;
+}
+
+} // namespace steerseg::test

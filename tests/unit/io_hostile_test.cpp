@@ -1,0 +1,263 @@
+// Hostile and broken files: each must fail with a ScanError naming the file and the problem,
+// without crashing and without allocating what the file does not hold.
+#include "io/file_write.hpp"
+#include "io/scan_reader.hpp"
+#include "io_test_files.hpp"
+#include "support/test_data.hpp"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+#include <limits>
+#include <nifti2_io.h>
+#include <sys/resource.h>
+
+namespace steerseg {
+namespace {
+
+// Reads `path`, expecting a ScanError whose message names the file and contains `problem`.
+void expectScanError(const std::filesystem::path& path, const std::string& problem) {
+    try {
+        (void)io::readScan(path);
+        ADD_FAILURE() << path << " was read but should have failed with \"" << problem << "\"";
+    } catch (const io::ScanError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find(path.filename().string()), std::string::npos) << what;
+        EXPECT_NE(what.find(problem), std::string::npos) << what;
+        EXPECT_EQ(what.find('\n'), std::string::npos) << "not one line: " << what;
+    }
+}
+
+// Peak resident memory of this test process (each test runs in its own process under CTest).
+double peakRssMiB() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return static_cast<double>(u.ru_maxrss) / 1024.0;
+}
+
+std::vector<std::byte> smallNifti(test::NiftiOptions o = {}) {
+    const Geometry g = test::obliqueGeometry({8, 8, 8});
+    return test::niftiFile(g, test::encodeSamples(test::patternValues(g.dims), "uint8"), o);
+}
+
+class Hostile : public ::testing::Test {
+  protected:
+    std::filesystem::path dir = test::tempDir("hostile");
+};
+
+TEST_F(Hostile, TruncatedNii) {
+    auto bytes = smallNifti();
+    bytes.resize(bytes.size() - 100);
+    test::writeFile(dir / "cut.nii", bytes);
+    expectScanError(dir / "cut.nii",
+                    "header says 8x8x8 uint8 (512 bytes) but the file holds only 412 bytes");
+    bytes.resize(200);
+    test::writeFile(dir / "short.nii", bytes);
+    expectScanError(dir / "short.nii", "too short for a NIfTI header");
+}
+
+TEST_F(Hostile, TruncatedNiiGz) {
+    const auto gz = io::gzipBytes(smallNifti());
+    test::writeFile(dir / "cut.nii.gz",
+                    std::vector<std::byte>(
+                        gz.begin(), gz.begin() + static_cast<std::ptrdiff_t>(gz.size() / 2)));
+    expectScanError(dir / "cut.nii.gz", "data ends after");
+}
+
+TEST_F(Hostile, GarbageGzip) {
+    std::vector<std::byte> bytes = {std::byte{0x1f}, std::byte{0x8b}, std::byte{8}, std::byte{0}};
+    for (int n = 0; n < 500; ++n) {
+        bytes.push_back(static_cast<std::byte>((n * 37 + 11) & 0xff));
+    }
+    test::writeFile(dir / "junk.nii.gz", bytes);
+    expectScanError(dir / "junk.nii.gz", "compressed data is corrupt");
+}
+
+// 100000^3 voxels: refused from the header, before any allocation.
+TEST_F(Hostile, HugeDimensionsInHeader) {
+    test::NiftiOptions o;
+    o.version = 2;
+    Geometry g;
+    g.dims = glm::ivec3(100000);
+    test::writeFile(dir / "huge.nii", test::niftiFile(g, {}, o));
+    expectScanError(dir / "huge.nii", "dimensions 100000x100000x100000 exceed the limit");
+    g.dims = glm::ivec3(30000); // fits NIfTI-1's int16 dims, but 2.7e13 voxels
+    test::writeFile(dir / "huge1.nii", test::niftiFile(g, {}, {}));
+    expectScanError(dir / "huge1.nii", "voxels) exceed the limit");
+    test::writeFile(
+        dir / "huge.nrrd",
+        std::string(
+            "NRRD0004\ntype: float\ndimension: 3\nsizes: 100000 100000 100000\nencoding: raw\n\n"));
+    expectScanError(dir / "huge.nrrd", "exceed the limit");
+    test::writeFile(dir / "huge.mha",
+                    std::string("NDims = 3\nDimSize = 100000 100000 100000\nElementType = "
+                                "MET_FLOAT\nElementDataFile = LOCAL\n"));
+    expectScanError(dir / "huge.mha", "exceed the limit");
+}
+
+// Within the limits (1200^3 float, 6.6 GiB) but backed by a few bytes of gzip: the reader must
+// fail after decompressing what is there, never reserving the claimed size.
+TEST_F(Hostile, ClaimedSizeNotBackedByCompressedData) {
+    Geometry g;
+    g.dims = glm::ivec3(1200);
+    test::NiftiOptions o;
+    o.datatype = NIFTI_TYPE_FLOAT32;
+    test::writeFile(dir / "claim.nii.gz",
+                    io::gzipBytes(test::niftiFile(g, std::vector<std::byte>(4096), o)));
+    expectScanError(dir / "claim.nii.gz",
+                    "header says 1200x1200x1200 float32 (6.4 GiB) but the data ends after 4.0 KiB");
+    test::writeFile(
+        dir / "claim.nrrd",
+        test::concat(
+            "NRRD0004\ntype: float\ndimension: 3\nsizes: 1200 1200 1200\nencoding: gzip\n\n",
+            io::gzipBytes(std::vector<std::byte>(4096))));
+    expectScanError(dir / "claim.nrrd", "but the data ends after 4.0 KiB");
+    EXPECT_LT(peakRssMiB(), 512.0);
+}
+
+TEST_F(Hostile, HeaderDataSizeMismatch) {
+    test::writeFile(
+        dir / "short.nrrd",
+        test::concat("NRRD0004\ntype: short\ndimension: 3\nsizes: 10 10 10\nencoding: raw\n\n",
+                     std::vector<std::byte>(1000)));
+    expectScanError(dir / "short.nrrd",
+                    "header says 10x10x10 int16 (2.0 KiB) but the file holds only 1000 bytes");
+    test::writeFile(
+        dir / "short.mha",
+        test::concat(
+            "NDims = 3\nDimSize = 4 4 4\nElementType = MET_USHORT\nElementDataFile = LOCAL\n",
+            std::vector<std::byte>(100)));
+    expectScanError(dir / "short.mha", "but the file holds only 100 bytes");
+    auto mgh = test::mghFile(test::obliqueGeometry({4, 4, 4}), 3, test::patternValues({4, 4, 4}));
+    mgh.resize(mgh.size() - 10);
+    test::writeFile(dir / "short.mgz", io::gzipBytes(mgh));
+    expectScanError(dir / "short.mgz", "but the data ends after");
+}
+
+TEST_F(Hostile, NanVoxelInFloatData) {
+    const Geometry g = test::obliqueGeometry({4, 4, 4});
+    auto values = test::patternValues(g.dims);
+    values[1 + 4 * 2 + 16 * 3] = std::numeric_limits<double>::quiet_NaN();
+    test::NiftiOptions o;
+    o.datatype = NIFTI_TYPE_FLOAT32;
+    test::writeFile(dir / "nan.nii", test::niftiFile(g, test::encodeSamples(values, "float32"), o));
+    expectScanError(dir / "nan.nii", "1 voxels are NaN or infinite (first at 1,2,3)");
+    values[0] = 1e300; // float64 past float range
+    o.datatype = NIFTI_TYPE_FLOAT64;
+    test::writeFile(dir / "inf.nii", test::niftiFile(g, test::encodeSamples(values, "float64"), o));
+    expectScanError(dir / "inf.nii", "2 voxels are NaN or infinite (first at 0,0,0)");
+}
+
+TEST_F(Hostile, EmptyFolderAndEmptyFile) {
+    std::filesystem::create_directory(dir / "empty");
+    expectScanError(dir / "empty", "the folder is empty");
+    test::writeFile(dir / "empty.nii", std::string());
+    expectScanError(dir / "empty.nii", "the file is empty");
+    test::writeFile(dir / "empty.nrrd", std::string());
+    expectScanError(dir / "empty.nrrd", "the file is empty");
+}
+
+TEST_F(Hostile, NonImageFileWithScanExtension) {
+    std::string text;
+    for (int n = 0; n < 20; ++n) {
+        text += "This is a text file, not a scan.\n"; // longer than any binary header
+    }
+    const std::pair<const char*, const char*> cases[] = {
+        {"text.nii", "not a NIfTI file"},        {"text.nii.gz", "not a NIfTI file"},
+        {"text.nrrd", "not a NRRD file"},        {"text.mha", "not a MetaImage header"},
+        {"text.mgz", "not an MGH/MGZ file"},     {"text.tif", "cannot read as an image"},
+        {"text.png", "cannot read as an image"},
+    };
+    for (const auto& [name, problem] : cases) {
+        test::writeFile(dir / name, text);
+        expectScanError(dir / name, problem);
+    }
+    std::filesystem::create_directory(dir / "folder");
+    test::writeFile(dir / "folder" / "a.png", text);
+    try {
+        (void)io::readScan(dir / "folder");
+        ADD_FAILURE() << "a folder with a fake image was read";
+    } catch (const io::ScanError& e) {
+        EXPECT_NE(std::string(e.what()).find("a.png: cannot read as an image"), std::string::npos)
+            << e.what();
+    }
+}
+
+TEST_F(Hostile, NrrdWithMissingFields) {
+    test::writeFile(dir / "nosizes.nrrd",
+                    std::string("NRRD0004\ntype: uint8\ndimension: 3\nencoding: raw\n\n"));
+    expectScanError(dir / "nosizes.nrrd", "NRRD header has no \"sizes\" field");
+    test::writeFile(
+        dir / "noend.nrrd",
+        std::string("NRRD0004\ntype: uint8\ndimension: 3\nsizes: 1 1 1\nencoding: raw\n"));
+    expectScanError(dir / "noend.nrrd", "no blank line ends it");
+    test::writeFile(dir / "nodata.nhdr",
+                    std::string("NRRD0004\ntype: uint8\ndimension: 3\nsizes: 1 1 1\nencoding: "
+                                "raw\ndata file: missing.raw\n"));
+    expectScanError(dir / "nodata.nhdr", "data file");
+    test::writeFile(dir / "dev.nhdr", std::string("NRRD0004\ntype: uint8\ndimension: 3\nsizes: 9 9 "
+                                                  "9\nencoding: raw\ndata file: /dev/zero\n"));
+    expectScanError(dir / "dev.nhdr", "not a regular file");
+    test::writeFile(dir / "vec.nrrd",
+                    std::string("NRRD0004\ntype: uint8\ndimension: 3\nsizes: 3 2 2\nspace: RAS\n"
+                                "space directions: none (1,0,0) (0,1,0)\nencoding: raw\n\n"));
+    expectScanError(dir / "vec.nrrd", "NRRD axis 0 is not spatial");
+}
+
+TEST_F(Hostile, ImageStackWithMixedSizes) {
+    for (const auto& [name, w] : {std::pair{"a1.png", 4}, std::pair{"a2.png", 5}}) {
+        auto out = OIIO::ImageOutput::create((dir / name).string());
+        ASSERT_TRUE(out);
+        ASSERT_TRUE(
+            out->open((dir / name).string(), OIIO::ImageSpec(w, 3, 1, OIIO::TypeDesc::UINT8)));
+        const std::vector<std::uint8_t> pixels(static_cast<std::size_t>(w * 3), 9);
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels.data()));
+        out->close();
+    }
+    try {
+        (void)io::readScan(dir);
+        ADD_FAILURE() << "mixed sizes were read";
+    } catch (const io::ScanError& e) {
+        EXPECT_NE(
+            std::string(e.what()).find("a2.png: is 5x3 with 1 channels but the first slice is 4x3"),
+            std::string::npos)
+            << e.what();
+    }
+}
+
+TEST_F(Hostile, FourDimensionalNiftiIsRefused) {
+    test::NiftiOptions o;
+    o.volumes = 3;
+    const Geometry g = test::obliqueGeometry({2, 2, 2});
+    test::writeFile(dir / "4d.nii", test::niftiFile(g, std::vector<std::byte>(24), o));
+    expectScanError(dir / "4d.nii", "holds 3 volumes (4D or more)");
+}
+
+TEST_F(Hostile, VoxOffsetPastTheEnd) {
+    auto bytes = smallNifti();
+    float far = 1e9f;
+    std::memcpy(bytes.data() + 108, &far, 4);
+    test::writeFile(dir / "far.nii", bytes);
+    expectScanError(dir / "far.nii", "lies beyond the end of the file");
+    far = std::numeric_limits<float>::quiet_NaN();
+    std::memcpy(bytes.data() + 108, &far, 4);
+    test::writeFile(dir / "nan.nii", bytes);
+    expectScanError(dir / "nan.nii", "does not point past the header");
+}
+
+TEST_F(Hostile, ShearedOrDegenerateGeometry) {
+    Geometry g = test::obliqueGeometry({2, 2, 2});
+    test::NiftiOptions o;
+    o.qformCode = 0;
+    auto bytes = test::niftiFile(g, std::vector<std::byte>(8), o);
+    float shear = 0.9f; // srow_x[1]: j gains an x component, no longer orthogonal to i
+    std::memcpy(bytes.data() + 280 + 4, &shear, 4);
+    test::writeFile(dir / "shear.nii", bytes);
+    expectScanError(dir / "shear.nii", "sform is sheared");
+    test::writeFile(dir / "zero.nrrd",
+                    std::string("NRRD0004\ntype: uint8\ndimension: 3\nsizes: 1 1 1\nspace: LPS\n"
+                                "space directions: (0,0,0) (0,1,0) (0,0,1)\nencoding: raw\n\nX"));
+    expectScanError(dir / "zero.nrrd", "is not positive and finite");
+}
+
+} // namespace
+} // namespace steerseg
