@@ -143,6 +143,9 @@ class Walker {
                 } else {
                     length = u16(end, big);
                 }
+                if (t == kPixelData && v != "OB" && v != "OW") {
+                    failTag(t, "(pixel data) has VR " + v + ", not OB or OW");
+                }
                 maySequence = v == "SQ" || v == "UN";
                 if (v == "UN") {
                     inner = Syntax::ImplicitLittle; // an undefined-length UN holds implicit VR
