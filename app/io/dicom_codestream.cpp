@@ -124,6 +124,40 @@ bool jpegFamily(const gdcm::TransferSyntax& ts) {
     }
 }
 
+std::uint32_t le32(std::span<const std::uint8_t> b, std::size_t at) {
+    return static_cast<std::uint32_t>(b[at]) | static_cast<std::uint32_t>(b[at + 1]) << 8 |
+           static_cast<std::uint32_t>(b[at + 2]) << 16 |
+           static_cast<std::uint32_t>(b[at + 3]) << 24;
+}
+
+// An RLE frame: a 64-byte header with the segment count (one per byte of each sample) and
+// increasing segment offsets inside the fragment. GDCM 3.0.21's RLECodec trusts the count and
+// reads out of bounds otherwise (found by fuzz_dicom).
+void checkRleFrame(const std::filesystem::path& file, std::span<const std::uint8_t> b,
+                   const ExpectedFrame& e) {
+    const std::uint32_t wanted = static_cast<std::uint32_t>(e.samples * (e.bitsAllocated / 8));
+    if (b.size() < 64) {
+        mismatch(file, "RLE", "a frame is shorter than its 64-byte header");
+    }
+    const std::uint32_t segments = le32(b, 0);
+    if (segments != wanted || segments > 15) {
+        mismatch(file, "RLE",
+                 std::to_string(segments) + " segments where " + std::to_string(wanted) +
+                     " are expected");
+    }
+    std::uint32_t previous = 0;
+    for (std::uint32_t s = 0; s < segments; ++s) {
+        const std::uint32_t offset = le32(b, 4 + 4 * std::size_t{s});
+        if ((s == 0 && offset != 64) || (s > 0 && offset <= previous) || offset >= b.size()) {
+            mismatch(file, "RLE",
+                     "segment " + std::to_string(s + 1) + " starts at byte " +
+                         std::to_string(offset) + " of a " + std::to_string(b.size()) +
+                         "-byte frame");
+        }
+        previous = offset;
+    }
+}
+
 } // namespace
 
 bool checkCodestream(const std::filesystem::path& file, std::span<const std::uint8_t> fragment,
@@ -162,15 +196,29 @@ void checkCompressedFrames(const std::filesystem::path& file, const gdcm::Image&
     const ExpectedFrame expected{
         static_cast<int>(image.GetDimension(1)), static_cast<int>(image.GetDimension(0)),
         static_cast<int>(pf.GetSamplesPerPixel()), static_cast<int>(pf.GetBitsAllocated())};
+    const bool rle = ts == gdcm::TransferSyntax::RLELossless;
+    const std::size_t frames = image.GetNumberOfDimensions() > 2 ? image.GetDimension(2) : 1U;
+    if (rle && fragments->GetNumberOfFragments() != frames) {
+        throw ScanError(file, "the RLE pixel data has " +
+                                  std::to_string(fragments->GetNumberOfFragments()) +
+                                  " fragments for " + std::to_string(frames) + " frames");
+    }
     std::size_t recognised = 0;
     for (unsigned f = 0; f < fragments->GetNumberOfFragments(); ++f) {
         const gdcm::ByteValue* bv = fragments->GetFragment(f).GetByteValue();
         if (bv == nullptr || bv->GetPointer() == nullptr) {
+            if (rle) {
+                throw ScanError(file, "an RLE frame is empty");
+            }
             continue;
         }
         const std::span<const std::uint8_t> bytes(
             reinterpret_cast<const std::uint8_t*>(bv->GetPointer()), bv->GetLength());
-        recognised += checkCodestream(file, bytes, expected) ? 1U : 0U;
+        if (rle) {
+            checkRleFrame(file, bytes, expected);
+        } else {
+            recognised += checkCodestream(file, bytes, expected) ? 1U : 0U;
+        }
     }
     if (jpegFamily(ts) && recognised == 0) {
         throw ScanError(file, "the compressed pixel data holds no JPEG codestream");

@@ -30,7 +30,8 @@ bool checkCodestream(const std::filesystem::path& file, std::span<const std::uin
                      const ExpectedFrame& expected);
 
 // Checks every fragment of an image's encapsulated pixel data with checkCodestream; a JPEG,
-// JPEG-LS or JPEG 2000 transfer syntax must hold at least one recognised codestream.
+// JPEG-LS or JPEG 2000 transfer syntax must hold at least one recognised codestream. RLE frames
+// (one fragment each) must have a consistent segment header.
 void checkCompressedFrames(const std::filesystem::path& file, const gdcm::Image& image);
 
 } // namespace steerseg::io

@@ -143,6 +143,9 @@ class Walker {
                 } else {
                     length = u16(end, big);
                 }
+                if (t == kPixelData && v != "OB" && v != "OW") {
+                    failTag(t, "(pixel data) has VR " + v + ", not OB or OW");
+                }
                 maySequence = v == "SQ" || v == "UN";
                 if (v == "UN") {
                     inner = Syntax::ImplicitLittle; // an undefined-length UN holds implicit VR
@@ -310,7 +313,9 @@ std::uint64_t checkDicomStructure(const std::filesystem::path& path) {
     }
     Walker w(path, in, size);
     std::array<char, 132> head{};
-    if (size >= 132 && in.read(head.data(), 132) && std::string(head.data() + 128, 4) == "DICM") {
+    const bool hasPreamble =
+        size >= 132 && in.read(head.data(), 132) && std::string(head.data() + 128, 4) == "DICM";
+    if (hasPreamble) {
         w.pos = 132;
     }
     // The meta header (group 0002) is always explicit VR little endian.
@@ -372,6 +377,10 @@ std::uint64_t checkDicomStructure(const std::filesystem::path& path) {
         w.fail("the meta header's group length (" + std::to_string(*groupLength) +
                ") does not match its elements (" + std::to_string(w.pos - groupStart) + ")");
     }
+    // GDCM asserts reading a meta header that lacks it.
+    if (hasPreamble && syntaxUid.empty()) {
+        w.fail("the meta header has no Transfer Syntax UID (0002,0010)");
+    }
     Syntax syntax = Syntax::ExplicitLittle;
     if (syntaxUid == "1.2.840.10008.1.2.1.99") {
         std::istringstream inflated(inflateDataSet(path, in, w.pos, size));
@@ -394,8 +403,13 @@ std::uint64_t checkDicomStructure(const std::filesystem::path& path) {
             first[4] >= 'A' && first[4] <= 'Z' && first[5] >= 'A' && first[5] <= 'Z';
         syntax = letters ? Syntax::ExplicitLittle : Syntax::ImplicitLittle;
     }
+    const std::uint64_t dataSetStart = w.pos;
     w.elements(size, syntax, 0, 0, true);
-    return w.paddingStart != 0 ? w.paddingStart : size;
+    const std::uint64_t end = w.paddingStart != 0 ? w.paddingStart : size;
+    if (end <= dataSetStart) {
+        throw ScanError(path, "not a well-formed DICOM file: the data set is empty");
+    }
+    return end;
 }
 
 } // namespace steerseg::io

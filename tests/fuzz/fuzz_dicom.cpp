@@ -1,6 +1,6 @@
 // libFuzzer target for the DICOM reader: bytes -> temporary file -> io::readDicom. Anything but
 // a result or a ScanError (a crash, hang, other exception or sanitizer report) is a bug.
-#include "io/readers.hpp"
+#include "fuzz_reader.hpp"
 
 #include <cstdint>
 #include <fstream>
@@ -12,6 +12,10 @@ extern "C" const char* __lsan_default_suppressions() {
            "libopenjp2.so\n";
 }
 
+extern "C" const char* __lsan_default_options() {
+    return "print_suppressions=0";
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static const std::filesystem::path file =
         std::filesystem::temp_directory_path() /
@@ -20,12 +24,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         std::ofstream out(file, std::ios::binary | std::ios::trunc);
         out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
     }
-    // Small caps keep a hostile header's claimed size inside libFuzzer's memory limit.
-    steerseg::io::ReadLimits limits;
-    limits.maxVoxels = std::size_t{1} << 22;
-    limits.maxDimension = 4096;
     try {
-        (void)steerseg::io::readDicom(file, limits);
+        const steerseg::Volume v = steerseg::io::readDicom(file, steerseg::fuzz::fuzzLimits());
+        (void)v.stats();
     } catch (const steerseg::io::ScanError&) {
     }
     return 0;
