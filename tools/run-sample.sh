@@ -24,11 +24,11 @@ segmentation=(--seed 80,56,52,5 --T 800 --eps 100 --alpha 0.8)
 "$bin" segment --input builtin:sample "${segmentation[@]}" --converge --max-iterations 2000 \
   --output "$out/lesion-mask.nii.gz" --report "$out/segment-report.json"
 
-mask=(--input builtin:sample --mask "$out/lesion-mask.nii.gz" --size 512x512)
+mask=(--input builtin:sample --mask "$out/lesion-mask.nii.gz")
 "$bin" render "${mask[@]}" --size 384x384 --view 3d --surface translucent --output "$out/frame-3d.png"
-"$bin" render "${mask[@]}" --size 384x384 --view 3d --clip 0,0,1,52 --output "$out/frame-3d-clip.png"
-"$bin" render "${mask[@]}" --view axial --slice 52 --output "$out/frame-axial.png"
-"$bin" render "${mask[@]}" --view coronal --slice 56 --output "$out/frame-coronal.png"
+"$bin" render "${mask[@]}" --size 384x384 --view 3d --clip 0,-1,0,-56 --output "$out/frame-3d-clip.png"
+"$bin" render "${mask[@]}" --size 512x512 --view axial --slice 52 --output "$out/frame-axial.png"
+"$bin" render "${mask[@]}" --size 512x512 --view coronal --slice 56 --output "$out/frame-coronal.png"
 "$bin" render --input builtin:sample --view sagittal --slice 80 --speed --T 800 --eps 100 \
   --size 512x512 --output "$out/frame-sagittal-speed.png"
 
