@@ -65,10 +65,12 @@ struct GzipSource::State {
     bool finished = false; // the stream ended (or only padding follows it)
 };
 
-GzipSource::GzipSource(std::filesystem::path path, ByteSource& inner)
-    : path_(std::move(path)), inner_(inner), state_(std::make_unique<State>()) {
-    // 15 + 32: the largest window, and detect a gzip or a zlib header automatically.
-    if (inflateInit2(&state_->zs, 15 + 32) != Z_OK) {
+GzipSource::GzipSource(std::filesystem::path path, ByteSource& inner, Format format)
+    : path_(std::move(path)), inner_(inner), format_(format), state_(std::make_unique<State>()) {
+    // 15 + 32: the largest window, and detect a gzip or a zlib header automatically; -15: the
+    // largest window and no header at all.
+    const int windowBits = format == Format::RawDeflate ? -MAX_WBITS : MAX_WBITS + 32;
+    if (inflateInit2(&state_->zs, windowBits) != Z_OK) {
         throw ScanError(path_, "cannot start the zlib decompressor");
     }
 }
@@ -103,7 +105,8 @@ std::size_t GzipSource::read(std::span<std::byte> out) {
                 zs.next_in = s.input.data();
                 zs.avail_in = static_cast<uInt>(got);
             }
-            if (zs.avail_in >= 2 && zs.next_in[0] == 0x1f && zs.next_in[1] == 0x8b) {
+            if (format_ == Format::GzipOrZlib && zs.avail_in >= 2 && zs.next_in[0] == 0x1f &&
+                zs.next_in[1] == 0x8b) {
                 inflateReset(&zs);
             } else {
                 s.finished = true;

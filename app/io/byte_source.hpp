@@ -65,11 +65,13 @@ class MemorySource final : public SeekableSource {
     std::uint64_t position_ = 0;
 };
 
-// Decompresses a gzip or zlib stream (concatenated gzip members too) read from `inner`. Corrupt
-// data throws ScanError naming `path`; compressed data that stops early reads as an early end.
+// Decompresses a gzip or zlib stream (concatenated gzip members too), or a raw deflate stream
+// (RFC 1951: DICOM's deflated transfer syntax), read from `inner`. Corrupt data throws ScanError
+// naming `path`; compressed data that stops early reads as an early end.
 class GzipSource final : public ByteSource {
   public:
-    GzipSource(std::filesystem::path path, ByteSource& inner);
+    enum class Format { GzipOrZlib, RawDeflate };
+    GzipSource(std::filesystem::path path, ByteSource& inner, Format format = Format::GzipOrZlib);
     ~GzipSource() override;
     GzipSource(const GzipSource&) = delete;
     GzipSource& operator=(const GzipSource&) = delete;
@@ -80,6 +82,7 @@ class GzipSource final : public ByteSource {
     struct State;
     std::filesystem::path path_;
     ByteSource& inner_;
+    Format format_;
     std::unique_ptr<State> state_;
 };
 

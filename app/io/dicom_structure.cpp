@@ -1,5 +1,7 @@
 #include "io/dicom_structure.hpp"
 
+#include "io/byte_source.hpp"
+
 #include <array>
 #include <cstdint>
 #include <cstdio>
@@ -7,7 +9,6 @@
 #include <optional>
 #include <sstream>
 #include <string>
-#include <zlib.h>
 
 namespace steerseg::io {
 
@@ -261,45 +262,18 @@ class Walker {
     std::uint64_t size_;
 };
 
-// The data set after the meta header, inflated (raw deflate, RFC 1951), up to a size cap.
-std::string inflateDataSet(const std::filesystem::path& path, std::istream& in, std::uint64_t from,
-                           std::uint64_t size) {
-    std::string packed(static_cast<std::size_t>(size - from), '\0');
-    in.clear();
-    in.seekg(static_cast<std::streamoff>(from));
-    if (!in.read(packed.data(), static_cast<std::streamsize>(packed.size()))) {
-        throw ScanError(path, "cannot read the deflated data set");
+// The data set after the meta header, inflated (raw deflate, RFC 1951), up to a size cap. A
+// stream cut short inflates to a shorter data set, which the element walk then refuses.
+std::string inflateDataSet(const std::filesystem::path& path, std::uint64_t from) {
+    FileSource file(path);
+    file.seek(from);
+    GzipSource inflater(path, file, GzipSource::Format::RawDeflate);
+    const std::vector<std::byte> bytes = readUpTo(inflater, kMaxInflatedBytes + 1);
+    if (bytes.size() > kMaxInflatedBytes) {
+        throw ScanError(path, "the deflated data set inflates past " +
+                                  std::to_string(kMaxInflatedBytes >> 20) + " MiB");
     }
-    z_stream z{};
-    if (inflateInit2(&z, -MAX_WBITS) != Z_OK) {
-        throw ScanError(path, "cannot start inflating the data set");
-    }
-    std::string out;
-    std::array<char, 65536> chunk{};
-    z.next_in = reinterpret_cast<Bytef*>(packed.data());
-    z.avail_in = static_cast<uInt>(packed.size());
-    int rc = Z_OK;
-    while (rc != Z_STREAM_END) {
-        z.next_out = reinterpret_cast<Bytef*>(chunk.data());
-        z.avail_out = static_cast<uInt>(chunk.size());
-        rc = inflate(&z, Z_NO_FLUSH);
-        if (rc != Z_OK && rc != Z_STREAM_END) {
-            inflateEnd(&z);
-            throw ScanError(path, "the deflated data set is corrupt");
-        }
-        out.append(chunk.data(), chunk.size() - z.avail_out);
-        if (out.size() > kMaxInflatedBytes) {
-            inflateEnd(&z);
-            throw ScanError(path, "the deflated data set inflates past " +
-                                      std::to_string(kMaxInflatedBytes >> 20) + " MiB");
-        }
-        if (rc == Z_OK && z.avail_in == 0 && z.avail_out != 0) {
-            inflateEnd(&z);
-            throw ScanError(path, "the deflated data set is truncated");
-        }
-    }
-    inflateEnd(&z);
-    return out;
+    return {reinterpret_cast<const char*>(bytes.data()), bytes.size()};
 }
 
 } // namespace
@@ -383,7 +357,7 @@ std::uint64_t checkDicomStructure(const std::filesystem::path& path) {
     }
     Syntax syntax = Syntax::ExplicitLittle;
     if (syntaxUid == "1.2.840.10008.1.2.1.99") {
-        std::istringstream inflated(inflateDataSet(path, in, w.pos, size));
+        std::istringstream inflated(inflateDataSet(path, w.pos));
         const auto inflatedSize = static_cast<std::uint64_t>(inflated.str().size());
         Walker data(path, inflated, inflatedSize);
         data.elements(inflatedSize, Syntax::ExplicitLittle, 0, 0, false);
