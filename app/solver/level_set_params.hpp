@@ -29,7 +29,7 @@ void validateParams(const LevelSetParams& params);
 
 // Explicit-Euler stability, shared by both solvers (the GPU evaluates the same expression with
 // these constants as uniforms):
-//   dt = 1 / (max over the narrow band of |alpha * D| / courant + fixedRate)
+//   dt = 1 / (max over the front (onFront, phi_stencil.hpp) of |alpha * D| / courant + fixedRate)
 // fixedRate = (1 - alpha) * 6 (central-difference curvature term, 1 / (2 * 3) at unit spacing)
 // + the rescaling term's speed. courant is 0.5, not 0.9: the 3D up-wind scheme is stable for
 // dt * |F| * (|nx| + |ny| + |nz|) <= 1, up to sqrt(3) * dt * |F| on a diagonal front; with 0.9

@@ -62,19 +62,36 @@ inline bool inNarrowBand(const PhiStencil& s) {
     return m < kPhiFar;
 }
 
-// d(phi)/dt for data speed D = eps - |I - T| (from the speed function) and curvature weight.
-inline float phiRate(const PhiStencil& s, float dataSpeed, float alpha) {
+inline float clampPhi(float phi) {
+    return std::clamp(phi, -kPhiFar, kPhiFar);
+}
+
+// On the front: the voxel and a face neighbour lie on different sides of the surface (phi < 0
+// inside). Only front voxels set the time step, as only ITK's active layer does: elsewhere in
+// the band |D| can be far larger (bone next to soft tissue) without the surface being near.
+inline bool onFront(const PhiStencil& s) {
+    const bool in = s.c < 0.0F;
+    return (s.xm < 0.0F) != in || (s.xp < 0.0F) != in || (s.ym < 0.0F) != in ||
+           (s.yp < 0.0F) != in || (s.zm < 0.0F) != in || (s.zp < 0.0F) != in;
+}
+
+// One explicit step at one voxel: phi + dt * d(phi)/dt, clamped to +-kPhiFar, for data speed
+// D = eps - |I - T| (from the speed function).
+// The data term's result is limited to the range of the voxel and its face neighbours. Under
+// the front's time step an up-wind update lies in that range anyway (it is a convex
+// combination of them); off the front the step may be too long for the local |D|, and the
+// limit keeps such voxels from overshooting, in particular from changing side before the front
+// reaches them.
+inline float phiStep(const PhiStencil& s, float dataSpeed, float alpha, float dt) {
     const float f = alpha * dataSpeed;
-    const float data = -f * upwindGradient(s, f);
+    const float lo = std::min({s.c, s.xm, s.xp, s.ym, s.yp, s.zm, s.zp});
+    const float hi = std::max({s.c, s.xm, s.xp, s.ym, s.yp, s.zm, s.zp});
+    const float moved = std::clamp(s.c - dt * f * upwindGradient(s, f), lo, hi);
     const float curvature = (1.0F - alpha) * curvatureTimesGradient(s);
     // Rescaling: Godunov |grad phi| taken from the surface's side (information flows outward).
     const float rescale =
         kRescaleWeight * s.c * (1.0F - upwindGradient(s, s.c >= 0.0F ? 1.0F : -1.0F));
-    return data + curvature + rescale;
-}
-
-inline float clampPhi(float phi) {
-    return std::clamp(phi, -kPhiFar, kPhiFar);
+    return clampPhi(moved + dt * (curvature + rescale));
 }
 
 // The paper's threshold speed D(I) = eps - |I - T|. The GPU twin is

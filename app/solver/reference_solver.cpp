@@ -93,15 +93,18 @@ int ReferenceSolver::step(int n, float timeLimit) {
     const TimeStepRule rule = timeStepRule(params_);
     int done = 0;
     for (; done < n; ++done) {
-        // Time step from the fastest data speed in the narrow band (as the GPU's measure pass).
+        // Time step from the fastest data speed on the front (as the GPU's measure pass).
         std::vector<std::size_t> band;
         float maxRate = 0.0F;
         for (int k = 0; k < dims_.z; ++k) {
             for (int j = 0; j < dims_.y; ++j) {
                 for (int i = 0; i < dims_.x; ++i) {
                     const PhiStencil s = faceStencil(i, j, k);
-                    if (inNarrowBand(s)) {
-                        band.push_back(index(i, j, k));
+                    if (!inNarrowBand(s)) {
+                        continue;
+                    }
+                    band.push_back(index(i, j, k));
+                    if (onFront(s)) {
                         const float d = thresholdSpeed(intensities_[band.back()], params_);
                         maxRate = std::max(maxRate, std::abs(params_.alpha * d));
                     }
@@ -123,7 +126,7 @@ int ReferenceSolver::step(int n, float timeLimit) {
                 at / (static_cast<std::size_t>(dims_.x) * static_cast<std::size_t>(dims_.y)));
             const PhiStencil s = stencil(i, j, k);
             const float d = thresholdSpeed(intensities_[at], params_);
-            const float out = clampPhi(s.c + dt * phiRate(s, d, params_.alpha));
+            const float out = phiStep(s, d, params_.alpha, dt);
             changed = changed || ((out < 0.0F) != (s.c < 0.0F));
             next_[at] = out;
         }

@@ -1,6 +1,6 @@
 #version 310 es
-// One group per active brick: the largest data speed |alpha * D| in the narrow band, which sets
-// the next time step (choose_time_step.comp).
+// One group per active brick: the largest data speed |alpha * D| on the front, which sets the
+// next time step (choose_time_step.comp).
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
 #include "solver/speed_threshold.glsl"
@@ -29,7 +29,7 @@ void main() {
         if (any(greaterThanEqual(g, volumeDims))) {
             continue;
         }
-        if (tileInNarrowBand(l)) {
+        if (tileOnFront(l)) {
             localMax = max(localMax, abs(alpha * dataSpeed(g)));
         }
     }

@@ -45,10 +45,22 @@ bool inNarrowBand(float c, float xm, float xp, float ym, float yp, float zm, flo
     return m < PHI_FAR;
 }
 
-float phiRate(PhiStencil s, float dataSpeed, float alpha) {
+// On the front: the voxel and a face neighbour lie on different sides of the surface. Only
+// front voxels set the time step (see app/solver/phi_stencil.hpp).
+bool onFront(float c, float xm, float xp, float ym, float yp, float zm, float zp) {
+    bool inside = c < 0.0;
+    return (xm < 0.0) != inside || (xp < 0.0) != inside || (ym < 0.0) != inside ||
+           (yp < 0.0) != inside || (zm < 0.0) != inside || (zp < 0.0) != inside;
+}
+
+// phi after one step of dt; the data term is limited to the range of the voxel and its face
+// neighbours (why: app/solver/phi_stencil.hpp).
+float phiStep(PhiStencil s, float dataSpeed, float alpha, float dt) {
     float f = alpha * dataSpeed;
-    float data = -f * upwindGradient(s, f);
+    float lo = min(min(min(s.c, s.xm), min(s.xp, s.ym)), min(min(s.yp, s.zm), s.zp));
+    float hi = max(max(max(s.c, s.xm), max(s.xp, s.ym)), max(max(s.yp, s.zm), s.zp));
+    float moved = clamp(s.c - dt * f * upwindGradient(s, f), lo, hi);
     float curvature = (1.0 - alpha) * curvatureTimesGradient(s);
     float rescale = RESCALE_WEIGHT * s.c * (1.0 - upwindGradient(s, s.c >= 0.0 ? 1.0 : -1.0));
-    return data + curvature + rescale;
+    return clamp(moved + dt * (curvature + rescale), -PHI_FAR, PHI_FAR);
 }

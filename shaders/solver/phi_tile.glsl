@@ -20,3 +20,9 @@ bool tileInNarrowBand(ivec3 l) {
                         tileAt(l + ivec3(0, -1, 0)), tileAt(l + ivec3(0, 1, 0)),
                         tileAt(l + ivec3(0, 0, -1)), tileAt(l + ivec3(0, 0, 1)));
 }
+
+bool tileOnFront(ivec3 l) {
+    return onFront(tileAt(l), tileAt(l + ivec3(-1, 0, 0)), tileAt(l + ivec3(1, 0, 0)),
+                   tileAt(l + ivec3(0, -1, 0)), tileAt(l + ivec3(0, 1, 0)),
+                   tileAt(l + ivec3(0, 0, -1)), tileAt(l + ivec3(0, 0, 1)));
+}

@@ -63,7 +63,7 @@ void main() {
         float out_ = s.c;
         if (all(lessThan(g, volumeDims))) {
             if (dt > 0.0 && tileInNarrowBand(l)) {
-                out_ = clamp(s.c + dt * phiRate(s, dataSpeed(g), alpha), -PHI_FAR, PHI_FAR);
+                out_ = phiStep(s, dataSpeed(g), alpha, dt);
             }
             noteVoxelState(out_);
             if ((out_ < 0.0) != (s.c < 0.0)) {
