@@ -9,7 +9,7 @@ namespace steerseg {
 
 // Host mirror of shaders/common/brick_pool.glsl: what a reader of the level set (the renderer,
 // tests) needs to bind to read phi straight from the solver's pool. Valid until the solver's
-// next step or edit (the pool may be reallocated, and phi is double-buffered).
+// next step or edit (the pool may be reallocated).
 struct BrickPoolView {
     GLuint pageTableBuffer = 0; // uint per brick
     GLuint phiPoolBuffer = 0;   // float per pooled voxel (current iteration)

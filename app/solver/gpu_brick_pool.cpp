@@ -78,8 +78,13 @@ GpuBrickPool::GpuBrickPool(const glm::ivec3& dims, int brickSize, std::size_t ma
 }
 
 std::size_t GpuBrickPool::brickBytes() const {
-    return static_cast<std::size_t>(brickSize_) * static_cast<std::size_t>(brickSize_) *
-           static_cast<std::size_t>(brickSize_) * sizeof(float);
+    const auto b = static_cast<std::size_t>(brickSize_);
+    return b * b * b * sizeof(float);
+}
+
+std::size_t GpuBrickPool::shellBytes() const {
+    const auto b = static_cast<std::size_t>(brickSize_);
+    return (b * b * b - (b - 2) * (b - 2) * (b - 2)) * sizeof(float);
 }
 
 std::uint32_t GpuBrickPool::maxCapacity() const {
@@ -88,7 +93,7 @@ std::uint32_t GpuBrickPool::maxCapacity() const {
 }
 
 std::size_t GpuBrickPool::levelSetBytes() const {
-    return 2 * static_cast<std::size_t>(capacity_) * brickBytes() +
+    return static_cast<std::size_t>(capacity_) * (brickBytes() + shellBytes()) +
            static_cast<std::size_t>(brickCount_) * 4;
 }
 
@@ -99,13 +104,12 @@ std::size_t GpuBrickPool::bookkeepingBytes() const {
 
 void GpuBrickPool::allocateSlotBuffers(std::uint32_t capacity) {
     capacity_ = capacity;
-    phi_[0] = makeBuffer(capacity * brickBytes());
-    phi_[1] = makeBuffer(capacity * brickBytes());
+    phi_ = makeBuffer(capacity * brickBytes());
+    shellNext_ = makeBuffer(capacity * shellBytes());
     slotBrick_ = makeBuffer(capacity * 4);
     freeList_ = makeBuffer(capacity * 4);
     activeList_ = makeBuffer(capacity * 4);
     slotState_ = makeBuffer(capacity * 4);
-    current_ = 0;
 }
 
 void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
@@ -154,7 +158,7 @@ void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
                                  std::to_string(maxCapacity()) + ")");
     }
     const std::uint32_t capacity =
-        dense ? brickCount_ : std::min(maxCapacity(), std::max(kMinCapacity, used + used / 2 + 16));
+        dense ? brickCount_ : std::min(maxCapacity(), std::max(kMinCapacity, poolTarget(used, 0, 0)));
     allocateSlotBuffers(capacity);
 
     std::vector<float> pool(static_cast<std::size_t>(capacity) * bv, kPhiFar);
@@ -179,7 +183,7 @@ void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
     for (std::uint32_t s = capacity; s > used; --s) {
         freeList.push_back(s - 1);
     }
-    writeBuffer(phi_[current_], 0, pool.data(), pool.size() * sizeof(float));
+    writeBuffer(phi_, 0, pool.data(), pool.size() * sizeof(float));
     writeBuffer(slotBrick_, 0, slotBrick.data(), slotBrick.size() * 4);
     writeBuffer(freeList_, 0, freeList.data(), freeList.size() * 4);
     writeBuffer(pageTable_, 0, page.data(), page.size() * 4);
@@ -197,7 +201,7 @@ void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
 std::vector<float> GpuBrickPool::download() const {
     const auto page = readBuffer<std::uint32_t>(pageTable_, brickCount_);
     const std::size_t bv = brickBytes() / sizeof(float);
-    const auto pool = readBuffer<float>(phi_[current_], capacity_ * bv);
+    const auto pool = readBuffer<float>(phi_, capacity_ * bv);
     std::vector<float> phi(static_cast<std::size_t>(dims_.x) * static_cast<std::size_t>(dims_.y) *
                            static_cast<std::size_t>(dims_.z));
     const int b = brickSize_;
@@ -230,12 +234,12 @@ void GpuBrickPool::grow(std::uint32_t newCapacity, const ControlBlock& ctrl) {
         return;
     }
     const std::uint32_t old = capacity_;
-    gpu::Buffer oldPhi = std::move(phi_[current_]);
+    gpu::Buffer oldPhi = std::move(phi_);
     gpu::Buffer oldSlotBrick = std::move(slotBrick_);
     gpu::Buffer oldFree = std::move(freeList_);
     gpu::Buffer oldState = std::move(slotState_);
     allocateSlotBuffers(newCapacity);
-    copyBuffer(oldPhi, phi_[current_], 0, 0, old * brickBytes());
+    copyBuffer(oldPhi, phi_, 0, 0, old * brickBytes());
     copyBuffer(oldSlotBrick, slotBrick_, 0, 0, old * 4);
     copyBuffer(oldState, slotState_, 0, 0, old * 4);
     copyBuffer(oldFree, freeList_, 0, 0, ctrl.freeCount * 4);
@@ -275,7 +279,7 @@ void GpuBrickPool::shrink(std::uint32_t newCapacity, const ControlBlock& ctrl) {
             continue;
         }
         const std::uint32_t to = lowFree[nextFree++];
-        copyBuffer(phi_[current_], phi_[current_], s * brickBytes(), to * brickBytes(),
+        copyBuffer(phi_, phi_, s * brickBytes(), to * brickBytes(),
                    brickBytes());
         slotBrick[to] = slotBrick[s];
         state[to] = state[s];
@@ -283,9 +287,9 @@ void GpuBrickPool::shrink(std::uint32_t newCapacity, const ControlBlock& ctrl) {
     }
     std::vector<std::uint32_t> freeList(lowFree.begin() + static_cast<std::ptrdiff_t>(nextFree),
                                         lowFree.end());
-    gpu::Buffer oldPhi = std::move(phi_[current_]);
+    gpu::Buffer oldPhi = std::move(phi_);
     allocateSlotBuffers(newCapacity);
-    copyBuffer(oldPhi, phi_[current_], 0, 0, newCapacity * brickBytes());
+    copyBuffer(oldPhi, phi_, 0, 0, newCapacity * brickBytes());
     writeBuffer(slotBrick_, 0, slotBrick.data(), newCapacity * 4);
     writeBuffer(slotState_, 0, state.data(), newCapacity * 4);
     writeBuffer(freeList_, 0, freeList.data(), freeList.size() * 4);
@@ -298,8 +302,8 @@ void GpuBrickPool::shrink(std::uint32_t newCapacity, const ControlBlock& ctrl) {
 
 void GpuBrickPool::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPageTable, pageTable_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPhiPool, phi_[current_].id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPhiNext, phi_[current_ ^ 1].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPhiPool, phi_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShellNext, shellNext_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kControl, control_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSlotBrick, slotBrick_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFreeList, freeList_.id());
@@ -324,7 +328,7 @@ void GpuBrickPool::writeControl(const ControlBlock& ctrl) {
 BrickPoolView GpuBrickPool::view() const {
     BrickPoolView v;
     v.pageTableBuffer = pageTable_.id();
-    v.phiPoolBuffer = phi_[current_].id();
+    v.phiPoolBuffer = phi_.id();
     v.volumeDims = dims_;
     v.brickGrid = grid_;
     v.brickSize = brickSize_;

@@ -15,7 +15,7 @@ namespace steerseg::solver_detail {
 enum Binding : GLuint {
     kPageTable = 0,
     kPhiPool = 1,
-    kPhiNext = 2,
+    kShellNext = 2,
     kControl = 3,
     kSlotBrick = 4,
     kFreeList = 5,
@@ -47,8 +47,19 @@ static_assert(sizeof(ControlBlock) == 21 * 4);
 
 inline constexpr std::uint32_t kNoBrick = 0xFFFFFFFFu;
 
-// The sparse level-set storage on the GPU: page table, the two phi pools (current / next), and
-// the bookkeeping the passes share (slot -> brick, free list, active list, requests, states).
+// Pool slots to hold `used` bricks plus a margin for the band's advance until the next check:
+// twice what it grew over the last check (`growth`), the pending requests, and 1/16 of the band.
+// Kept tight: with the shell scratch a slot costs 1.58 bricks of phi, so storage stays within 2x
+// the used bricks only up to ~1.27 slots per used brick.
+inline std::uint32_t poolTarget(std::uint32_t used, std::uint32_t growth, std::uint32_t pending) {
+    return used + used / 16 + 2 * growth + pending + 4;
+}
+
+// The sparse level-set storage on the GPU: page table, the phi pool, the per-slot shell scratch
+// of the in-place step (shaders/solver/brick_shell.glsl), and the bookkeeping the passes share
+// (slot -> brick, free list, active list, requests, states). phi is stored once: a step writes
+// each brick's interior in place and only its shell (296 of 512 voxels at brick size 8) aside,
+// 1.58x a brick where a second pool would be 2x.
 // Capacity changes copy on the GPU; only a shrink reads the small slot map back to plan moves.
 class GpuBrickPool {
   public:
@@ -67,7 +78,6 @@ class GpuBrickPool {
     void shrink(std::uint32_t newCapacity, const ControlBlock& ctrl);
 
     void bind() const;
-    void swapPhi() { current_ ^= 1; }
 
     [[nodiscard]] ControlBlock readControl() const;
     void writeControl(const ControlBlock& ctrl);
@@ -76,7 +86,9 @@ class GpuBrickPool {
     [[nodiscard]] std::uint32_t maxCapacity() const;
     [[nodiscard]] std::uint32_t brickCount() const { return brickCount_; }
     [[nodiscard]] std::size_t brickBytes() const;
-    // Both phi pools plus the page table.
+    // Bytes of one slot's shell scratch.
+    [[nodiscard]] std::size_t shellBytes() const;
+    // The phi pool, the shell scratch and the page table.
     [[nodiscard]] std::size_t levelSetBytes() const;
     // Slot map, free and active lists, states, requests and epochs.
     [[nodiscard]] std::size_t bookkeepingBytes() const;
@@ -93,9 +105,9 @@ class GpuBrickPool {
     std::size_t maxBlockBytes_;
     std::uint32_t brickCount_;
     std::uint32_t capacity_ = 0;
-    int current_ = 0;
     gpu::Buffer pageTable_;
-    gpu::Buffer phi_[2];
+    gpu::Buffer phi_;
+    gpu::Buffer shellNext_;
     gpu::Buffer control_;
     gpu::Buffer slotBrick_;
     gpu::Buffer freeList_;

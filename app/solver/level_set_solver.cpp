@@ -164,8 +164,7 @@ void LevelSetSolver::iterate(float timeLimit) {
     setUniform(p.chooseTimeStep.id(), "timeLimit", timeLimit);
     dispatch(p.chooseTimeStep.id(), 1);
     dispatchIndirect(p.updatePhi.id(), kBrickArgs);
-    pool_->swapPhi();
-    pool_->bind();
+    dispatchIndirect(p.commitShells.id(), kBrickArgs);
     settle();
 }
 
@@ -242,8 +241,10 @@ void LevelSetSolver::editSphere(const Sphere& sphere, bool add) {
 }
 
 // An edit or a parameter change restarts the convergence clock.
+// Also the baseline of the pool's growth estimate (managePool), which an edit would distort.
 void LevelSetSolver::noteChange() {
     ControlBlock ctrl = pool_->readControl();
+    lastUsed_ = pool_->capacity() - ctrl.freeCount;
     ctrl.lastChange = ctrl.iteration;
     ctrl.lastChangeTime = ctrl.time;
     pool_->writeControl(ctrl);
@@ -298,8 +299,10 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
                     "the level set outgrew the GPU's shader storage block limit (" +
                     std::to_string(pool_->maxCapacity()) + " bricks)");
             }
+            // The band outran the margin: grow for twice the advance of a whole check.
             const std::uint32_t used = pool_->capacity() - ctrl.freeCount;
-            pool_->grow(used + used / 2 + ctrl.requestCount + 16, ctrl);
+            const std::uint32_t growth = used > lastUsed_ ? used - lastUsed_ : used / 4;
+            pool_->grow(solver_detail::poolTarget(used, 2 * growth, ctrl.requestCount), ctrl);
             ++stats_.poolGrowths;
             pool_->bind();
             ctrl = pool_->readControl();
@@ -319,19 +322,23 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
 }
 
 // Keeps a margin of free slots for the band's advance until the next check, and gives memory
-// back when the surface shrank. A run that still outpaces the margin stalls and is grown above.
+// back when the surface shrank, so that storage follows the band (poolTarget). A run that still
+// outpaces the margin stalls and is grown above.
 void LevelSetSolver::managePool() {
     if (options_.dense) {
         return;
     }
     const ControlBlock ctrl = pool_->readControl();
     const std::uint32_t used = pool_->capacity() - ctrl.freeCount;
-    const std::uint32_t margin = used / 8 + ctrl.requestCount + 8;
-    if (ctrl.freeCount < margin && pool_->capacity() < pool_->maxCapacity()) {
-        pool_->grow(used + used / 4 + ctrl.requestCount + 16, ctrl);
+    const std::uint32_t growth = used > lastUsed_ ? used - lastUsed_ : 0;
+    lastUsed_ = used;
+    const std::uint32_t target = solver_detail::poolTarget(used, growth, ctrl.requestCount);
+    if (ctrl.freeCount < used / 32 + growth + ctrl.requestCount + 2 &&
+        pool_->capacity() < pool_->maxCapacity()) {
+        pool_->grow(target, ctrl);
         ++stats_.poolGrowths;
-    } else if (used + used / 4 + 16 < pool_->capacity() / 2) {
-        pool_->shrink(used + used / 4 + 16, ctrl);
+    } else if (pool_->capacity() > target + used / 16 + 4) {
+        pool_->shrink(target, ctrl);
         ++stats_.poolShrinks;
     }
     stats_.peakLevelSetBytes = std::max(stats_.peakLevelSetBytes, pool_->levelSetBytes());

@@ -46,7 +46,7 @@ struct SolverStats {
     std::uint32_t peakActiveBricks = 0;
     std::uint32_t totalBricks = 0;
     std::uint32_t capacity = 0;    // pool slots
-    std::size_t levelSetBytes = 0; // both phi pools + page table, now
+    std::size_t levelSetBytes = 0; // phi pool + shell scratch + page table, now
     std::size_t peakLevelSetBytes = 0;
     std::size_t bookkeepingBytes = 0; // slot map, lists, states
     std::size_t densePhiBytes = 0;    // one float per voxel, for comparison
@@ -122,6 +122,7 @@ class LevelSetSolver {
     SolverStats stats_;
     float lastTime_ = 0.0F;
     int lastIteration_ = 0;
+    std::uint32_t lastUsed_ = 0; // used slots at the last pool check
     bool converged_ = false;
 };
 

@@ -32,6 +32,7 @@ SolverPrograms::SolverPrograms(int brickSize, int localSize) {
     measureSpeed = gpu::buildComputeProgram("solver/measure_speed.comp", d);
     chooseTimeStep = gpu::buildComputeProgram("solver/choose_time_step.comp", d);
     updatePhi = gpu::buildComputeProgram("solver/update_phi.comp", d);
+    commitShells = gpu::buildComputeProgram("solver/commit_shells.comp", d);
     classifyBricks = gpu::buildComputeProgram("solver/classify_bricks.comp", d);
     retireBricks = gpu::buildComputeProgram("solver/retire_bricks.comp", d);
     markWantedBricks = gpu::buildComputeProgram("solver/mark_wanted_bricks.comp", d);

@@ -14,6 +14,7 @@ struct SolverPrograms {
     gpu::Program measureSpeed;
     gpu::Program chooseTimeStep;
     gpu::Program updatePhi;
+    gpu::Program commitShells;
     gpu::Program classifyBricks;
     gpu::Program retireBricks;
     gpu::Program markWantedBricks;
@@ -26,7 +27,7 @@ struct SolverPrograms {
     template <typename F> void forEach(F&& f) {
         for (gpu::Program* p :
              {&beginIteration, &allocateBricks, &buildActiveList, &prepareDispatch, &measureSpeed,
-              &chooseTimeStep, &updatePhi, &classifyBricks, &retireBricks, &markWantedBricks,
+              &chooseTimeStep, &updatePhi, &commitShells, &classifyBricks, &retireBricks, &markWantedBricks,
               &requestEditBricks, &applySphere}) {
             f(*p);
         }

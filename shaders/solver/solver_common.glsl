@@ -3,7 +3,7 @@
 #ifndef LOCAL_SIZE
 #define LOCAL_SIZE 512
 #endif
-#define PHI_NEXT_BINDING 2
+#define SHELL_NEXT_BINDING 2
 #define CONTROL_BINDING 3
 #define SLOT_BRICK_BINDING 4
 #define FREE_LIST_BINDING 5

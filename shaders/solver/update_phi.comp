@@ -1,16 +1,17 @@
 #version 310 es
-// One group per active brick: phi_next = clamp(phi + dt * rate) (phi_stencil.glsl) from the brick
-// and a one-voxel apron staged in shared memory; records the brick's new state and whether any
-// voxel changed side (convergence).
+// One group per active brick: one step of phi (phi_stencil.glsl) from the brick and a one-voxel
+// apron staged in shared memory; records the brick's new state and whether any voxel changed
+// side (convergence). phi is stored once: the interior is updated in place, the shell goes to
+// shellNext until commit_shells (solver/brick_shell.glsl).
+#define PHI_POOL_ACCESS
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
 #include "solver/speed_threshold.glsl"
 #include "solver/phi_stencil.glsl"
 #include "solver/brick_state.glsl"
 #include "solver/phi_tile.glsl"
+#include "solver/brick_shell.glsl"
 layout(local_size_x = LOCAL_SIZE) in;
-
-layout(std430, binding = PHI_NEXT_BINDING) writeonly buffer PhiNext { float phiNext[]; };
 
 uniform float alpha;
 
@@ -70,7 +71,11 @@ void main() {
                 atomicOr(changedSide, 1u);
             }
         }
-        phiNext[slot * BRICK_VOXELS + v] = out_;
+        if (onShell(l)) {
+            shellNext[slot * SHELL_VOXELS + shellIndex(l)] = out_;
+        } else {
+            phiPool[slot * BRICK_VOXELS + v] = out_;
+        }
     }
     barrier();
     if (gl_LocalInvocationIndex == 0u) {

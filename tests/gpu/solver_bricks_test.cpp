@@ -1,6 +1,7 @@
 // Brick mechanics of the GPU solver, each checked against the dense CPU reference: surfaces
 // across brick corners and the volume border, sizes that are not a multiple of the brick, pool
-// growth past the first allocation, steering mid-run, dense mode, threshold/mask start.
+// growth past the first allocation, steering mid-run, dense mode, threshold/mask start; and the
+// storage bound of a band that stopped moving.
 #include "solver/level_set_solver.hpp"
 #include "solver/reference_solver.hpp"
 #include "solver_test_support.hpp"
@@ -46,6 +47,23 @@ TEST_F(SolverBricksTest, SurfaceAcrossBrickCornersAndVolumeBorderInOddSizedVolum
     const auto mask = gpu.readMask();
     expectAgree(d, mask, cpu.mask());
     EXPECT_EQ(mask[voxelIndex(d, 0, 20, 12)], 1); // the surface reaches the border
+}
+
+// phi is stored once (plus each slot's shell scratch) and the pool shrinks to a small margin once
+// the band stops growing: storage within 2x the used bricks' phi plus the page table.
+TEST_F(SolverBricksTest, StorageOfAStillBandIsWithinTwiceItsBricks) {
+    const glm::ivec3 d{64, 64, 64};
+    const std::vector<float> volume(countOf(d), 100.0F);
+    LevelSetSolver gpu(volume, d);
+    gpu.addSphere({{32, 32, 32}, 16.0F}); // the edit reserves slots for its whole box
+    gpu.setParams({100.0F, 0.0F, 0.9F});  // D = 0: only a little curvature moves the surface
+    gpu.step(48);
+    const SolverStats s = gpu.stats();
+    ASSERT_GT(s.activeBricks, 50U);
+    const std::size_t brickBytes = 8 * 8 * 8 * sizeof(float);
+    const std::size_t bound = 2 * s.activeBricks * brickBytes + s.totalBricks * sizeof(std::uint32_t);
+    EXPECT_LE(s.levelSetBytes, bound) << s.capacity << " slots for " << s.activeBricks << " bricks";
+    EXPECT_GE(s.poolShrinks, 1);
 }
 
 TEST_F(SolverBricksTest, PoolGrowsPastItsFirstAllocation) {
