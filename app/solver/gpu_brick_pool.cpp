@@ -158,7 +158,8 @@ void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
                                  std::to_string(maxCapacity()) + ")");
     }
     const std::uint32_t capacity =
-        dense ? brickCount_ : std::min(maxCapacity(), std::max(kMinCapacity, poolTarget(used, 0, 0)));
+        dense ? brickCount_
+              : std::min(maxCapacity(), std::max(kMinCapacity, poolTarget(used, 0, 0)));
     allocateSlotBuffers(capacity);
 
     std::vector<float> pool(static_cast<std::size_t>(capacity) * bv, kPhiFar);
@@ -279,8 +280,7 @@ void GpuBrickPool::shrink(std::uint32_t newCapacity, const ControlBlock& ctrl) {
             continue;
         }
         const std::uint32_t to = lowFree[nextFree++];
-        copyBuffer(phi_, phi_, s * brickBytes(), to * brickBytes(),
-                   brickBytes());
+        copyBuffer(phi_, phi_, s * brickBytes(), to * brickBytes(), brickBytes());
         slotBrick[to] = slotBrick[s];
         state[to] = state[s];
         page[slotBrick[s]] = to;

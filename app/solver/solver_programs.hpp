@@ -27,8 +27,8 @@ struct SolverPrograms {
     template <typename F> void forEach(F&& f) {
         for (gpu::Program* p :
              {&beginIteration, &allocateBricks, &buildActiveList, &prepareDispatch, &measureSpeed,
-              &chooseTimeStep, &updatePhi, &commitShells, &classifyBricks, &retireBricks, &markWantedBricks,
-              &requestEditBricks, &applySphere}) {
+              &chooseTimeStep, &updatePhi, &commitShells, &classifyBricks, &retireBricks,
+              &markWantedBricks, &requestEditBricks, &applySphere}) {
             f(*p);
         }
     }

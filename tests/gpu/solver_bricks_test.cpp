@@ -61,7 +61,8 @@ TEST_F(SolverBricksTest, StorageOfAStillBandIsWithinTwiceItsBricks) {
     const SolverStats s = gpu.stats();
     ASSERT_GT(s.activeBricks, 50U);
     const std::size_t brickBytes = 8 * 8 * 8 * sizeof(float);
-    const std::size_t bound = 2 * s.activeBricks * brickBytes + s.totalBricks * sizeof(std::uint32_t);
+    const std::size_t bound =
+        2 * s.activeBricks * brickBytes + s.totalBricks * sizeof(std::uint32_t);
     EXPECT_LE(s.levelSetBytes, bound) << s.capacity << " slots for " << s.activeBricks << " bricks";
     EXPECT_GE(s.poolShrinks, 1);
 }
