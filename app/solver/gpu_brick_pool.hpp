@@ -48,11 +48,12 @@ static_assert(sizeof(ControlBlock) == 21 * 4);
 inline constexpr std::uint32_t kNoBrick = 0xFFFFFFFFu;
 
 // Pool slots to hold `used` bricks plus a margin for the band's advance until the next check:
-// twice what it grew over the last check (`growth`), the pending requests, and 1/16 of the band.
-// Kept tight: with the shell scratch a slot costs 1.58 bricks of phi, so storage stays within 2x
-// the used bricks only up to ~1.27 slots per used brick.
+// what it grew over the last check (`growth`), the pending requests, and 1/16 of the band (a band
+// that speeds up by more than that stalls once and is grown). Kept tight: with the shell scratch
+// a slot costs 1.58 bricks of phi, so storage stays within 2x the used bricks only up to ~1.27
+// slots per used brick.
 inline std::uint32_t poolTarget(std::uint32_t used, std::uint32_t growth, std::uint32_t pending) {
-    return used + used / 16 + 2 * growth + pending + 4;
+    return used + used / 16 + growth + pending + 4;
 }
 
 // The sparse level-set storage on the GPU: page table, the phi pool, the per-slot shell scratch

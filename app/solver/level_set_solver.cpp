@@ -299,7 +299,7 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
                     "the level set outgrew the GPU's shader storage block limit (" +
                     std::to_string(pool_->maxCapacity()) + " bricks)");
             }
-            // The band outran the margin: grow for twice the advance of a whole check.
+            // The band outran the margin: grow for twice the advance it made by now.
             const std::uint32_t used = pool_->capacity() - ctrl.freeCount;
             const std::uint32_t growth = used > lastUsed_ ? used - lastUsed_ : used / 4;
             pool_->grow(solver_detail::poolTarget(used, 2 * growth, ctrl.requestCount), ctrl);
