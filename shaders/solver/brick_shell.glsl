@@ -31,3 +31,20 @@ uint shellIndex(ivec3 l) {
     }
     return uint(ring + 2 * B + 2 * (l.y - 1) + (l.x == B - 1 ? 1 : 0));
 }
+
+// The shell voxel at position i (< SHELL_VOXELS): the inverse of shellIndex.
+ivec3 shellVoxel(uint i) {
+    const int B = BRICK_SIZE;
+    int n = int(i);
+    if (n < 2 * B * B) {
+        return ivec3(n % B, (n / B) % B, n < B * B ? 0 : B - 1);
+    }
+    n -= 2 * B * B;
+    int z = 1 + n / SHELL_RING;
+    int r = n % SHELL_RING;
+    if (r < 2 * B) {
+        return ivec3(r % B, r < B ? 0 : B - 1, z);
+    }
+    r -= 2 * B;
+    return ivec3((r % 2) * (B - 1), 1 + r / 2, z);
+}

@@ -13,10 +13,9 @@ void main() {
         return;
     }
     uint slot = activeList[n];
-    for (uint v = gl_LocalInvocationIndex; v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
-        ivec3 l = localVoxel(v);
-        if (onShell(l)) {
-            phiPool[slot * BRICK_VOXELS + v] = shellNext[slot * SHELL_VOXELS + shellIndex(l)];
-        }
+    for (uint i = gl_LocalInvocationIndex; i < SHELL_VOXELS; i += uint(LOCAL_SIZE)) {
+        ivec3 l = shellVoxel(i);
+        uint v = uint(l.x + BRICK_SIZE * (l.y + BRICK_SIZE * l.z));
+        phiPool[slot * BRICK_VOXELS + v] = shellNext[slot * SHELL_VOXELS + i];
     }
 }
