@@ -18,10 +18,10 @@ using solver_detail::ControlBlock;
 
 namespace {
 
-// Brick edge, measured with solver_bench on llvmpipe (2 shared cores, 96^3, sphere r = 24):
-// 4 -> 2.6 it/s (143k active voxels), 8 -> 2.7 it/s (254k), 16 -> 1.7 it/s (569k). 8 matches 4's
-// iteration rate with a quarter of the page-table look-ups, and its apron tile (4 KB) fits the
-// 16 KB shared-memory minimum of GLES 3.1, which 16 (23 KB) does not.
+// Brick edge, measured with solver_bench on llvmpipe (2 cores, idle, 96^3, sphere r = 24):
+// 4 -> 14.9 it/s (143k active voxels), 8 -> 19.1 it/s (254k), 16 -> 11.0 it/s (569k). 8 is the
+// fastest per iteration with 1.8x 4's voxels, and its apron tile (4 KB) fits the 16 KB
+// shared-memory minimum of GLES 3.1, which 16 (23 KB) does not.
 constexpr int kDefaultBrickSize = 8;
 
 // Byte offsets of the indirect dispatch arguments in the control block.
@@ -240,8 +240,8 @@ void LevelSetSolver::editSphere(const Sphere& sphere, bool add) {
     gpu::checkGl("sphere edit");
 }
 
-// An edit or a parameter change restarts the convergence clock.
-// Also the baseline of the pool's growth estimate (managePool), which an edit would distort.
+// An edit or a parameter change restarts the convergence clock, and the baseline of the pool's
+// growth estimate (managePool): an edit's bricks are not the band's advance.
 void LevelSetSolver::noteChange() {
     ControlBlock ctrl = pool_->readControl();
     lastUsed_ = pool_->capacity() - ctrl.freeCount;
