@@ -64,6 +64,9 @@ int runSegment(std::span<const std::string> words) {
     j["peak_active_bricks"] = stats.peakActiveBricks;
     j["total_bricks"] = stats.totalBricks;
     j["peak_pool_bytes"] = stats.peakLevelSetBytes;
+    // At the end: the still band's storage, against the peak taken while it grew.
+    j["active_bricks"] = stats.activeBricks;
+    j["pool_bytes"] = stats.levelSetBytes;
     j["dense_phi_bytes"] = stats.densePhiBytes;
     j["pool_growths"] = stats.poolGrowths;
     j["pool_shrinks"] = stats.poolShrinks;
