@@ -114,8 +114,8 @@ int main(int argc, char** argv) {
         std::printf("GL_RENDERER: %s\nscan: %s %dx%dx%d\n",
                     reinterpret_cast<const char*>(glGetString(GL_RENDERER)), scanPath.c_str(),
                     g.dims.x, g.dims.y, g.dims.z);
-        render::Renderer renderer(scan.volume);
         LevelSetSolver solver(scan.volume);
+        render::Renderer renderer(scan.volume, solver.scanTexture());
         glm::dvec3 centre = 0.5 * glm::dvec3(g.dims - 1);
         if (scanPath == io::kBuiltinSample) {
             centre = {kPhantomLesion.i, kPhantomLesion.j, kPhantomLesion.k};

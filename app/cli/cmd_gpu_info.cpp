@@ -30,6 +30,7 @@ int runGpuInfo(std::span<const std::string> words) {
     j["max_3d_texture_size"] = info.max3dTextureSize;
     j["max_texture_size"] = info.maxTextureSize;
     j["max_compute_atomic_counter_buffers"] = info.maxAtomicCounterBuffers;
+    j["float_linear_filtering"] = info.floatLinearFiltering;
     std::printf("%s\n", j.dump(2).c_str());
     return 0;
 }

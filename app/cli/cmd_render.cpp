@@ -221,7 +221,7 @@ int runRender(std::span<const std::string> words) {
         solver = std::make_unique<LevelSetSolver>(scan.volume, request->options);
         (void)runSegmentation(*solver, *request);
     }
-    render::Renderer renderer(scan.volume);
+    render::Renderer renderer(scan.volume, solver ? solver->scanTexture() : 0);
     const render::ViewParams defaults = renderer.defaultParams(p.kind, p.size);
     p.camera = defaults.camera;
     p.transfer = defaults.transfer;

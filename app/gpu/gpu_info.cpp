@@ -2,6 +2,8 @@
 
 #include "gpu/gl.hpp"
 
+#include <cstring>
+
 namespace steerseg::gpu {
 
 namespace {
@@ -15,6 +17,18 @@ int glInt(GLenum name) {
     GLint v = 0;
     glGetIntegerv(name, &v);
     return v;
+}
+
+bool hasExtension(const char* name) {
+    const int count = glInt(GL_NUM_EXTENSIONS);
+    for (int i = 0; i < count; ++i) {
+        const auto* e =
+            reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
+        if (e != nullptr && std::strcmp(e, name) == 0) {
+            return true;
+        }
+    }
+    return false;
 }
 
 } // namespace
@@ -38,6 +52,7 @@ GpuInfo queryGpuInfo() {
     info.max3dTextureSize = glInt(GL_MAX_3D_TEXTURE_SIZE);
     info.maxTextureSize = glInt(GL_MAX_TEXTURE_SIZE);
     info.maxAtomicCounterBuffers = glInt(GL_MAX_COMPUTE_ATOMIC_COUNTER_BUFFERS);
+    info.floatLinearFiltering = hasExtension("GL_OES_texture_float_linear");
     return info;
 }
 

@@ -21,6 +21,9 @@ struct GpuInfo {
     int max3dTextureSize = 0;
     int maxTextureSize = 0;
     int maxAtomicCounterBuffers = 0;
+    // GL_OES_texture_float_linear: R32F textures may be sampled with linear filtering, so the
+    // renderer can display the solver's exact scan texture instead of uploading its own copy.
+    bool floatLinearFiltering = false;
 };
 
 // Reads the limits of the current context.

@@ -22,8 +22,9 @@ gpu::Buffer makeEmptyBuffer() {
 
 } // namespace
 
-Renderer::Renderer(const Volume& scan)
-    : geometry_(scan.geometry()), stats_(scan.stats()), scan_(scan), empty_(makeEmptyBuffer()) {}
+Renderer::Renderer(const Volume& scan, GLuint sharedScan)
+    : geometry_(scan.geometry()), stats_(scan.stats()), scan_(scan, sharedScan),
+      empty_(makeEmptyBuffer()) {}
 
 std::optional<SliceFrame> Renderer::render(const ViewParams& params, const BrickPoolView* pool) {
     GlStateGuard guard;

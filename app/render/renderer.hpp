@@ -18,7 +18,10 @@ namespace steerseg::render {
 // draw on top in the same context. Needs a current GLES 3.1 context for its whole life.
 class Renderer {
   public:
-    explicit Renderer(const Volume& scan);
+    // `sharedScan`: the solver's scan texture (LevelSetSolver::scanTexture()) to display instead
+    // of uploading a copy where the driver allows (ScanTexture), or 0. The solver must outlive
+    // the renderer.
+    explicit Renderer(const Volume& scan, GLuint sharedScan = 0);
 
     // Draws one view into target(); `pool` is the level set (the solver's poolView(), valid
     // for this call) or null for the scan alone. Returns the slice frame for slice views.

@@ -1,6 +1,7 @@
 #include "render/scan_texture.hpp"
 
 #include "gpu/gl_error.hpp"
+#include "gpu/gpu_info.hpp"
 #include "render/gl_state_guard.hpp"
 
 #include <algorithm>
@@ -48,7 +49,7 @@ std::vector<float> blockMinMax(const std::vector<float>& values, const glm::ivec
     return out;
 }
 
-ScanTexture::ScanTexture(const Volume& volume) : dims_(volume.dims()) {
+ScanTexture::ScanTexture(const Volume& volume, GLuint shared) : dims_(volume.dims()) {
     const IntensityStats& stats = volume.stats();
     min_ = stats.min;
     max_ = stats.max > stats.min ? stats.max : stats.min + 1.0;
@@ -57,13 +58,19 @@ ScanTexture::ScanTexture(const Volume& volume) : dims_(volume.dims()) {
         v = static_cast<float>(normalise(static_cast<double>(v)));
     }
     GlStateGuard guard;
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    texture_ = gpu::createTexture();
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_3D, texture_.id());
-    glTexStorage3D(GL_TEXTURE_3D, 1, GL_R16F, dims_.x, dims_.y, dims_.z);
-    glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, dims_.x, dims_.y, dims_.z, GL_RED, GL_FLOAT,
-                    normalised.data());
+    if (shared != 0 && gpu::queryGpuInfo().floatLinearFiltering) {
+        // The solver reads this texture with texelFetch only, which ignores these parameters.
+        shared_ = shared;
+        glBindTexture(GL_TEXTURE_3D, shared_);
+    } else {
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        texture_ = gpu::createTexture();
+        glBindTexture(GL_TEXTURE_3D, texture_.id());
+        glTexStorage3D(GL_TEXTURE_3D, 1, GL_R16F, dims_.x, dims_.y, dims_.z);
+        glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, dims_.x, dims_.y, dims_.z, GL_RED, GL_FLOAT,
+                        normalised.data());
+    }
     glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) {
@@ -81,6 +88,13 @@ ScanTexture::ScanTexture(const Volume& volume) : dims_(volume.dims()) {
     glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     gpu::checkGl("uploading the skipping grid");
+}
+
+glm::vec2 ScanTexture::toNormalised() const {
+    if (shared_ == 0) {
+        return {1.0F, 0.0F};
+    }
+    return {static_cast<float>(1.0 / (max_ - min_)), static_cast<float>(-min_ / (max_ - min_))};
 }
 
 double ScanTexture::normalise(double real) const {

@@ -15,12 +15,19 @@ inline constexpr int kSkipBlock = 8; // voxels per side of an empty-space-skippi
 // for a 12-bit CT window of a few HU, where R8 would band; R16F is filterable in GLES 3.x,
 // 16-bit integer formats are not), and a coarse RG16F grid of per-block min/max (including a
 // one-voxel apron, since trilinear samples reach into neighbours) for empty-space skipping.
-// The solver keeps its own exact float copy.
+// With the solver's exact R32F texture of the same scan (`shared`, real units) and a driver
+// that filters float textures (GL_OES_texture_float_linear), that texture is displayed instead
+// and no copy is uploaded: the scan is on the GPU once. Shaders map a texture value v to
+// normalised intensity as v * toNormalised().x + toNormalised().y.
 class ScanTexture {
   public:
-    explicit ScanTexture(const Volume& volume);
+    // `shared`: LevelSetSolver::scanTexture() for this volume, which must outlive this object,
+    // or 0.
+    explicit ScanTexture(const Volume& volume, GLuint shared = 0);
 
-    [[nodiscard]] GLuint texture() const { return texture_.id(); }
+    [[nodiscard]] GLuint texture() const { return shared_ != 0 ? shared_ : texture_.id(); }
+    [[nodiscard]] bool sharesSolverTexture() const { return shared_ != 0; }
+    [[nodiscard]] glm::vec2 toNormalised() const;
     [[nodiscard]] GLuint minMaxGrid() const { return grid_.id(); }
     [[nodiscard]] glm::ivec3 dims() const { return dims_; }
     [[nodiscard]] glm::ivec3 gridDims() const { return gridDims_; }
@@ -29,6 +36,7 @@ class ScanTexture {
     [[nodiscard]] double normalise(double real) const;
 
   private:
+    GLuint shared_ = 0;
     gpu::Texture texture_;
     gpu::Texture grid_;
     glm::ivec3 dims_{0};

@@ -45,6 +45,8 @@ void bindCommon(GLuint program, const RenderInputs& in, const ViewParams& params
     const double lo = in.scan.normalise(params.window.level - 0.5 * width);
     const double scale = (in.scan.rangeMax() - in.scan.rangeMin()) / width;
     glUniform2f(uniform(program, "windowRange"), static_cast<float>(lo), static_cast<float>(scale));
+    const glm::vec2 toNormalised = in.scan.toNormalised();
+    glUniform2f(uniform(program, "scanToNormalised"), toNormalised.x, toNormalised.y);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_3D, in.scan.texture());
     glBindImageTexture(0, in.target.texture(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);

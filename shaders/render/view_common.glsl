@@ -6,7 +6,8 @@ precision highp sampler2D;
 #include "common/brick_pool.glsl"
 
 layout(rgba8, binding = 0) uniform writeonly highp image2D outImage;
-layout(binding = 0) uniform sampler3D scanTex; // normalised intensity, linear filtering
+layout(binding = 0) uniform sampler3D scanTex; // intensity, linear filtering
+uniform vec2 scanToNormalised; // texture value -> normalised intensity: v * x + y (ScanTexture)
 
 uniform ivec2 outSize;
 uniform int hasSurface;     // 0: no level set bound
@@ -16,7 +17,7 @@ const vec3 CONTOUR_YELLOW = vec3(1.0, 0.92, 0.0);
 
 // Scan intensity at a continuous voxel-index position (voxel centres at integers).
 float scanAt(vec3 p) {
-    return texture(scanTex, (p + 0.5) / vec3(volumeDims)).r;
+    return texture(scanTex, (p + 0.5) / vec3(volumeDims)).r * scanToNormalised.x + scanToNormalised.y;
 }
 
 float windowed(float v) {

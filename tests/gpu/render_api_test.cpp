@@ -1,14 +1,18 @@
 // The renderer's host API: GL state left as found, bad inputs refused, probe statistics,
-// transfer-function baking and the skipping grid.
+// transfer-function baking, the skipping grid, and displaying the solver's scan texture.
 #include "gpu/gl_handle.hpp"
+#include "gpu/gpu_info.hpp"
 #include "render/probe.hpp"
 #include "render/renderer.hpp"
 #include "render/scan_texture.hpp"
 #include "render/transfer_function.hpp"
 #include "render_scene.hpp"
+#include "solver/level_set_solver.hpp"
 #include "support/gpu_fixture.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace steerseg::test {
 namespace {
@@ -62,6 +66,37 @@ TEST_F(RenderApi, RestoresTheGlStateItChanges) {
     }
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glActiveTexture(GL_TEXTURE0);
+}
+
+// With float linear filtering the renderer draws from the solver's R32F texture (the scan on
+// the GPU once); the pictures match those from its own R16F copy up to half-float rounding.
+TEST_F(RenderApi, DisplaysTheSolversScanTextureLikeItsOwnCopy) {
+    const Volume scan = makeHeadScene();
+    LevelSetSolver solver(scan);
+    render::Renderer own(scan);
+    render::Renderer shared(scan, solver.scanTexture());
+    EXPECT_FALSE(own.scan().sharesSolverTexture());
+    EXPECT_EQ(shared.scan().sharesSolverTexture(), gpu::queryGpuInfo().floatLinearFiltering);
+    if (shared.scan().sharesSolverTexture()) {
+        EXPECT_EQ(shared.scan().texture(), solver.scanTexture());
+    }
+    for (ViewKind kind : {ViewKind::Volume3d, ViewKind::Axial}) {
+        const render::ViewParams params = own.defaultParams(kind, {64, 64});
+        own.render(params, nullptr);
+        shared.render(params, nullptr);
+        const render::RgbaImage a = own.readback();
+        const render::RgbaImage b = shared.readback();
+        ASSERT_EQ(a.pixels.size(), b.pixels.size());
+        int worst = 0;
+        long total = 0;
+        for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+            const int d = std::abs(int(a.pixels[i]) - int(b.pixels[i]));
+            worst = std::max(worst, d);
+            total += d;
+        }
+        EXPECT_LE(worst, 8) << static_cast<int>(kind);
+        EXPECT_LT(static_cast<double>(total) / static_cast<double>(a.pixels.size()), 0.5);
+    }
 }
 
 TEST_F(RenderApi, RefusesAPoolOfOtherDimensionsAndBadSizes) {
