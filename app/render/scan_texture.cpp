@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 
 namespace steerseg::render {
 
@@ -63,6 +64,13 @@ ScanTexture::ScanTexture(const Volume& volume, GLuint shared) : dims_(volume.dim
         // The solver reads this texture with texelFetch only, which ignores these parameters.
         shared_ = shared;
         glBindTexture(GL_TEXTURE_3D, shared_);
+        glm::ivec3 size{0};
+        glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_WIDTH, &size.x);
+        glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_HEIGHT, &size.y);
+        glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_DEPTH, &size.z);
+        if (size != dims_) {
+            throw std::invalid_argument("the shared scan texture is not this scan's size");
+        }
     } else {
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
         texture_ = gpu::createTexture();

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <stdexcept>
 
 namespace steerseg::test {
 namespace {
@@ -79,6 +80,8 @@ TEST_F(RenderApi, DisplaysTheSolversScanTextureLikeItsOwnCopy) {
     EXPECT_EQ(shared.scan().sharesSolverTexture(), gpu::queryGpuInfo().floatLinearFiltering);
     if (shared.scan().sharesSolverTexture()) {
         EXPECT_EQ(shared.scan().texture(), solver.scanTexture());
+        const Volume other = makeScan(cube(16), [](glm::ivec3) { return 1.0F; });
+        EXPECT_THROW(render::Renderer(other, solver.scanTexture()), std::invalid_argument);
     }
     for (ViewKind kind : {ViewKind::Volume3d, ViewKind::Axial}) {
         const render::ViewParams params = own.defaultParams(kind, {64, 64});
