@@ -248,6 +248,7 @@ void LevelSetSolver::noteChange() {
     ctrl.lastChange = ctrl.iteration;
     ctrl.lastChangeTime = ctrl.time;
     pool_->writeControl(ctrl);
+    known_ = ctrl;
     converged_ = false;
 }
 
@@ -275,7 +276,10 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_3D, scan_.id());
     pool_->bind();
-    ControlBlock ctrl = pool_->readControl();
+    // The block as the last call left it: no GPU sync before the first chunk, so a caller that
+    // steps a few iterations per frame pays one readback per call (after its chunk).
+    ControlBlock ctrl = known_ ? *known_ : pool_->readControl();
+    known_.reset(); // unknown if this call throws
     const std::uint32_t start = ctrl.iteration;
     int remaining = maxIterations;
     while (remaining > 0) {
@@ -311,24 +315,26 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
         if ((untilConverged && converged_) || done < chunk) {
             break; // converged, or the time limit stopped the steps
         }
-        managePool();
-        ctrl = pool_->readControl();
+        if (managePool(ctrl)) {
+            ctrl = pool_->readControl();
+        }
     }
     stats_.peakLevelSetBytes = std::max(stats_.peakLevelSetBytes, pool_->levelSetBytes());
     lastIteration_ = static_cast<int>(ctrl.iteration);
     lastTime_ = ctrl.time;
     stats_.activeBricks = ctrl.activeCount;
+    known_ = ctrl;
     return {static_cast<int>(ctrl.iteration - start), ctrl.time, converged_};
 }
 
 // Keeps a margin of free slots for the band's advance until the next check, and gives memory
 // back when the surface shrank, so that storage follows the band (poolTarget). A run that still
-// outpaces the margin stalls and is grown above.
-void LevelSetSolver::managePool() {
+// outpaces the margin stalls and is grown above. `ctrl` is fresh; returns whether the pool
+// changed (and with it the control block).
+bool LevelSetSolver::managePool(const ControlBlock& ctrl) {
     if (options_.dense) {
-        return;
+        return false;
     }
-    const ControlBlock ctrl = pool_->readControl();
     const std::uint32_t used = pool_->capacity() - ctrl.freeCount;
     const std::uint32_t growth = used > lastUsed_ ? used - lastUsed_ : 0;
     lastUsed_ = used;
@@ -340,9 +346,12 @@ void LevelSetSolver::managePool() {
     } else if (pool_->capacity() > target + used / 16 + 4) {
         pool_->shrink(target, ctrl);
         ++stats_.poolShrinks;
+    } else {
+        return false;
     }
     stats_.peakLevelSetBytes = std::max(stats_.peakLevelSetBytes, pool_->levelSetBytes());
     pool_->bind();
+    return true;
 }
 
 std::vector<std::uint8_t> LevelSetSolver::readMask() const {

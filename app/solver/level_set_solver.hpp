@@ -3,11 +3,13 @@
 #include "core/volume.hpp"
 #include "gpu/gl_handle.hpp"
 #include "solver/brick_pool_view.hpp"
+#include "solver/control_block.hpp"
 #include "solver/level_set_params.hpp"
 
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -105,7 +107,7 @@ class LevelSetSolver {
     void editSphere(const Sphere& sphere, bool add);
     void uploadPhi(const std::vector<float>& phi);
     void noteChange();
-    void managePool();
+    bool managePool(const solver_detail::ControlBlock& ctrl);
     void dispatch(GLuint program, GLuint x, GLuint y = 1, GLuint z = 1);
     void dispatchIndirect(GLuint program, GLintptr offset);
     void requireParams() const;
@@ -122,7 +124,8 @@ class LevelSetSolver {
     SolverStats stats_;
     float lastTime_ = 0.0F;
     int lastIteration_ = 0;
-    std::uint32_t lastUsed_ = 0; // used slots at the last pool check
+    std::uint32_t lastUsed_ = 0;                       // used slots at the last pool check
+    std::optional<solver_detail::ControlBlock> known_; // the GPU's control block, when known
     bool converged_ = false;
 };
 

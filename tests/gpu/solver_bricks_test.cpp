@@ -126,6 +126,29 @@ TEST_F(SolverBricksTest, SteeringMidRunMatchesReference) {
     expectAgree(d, gpu.readMask(), cpu.mask());
 }
 
+// An interactive caller steps a few iterations per frame: the pool is then checked after every
+// call and the control block is taken from the previous call, not read back first.
+TEST_F(SolverBricksTest, SteppingOneIterationPerCallMatchesOneCall) {
+    const glm::ivec3 d{40, 36, 32};
+    const auto volume = ballVolume(d, 0.0F, 100.0F, {20, 18, 16}, 11.0F);
+    LevelSetSolver a(volume, d);
+    LevelSetSolver b(volume, d);
+    for (LevelSetSolver* s : {&a, &b}) {
+        s->addSphere({{20, 18, 16}, 3.0F});
+        s->setParams({100.0F, 40.0F, 0.7F});
+    }
+    EXPECT_EQ(a.step(30).iterations, 30);
+    float time = 0.0F;
+    for (int n = 0; n < 30; ++n) {
+        const StepResult r = b.step(1);
+        EXPECT_EQ(r.iterations, 1);
+        EXPECT_GT(r.evolvedTime, time);
+        time = r.evolvedTime;
+    }
+    EXPECT_FLOAT_EQ(a.stats().evolvedTime, b.stats().evolvedTime);
+    EXPECT_EQ(a.readMask(), b.readMask());
+}
+
 TEST_F(SolverBricksTest, DenseModeMatchesSparseMode) {
     const glm::ivec3 d{40, 36, 32};
     const auto volume = ballVolume(d, 0.0F, 100.0F, {20, 18, 16}, 11.0F);
