@@ -259,7 +259,7 @@ void GpuBrickPool::grow(std::uint32_t newCapacity, const ControlBlock& ctrl) {
 }
 
 void GpuBrickPool::shrink(std::uint32_t newCapacity, const ControlBlock& ctrl) {
-    const std::uint32_t used = capacity_ - ctrl.freeCount;
+    const std::uint32_t used = usedSlots(ctrl);
     newCapacity = std::max({newCapacity, used, kMinCapacity});
     if (newCapacity >= capacity_) {
         return;

@@ -65,6 +65,10 @@ class GpuBrickPool {
     void writeControl(const ControlBlock& ctrl);
 
     [[nodiscard]] std::uint32_t capacity() const { return capacity_; }
+    // Slots holding a brick, from a fresh control block.
+    [[nodiscard]] std::uint32_t usedSlots(const ControlBlock& ctrl) const {
+        return capacity_ - ctrl.freeCount;
+    }
     [[nodiscard]] std::uint32_t maxCapacity() const;
     [[nodiscard]] std::uint32_t brickCount() const { return brickCount_; }
     [[nodiscard]] std::size_t brickBytes() const;

@@ -205,7 +205,7 @@ void LevelSetSolver::editSphere(const Sphere& sphere, bool add) {
     const auto boxBricks = static_cast<std::uint32_t>(size.x * size.y * size.z);
     // Make room for every brick of the box up front: an edit must not stall half-applied.
     ControlBlock ctrl = pool_->readControl();
-    const std::uint32_t used = pool_->capacity() - ctrl.freeCount;
+    const std::uint32_t used = pool_->usedSlots(ctrl);
     if (ctrl.freeCount < boxBricks + ctrl.requestCount) {
         const std::uint32_t want = used + boxBricks + ctrl.requestCount;
         pool_->grow(want + want / 4, ctrl);
@@ -244,7 +244,7 @@ void LevelSetSolver::editSphere(const Sphere& sphere, bool add) {
 // growth estimate (managePool): an edit's bricks are not the band's advance.
 void LevelSetSolver::noteChange() {
     ControlBlock ctrl = pool_->readControl();
-    lastUsed_ = pool_->capacity() - ctrl.freeCount;
+    lastUsed_ = pool_->usedSlots(ctrl);
     ctrl.lastChange = ctrl.iteration;
     ctrl.lastChangeTime = ctrl.time;
     pool_->writeControl(ctrl);
@@ -304,7 +304,7 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
                     std::to_string(pool_->maxCapacity()) + " bricks)");
             }
             // The band outran the margin: grow for twice the advance it made by now.
-            const std::uint32_t used = pool_->capacity() - ctrl.freeCount;
+            const std::uint32_t used = pool_->usedSlots(ctrl);
             const std::uint32_t growth = used > lastUsed_ ? used - lastUsed_ : used / 4;
             pool_->grow(solver_detail::poolTarget(used, 2 * growth, ctrl.requestCount), ctrl);
             ++stats_.poolGrowths;
@@ -335,7 +335,7 @@ bool LevelSetSolver::managePool(const ControlBlock& ctrl) {
     if (options_.dense) {
         return false;
     }
-    const std::uint32_t used = pool_->capacity() - ctrl.freeCount;
+    const std::uint32_t used = pool_->usedSlots(ctrl);
     const std::uint32_t growth = used > lastUsed_ ? used - lastUsed_ : 0;
     lastUsed_ = used;
     const std::uint32_t target = solver_detail::poolTarget(used, growth, ctrl.requestCount);

@@ -29,7 +29,7 @@ void main() {
         if (any(greaterThanEqual(g, volumeDims))) {
             continue;
         }
-        if (tileOnFront(l)) {
+        if (onFront(tileFaces(l))) {
             localMax = max(localMax, abs(alpha * dataSpeed(g)));
         }
     }

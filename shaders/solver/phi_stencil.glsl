@@ -39,18 +39,19 @@ float curvatureTimesGradient(PhiStencil s) {
     return num / g2;
 }
 
-bool inNarrowBand(float c, float xm, float xp, float ym, float yp, float zm, float zp) {
-    float m = min(min(min(abs(c), abs(xm)), min(abs(xp), abs(ym))),
-                  min(min(abs(yp), abs(zm)), abs(zp)));
+// The narrow band: the centre or a face neighbour is not clamped (only the face values are read).
+bool inNarrowBand(PhiStencil s) {
+    float m = min(min(min(abs(s.c), abs(s.xm)), min(abs(s.xp), abs(s.ym))),
+                  min(min(abs(s.yp), abs(s.zm)), abs(s.zp)));
     return m < PHI_FAR;
 }
 
 // On the front: the voxel and a face neighbour lie on different sides of the surface. Only
 // front voxels set the time step (see app/solver/phi_stencil.hpp).
-bool onFront(float c, float xm, float xp, float ym, float yp, float zm, float zp) {
-    bool inside = c < 0.0;
-    return (xm < 0.0) != inside || (xp < 0.0) != inside || (ym < 0.0) != inside ||
-           (yp < 0.0) != inside || (zm < 0.0) != inside || (zp < 0.0) != inside;
+bool onFront(PhiStencil s) {
+    bool inside = s.c < 0.0;
+    return (s.xm < 0.0) != inside || (s.xp < 0.0) != inside || (s.ym < 0.0) != inside ||
+           (s.yp < 0.0) != inside || (s.zm < 0.0) != inside || (s.zp < 0.0) != inside;
 }
 
 // phi after one step of dt; the data term is limited to the range of the voxel and its face

@@ -17,32 +17,6 @@ uniform float alpha;
 
 shared uint changedSide;
 
-float t(ivec3 l) { return tileAt(l); }
-
-PhiStencil stencilAt(ivec3 l) {
-    PhiStencil s;
-    s.c = t(l);
-    s.xm = t(l + ivec3(-1, 0, 0));
-    s.xp = t(l + ivec3(1, 0, 0));
-    s.ym = t(l + ivec3(0, -1, 0));
-    s.yp = t(l + ivec3(0, 1, 0));
-    s.zm = t(l + ivec3(0, 0, -1));
-    s.zp = t(l + ivec3(0, 0, 1));
-    s.xpyp = t(l + ivec3(1, 1, 0));
-    s.xpym = t(l + ivec3(1, -1, 0));
-    s.xmyp = t(l + ivec3(-1, 1, 0));
-    s.xmym = t(l + ivec3(-1, -1, 0));
-    s.xpzp = t(l + ivec3(1, 0, 1));
-    s.xpzm = t(l + ivec3(1, 0, -1));
-    s.xmzp = t(l + ivec3(-1, 0, 1));
-    s.xmzm = t(l + ivec3(-1, 0, -1));
-    s.ypzp = t(l + ivec3(0, 1, 1));
-    s.ypzm = t(l + ivec3(0, 1, -1));
-    s.ymzp = t(l + ivec3(0, -1, 1));
-    s.ymzm = t(l + ivec3(0, -1, -1));
-    return s;
-}
-
 void main() {
     uint n = activeListIndex();
     if (n == NO_BRICK) {
@@ -60,10 +34,10 @@ void main() {
     for (uint v = gl_LocalInvocationIndex; v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
         ivec3 l = localVoxel(v);
         ivec3 g = origin + l;
-        PhiStencil s = stencilAt(l);
+        PhiStencil s = tileStencil(l);
         float out_ = s.c;
         if (all(lessThan(g, volumeDims))) {
-            if (dt > 0.0 && tileInNarrowBand(l)) {
+            if (dt > 0.0 && inNarrowBand(s)) {
                 out_ = phiStep(s, dataSpeed(g), alpha, dt);
             }
             noteVoxelState(out_);
