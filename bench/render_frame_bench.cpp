@@ -1,13 +1,14 @@
 // Frame time of the renderer's 3D and slice views at display sizes, on the built-in sample or
 // a scan file, with the level set drawn straight from the solver's brick pool: once with the
 // surface still, once with one solver iteration between frames (the interactive case).
-//   render_frame_bench [--scan PATH] [--frames N] [--size WxH] [--save DIR] [--docs DIR]
+//   render_frame_bench [--scan PATH] [--scale F] [--frames N] [--size WxH] [--save DIR] [--docs DIR]
 // The sample's lesion is segmented from a seed at its centre (T and eps around its intensity);
-// another scan gets a sphere at its centre. --size replaces the two display sizes (1280x800,
+// another scan gets a sphere at its centre. --scale resamples the scan (2 makes the sample
+// 256x256x192) to time scan sizes no file at hand has. --size replaces the two display sizes (1280x800,
 // 1920x1080) by one; --save writes the last frame of each case as PNG; --docs only writes the
 // README's four 256x256 pictures and exits.
+#include "bench/bench_scan.hpp"
 #include "core/sample_phantom.hpp"
-#include "io/scan_reader.hpp"
 #include "platform/egl/gpu_context.hpp"
 #include "render/renderer.hpp"
 #include "solver/level_set_solver.hpp"
@@ -56,26 +57,28 @@ void writeDocImages(render::Renderer& renderer, const BrickPoolView& view, const
     p.camera.orbit(25.0, 15.0);
     p.surface = render::SurfaceMode::Opaque;
     renderer.render(p, &view);
-    render::writeImage(dir / "render_3d_surface.png", renderer.readback());
+    bench::saveImage(dir / "render_3d_surface.png", renderer.readback());
     p.clip = {true, {0.0, -1.0, 0.0}, -centre.y};
     renderer.render(p, &view);
-    render::writeImage(dir / "render_3d_clip.png", renderer.readback());
+    bench::saveImage(dir / "render_3d_clip.png", renderer.readback());
     p = renderer.defaultParams(render::ViewKind::Axial, size);
     p.slice = static_cast<int>(centre.z);
     renderer.render(p, &view);
-    render::writeImage(dir / "render_axial_contour.png", renderer.readback());
+    bench::saveImage(dir / "render_axial_contour.png", renderer.readback());
     p = renderer.defaultParams(render::ViewKind::Sagittal, size);
     p.slice = static_cast<int>(centre.x);
     p.content = render::SliceContent::Speed;
     p.speed = {kPhantomLesion.intensity, 60.0};
     renderer.render(p, &view);
-    render::writeImage(dir / "render_sagittal_speed.png", renderer.readback());
+    bench::saveImage(dir / "render_sagittal_speed.png", renderer.readback());
 }
 
 } // namespace
 
 int main(int argc, char** argv) {
-    std::string scanPath = io::kBuiltinSample;
+    const std::string builtin = "builtin:sample";
+    std::string scanPath = builtin;
+    double scale = 1.0;
     int frames = 3;
     std::vector<glm::ivec2> sizes = {{1280, 800}, {1920, 1080}};
     std::filesystem::path saveDir;
@@ -84,6 +87,8 @@ int main(int argc, char** argv) {
         const std::string key = argv[n];
         if (key == "--scan") {
             scanPath = argv[n + 1];
+        } else if (key == "--scale") {
+            scale = std::atof(argv[n + 1]);
         } else if (key == "--frames") {
             frames = std::clamp(std::atoi(argv[n + 1]), 1, 1000);
         } else if (key == "--size") {
@@ -102,30 +107,34 @@ int main(int argc, char** argv) {
         } else {
             std::fprintf(
                 stderr,
-                "usage: render_frame_bench [--scan PATH] [--frames N] [--size WxH] [--save DIR] "
+                "usage: render_frame_bench [--scan PATH] [--scale F] [--frames N] [--size WxH] [--save DIR] "
                 "[--docs DIR]\n");
             return 2;
         }
     }
     try {
-        const io::LoadedScan scan = io::readScan(scanPath);
-        const Geometry& g = scan.volume.geometry();
+        Volume volume = bench::loadScan(scanPath);
+        if (scale != 1.0) {
+            volume = bench::resampled(volume, scale);
+        }
+        const Geometry& g = volume.geometry();
         auto context = platform::createOffscreenContext();
         std::printf("GL_RENDERER: %s\nscan: %s %dx%dx%d\n",
                     reinterpret_cast<const char*>(glGetString(GL_RENDERER)), scanPath.c_str(),
                     g.dims.x, g.dims.y, g.dims.z);
-        LevelSetSolver solver(scan.volume);
-        render::Renderer renderer(scan.volume, solver.scanTexture());
+        LevelSetSolver solver(volume);
+        render::Renderer renderer(volume, solver.scanTexture());
         glm::dvec3 centre = 0.5 * glm::dvec3(g.dims - 1);
-        if (scanPath == io::kBuiltinSample) {
-            centre = {kPhantomLesion.i, kPhantomLesion.j, kPhantomLesion.k};
-            solver.addSphere({glm::vec3(centre), 5.0F});
+        if (scanPath == builtin) {
+            centre = glm::dvec3(kPhantomLesion.i, kPhantomLesion.j, kPhantomLesion.k) *
+                     (glm::dvec3(g.dims - 1) / glm::dvec3(127, 127, 95));
+            solver.addSphere({glm::vec3(centre), 5.0F * static_cast<float>(scale)});
             solver.setParams({static_cast<float>(kPhantomLesion.intensity), 100.0F, 0.8F});
             solver.runUntilConverged(2000);
         } else {
             const float r = 0.15F * static_cast<float>(std::min({g.dims.x, g.dims.y, g.dims.z}));
             solver.addSphere({glm::vec3(centre), r});
-            const IntensityStats& st = scan.volume.stats();
+            const IntensityStats& st = volume.stats();
             solver.setParams(
                 {static_cast<float>(st.mean), static_cast<float>(st.max - st.min), 0.5F});
         }
@@ -165,7 +174,7 @@ int main(int argc, char** argv) {
                             times.front(), median, 1000.0 / median);
                 if (!saveDir.empty()) {
                     std::filesystem::create_directories(saveDir);
-                    render::writeImage(
+                    bench::saveImage(
                         saveDir / (std::string(c.name) + "_" + std::to_string(size.x) + ".png"),
                         renderer.readback());
                 }

@@ -1,0 +1,26 @@
+#pragma once
+
+// Where a benchmark gets its scan and where it puts its pictures. Two builds: with the scan
+// readers and image writers (bench_scan_io.cpp, the default), or without them
+// (bench_scan_builtin.cpp, STEERSEG_BENCH_IO=OFF) for the lent GPU machine, which has no
+// package registry and so no OpenImageIO: there only the built-in sample is read, and pictures
+// are refused with a message.
+#include "core/volume.hpp"
+#include "render/image.hpp"
+
+#include <filesystem>
+#include <string>
+
+namespace steerseg::bench {
+
+// The scan at `path` (a file, a folder or "builtin:sample"). Throws std::runtime_error.
+Volume loadScan(const std::string& path);
+
+// Writes a PNG. Throws std::runtime_error where this build has no image writer.
+void saveImage(const std::filesystem::path& path, const render::RgbaImage& image);
+
+// The volume resampled by `factor` on each axis (trilinear, same world extent), so the
+// renderer and solver can be timed at scan sizes no file at hand has. factor 1 returns a copy.
+Volume resampled(const Volume& scan, double factor);
+
+} // namespace steerseg::bench
