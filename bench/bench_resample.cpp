@@ -33,7 +33,7 @@ Volume resampled(const Volume& scan, double factor) {
                 for (int c = 0; c < 8; ++c) {
                     const glm::ivec3 o(c & 1, (c >> 1) & 1, (c >> 2) & 1);
                     const double w = (o.x != 0 ? f.x : 1.0 - f.x) * (o.y != 0 ? f.y : 1.0 - f.y) *
-                                      (o.z != 0 ? f.z : 1.0 - f.z);
+                                     (o.z != 0 ? f.z : 1.0 - f.z);
                     if (w > 0.0) {
                         v += w * at(p0.x + o.x, p0.y + o.y, p0.z + o.z);
                     }

@@ -1,12 +1,13 @@
 // Frame time of the renderer's 3D and slice views at display sizes, on the built-in sample or
 // a scan file, with the level set drawn straight from the solver's brick pool: once with the
 // surface still, once with one solver iteration between frames (the interactive case).
-//   render_frame_bench [--scan PATH] [--scale F] [--frames N] [--size WxH] [--save DIR] [--docs DIR]
+//   render_frame_bench [--scan PATH] [--scale F] [--frames N] [--size WxH] [--save DIR] [--docs
+//   DIR]
 // The sample's lesion is segmented from a seed at its centre (T and eps around its intensity);
 // another scan gets a sphere at its centre. --scale resamples the scan (2 makes the sample
-// 256x256x192) to time scan sizes no file at hand has. --size replaces the two display sizes (1280x800,
-// 1920x1080) by one; --save writes the last frame of each case as PNG; --docs only writes the
-// README's four 256x256 pictures and exits.
+// 256x256x192) to time scan sizes no file at hand has. --size replaces the two display sizes
+// (1280x800, 1920x1080) by one; --save writes the last frame of each case as PNG; --docs only
+// writes the README's four 256x256 pictures and exits.
 #include "bench/bench_scan.hpp"
 #include "core/sample_phantom.hpp"
 #include "platform/egl/gpu_context.hpp"
@@ -105,10 +106,9 @@ int main(int argc, char** argv) {
         } else if (key == "--docs") {
             docsDir = argv[n + 1];
         } else {
-            std::fprintf(
-                stderr,
-                "usage: render_frame_bench [--scan PATH] [--scale F] [--frames N] [--size WxH] [--save DIR] "
-                "[--docs DIR]\n");
+            std::fprintf(stderr, "usage: render_frame_bench [--scan PATH] [--scale F] [--frames N] "
+                                 "[--size WxH] [--save DIR] "
+                                 "[--docs DIR]\n");
             return 2;
         }
     }
@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
                     reinterpret_cast<const char*>(glGetString(GL_RENDERER)), scanPath.c_str(),
                     g.dims.x, g.dims.y, g.dims.z);
         LevelSetSolver solver(volume);
-        render::Renderer renderer(volume, solver.scanTexture());
+        render::Renderer renderer(volume, solver.scan());
         glm::dvec3 centre = 0.5 * glm::dvec3(g.dims - 1);
         if (scanPath == builtin) {
             centre = glm::dvec3(kPhantomLesion.i, kPhantomLesion.j, kPhantomLesion.k) *

@@ -221,16 +221,21 @@ int runRender(std::span<const std::string> words) {
         solver = std::make_unique<LevelSetSolver>(scan.volume, request->options);
         (void)runSegmentation(*solver, *request);
     }
-    render::Renderer renderer(scan.volume, solver ? solver->scanTexture() : 0);
-    const render::ViewParams defaults = renderer.defaultParams(p.kind, p.size);
+    std::optional<render::Renderer> renderer;
+    if (solver) {
+        renderer.emplace(scan.volume, solver->scan());
+    } else {
+        renderer.emplace(scan.volume);
+    }
+    const render::ViewParams defaults = renderer->defaultParams(p.kind, p.size);
     p.camera = defaults.camera;
     p.transfer = defaults.transfer;
     p.window = defaults.window;
     applyCamera(args, g, p);
     applyIntensityOptions(args, scan.volume, p);
     const BrickPoolView pool = solver ? solver->poolView() : BrickPoolView{};
-    renderer.render(p, solver ? &pool : nullptr);
-    render::writeImage(output, renderer.readback());
+    renderer->render(p, solver ? &pool : nullptr);
+    render::writeImage(output, renderer->readback());
     return 0;
 }
 

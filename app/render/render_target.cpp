@@ -1,7 +1,7 @@
 #include "render/render_target.hpp"
 
 #include "gpu/gl_error.hpp"
-#include "render/gl_state_guard.hpp"
+#include "gpu/gl_state_guard.hpp"
 
 #include <stdexcept>
 
@@ -14,7 +14,7 @@ void RenderTarget::ensureSize(const glm::ivec2& size) {
     if (size.x <= 0 || size.y <= 0 || size.x > 16384 || size.y > 16384) {
         throw std::invalid_argument("image size must be 1..16384 pixels per side");
     }
-    GlStateGuard guard;
+    gpu::GlStateGuard guard;
     texture_ = gpu::createTexture();
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, texture_.id());
@@ -35,7 +35,7 @@ RgbaImage RenderTarget::readback() const {
     if (!texture_) {
         throw std::logic_error("nothing rendered yet");
     }
-    GlStateGuard guard;
+    gpu::GlStateGuard guard;
     glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
     glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);

@@ -1,6 +1,8 @@
 #include "render/renderer.hpp"
 
-#include "render/gl_state_guard.hpp"
+#include "gpu/gl_state_guard.hpp"
+
+#include <stdexcept>
 
 namespace steerseg::render {
 
@@ -15,21 +17,30 @@ double volumeExtentMm(const Geometry& g) {
 namespace {
 
 gpu::Buffer makeEmptyBuffer() {
-    GlStateGuard guard;
+    gpu::GlStateGuard guard;
     const float zero[4] = {0.0F, 0.0F, 0.0F, 0.0F};
     return gpu::createBuffer(GL_SHADER_STORAGE_BUFFER, sizeof(zero), zero, GL_STATIC_DRAW);
 }
 
 } // namespace
 
-Renderer::Renderer(const Volume& scan, GLuint sharedScan)
-    : geometry_(scan.geometry()), stats_(scan.stats()), scan_(scan, sharedScan),
-      empty_(makeEmptyBuffer()) {}
+Renderer::Renderer(const Volume& scan, const gpu::ScanTexture& texture)
+    : geometry_(scan.geometry()), stats_(scan.stats()), scan_(&texture), skip_(scan, texture),
+      empty_(makeEmptyBuffer()) {
+    if (texture.dims() != scan.dims()) {
+        throw std::invalid_argument("renderer: the scan texture is not this scan's size");
+    }
+}
+
+Renderer::Renderer(const Volume& scan)
+    : geometry_(scan.geometry()), stats_(scan.stats()),
+      ownScan_(std::make_unique<gpu::ScanTexture>(scan)), scan_(ownScan_.get()),
+      skip_(scan, *scan_), empty_(makeEmptyBuffer()) {}
 
 std::optional<SliceFrame> Renderer::render(const ViewParams& params, const BrickPoolView* pool) {
-    GlStateGuard guard;
+    gpu::GlStateGuard guard;
     target_.ensureSize(params.size);
-    const RenderInputs in{scan_, geometry_, pool, empty_.id(), target_};
+    const RenderInputs in{*scan_, skip_, geometry_, pool, empty_.id(), target_};
     if (params.kind == ViewKind::Volume3d) {
         volume_.draw(in, params);
         return std::nullopt;

@@ -2,26 +2,30 @@
 
 #include "core/volume.hpp"
 #include "gpu/gl_handle.hpp"
+#include "gpu/scan_texture.hpp"
 #include "render/render_params.hpp"
 #include "render/render_target.hpp"
-#include "render/scan_texture.hpp"
+#include "render/skip_grid.hpp"
 #include "render/slice_view.hpp"
 #include "render/volume_view.hpp"
 #include "solver/brick_pool_view.hpp"
 
+#include <memory>
 #include <optional>
 
 namespace steerseg::render {
 
 // The renderer of one scan: the scan on the GPU, the 3D view and the slice views, and the
-// picture they draw into. Every call saves and restores the GL state it touches, so a UI can
-// draw on top in the same context. Needs a current GLES 3.1 context for its whole life.
+// picture they draw into. Every call saves and restores the GL state it touches
+// (gpu::GlStateGuard), so a UI can draw on top in the same context. Needs a current GLES 3.1
+// context for its whole life.
 class Renderer {
   public:
-    // `sharedScan`: the solver's scan texture (LevelSetSolver::scanTexture()) to display instead
-    // of uploading a copy where the driver allows (ScanTexture), or 0. The solver must outlive
-    // the renderer.
-    explicit Renderer(const Volume& scan, GLuint sharedScan = 0);
+    // Borrows `texture`, the scan on the GPU (shared with the solver), which must outlive the
+    // renderer.
+    Renderer(const Volume& scan, const gpu::ScanTexture& texture);
+    // Uploads and owns the scan's texture (a renderer with no solver beside it).
+    explicit Renderer(const Volume& scan);
 
     // Draws one view into target(); `pool` is the level set (the solver's poolView(), valid
     // for this call) or null for the scan alone. Returns the slice frame for slice views.
@@ -30,7 +34,7 @@ class Renderer {
     [[nodiscard]] const RenderTarget& target() const { return target_; }
     [[nodiscard]] RgbaImage readback() const { return target_.readback(); }
     [[nodiscard]] const Geometry& geometry() const { return geometry_; }
-    [[nodiscard]] const ScanTexture& scan() const { return scan_; }
+    [[nodiscard]] const gpu::ScanTexture& scan() const { return *scan_; }
 
     // Default parameters for this scan: MR-style presets, anterior camera, middle slice.
     [[nodiscard]] ViewParams defaultParams(ViewKind kind, const glm::ivec2& size) const;
@@ -38,7 +42,9 @@ class Renderer {
   private:
     Geometry geometry_;
     IntensityStats stats_;
-    ScanTexture scan_;
+    std::unique_ptr<gpu::ScanTexture> ownScan_;
+    const gpu::ScanTexture* scan_;
+    SkipGrid skip_;
     RenderTarget target_;
     gpu::Buffer empty_;
     VolumeView volume_;

@@ -48,7 +48,7 @@ void bindCommon(GLuint program, const RenderInputs& in, const ViewParams& params
     const glm::vec2 toNormalised = in.scan.toNormalised();
     glUniform2f(uniform(program, "scanToNormalised"), toNormalised.x, toNormalised.y);
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_3D, in.scan.texture());
+    glBindTexture(GL_TEXTURE_3D, in.scan.display());
     glBindImageTexture(0, in.target.texture(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
 }
 

@@ -3,18 +3,21 @@
 #include "core/volume.hpp"
 #include "gpu/gl_handle.hpp"
 #include "gpu/program.hpp"
+#include "gpu/scan_texture.hpp"
 #include "render/render_params.hpp"
 #include "render/render_target.hpp"
-#include "render/scan_texture.hpp"
+#include "render/skip_grid.hpp"
 #include "solver/brick_pool_view.hpp"
 
 #include <string>
 
 namespace steerseg::render {
 
-// What both views read: the scan, its geometry, the level set (may be null), where to draw.
+// What both views read: the scan, its skipping grid, its geometry, the level set (may be
+// null), where to draw.
 struct RenderInputs {
-    const ScanTexture& scan;
+    const gpu::ScanTexture& scan;
+    const SkipGrid& skip;
     const Geometry& geometry;
     const BrickPoolView* pool;
     GLuint emptyBuffer; // bound in place of the pool when there is none

@@ -45,7 +45,7 @@ VolumeView::VolumeView() {
     gpu::checkGl("creating the transfer function textures");
 }
 
-void VolumeView::bakeTransfer(const ScanTexture& scan, const TransferFunction& tf) {
+void VolumeView::bakeTransfer(const gpu::ScanTexture& scan, const TransferFunction& tf) {
     if (haveBaked_ && sameTransfer(tf, baked_)) {
         return;
     }
@@ -81,7 +81,7 @@ void VolumeView::draw(const RenderInputs& in, const ViewParams& params) {
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, lut_.id());
     glActiveTexture(GL_TEXTURE2);
-    glBindTexture(GL_TEXTURE_3D, in.scan.minMaxGrid());
+    glBindTexture(GL_TEXTURE_3D, in.skip.texture());
     glActiveTexture(GL_TEXTURE3);
     glBindTexture(GL_TEXTURE_2D, occupancy_.id());
 

@@ -11,7 +11,7 @@ class VolumeView {
     void draw(const RenderInputs& in, const ViewParams& params);
 
   private:
-    void bakeTransfer(const ScanTexture& scan, const TransferFunction& tf);
+    void bakeTransfer(const gpu::ScanTexture& scan, const TransferFunction& tf);
 
     PoolProgram program_{"render/raycast.comp"};
     gpu::Texture lut_;

@@ -1,6 +1,7 @@
 #include "solver/level_set_solver.hpp"
 
 #include "gpu/gl_error.hpp"
+#include "gpu/gl_state_guard.hpp"
 #include "gpu/gpu_info.hpp"
 #include "solver/gpu_brick_pool.hpp"
 #include "solver/phi_init.hpp"
@@ -44,11 +45,21 @@ int defaultBrickSize() {
 }
 
 LevelSetSolver::LevelSetSolver(const Volume& volume, const SolverOptions& options)
-    : LevelSetSolver(volume.realValues(), volume.dims(), options) {}
+    : LevelSetSolver(std::make_unique<gpu::ScanTexture>(volume), nullptr, options) {}
 
 LevelSetSolver::LevelSetSolver(std::span<const float> intensities, const glm::ivec3& dims,
                                const SolverOptions& options)
-    : dims_(dims), options_(options), intensities_(intensities.begin(), intensities.end()) {
+    : LevelSetSolver(std::make_unique<gpu::ScanTexture>(intensities, dims), nullptr, options) {}
+
+LevelSetSolver::LevelSetSolver(const gpu::ScanTexture& scan, const SolverOptions& options)
+    : LevelSetSolver(nullptr, &scan, options) {}
+
+LevelSetSolver::LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own,
+                               const gpu::ScanTexture* borrowed, const SolverOptions& options)
+    : ownScan_(std::move(own)), scan_(ownScan_ ? ownScan_.get() : borrowed), dims_(scan_->dims()),
+      options_(options) {
+    gpu::GlStateGuard guard;
+    const glm::ivec3 dims = dims_;
     if (options_.brickSize == 0) {
         options_.brickSize = kDefaultBrickSize;
     }
@@ -62,14 +73,7 @@ LevelSetSolver::LevelSetSolver(std::span<const float> intensities, const glm::iv
     }
     const std::size_t voxels = static_cast<std::size_t>(dims.x) * static_cast<std::size_t>(dims.y) *
                                static_cast<std::size_t>(dims.z);
-    if (dims.x <= 0 || dims.y <= 0 || dims.z <= 0 || intensities.size() != voxels) {
-        throw std::invalid_argument("solver: intensities do not match the volume's dimensions");
-    }
     const gpu::GpuInfo info = gpu::queryGpuInfo();
-    if (std::max({dims.x, dims.y, dims.z}) > info.max3dTextureSize) {
-        throw std::runtime_error("volume larger than the GPU's 3D texture limit (" +
-                                 std::to_string(info.max3dTextureSize) + ")");
-    }
     const int localSize = std::min(b * b * b, 64);
     programs_ = std::make_unique<solver_detail::SolverPrograms>(b, localSize);
     pool_ = std::make_unique<solver_detail::GpuBrickPool>(
@@ -81,16 +85,6 @@ LevelSetSolver::LevelSetSolver(std::span<const float> intensities, const glm::iv
         glProgramUniform3i(p.id(), glGetUniformLocation(p.id(), "brickGrid"), grid.x, grid.y,
                            grid.z);
     });
-
-    scan_ = gpu::createTexture();
-    glBindTexture(GL_TEXTURE_3D, scan_.id());
-    glTexStorage3D(GL_TEXTURE_3D, 1, GL_R32F, dims.x, dims.y, dims.z);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, dims.x, dims.y, dims.z, GL_RED, GL_FLOAT,
-                    intensities.data());
-    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    gpu::checkGl("uploading the scan");
 
     stats_.totalBricks = pool_->brickCount();
     stats_.densePhiBytes = voxels * sizeof(float);
@@ -169,6 +163,7 @@ void LevelSetSolver::iterate(float timeLimit) {
 }
 
 void LevelSetSolver::uploadPhi(const std::vector<float>& phi) {
+    gpu::GlStateGuard guard;
     pool_->upload(phi, options_.dense);
     pool_->bind();
     allocateAndList();
@@ -178,8 +173,13 @@ void LevelSetSolver::uploadPhi(const std::vector<float>& phi) {
     stats_.peakLevelSetBytes = std::max(stats_.peakLevelSetBytes, pool_->levelSetBytes());
 }
 
-void LevelSetSolver::initFromThreshold(float lo, float hi) {
-    uploadPhi(maskToPhi(thresholdMask(intensities_, lo, hi), dims_));
+void LevelSetSolver::initFromThreshold(std::span<const float> intensities, float lo, float hi) {
+    if (intensities.size() != static_cast<std::size_t>(dims_.x) *
+                                  static_cast<std::size_t>(dims_.y) *
+                                  static_cast<std::size_t>(dims_.z)) {
+        throw std::invalid_argument("solver: intensities do not match the volume's dimensions");
+    }
+    uploadPhi(maskToPhi(thresholdMask(intensities, lo, hi), dims_));
 }
 
 void LevelSetSolver::initFromMask(std::span<const std::uint8_t> mask) {
@@ -195,6 +195,7 @@ void LevelSetSolver::removeSphere(const Sphere& sphere) {
 
 void LevelSetSolver::editSphere(const Sphere& sphere, bool add) {
     validateSphere(sphere, dims_);
+    gpu::GlStateGuard guard;
     const int b = options_.brickSize;
     const float reach = sphere.radius + kPhiFar + 1.0F;
     const glm::ivec3 lo = glm::clamp(glm::ivec3(glm::floor(sphere.centre - reach)) / b,
@@ -273,8 +274,9 @@ bool LevelSetSolver::converged() const {
 
 StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool untilConverged) {
     requireParams();
+    gpu::GlStateGuard guard;
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_3D, scan_.id());
+    glBindTexture(GL_TEXTURE_3D, scan_->exact());
     pool_->bind();
     // The block as the last call left it: no GPU sync before the first chunk, so a caller that
     // steps a few iterations per frame pays one readback per call (after its chunk).
@@ -359,6 +361,7 @@ std::vector<std::uint8_t> LevelSetSolver::readMask() const {
 }
 
 std::vector<float> LevelSetSolver::readPhi() const {
+    gpu::GlStateGuard guard;
     return pool_->download();
 }
 

@@ -2,6 +2,7 @@
 
 #include "core/volume.hpp"
 #include "gpu/gl_handle.hpp"
+#include "gpu/scan_texture.hpp"
 #include "solver/brick_pool_view.hpp"
 #include "solver/control_block.hpp"
 #include "solver/level_set_params.hpp"
@@ -58,12 +59,16 @@ struct SolverStats {
 };
 
 // The sparse packed-brick level-set solver (GLES 3.1 compute). Needs a current GL context for
-// its whole life. The scan is uploaded once as an R32F 3D texture; phi lives in a brick pool
-// that grows and shrinks with the surface. Per iteration the CPU only issues dispatches; it
-// reads a few counters every checkInterval iterations (pool size, progress, convergence).
+// its whole life. It reads the scan from a gpu::ScanTexture; phi lives in a brick pool that
+// grows and shrinks with the surface. Per iteration the CPU only issues dispatches; it reads a
+// few counters every checkInterval iterations (pool size, progress, convergence). Every call
+// that issues GL work restores the GL state it found (gpu::GlStateGuard).
 class LevelSetSolver {
   public:
-    LevelSetSolver(const Volume& volume, const SolverOptions& options = {});
+    // Borrows the scan on the GPU (shared with the renderer); it must outlive the solver.
+    explicit LevelSetSolver(const gpu::ScanTexture& scan, const SolverOptions& options = {});
+    // Upload and own the scan's texture (tests, benchmarks, a solver with no renderer).
+    explicit LevelSetSolver(const Volume& volume, const SolverOptions& options = {});
     LevelSetSolver(std::span<const float> intensities, const glm::ivec3& dims,
                    const SolverOptions& options = {});
     ~LevelSetSolver();
@@ -76,7 +81,8 @@ class LevelSetSolver {
     void addSphere(const Sphere& sphere);
     void removeSphere(const Sphere& sphere);
     // Replace the level set.
-    void initFromThreshold(float lo, float hi);
+    // `intensities`: the scan's real-unit values, i fastest (the solver keeps no host copy).
+    void initFromThreshold(std::span<const float> intensities, float lo, float hi);
     void initFromMask(std::span<const std::uint8_t> mask);
 
     // n iterations (fewer never: a pool that runs out is grown and the rest re-run).
@@ -94,12 +100,13 @@ class LevelSetSolver {
 
     // The level set for readers (renderer); valid until the next step or edit.
     [[nodiscard]] BrickPoolView poolView() const;
-    // The scan as uploaded (R32F 3D texture, real units), for the renderer.
-    [[nodiscard]] GLuint scanTexture() const { return scan_.id(); }
+    [[nodiscard]] const gpu::ScanTexture& scan() const { return *scan_; }
     [[nodiscard]] SolverStats stats() const;
     [[nodiscard]] const glm::ivec3& dims() const { return dims_; }
 
   private:
+    LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own, const gpu::ScanTexture* borrowed,
+                   const SolverOptions& options);
     StepResult advance(int maxIterations, float timeLimit, bool untilConverged);
     void iterate(float timeLimit);
     void allocateAndList();
@@ -112,12 +119,12 @@ class LevelSetSolver {
     void dispatchIndirect(GLuint program, GLintptr offset);
     void requireParams() const;
 
+    std::unique_ptr<gpu::ScanTexture> ownScan_;
+    const gpu::ScanTexture* scan_;
     glm::ivec3 dims_;
     SolverOptions options_;
-    std::vector<float> intensities_; // CPU copy for threshold initialisation
     std::unique_ptr<solver_detail::SolverPrograms> programs_;
     std::unique_ptr<solver_detail::GpuBrickPool> pool_;
-    gpu::Texture scan_;
     LevelSetParams params_;
     bool haveParams_ = false;
     std::uint32_t epoch_ = 1;

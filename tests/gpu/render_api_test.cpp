@@ -4,7 +4,7 @@
 #include "gpu/gpu_info.hpp"
 #include "render/probe.hpp"
 #include "render/renderer.hpp"
-#include "render/scan_texture.hpp"
+#include "render/skip_grid.hpp"
 #include "render/transfer_function.hpp"
 #include "render_scene.hpp"
 #include "solver/level_set_solver.hpp"
@@ -69,20 +69,24 @@ TEST_F(RenderApi, RestoresTheGlStateItChanges) {
     glActiveTexture(GL_TEXTURE0);
 }
 
-// With float linear filtering the renderer draws from the solver's R32F texture (the scan on
-// the GPU once); the pictures match those from its own R16F copy up to half-float rounding.
-TEST_F(RenderApi, DisplaysTheSolversScanTextureLikeItsOwnCopy) {
+// With float linear filtering the solver and the renderer share one R32F texture (the scan on
+// the GPU once); the pictures match those from the R16F copy that drivers without float
+// filtering display, up to half-float rounding.
+TEST_F(RenderApi, DisplaysTheSharedScanTextureLikeTheHalfFloatCopy) {
     const Volume scan = makeHeadScene();
-    LevelSetSolver solver(scan);
-    render::Renderer own(scan);
-    render::Renderer shared(scan, solver.scanTexture());
-    EXPECT_FALSE(own.scan().sharesSolverTexture());
-    EXPECT_EQ(shared.scan().sharesSolverTexture(), gpu::queryGpuInfo().floatLinearFiltering);
-    if (shared.scan().sharesSolverTexture()) {
-        EXPECT_EQ(shared.scan().texture(), solver.scanTexture());
-        const Volume other = makeScan(cube(16), [](glm::ivec3) { return 1.0F; });
-        EXPECT_THROW(render::Renderer(other, solver.scanTexture()), std::invalid_argument);
+    const gpu::ScanTexture texture(scan);
+    const gpu::ScanTexture half(scan, gpu::ScanDisplay::HalfFloatCopy);
+    LevelSetSolver solver(texture);
+    render::Renderer shared(scan, solver.scan());
+    render::Renderer own(scan, half);
+    EXPECT_EQ(&shared.scan(), &texture);
+    EXPECT_FALSE(half.displaysExact());
+    EXPECT_EQ(texture.displaysExact(), gpu::queryGpuInfo().floatLinearFiltering);
+    if (texture.displaysExact()) {
+        EXPECT_EQ(texture.display(), texture.exact());
     }
+    const Volume other = makeScan(cube(16), [](glm::ivec3) { return 1.0F; });
+    EXPECT_THROW(render::Renderer(other, texture), std::invalid_argument);
     for (ViewKind kind : {ViewKind::Volume3d, ViewKind::Axial}) {
         const render::ViewParams params = own.defaultParams(kind, {64, 64});
         own.render(params, nullptr);

@@ -172,7 +172,7 @@ TEST_F(SolverBricksTest, ThresholdAndMaskStartsMatchReference) {
     const LevelSetParams params{100.0F, 20.0F, 0.5F};
     LevelSetSolver gpu(volume, d);
     ReferenceSolver cpu(volume, d);
-    gpu.initFromThreshold(50.0F, 150.0F);
+    gpu.initFromThreshold(volume, 50.0F, 150.0F);
     cpu.initFromThreshold(50.0F, 150.0F);
     EXPECT_EQ(gpu.readMask(), cpu.mask());
     gpu.setParams(params);

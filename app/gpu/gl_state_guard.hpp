@@ -4,16 +4,20 @@
 
 #include <array>
 
-namespace steerseg::render {
+namespace steerseg::gpu {
 
-// Saves, on construction, every piece of GL state the renderer changes and restores it on
-// destruction, so a UI drawing in the same context (Dear ImGui) finds its state untouched.
-// Units covered: texture units 0..kTextureUnits-1 (2D and 3D), SSBO bindings
-// 0..kStorageBindings-1, image unit 0, program, framebuffers, pixel pack/unpack.
+// The GL state policy of steerseg: every public entry point of the solver and the renderer
+// that issues GL calls holds one of these, which saves on construction every piece of GL state
+// those passes change and restores it on destruction. Callers (a UI drawing with Dear ImGui in
+// the same context, the other of solver and renderer) therefore find the context as they left
+// it, and no pass may assume defaults: each binds what it reads. Covered: texture units
+// 0..kTextureUnits-1 (2D and 3D), SSBO bindings 0..kStorageBindings-1 (clamped to the
+// context's limit) and the generic SSBO, copy-read/-write and dispatch-indirect bindings, image
+// unit 0, the program, framebuffers, pixel pack/unpack buffers and alignments.
 class GlStateGuard {
   public:
     static constexpr int kTextureUnits = 4;
-    static constexpr int kStorageBindings = 4;
+    static constexpr int kStorageBindings = 16;
 
     GlStateGuard();
     ~GlStateGuard();
@@ -38,8 +42,12 @@ class GlStateGuard {
     GLint activeTexture_ = GL_TEXTURE0;
     std::array<GLint, kTextureUnits> texture2d_{};
     std::array<GLint, kTextureUnits> texture3d_{};
+    int storageBindings_ = 0;
     std::array<RangeBinding, kStorageBindings> storage_{};
     GLint storageGeneric_ = 0;
+    GLint copyRead_ = 0;
+    GLint copyWrite_ = 0;
+    GLint dispatchIndirect_ = 0;
     ImageBinding image0_;
     GLint readFramebuffer_ = 0;
     GLint drawFramebuffer_ = 0;
@@ -49,4 +57,4 @@ class GlStateGuard {
     GLint unpackAlignment_ = 4;
 };
 
-} // namespace steerseg::render
+} // namespace steerseg::gpu

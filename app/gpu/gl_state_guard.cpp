@@ -1,6 +1,8 @@
-#include "render/gl_state_guard.hpp"
+#include "gpu/gl_state_guard.hpp"
 
-namespace steerseg::render {
+#include <algorithm>
+
+namespace steerseg::gpu {
 
 GlStateGuard::GlStateGuard() {
     glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
@@ -11,7 +13,10 @@ GlStateGuard::GlStateGuard() {
         glGetIntegerv(GL_TEXTURE_BINDING_3D, &texture3d_[static_cast<std::size_t>(u)]);
     }
     glActiveTexture(static_cast<GLenum>(activeTexture_));
-    for (int b = 0; b < kStorageBindings; ++b) {
+    GLint maxBindings = 0;
+    glGetIntegerv(GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS, &maxBindings);
+    storageBindings_ = std::min(maxBindings, kStorageBindings);
+    for (int b = 0; b < storageBindings_; ++b) {
         RangeBinding& r = storage_[static_cast<std::size_t>(b)];
         const auto index = static_cast<GLuint>(b);
         glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, index, &r.buffer);
@@ -19,6 +24,9 @@ GlStateGuard::GlStateGuard() {
         glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_SIZE, index, &r.size);
     }
     glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &storageGeneric_);
+    glGetIntegerv(GL_COPY_READ_BUFFER_BINDING, &copyRead_);
+    glGetIntegerv(GL_COPY_WRITE_BUFFER_BINDING, &copyWrite_);
+    glGetIntegerv(GL_DISPATCH_INDIRECT_BUFFER_BINDING, &dispatchIndirect_);
     glGetIntegeri_v(GL_IMAGE_BINDING_NAME, 0, &image0_.texture);
     glGetIntegeri_v(GL_IMAGE_BINDING_LEVEL, 0, &image0_.level);
     GLint layered = 0;
@@ -43,7 +51,7 @@ GlStateGuard::~GlStateGuard() {
         glBindTexture(GL_TEXTURE_3D, static_cast<GLuint>(texture3d_[static_cast<std::size_t>(u)]));
     }
     glActiveTexture(static_cast<GLenum>(activeTexture_));
-    for (int b = 0; b < kStorageBindings; ++b) {
+    for (int b = 0; b < storageBindings_; ++b) {
         const RangeBinding& r = storage_[static_cast<std::size_t>(b)];
         const auto index = static_cast<GLuint>(b);
         if (r.buffer != 0 && r.size > 0) {
@@ -54,6 +62,9 @@ GlStateGuard::~GlStateGuard() {
         }
     }
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(storageGeneric_));
+    glBindBuffer(GL_COPY_READ_BUFFER, static_cast<GLuint>(copyRead_));
+    glBindBuffer(GL_COPY_WRITE_BUFFER, static_cast<GLuint>(copyWrite_));
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, static_cast<GLuint>(dispatchIndirect_));
     glBindImageTexture(0, static_cast<GLuint>(image0_.texture), image0_.level, image0_.layered,
                        image0_.layer, static_cast<GLenum>(image0_.access),
                        static_cast<GLenum>(image0_.format));
@@ -65,4 +76,4 @@ GlStateGuard::~GlStateGuard() {
     glPixelStorei(GL_UNPACK_ALIGNMENT, unpackAlignment_);
 }
 
-} // namespace steerseg::render
+} // namespace steerseg::gpu

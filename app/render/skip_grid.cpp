@@ -1,0 +1,95 @@
+#include "render/skip_grid.hpp"
+
+#include "gpu/gl_error.hpp"
+#include "gpu/gl_state_guard.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace steerseg::render {
+
+namespace {
+
+// Fills `out` with the min/max of every block of block layer bz. `at(i, j, k)` gives a value;
+// only slices 8 bz - 1 .. 8 bz + 8 are asked for.
+template <typename At>
+void layerMinMax(const glm::ivec3& dims, const glm::ivec3& grid, int bz, const At& at,
+                 std::vector<float>& out) {
+    for (int by = 0; by < grid.y; ++by) {
+        for (int bx = 0; bx < grid.x; ++bx) {
+            const glm::ivec3 lo = glm::max(glm::ivec3(bx, by, bz) * kSkipBlock - 1, 0);
+            const glm::ivec3 hi =
+                glm::min(glm::ivec3(bx, by, bz) * kSkipBlock + kSkipBlock + 1, dims);
+            float mn = std::numeric_limits<float>::max();
+            float mx = std::numeric_limits<float>::lowest();
+            for (int k = lo.z; k < hi.z; ++k) {
+                for (int j = lo.y; j < hi.y; ++j) {
+                    for (int i = lo.x; i < hi.x; ++i) {
+                        const float v = at(i, j, k);
+                        mn = std::min(mn, v);
+                        mx = std::max(mx, v);
+                    }
+                }
+            }
+            const std::size_t cell =
+                static_cast<std::size_t>(bx) +
+                static_cast<std::size_t>(grid.x) *
+                    (static_cast<std::size_t>(by) +
+                     static_cast<std::size_t>(grid.y) * static_cast<std::size_t>(bz));
+            out[2 * cell] = mn;
+            out[2 * cell + 1] = mx;
+        }
+    }
+}
+
+std::size_t linear(const glm::ivec3& dims, int i, int j, int k) {
+    return static_cast<std::size_t>(i) +
+           static_cast<std::size_t>(dims.x) *
+               (static_cast<std::size_t>(j) +
+                static_cast<std::size_t>(dims.y) * static_cast<std::size_t>(k));
+}
+
+} // namespace
+
+std::vector<float> blockMinMax(const std::vector<float>& values, const glm::ivec3& dims) {
+    const glm::ivec3 grid = (dims + kSkipBlock - 1) / kSkipBlock;
+    std::vector<float> out(static_cast<std::size_t>(grid.x) * grid.y * grid.z * 2);
+    const auto at = [&](int i, int j, int k) { return values[linear(dims, i, j, k)]; };
+    for (int bz = 0; bz < grid.z; ++bz) {
+        layerMinMax(dims, grid, bz, at, out);
+    }
+    return out;
+}
+
+SkipGrid::SkipGrid(const Volume& volume, const gpu::ScanTexture& scan)
+    : dims_((volume.dims() + kSkipBlock - 1) / kSkipBlock) {
+    const glm::ivec3 d = volume.dims();
+    const std::size_t slice = static_cast<std::size_t>(d.x) * static_cast<std::size_t>(d.y);
+    std::vector<float> out(static_cast<std::size_t>(dims_.x) * dims_.y * dims_.z * 2);
+    std::vector<float> slab;
+    for (int bz = 0; bz < dims_.z; ++bz) {
+        const int k0 = std::max(bz * kSkipBlock - 1, 0);
+        const int k1 = std::min(bz * kSkipBlock + kSkipBlock + 1, d.z);
+        slab.resize(slice * static_cast<std::size_t>(k1 - k0));
+        for (std::size_t n = 0; n < slab.size(); ++n) {
+            const double real = volume.rescale().apply(volume.storedAt(slice * k0 + n));
+            slab[n] = static_cast<float>(scan.normalise(real));
+        }
+        const auto at = [&](int i, int j, int k) { return slab[linear(d, i, j, k - k0)]; };
+        layerMinMax(d, dims_, bz, at, out);
+    }
+    gpu::GlStateGuard guard;
+    glActiveTexture(GL_TEXTURE0);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    texture_ = gpu::createTexture();
+    glBindTexture(GL_TEXTURE_3D, texture_.id());
+    glTexStorage3D(GL_TEXTURE_3D, 1, GL_RG16F, dims_.x, dims_.y, dims_.z);
+    glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, dims_.x, dims_.y, dims_.z, GL_RG, GL_FLOAT,
+                    out.data());
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gpu::checkGl("uploading the skipping grid");
+}
+
+} // namespace steerseg::render
