@@ -6,7 +6,7 @@
 // package registry and so no OpenImageIO: there only the built-in sample is read, and pictures
 // are refused with a message.
 #include "core/volume.hpp"
-#include "render/image.hpp"
+#include "core/rgba_image.hpp"
 
 #include <filesystem>
 #include <string>
@@ -17,7 +17,7 @@ namespace steerseg::bench {
 Volume loadScan(const std::string& path);
 
 // Writes a PNG. Throws std::runtime_error where this build has no image writer.
-void saveImage(const std::filesystem::path& path, const render::RgbaImage& image);
+void saveImage(const std::filesystem::path& path, const RgbaImage& image);
 
 // The volume resampled by `factor` on each axis (trilinear, same world extent), so the
 // renderer and solver can be timed at scan sizes no file at hand has. factor 1 returns a copy.

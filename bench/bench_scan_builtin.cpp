@@ -13,7 +13,7 @@ Volume loadScan(const std::string& path) {
     return makeSamplePhantom();
 }
 
-void saveImage(const std::filesystem::path& path, const render::RgbaImage&) {
+void saveImage(const std::filesystem::path& path, const RgbaImage&) {
     throw std::runtime_error(path.string() + ": this benchmark was built without the image "
                                              "writer (STEERSEG_BENCH_IO=OFF)");
 }

@@ -1,4 +1,5 @@
 #include "bench/bench_scan.hpp"
+#include "io/image_file.hpp"
 #include "io/scan_reader.hpp"
 
 namespace steerseg::bench {
@@ -7,8 +8,8 @@ Volume loadScan(const std::string& path) {
     return io::readScan(path).volume;
 }
 
-void saveImage(const std::filesystem::path& path, const render::RgbaImage& image) {
-    render::writeImage(path, image);
+void saveImage(const std::filesystem::path& path, const RgbaImage& image) {
+    io::writeImage(path, image);
 }
 
 } // namespace steerseg::bench

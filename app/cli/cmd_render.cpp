@@ -2,11 +2,13 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "cli/segmentation_options.hpp"
+#include "io/image_file.hpp"
 #include "io/scan_reader.hpp"
 #include "platform/egl/gpu_context.hpp"
 #include "render/render_names.hpp"
 #include "render/renderer.hpp"
 #include "render/slice_frame.hpp"
+#include "session/session.hpp"
 
 #include <cstdio>
 #include <memory>
@@ -31,23 +33,6 @@ std::vector<std::string> flagOptions() {
     const std::vector<std::string> segmentation = segmentationFlagOptions();
     names.insert(names.end(), segmentation.begin(), segmentation.end());
     return names;
-}
-
-// The mask as the solver's starting level set: same grid as the scan, inside where > 0.5.
-std::vector<std::uint8_t> readMaskFor(const std::string& path, const Geometry& scanGeometry) {
-    const io::LoadedScan mask = io::readScan(path);
-    if (mask.volume.dims() != scanGeometry.dims) {
-        throw std::runtime_error(
-            path + ": mask is " + std::to_string(mask.volume.dims().x) + "x" +
-            std::to_string(mask.volume.dims().y) + "x" + std::to_string(mask.volume.dims().z) +
-            " but the scan is " + std::to_string(scanGeometry.dims.x) + "x" +
-            std::to_string(scanGeometry.dims.y) + "x" + std::to_string(scanGeometry.dims.z));
-    }
-    std::vector<std::uint8_t> inside(mask.volume.geometry().voxelCount());
-    for (std::size_t n = 0; n < inside.size(); ++n) {
-        inside[n] = mask.volume.rescale().apply(mask.volume.storedAt(n)) > 0.5 ? 1 : 0;
-    }
-    return inside;
 }
 
 template <typename F> auto usage(F&& parse) -> decltype(parse()) {
@@ -205,37 +190,31 @@ int runRender(std::span<const std::string> words) {
     parseSliceOptions(args, p);
     parseSpeedOptions(args, p);
 
-    const io::LoadedScan scan = io::readScan(input);
-    const Geometry& g = scan.volume.geometry();
+    // The scan first: a bad file is reported before the GPU is brought up.
+    io::LoadedScan scan = io::readScan(input);
+    const Geometry g = scan.volume.geometry();
     checkSliceRange(g, p);
     if (request) {
         checkSpheresInside(*request, g.dims);
     }
     auto context = platform::createOffscreenContext();
     // The level set comes from the solver's brick pool; the renderer never copies phi.
-    std::unique_ptr<LevelSetSolver> solver;
+    session::Session session(std::move(scan.volume), std::move(scan.format),
+                             request ? request->options : SolverOptions{});
     if (const auto mask = args.value("mask")) {
-        solver = std::make_unique<LevelSetSolver>(scan.volume);
-        solver->initFromMask(readMaskFor(*mask, g));
+        session.startFromMask(*mask);
     } else if (request) {
-        solver = std::make_unique<LevelSetSolver>(scan.volume, request->options);
-        (void)runSegmentation(*solver, *request);
+        applySegmentation(session, *request);
+        (void)session.run(request->mode);
     }
-    std::optional<render::Renderer> renderer;
-    if (solver) {
-        renderer.emplace(scan.volume, solver->scan());
-    } else {
-        renderer.emplace(scan.volume);
-    }
-    const render::ViewParams defaults = renderer->defaultParams(p.kind, p.size);
+    const render::ViewParams defaults = session.defaultView(p.kind, p.size);
     p.camera = defaults.camera;
     p.transfer = defaults.transfer;
     p.window = defaults.window;
     applyCamera(args, g, p);
-    applyIntensityOptions(args, scan.volume, p);
-    const BrickPoolView pool = solver ? solver->poolView() : BrickPoolView{};
-    renderer->render(p, solver ? &pool : nullptr);
-    render::writeImage(output, renderer->readback());
+    applyIntensityOptions(args, session.scan(), p);
+    session.render(p);
+    io::writeImage(output, session.picture());
     return 0;
 }
 

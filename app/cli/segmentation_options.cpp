@@ -1,8 +1,5 @@
 #include "cli/segmentation_options.hpp"
 
-#include "gpu/gl.hpp"
-
-#include <chrono>
 #include <stdexcept>
 
 namespace steerseg::cli {
@@ -15,7 +12,7 @@ Sphere parseSphere(const std::string& text, const std::string& what) {
             static_cast<float>(v[3])};
 }
 
-RunMode parseRunMode(const Args& args) {
+session::RunMode parseRunMode(const Args& args) {
     const auto iterations = args.integer("iterations");
     const auto time = args.number("time");
     const bool converge = args.flag("converge");
@@ -28,7 +25,7 @@ RunMode parseRunMode(const Args& args) {
     if (maxIterations && iterations) {
         throw UsageError("--max-iterations goes with --time or --converge");
     }
-    RunMode mode;
+    session::RunMode mode;
     const long long count = maxIterations.value_or(iterations.value_or(100000));
     if (count < 1 || count > 100000000) {
         throw UsageError("iteration counts must be between 1 and 100000000");
@@ -38,10 +35,10 @@ RunMode parseRunMode(const Args& args) {
         if (*time < 0.0 || *time > 1e7) {
             throw UsageError("--time must be between 0 and 1e7");
         }
-        mode.kind = RunMode::Time;
+        mode.kind = session::RunMode::Time;
         mode.time = static_cast<float>(*time);
     } else if (converge) {
-        mode.kind = RunMode::Converge;
+        mode.kind = session::RunMode::Converge;
     }
     return mode;
 }
@@ -106,31 +103,14 @@ void checkSpheresInside(const SegmentationRequest& request, const glm::ivec3& di
     checkInside(request.erases, dims, "--erase");
 }
 
-SegmentationRun runSegmentation(LevelSetSolver& solver, const SegmentationRequest& request) {
+void applySegmentation(session::Session& session, const SegmentationRequest& request) {
     for (const Sphere& s : request.seeds) {
-        solver.addSphere(s);
+        session.addSeed(s);
     }
     for (const Sphere& s : request.erases) {
-        solver.removeSphere(s);
+        session.erase(s);
     }
-    solver.setParams(request.params);
-    const auto start = std::chrono::steady_clock::now();
-    SegmentationRun run;
-    switch (request.mode.kind) {
-    case RunMode::Iterations:
-        run.result = solver.step(request.mode.iterations);
-        break;
-    case RunMode::Time:
-        run.result = solver.evolveUntil(request.mode.time, request.mode.iterations);
-        break;
-    case RunMode::Converge:
-        run.result = solver.runUntilConverged(request.mode.iterations);
-        break;
-    }
-    glFinish();
-    run.solveSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return run;
+    session.setParams(request.params);
 }
 
 } // namespace steerseg::cli

@@ -4,25 +4,18 @@
 // one parser, one validation, one way to run the solver.
 #include "cli/args.hpp"
 #include "core/volume.hpp"
-#include "solver/level_set_solver.hpp"
+#include "session/session.hpp"
 
 #include <string>
 #include <vector>
 
 namespace steerseg::cli {
 
-// What to run: exactly one of --iterations, --time, --converge.
-struct RunMode {
-    enum Kind { Iterations, Time, Converge } kind = Iterations;
-    int iterations = 0; // the count, or the cap for --time / --converge
-    float time = 0.0F;
-};
-
 struct SegmentationRequest {
     LevelSetParams params;
     std::vector<Sphere> seeds;
     std::vector<Sphere> erases;
-    RunMode mode;
+    session::RunMode mode; // exactly one of --iterations, --time, --converge
     SolverOptions options;
 };
 
@@ -39,12 +32,7 @@ SegmentationRequest parseSegmentation(const Args& args);
 // Seeds and erasers must lie in the scan; throws UsageError naming the option.
 void checkSpheresInside(const SegmentationRequest& request, const glm::ivec3& dims);
 
-struct SegmentationRun {
-    StepResult result;
-    double solveSeconds = 0.0; // solver only, GPU work finished
-};
-
-// Applies seeds, erasers and parameters to a fresh solver and runs it as the request says.
-SegmentationRun runSegmentation(LevelSetSolver& solver, const SegmentationRequest& request);
+// Applies the request's seeds, erasers and parameters to the session.
+void applySegmentation(session::Session& session, const SegmentationRequest& request);
 
 } // namespace steerseg::cli

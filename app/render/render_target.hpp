@@ -1,7 +1,7 @@
 #pragma once
 
 #include "gpu/gl_handle.hpp"
-#include "render/image.hpp"
+#include "core/rgba_image.hpp"
 
 #include <glm/glm.hpp>
 

@@ -2,7 +2,7 @@
 // transfer-function baking, the skipping grid, and displaying the solver's scan texture.
 #include "gpu/gl_handle.hpp"
 #include "gpu/gpu_info.hpp"
-#include "render/probe.hpp"
+#include "session/probe.hpp"
 #include "render/renderer.hpp"
 #include "render/skip_grid.hpp"
 #include "render/transfer_function.hpp"
@@ -91,8 +91,8 @@ TEST_F(RenderApi, DisplaysTheSharedScanTextureLikeTheHalfFloatCopy) {
         const render::ViewParams params = own.defaultParams(kind, {64, 64});
         own.render(params, nullptr);
         shared.render(params, nullptr);
-        const render::RgbaImage a = own.readback();
-        const render::RgbaImage b = shared.readback();
+        const RgbaImage a = own.readback();
+        const RgbaImage b = shared.readback();
         ASSERT_EQ(a.pixels.size(), b.pixels.size());
         int worst = 0;
         long total = 0;
@@ -160,16 +160,16 @@ TEST(RenderProbe, MeanAndStddevInASphere) {
         }
     }
     // Radius 1 mm around (4,4,4): the centre and its four +-i/+-j neighbours (k is 2 mm away).
-    const render::ProbeStats s = render::probe(v, {4.0, 4.0, 4.0}, 1.0);
+    const session::ProbeStats s = session::probe(v, {4.0, 4.0, 4.0}, 1.0);
     EXPECT_EQ(s.count, 5u);
     EXPECT_DOUBLE_EQ(s.mean, (3 * 300.0 + 2 * 100.0) / 5.0);
     const double var = (3 * 300.0 * 300.0 + 2 * 100.0 * 100.0) / 5.0 - s.mean * s.mean;
     EXPECT_NEAR(s.stddev, std::sqrt(var), 1e-9);
-    const render::SuggestedSpeed speed = render::suggestSpeed(s, 2.0);
+    const session::SuggestedSpeed speed = session::suggestSpeed(s, 2.0);
     EXPECT_DOUBLE_EQ(speed.target, s.mean);
     EXPECT_DOUBLE_EQ(speed.epsilon, 2.0 * s.stddev);
-    EXPECT_EQ(render::probe(v, {-50.0, 0.0, 0.0}, 2.0).count, 0u);
-    EXPECT_THROW(render::probe(v, {4.0, 4.0, NAN}, 1.0), std::invalid_argument);
+    EXPECT_EQ(session::probe(v, {-50.0, 0.0, 0.0}, 2.0).count, 0u);
+    EXPECT_THROW(session::probe(v, {4.0, 4.0, NAN}, 1.0), std::invalid_argument);
 }
 
 } // namespace

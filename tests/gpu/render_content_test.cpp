@@ -54,7 +54,7 @@ TEST_F(RenderContent, ClipPlaneLineLiesWherePlaneMeetsSphere) {
     p.clip = {true, {0.0, -1.0, 0.0}, -kCentre.y}; // cut away y < 20
     p.window = {105.0, 40.0};                      // 100 and 110 both mid-grey
     renderer.render(p, &view);
-    const render::RgbaImage img = renderer.readback();
+    const RgbaImage img = renderer.readback();
 
     std::vector<int> anglesHit(24, 0);
     int yellow = 0;
@@ -99,13 +99,13 @@ TEST_F(RenderContent, RoiInsideShowsNoScanOutsideSurface) {
     p.surface = render::SurfaceMode::Hidden;
     p.roi = render::RoiMode::Inside;
     renderer.render(p, &view);
-    const render::RgbaImage inside = renderer.readback();
+    const RgbaImage inside = renderer.readback();
     p.roi = render::RoiMode::Off;
     renderer.render(p, &view);
-    const render::RgbaImage off = renderer.readback();
+    const RgbaImage off = renderer.readback();
     p.roi = render::RoiMode::Dim;
     renderer.render(p, &view);
-    const render::RgbaImage dim = renderer.readback();
+    const RgbaImage dim = renderer.readback();
 
     int checkedOutside = 0;
     int checkedInside = 0;
@@ -138,7 +138,7 @@ TEST_F(RenderContent, OpaqueSurfaceCoversItsDiscAcrossBrickSizes) {
     render::Renderer renderer(scan);
     render::ViewParams p = renderer.defaultParams(ViewKind::Volume3d, {96, 96});
     p.transfer.widgets.clear();
-    render::RgbaImage images[2];
+    RgbaImage images[2];
     const int brickSizes[2] = {8, 4};
     for (int n = 0; n < 2; ++n) {
         GpuPool pool(spherePool(kDims, kCentre, kRadius, brickSizes[n]));
@@ -180,7 +180,7 @@ TEST_F(RenderContent, SliceContourIsTheMaskBoundary) {
     p.slice = 6;
     p.labels = false;
     renderer.render(p, &view);
-    const render::RgbaImage img = renderer.readback();
+    const RgbaImage img = renderer.readback();
     int boundary = 0;
     for (int y = 0; y < dims.y; ++y) {
         for (int x = 0; x < dims.x; ++x) {
@@ -204,7 +204,7 @@ TEST_F(RenderContent, SpeedViewColoursPositiveAndNegativeApart) {
     p.speed = {900.0, 100.0};
     p.labels = false;
     renderer.render(p, nullptr);
-    const render::RgbaImage img = renderer.readback();
+    const RgbaImage img = renderer.readback();
     // 1:1 here (48 voxels of 1.2 mm across 48 pixels); axial with identity: x = i, y = j.
     const std::uint8_t* lesion = img.at(31, 19);
     const std::uint8_t* brain = img.at(18, 28);

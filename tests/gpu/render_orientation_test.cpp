@@ -25,7 +25,7 @@ Volume markerScan(const glm::dmat3& direction, const glm::dvec3& markerWorld) {
 }
 
 // Mean pixel x and y of bright (grey > 128) pixels, labels excluded.
-glm::dvec2 brightCentroid(const render::RgbaImage& img) {
+glm::dvec2 brightCentroid(const RgbaImage& img) {
     glm::dvec2 sum(0.0);
     int n = 0;
     for (int y = 0; y < img.height; ++y) {
@@ -41,7 +41,7 @@ glm::dvec2 brightCentroid(const render::RgbaImage& img) {
     return n > 0 ? sum / static_cast<double>(n) : glm::dvec2(-1.0);
 }
 
-bool orangeNear(const render::RgbaImage& img, int x0, int x1, int y0, int y1) {
+bool orangeNear(const RgbaImage& img, int x0, int x1, int y0, int y1) {
     for (int y = y0; y < y1; ++y) {
         for (int x = x0; x < x1; ++x) {
             const std::uint8_t* px = img.at(x, y);
@@ -75,7 +75,7 @@ TEST_F(RenderOrientation, LeftMarkerOnScreenRightInAxialAndCoronal) {
             render::ViewParams p = renderer.defaultParams(kind, {64, 64});
             p.window = {500.0, 1000.0};
             const render::SliceFrame f = *renderer.render(p, nullptr);
-            const render::RgbaImage img = renderer.readback();
+            const RgbaImage img = renderer.readback();
             EXPECT_GT(brightCentroid(img).x, 40.0);
             EXPECT_EQ(f.labels[0], 'R');
             EXPECT_EQ(f.labels[1], 'L');
@@ -114,7 +114,7 @@ TEST_F(RenderOrientation, AnteriorCameraShowsPatientLeftOnScreenRight) {
         p.transfer.widgets = {{1000.0, 400.0, 0.0, {1.0, 1.0, 1.0}, 1.0}};
         p.transfer.gradientScale = 1.0;
         renderer.render(p, nullptr);
-        const render::RgbaImage img = renderer.readback();
+        const RgbaImage img = renderer.readback();
         glm::dvec2 sum(0.0);
         int n = 0;
         for (int y = 0; y < 64; ++y) {

@@ -1,5 +1,7 @@
 #include "render_scene.hpp"
 
+#include "io/image_file.hpp"
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -62,15 +64,15 @@ bool isBlack(const std::uint8_t* px) {
     return px[0] == 0 && px[1] == 0 && px[2] == 0;
 }
 
-GoldenResult compareGolden(const std::string& name, const render::RgbaImage& actual,
-                           int pixelTolerance, double maxDifferingFraction) {
+GoldenResult compareGolden(const std::string& name, const RgbaImage& actual, int pixelTolerance,
+                           double maxDifferingFraction) {
     // Compiled in (tests/gpu/CMakeLists.txt) so the check never depends on the environment.
     const std::filesystem::path goldenDir = STEERSEG_GOLDEN_DIR;
     const std::filesystem::path golden = goldenDir / (name + ".png");
     const char* update = std::getenv("STEERSEG_UPDATE_GOLDEN");
     if (update != nullptr && std::string(update) == "1") {
         std::filesystem::create_directories(goldenDir);
-        render::writeImage(golden, actual);
+        io::writeImage(golden, actual);
         return {true, "rewrote " + golden.string()};
     }
     const std::filesystem::path here =
@@ -78,16 +80,16 @@ GoldenResult compareGolden(const std::string& name, const render::RgbaImage& act
     const std::filesystem::path actualPath = here / (name + ".actual.png");
     const std::filesystem::path diffPath = here / (name + ".diff.png");
     if (!std::filesystem::exists(golden)) {
-        render::writeImage(actualPath, actual);
+        io::writeImage(actualPath, actual);
         return {false, "no golden " + golden.string() + " (actual written to " +
                            actualPath.string() + "; set STEERSEG_UPDATE_GOLDEN=1 to create it)"};
     }
-    const render::RgbaImage expected = render::readImage(golden);
+    const RgbaImage expected = io::readImage(golden);
     if (expected.width != actual.width || expected.height != actual.height) {
-        render::writeImage(actualPath, actual);
+        io::writeImage(actualPath, actual);
         return {false, "size differs from " + golden.string() + "; actual: " + actualPath.string()};
     }
-    render::RgbaImage diff{actual.width, actual.height, {}};
+    RgbaImage diff{actual.width, actual.height, {}};
     diff.pixels.assign(actual.pixels.size(), 0);
     std::size_t differing = 0;
     int worst = 0;
@@ -113,8 +115,8 @@ GoldenResult compareGolden(const std::string& name, const render::RgbaImage& act
     if (fraction <= maxDifferingFraction) {
         return {true, ""};
     }
-    render::writeImage(actualPath, actual);
-    render::writeImage(diffPath, diff);
+    io::writeImage(actualPath, actual);
+    io::writeImage(diffPath, diff);
     std::ostringstream msg;
     msg << name << ": " << differing << " pixels (" << fraction * 100.0 << "%) differ by more than "
         << pixelTolerance << " (worst " << worst << "); actual: " << actualPath.string()

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "core/volume.hpp"
-#include "render/image.hpp"
+#include "core/rgba_image.hpp"
 #include "support/pool_packer.hpp"
 
 #include <filesystem>
@@ -33,7 +33,7 @@ struct GoldenResult {
     bool ok = false;
     std::string message;
 };
-GoldenResult compareGolden(const std::string& name, const render::RgbaImage& actual,
+GoldenResult compareGolden(const std::string& name, const RgbaImage& actual,
                            int pixelTolerance = 24, double maxDifferingFraction = 0.01);
 
 // Pixel colour helpers.

@@ -1,9 +1,9 @@
-#include "render/image.hpp"
+#include "io/image_file.hpp"
 
 #include <OpenImageIO/imageio.h>
 #include <stdexcept>
 
-namespace steerseg::render {
+namespace steerseg::io {
 
 void writeImage(const std::filesystem::path& path, const RgbaImage& image) {
     auto out = OIIO::ImageOutput::create(path.string());
@@ -51,4 +51,4 @@ RgbaImage readImage(const std::filesystem::path& path) {
     return image;
 }
 
-} // namespace steerseg::render
+} // namespace steerseg::io

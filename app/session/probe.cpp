@@ -1,10 +1,10 @@
-#include "render/probe.hpp"
+#include "session/probe.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-namespace steerseg::render {
+namespace steerseg::session {
 
 ProbeStats probe(const Volume& volume, const glm::dvec3& index, double radiusMm) {
     if (!(radiusMm >= 0.0) || !std::isfinite(radiusMm) || !std::isfinite(index.x) ||
@@ -47,4 +47,4 @@ SuggestedSpeed suggestSpeed(const ProbeStats& stats, double factor) {
     return {stats.mean, stats.stddev * factor};
 }
 
-} // namespace steerseg::render
+} // namespace steerseg::session

@@ -4,7 +4,7 @@
 
 #include <glm/glm.hpp>
 
-namespace steerseg::render {
+namespace steerseg::session {
 
 // Intensity statistics (real units) of the voxels whose centres lie within `radiusMm` of a
 // point given in voxel indices (the probe of any view). count = 0 if the sphere misses the
@@ -23,4 +23,4 @@ struct SuggestedSpeed {
 };
 SuggestedSpeed suggestSpeed(const ProbeStats& stats, double factor = 2.0);
 
-} // namespace steerseg::render
+} // namespace steerseg::session

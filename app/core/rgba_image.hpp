@@ -1,10 +1,9 @@
 #pragma once
 
 #include <cstdint>
-#include <filesystem>
 #include <vector>
 
-namespace steerseg::render {
+namespace steerseg {
 
 // An 8-bit RGBA picture, row 0 at the top.
 struct RgbaImage {
@@ -22,10 +21,4 @@ struct RgbaImage {
     }
 };
 
-// PNG (or any format OpenImageIO writes, by extension) through OpenImageIO. Throws
-// std::runtime_error "path: problem".
-void writeImage(const std::filesystem::path& path, const RgbaImage& image);
-// Reads an 8-bit image as RGBA (missing channels: alpha 255, grey copied).
-RgbaImage readImage(const std::filesystem::path& path);
-
-} // namespace steerseg::render
+} // namespace steerseg

@@ -1,0 +1,47 @@
+#include "session/segment_report.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace steerseg::session {
+
+std::string segmentReport(const Session& session, const RunOutcome& run,
+                          std::span<const std::uint8_t> mask, const ReportContext& context) {
+    const Geometry& geometry = session.scan().geometry();
+    const LevelSetParams& params = context.params;
+    const SolverOptions& options = session.options();
+    const double seconds = run.solveSeconds;
+    std::size_t inside = 0;
+    for (const std::uint8_t m : mask) {
+        inside += m;
+    }
+    const SolverStats stats = session.stats();
+    nlohmann::ordered_json j;
+    j["input"] = context.input;
+    j["output"] = context.output;
+    j["T"] = params.T;
+    j["eps"] = params.eps;
+    j["alpha"] = params.alpha;
+    j["mode"] = options.dense ? "dense" : "sparse";
+    j["brick_size"] = options.brickSize == 0 ? defaultBrickSize() : options.brickSize;
+    j["iterations"] = stats.iterations;
+    j["evolved_time"] = stats.evolvedTime;
+    j["solve_seconds"] = seconds;
+    j["iterations_per_second"] = seconds > 0.0 ? stats.iterations / seconds : 0.0;
+    j["converged"] = session.converged();
+    j["inside_voxels"] = inside;
+    const double voxelMl = geometry.spacing.x * geometry.spacing.y * geometry.spacing.z / 1000.0;
+    j["volume_ml"] = static_cast<double>(inside) * voxelMl;
+    j["peak_active_bricks"] = stats.peakActiveBricks;
+    j["total_bricks"] = stats.totalBricks;
+    j["peak_pool_bytes"] = stats.peakLevelSetBytes;
+    // At the end: the still band's storage, against the peak taken while it grew.
+    j["active_bricks"] = stats.activeBricks;
+    j["pool_bytes"] = stats.levelSetBytes;
+    j["dense_phi_bytes"] = stats.densePhiBytes;
+    j["pool_growths"] = stats.poolGrowths;
+    j["pool_shrinks"] = stats.poolShrinks;
+    j["renderer"] = context.renderer;
+    return j.dump(2);
+}
+
+} // namespace steerseg::session

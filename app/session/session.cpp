@@ -1,0 +1,149 @@
+#include "session/session.hpp"
+
+#include "gpu/gl.hpp"
+#include "gpu/scan_texture.hpp"
+#include "io/mask_writer.hpp"
+#include "io/scan_reader.hpp"
+#include "render/renderer.hpp"
+#include "solver/level_set_solver.hpp"
+
+#include <chrono>
+#include <stdexcept>
+
+namespace steerseg::session {
+
+namespace {
+
+std::string dimsText(const glm::ivec3& d) {
+    return std::to_string(d.x) + "x" + std::to_string(d.y) + "x" + std::to_string(d.z);
+}
+
+} // namespace
+
+// Everything that lives in the GL context, in the order it must be built and torn down: the
+// scan texture outlives the solver and the renderer that borrow it.
+struct Session::Gpu {
+    Gpu(const Volume& scan, const SolverOptions& options)
+        : texture(scan), solver(texture, options), renderer(scan, texture) {}
+    gpu::ScanTexture texture;
+    LevelSetSolver solver;
+    render::Renderer renderer;
+};
+
+Session Session::open(const std::filesystem::path& path, const SolverOptions& options) {
+    io::LoadedScan loaded = io::readScan(path);
+    return Session(std::move(loaded.volume), std::move(loaded.format), options);
+}
+
+Session::Session(Volume scan, std::string format, const SolverOptions& options)
+    : scan_(std::move(scan)), format_(std::move(format)), options_(options),
+      gpu_(std::make_unique<Gpu>(scan_, options_)) {}
+
+Session::~Session() = default;
+Session::Session(Session&&) noexcept = default;
+Session& Session::operator=(Session&&) noexcept = default;
+
+const Volume& Session::scan() const {
+    return scan_;
+}
+
+const std::string& Session::format() const {
+    return format_;
+}
+
+void Session::addSeed(const Sphere& sphere) {
+    gpu_->solver.addSphere(sphere);
+    hasLevelSet_ = true;
+}
+
+void Session::erase(const Sphere& sphere) {
+    gpu_->solver.removeSphere(sphere);
+}
+
+void Session::startFromMask(const std::filesystem::path& path) {
+    const io::LoadedScan mask = io::readScan(path);
+    if (mask.volume.dims() != scan_.dims()) {
+        throw std::runtime_error(path.string() + ": mask is " + dimsText(mask.volume.dims()) +
+                                 " but the scan is " + dimsText(scan_.dims()));
+    }
+    std::vector<std::uint8_t> inside(mask.volume.geometry().voxelCount());
+    for (std::size_t n = 0; n < inside.size(); ++n) {
+        inside[n] = mask.volume.rescale().apply(mask.volume.storedAt(n)) > 0.5 ? 1 : 0;
+    }
+    gpu_->solver.initFromMask(inside);
+    hasLevelSet_ = true;
+}
+
+bool Session::hasLevelSet() const {
+    return hasLevelSet_;
+}
+
+void Session::setParams(const LevelSetParams& params) {
+    gpu_->solver.setParams(params);
+}
+
+StepResult Session::step(int iterations) {
+    return gpu_->solver.step(iterations);
+}
+
+RunOutcome Session::run(const RunMode& mode) {
+    const auto start = std::chrono::steady_clock::now();
+    RunOutcome out;
+    switch (mode.kind) {
+    case RunMode::Iterations:
+        out.result = gpu_->solver.step(mode.iterations);
+        break;
+    case RunMode::Time:
+        out.result = gpu_->solver.evolveUntil(mode.time, mode.iterations);
+        break;
+    case RunMode::Converge:
+        out.result = gpu_->solver.runUntilConverged(mode.iterations);
+        break;
+    }
+    glFinish(); // the solver's time includes its GPU work, not the caller's next readback
+    out.solveSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+}
+
+bool Session::converged() const {
+    return gpu_->solver.converged();
+}
+
+SolverStats Session::stats() const {
+    return gpu_->solver.stats();
+}
+
+const SolverOptions& Session::options() const {
+    return options_;
+}
+
+std::vector<std::uint8_t> Session::mask() const {
+    return gpu_->solver.readMask();
+}
+
+void Session::exportMask(const std::filesystem::path& path) const {
+    io::writeMask(path, scan_.geometry(), mask());
+}
+
+render::ViewParams Session::defaultView(render::ViewKind kind, const glm::ivec2& size) const {
+    return gpu_->renderer.defaultParams(kind, size);
+}
+
+std::optional<render::SliceFrame> Session::render(const render::ViewParams& params) {
+    if (!hasLevelSet_) {
+        return gpu_->renderer.render(params, nullptr);
+    }
+    const BrickPoolView pool = gpu_->solver.poolView();
+    return gpu_->renderer.render(params, &pool);
+}
+
+RgbaImage Session::picture() const {
+    return gpu_->renderer.readback();
+}
+
+ProbeStats Session::probeAt(const glm::dvec3& index, double radiusMm) const {
+    return probe(scan_, index, radiusMm);
+}
+
+} // namespace steerseg::session

@@ -1,0 +1,92 @@
+#pragma once
+
+// One operator session on one scan: the scan, its texture on the GPU, the solver and the
+// renderer, behind the operations the command line and the kiosk's workflow call. The public
+// header names no GL type and no device: callers hold a current GLES 3.1 context (made by
+// platform/) for the session's whole life, and speak in voxel indices and real units.
+#include "core/rgba_image.hpp"
+#include "core/volume.hpp"
+#include "render/render_params.hpp"
+#include "render/slice_frame.hpp"
+#include "session/probe.hpp"
+#include "solver/level_set_params.hpp"
+#include "solver/solver_types.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace steerseg::session {
+
+// How long to evolve: a number of iterations, until an evolved time, or until converged (with
+// `iterations` the cap for the last two).
+struct RunMode {
+    enum Kind { Iterations, Time, Converge } kind = Iterations;
+    int iterations = 0;
+    float time = 0.0F;
+};
+
+struct RunOutcome {
+    StepResult result;
+    double solveSeconds = 0.0; // solver only, GPU work finished
+};
+
+class Session {
+  public:
+    // Reads a scan (a file, a DICOM folder or "builtin:sample"; io::readScan's errors).
+    static Session open(const std::filesystem::path& path, const SolverOptions& options = {});
+    Session(Volume scan, std::string format, const SolverOptions& options = {});
+    ~Session();
+    Session(Session&&) noexcept;
+    Session& operator=(Session&&) noexcept;
+
+    [[nodiscard]] const Volume& scan() const;
+    [[nodiscard]] const std::string& format() const; // "nifti", "dicom", "builtin", ...
+
+    // Seeds grow the level set, erasers cut it; voxel-index centre, radius in voxels. A sphere
+    // whose centre is outside the scan or whose radius is not a positive finite number is
+    // refused (std::invalid_argument naming the problem).
+    void addSeed(const Sphere& sphere);
+    void erase(const Sphere& sphere);
+    // A mask on the scan's grid (inside where > 0.5) replaces the level set. Throws
+    // std::runtime_error naming the file when it cannot be read or its grid differs.
+    void startFromMask(const std::filesystem::path& mask);
+    [[nodiscard]] bool hasLevelSet() const;
+
+    // Validated (std::invalid_argument); may change between any two steps.
+    void setParams(const LevelSetParams& params);
+    StepResult step(int iterations);
+    RunOutcome run(const RunMode& mode);
+    [[nodiscard]] bool converged() const;
+    [[nodiscard]] SolverStats stats() const;
+    [[nodiscard]] const SolverOptions& options() const;
+
+    // 1 inside, i fastest; reads the level set back from the GPU.
+    [[nodiscard]] std::vector<std::uint8_t> mask() const;
+    // The mask as .nii.gz / .nii / .nrrd on the scan's grid (io::writeMask).
+    void exportMask(const std::filesystem::path& path) const;
+
+    // Presets for this scan (MR-style transfer function, anterior camera, middle slice).
+    [[nodiscard]] render::ViewParams defaultView(render::ViewKind kind,
+                                                 const glm::ivec2& size) const;
+    // Draws one view of the scan and the level set (if any); slice views return their frame.
+    std::optional<render::SliceFrame> render(const render::ViewParams& params);
+    // The last view drawn.
+    [[nodiscard]] RgbaImage picture() const;
+
+    // Intensity statistics around a voxel-index point (the probe of any view).
+    [[nodiscard]] ProbeStats probeAt(const glm::dvec3& index, double radiusMm) const;
+
+  private:
+    struct Gpu;
+    Volume scan_;
+    std::string format_;
+    SolverOptions options_;
+    std::unique_ptr<Gpu> gpu_;
+    bool hasLevelSet_ = false;
+};
+
+} // namespace steerseg::session

@@ -1,0 +1,47 @@
+#pragma once
+
+// The solver's options, results and statistics: plain data with no GL type, so the session
+// layer and the workflow can hold them without a GPU.
+#include <cstddef>
+#include <cstdint>
+
+namespace steerseg {
+
+// Brick edge in voxels. Measured on llvmpipe (2 cores, bench/solver_bench): see kDefaultBrickSize
+// in level_set_solver.cpp for the figures.
+int defaultBrickSize();
+
+struct SolverOptions {
+    int brickSize = 0;      // 0: defaultBrickSize(); 4, 8 or 16
+    bool dense = false;     // every brick active, never retired (benchmark baseline)
+    int checkInterval = 16; // iterations between reads of the GPU's counters
+    // Converged: no voxel changed side for convergeIterations iterations spanning at least
+    // convergeTime of evolution, or for 10 * convergeIterations iterations (a front held by a
+    // strongly negative speed elsewhere takes tiny steps).
+    int convergeIterations = 20;
+    float convergeTime = 0.5F;
+};
+
+struct StepResult {
+    int iterations = 0;       // performed by this call
+    float evolvedTime = 0.0F; // total since the start
+    bool converged = false;
+};
+
+struct SolverStats {
+    int iterations = 0;
+    float evolvedTime = 0.0F;
+    std::uint32_t activeBricks = 0; // bricks processed in the last iteration
+    std::uint32_t peakActiveBricks = 0;
+    std::uint32_t totalBricks = 0;
+    std::uint32_t capacity = 0;    // pool slots
+    std::size_t levelSetBytes = 0; // phi pool + shell scratch + page table, now
+    std::size_t peakLevelSetBytes = 0;
+    std::size_t bookkeepingBytes = 0; // slot map, lists, states
+    std::size_t densePhiBytes = 0;    // one float per voxel, for comparison
+    int poolGrowths = 0;
+    int poolShrinks = 0;
+    int stalls = 0; // chunks that ran out of slots before a growth
+};
+
+} // namespace steerseg
