@@ -10,7 +10,7 @@
 // writes the README's four 256x256 pictures and exits.
 #include "bench/bench_scan.hpp"
 #include "core/sample_phantom.hpp"
-#include "platform/egl/gpu_context.hpp"
+#include "platform/egl/offscreen_context.hpp"
 #include "render/renderer.hpp"
 #include "solver/level_set_solver.hpp"
 

@@ -4,7 +4,7 @@
 // the machine (llvmpipe on a shared 2-core box is noisy; run it alone).
 //   solver_bench [--size N] [--iterations N] [--dense-size N]
 #include "gpu/gpu_info.hpp"
-#include "platform/egl/gpu_context.hpp"
+#include "platform/egl/offscreen_context.hpp"
 #include "solver/level_set_solver.hpp"
 
 #include <chrono>

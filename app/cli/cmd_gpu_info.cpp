@@ -1,7 +1,7 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "gpu/gpu_info.hpp"
-#include "platform/egl/gpu_context.hpp"
+#include "platform/egl/offscreen_context.hpp"
 
 #include <cstdio>
 #include <nlohmann/json.hpp>

@@ -4,7 +4,7 @@
 #include "cli/segmentation_options.hpp"
 #include "io/image_file.hpp"
 #include "io/scan_reader.hpp"
-#include "platform/egl/gpu_context.hpp"
+#include "platform/egl/offscreen_context.hpp"
 #include "render/render_names.hpp"
 #include "render/renderer.hpp"
 #include "render/slice_frame.hpp"

@@ -5,7 +5,7 @@
 #include "gpu/gpu_info.hpp"
 #include "io/mask_writer.hpp"
 #include "io/scan_reader.hpp"
-#include "platform/egl/gpu_context.hpp"
+#include "platform/egl/offscreen_context.hpp"
 #include "session/segment_report.hpp"
 #include "session/session.hpp"
 

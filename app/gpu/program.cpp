@@ -30,8 +30,9 @@ std::string_view sourceOf(std::string_view name) {
     return *source;
 }
 
-GLuint compileStage(GLenum stage, std::string_view name, const Defines& defines) {
-    const std::string text = withDefines(sourceOf(name), defines);
+GLuint compileSource(GLenum stage, std::string_view name, std::string_view source,
+                     const Defines& defines) {
+    const std::string text = withDefines(source, defines);
     GLuint shader = glCreateShader(stage);
     const char* ptr = text.c_str();
     glShaderSource(shader, 1, &ptr, nullptr);
@@ -47,6 +48,10 @@ GLuint compileStage(GLenum stage, std::string_view name, const Defines& defines)
         throw GlError("shader " + std::string(name) + " failed to compile: " + log);
     }
     return shader;
+}
+
+GLuint compileStage(GLenum stage, std::string_view name, const Defines& defines) {
+    return compileSource(stage, name, sourceOf(name), defines);
 }
 
 Program link(std::initializer_list<GLuint> shaders, std::string_view what) {
@@ -75,6 +80,11 @@ Program link(std::initializer_list<GLuint> shaders, std::string_view what) {
 
 Program buildComputeProgram(std::string_view name, const Defines& defines) {
     return link({compileStage(GL_COMPUTE_SHADER, name, defines)}, name);
+}
+
+Program buildComputeProgramFromSource(std::string_view label, std::string_view source,
+                                     const Defines& defines) {
+    return link({compileSource(GL_COMPUTE_SHADER, label, source, defines)}, label);
 }
 
 Program buildGraphicsProgram(std::string_view vertexName, std::string_view fragmentName,

@@ -17,6 +17,11 @@ using Defines = std::vector<std::pair<std::string, std::string>>;
 // the driver's log on failure.
 Program buildComputeProgram(std::string_view name, const Defines& defines = {});
 
+// Builds a compute program from source text that is not part of the product (the tests' own
+// shaders); `label` names it in errors.
+Program buildComputeProgramFromSource(std::string_view label, std::string_view source,
+                                      const Defines& defines = {});
+
 // Builds a vertex + fragment program from two embedded shaders.
 Program buildGraphicsProgram(std::string_view vertexName, std::string_view fragmentName,
                              const Defines& defines = {});

@@ -1,6 +1,6 @@
 #include "platform/egl/egl_context.hpp"
 
-#include "platform/egl/gpu_context.hpp"
+#include "platform/egl/offscreen_context.hpp"
 
 #include <EGL/eglext.h>
 #include <GLES3/gl31.h>

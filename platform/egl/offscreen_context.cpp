@@ -1,7 +1,6 @@
-// Offscreen GLES context: tests, benchmarks, batch commands, and headless GPU servers. There is
-// no default framebuffer; renderers draw into their own framebuffer objects.
+#include "platform/egl/offscreen_context.hpp"
+
 #include "platform/egl/egl_context.hpp"
-#include "platform/egl/gpu_context.hpp"
 
 #include <cstdlib>
 
@@ -22,6 +21,7 @@ class OffscreenContext final : public GpuContext {
     OffscreenContext& operator=(const OffscreenContext&) = delete;
 
     [[nodiscard]] std::string backendName() const override { return display_.platform; }
+    [[nodiscard]] bool providesGl() const override { return true; }
 
     void makeCurrent() override {
         if (eglMakeCurrent(display_.display, EGL_NO_SURFACE, EGL_NO_SURFACE, context_.context) !=

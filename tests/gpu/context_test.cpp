@@ -3,14 +3,31 @@
 #include "gpu/gpu_info.hpp"
 #include "gpu/program.hpp"
 #include "gpu/shader_library.hpp"
+#include "platform/null/null_context.hpp"
 #include "support/gpu_fixture.hpp"
 
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace steerseg::test {
 namespace {
 
 class ContextTest : public GpuTest {};
+
+// The tests' own shader: validated by glslang at build time (tests/gpu/CMakeLists.txt) but not
+// embedded in the product.
+std::string testShader() {
+    std::ifstream in(STEERSEG_TEST_SHADER_DIR "/square.comp");
+    std::stringstream text;
+    text << in.rdbuf();
+    if (!in || text.str().empty()) {
+        throw std::runtime_error(STEERSEG_TEST_SHADER_DIR "/square.comp: cannot read");
+    }
+    return text.str();
+}
 
 TEST_F(ContextTest, ReportsEs31OrNewerWithComputeLimits) {
     const gpu::GpuInfo info = gpu::queryGpuInfo();
@@ -27,7 +44,7 @@ TEST_F(ContextTest, RunsComputeShaderAndReadsResultBack) {
     for (GLuint n = 0; n < kCount; ++n) {
         input[n] = static_cast<float>(n) * 0.5F;
     }
-    gpu::Program program = gpu::buildComputeProgram("test/square.comp");
+    gpu::Program program = gpu::buildComputeProgramFromSource("square.comp", testShader());
     gpu::Buffer in = gpu::createBuffer(GL_SHADER_STORAGE_BUFFER, kCount * sizeof(float),
                                        input.data(), GL_STATIC_DRAW);
     gpu::Buffer out = gpu::createBuffer(GL_SHADER_STORAGE_BUFFER, (kCount + 64) * sizeof(float),
@@ -59,9 +76,12 @@ TEST_F(ContextTest, RunsComputeShaderAndReadsResultBack) {
     glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
 }
 
-TEST_F(ContextTest, ShaderLibraryHasEveryShaderAndRejectsUnknownNames) {
-    EXPECT_FALSE(gpu::shaderNames().empty());
-    EXPECT_TRUE(gpu::findShaderSource("test/square.comp").has_value());
+TEST_F(ContextTest, ShaderLibraryHasTheProductsShadersOnly) {
+    EXPECT_TRUE(gpu::findShaderSource("solver/update_phi.comp").has_value());
+    EXPECT_TRUE(gpu::findShaderSource("render/raycast.comp").has_value());
+    for (const std::string_view name : gpu::shaderNames()) {
+        EXPECT_TRUE(name.rfind("solver/", 0) == 0 || name.rfind("render/", 0) == 0) << name;
+    }
     EXPECT_THROW(gpu::buildComputeProgram("no/such.comp"), gpu::GlError);
 }
 
@@ -69,6 +89,17 @@ TEST_F(ContextTest, DefinesGoAfterTheVersionLine) {
     const std::string s =
         gpu::withDefines("#version 310 es\nvoid main() {}\n", {{"BRICK_SIZE", "8"}});
     EXPECT_EQ(s, "#version 310 es\n#define BRICK_SIZE 8\nvoid main() {}\n");
+}
+
+TEST(NullPlatform, ProvidesNoGlAndNeedsNone) {
+    const auto context = platform::createNullContext();
+    EXPECT_EQ(context->backendName(), "null");
+    EXPECT_FALSE(context->providesGl());
+    context->makeCurrent();
+}
+
+TEST_F(ContextTest, OffscreenContextProvidesGl) {
+    EXPECT_TRUE(context().providesGl());
 }
 
 TEST(OffscreenPlatform, RejectsUnknownPlatformName) {

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "platform/egl/gpu_context.hpp"
+#include "platform/egl/offscreen_context.hpp"
 
 #include <gtest/gtest.h>
 #include <memory>
