@@ -83,7 +83,7 @@ Program buildComputeProgram(std::string_view name, const Defines& defines) {
 }
 
 Program buildComputeProgramFromSource(std::string_view label, std::string_view source,
-                                     const Defines& defines) {
+                                      const Defines& defines) {
     return link({compileSource(GL_COMPUTE_SHADER, label, source, defines)}, label);
 }
 
