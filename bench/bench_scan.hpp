@@ -4,7 +4,7 @@
 // readers and image writers (bench_scan_io.cpp, the default), or without them
 // (bench_scan_builtin.cpp, STEERSEG_BENCH_IO=OFF) for the lent GPU machine, which has no
 // package registry and so no OpenImageIO: there only the built-in sample is read, and pictures
-// are refused with a message.
+// are written as PPM.
 #include "core/volume.hpp"
 #include "core/rgba_image.hpp"
 
@@ -16,7 +16,8 @@ namespace steerseg::bench {
 // The scan at `path` (a file, a folder or "builtin:sample"). Throws std::runtime_error.
 Volume loadScan(const std::string& path);
 
-// Writes a PNG. Throws std::runtime_error where this build has no image writer.
+// Writes a PNG, or without the image writer (STEERSEG_BENCH_IO=OFF) a PPM beside the name.
+// Throws std::runtime_error.
 void saveImage(const std::filesystem::path& path, const RgbaImage& image);
 
 // The volume resampled by `factor` on each axis (trilinear, same world extent), so the

@@ -1,6 +1,7 @@
 #include "bench/bench_scan.hpp"
 #include "core/sample_phantom.hpp"
 
+#include <fstream>
 #include <stdexcept>
 
 namespace steerseg::bench {
@@ -13,9 +14,20 @@ Volume loadScan(const std::string& path) {
     return makeSamplePhantom();
 }
 
-void saveImage(const std::filesystem::path& path, const RgbaImage&) {
-    throw std::runtime_error(path.string() + ": this benchmark was built without the image "
-                                             "writer (STEERSEG_BENCH_IO=OFF)");
+// Without OpenImageIO the pictures go out as binary PPM (RGB; alpha dropped), a format small
+// enough to write here, so pictures drawn on the GPU machine can be compared with the
+// development machine's (idiff reads both).
+void saveImage(const std::filesystem::path& path, const RgbaImage& image) {
+    std::filesystem::path ppm = path;
+    ppm.replace_extension(".ppm");
+    std::ofstream out(ppm, std::ios::binary);
+    out << "P6\n" << image.width << " " << image.height << "\n255\n";
+    for (std::size_t n = 0; n + 3 < image.pixels.size(); n += 4) {
+        out.write(reinterpret_cast<const char*>(image.pixels.data() + n), 3);
+    }
+    if (!out) {
+        throw std::runtime_error(ppm.string() + ": cannot write");
+    }
 }
 
 } // namespace steerseg::bench

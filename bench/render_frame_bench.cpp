@@ -130,7 +130,15 @@ int main(int argc, char** argv) {
                      (glm::dvec3(g.dims - 1) / glm::dvec3(127, 127, 95));
             solver.addSphere({glm::vec3(centre), 5.0F * static_cast<float>(scale)});
             solver.setParams({static_cast<float>(kPhantomLesion.intensity), 100.0F, 0.8F});
-            solver.runUntilConverged(2000);
+            const StepResult r = solver.runUntilConverged(2000);
+            std::size_t inside = 0;
+            for (const std::uint8_t m : solver.readMask()) {
+                inside += m;
+            }
+            // The same numbers on every driver, or the driver computes something else.
+            std::printf("lesion: %d iterations, evolved time %.4f, %zu voxels inside%s\n",
+                        r.iterations, static_cast<double>(r.evolvedTime), inside,
+                        r.converged ? ", converged" : ", NOT converged");
         } else {
             const float r = 0.15F * static_cast<float>(std::min({g.dims.x, g.dims.y, g.dims.z}));
             solver.addSphere({glm::vec3(centre), r});
