@@ -1,10 +1,10 @@
 #pragma once
 
-// Where a benchmark gets its scan and where it puts its pictures. Two builds: with the scan
-// readers and image writers (bench_scan_io.cpp, the default), or without them
-// (bench_scan_builtin.cpp, STEERSEG_BENCH_IO=OFF) for the lent GPU machine, which has no
-// package registry and so no OpenImageIO: there only the built-in sample is read, and pictures
-// are written as PPM.
+// Where a benchmark gets its scan and where it puts its pictures. Two builds: with every scan
+// reader and the image writer (bench_scan_io.cpp, the default), or with the light set
+// (bench_scan_light.cpp, STEERSEG_BENCH_IO=OFF) for the lent GPU machine, which has no package
+// registry and so no OpenImageIO or GDCM: there the built-in sample and NIfTI are read, and
+// pictures are written as PPM.
 #include "core/volume.hpp"
 #include "core/rgba_image.hpp"
 

@@ -10,9 +10,6 @@
 
 namespace steerseg::io {
 
-ScanError::ScanError(const std::filesystem::path& path, const std::string& problem)
-    : std::runtime_error(path.string() + ": " + problem) {}
-
 namespace {
 
 bool folderHoldsDicom(const std::filesystem::path& dir) {

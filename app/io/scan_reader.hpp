@@ -12,7 +12,10 @@ namespace steerseg::io {
 // "scan.nii.gz: header says 512x512x300 int16 (150 MiB) but the data ends after 12 MiB".
 class ScanError : public std::runtime_error {
   public:
-    ScanError(const std::filesystem::path& path, const std::string& problem);
+    // Inline, so that a reader used alone (the GPU machine's benchmarks read NIfTI only) does
+    // not pull in the dispatcher and with it every other reader's library.
+    ScanError(const std::filesystem::path& path, const std::string& problem)
+        : std::runtime_error(path.string() + ": " + problem) {}
 };
 
 // Caps that keep a hostile header from making us allocate or loop beyond reason. A loader

@@ -1,0 +1,131 @@
+// Time to a segmentation on a real scan: the solver alone (no session, no renderer), from the
+// given seeds and parameters to an evolved time, repeated, with the mask's size and its Dice
+// against a reference mask. The GPU half of the ITK comparison (tools/bench-itk.sh gives the
+// parameters and ITK's times; this runs where ITK cannot, on the lent GPU machine).
+//   segment_bench --scan PATH --seed i,j,k,r [--seed ...] --T v --eps v --alpha a --time t
+//                 [--max-iterations N] [--repeat N] [--compare MASK]
+#include "bench/bench_scan.hpp"
+#include "gpu/gl.hpp"
+#include "gpu/gpu_info.hpp"
+#include "platform/egl/offscreen_context.hpp"
+#include "solver/level_set_solver.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace steerseg;
+
+struct Options {
+    std::string scan;
+    std::vector<Sphere> seeds;
+    LevelSetParams params;
+    float time = -1.0F;
+    int maxIterations = 100000;
+    int repeat = 3;
+    std::string compare;
+};
+
+Sphere parseSeed(const std::string& text) {
+    Sphere s;
+    if (std::sscanf(text.c_str(), "%f,%f,%f,%f", &s.centre.x, &s.centre.y, &s.centre.z,
+                    &s.radius) != 4) {
+        throw std::invalid_argument("--seed expects i,j,k,r (got '" + text + "')");
+    }
+    return s;
+}
+
+Options parse(int argc, char** argv) {
+    Options o;
+    for (int n = 1; n + 1 < argc; n += 2) {
+        const std::string key = argv[n];
+        const std::string value = argv[n + 1];
+        if (key == "--scan") {
+            o.scan = value;
+        } else if (key == "--seed") {
+            o.seeds.push_back(parseSeed(value));
+        } else if (key == "--T") {
+            o.params.T = std::stof(value);
+        } else if (key == "--eps") {
+            o.params.eps = std::stof(value);
+        } else if (key == "--alpha") {
+            o.params.alpha = std::stof(value);
+        } else if (key == "--time") {
+            o.time = std::stof(value);
+        } else if (key == "--max-iterations") {
+            o.maxIterations = std::max(1, std::stoi(value));
+        } else if (key == "--repeat") {
+            o.repeat = std::clamp(std::stoi(value), 1, 100);
+        } else if (key == "--compare") {
+            o.compare = value;
+        } else {
+            throw std::invalid_argument("unknown option " + key);
+        }
+    }
+    if (o.scan.empty() || o.seeds.empty() || !(o.time >= 0.0F)) {
+        throw std::invalid_argument("give --scan, at least one --seed and --time");
+    }
+    return o;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        const Options o = parse(argc, argv);
+        const Volume volume = bench::loadScan(o.scan);
+        const Volume reference = o.compare.empty() ? Volume{} : bench::loadScan(o.compare);
+        auto context = platform::createOffscreenContext();
+        const glm::ivec3 d = volume.dims();
+        std::printf("GL_RENDERER: %s\nscan: %s %dx%dx%d\n", gpu::queryGpuInfo().renderer.c_str(),
+                    o.scan.c_str(), d.x, d.y, d.z);
+        const gpu::ScanTexture texture(volume);
+        std::vector<double> seconds;
+        for (int run = 0; run < o.repeat; ++run) {
+            LevelSetSolver solver(texture);
+            for (const Sphere& s : o.seeds) {
+                solver.addSphere(s);
+            }
+            solver.setParams(o.params);
+            glFinish();
+            const auto start = std::chrono::steady_clock::now();
+            const StepResult r = solver.evolveUntil(o.time, o.maxIterations);
+            glFinish();
+            seconds.push_back(
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+            const std::vector<std::uint8_t> mask = solver.readMask();
+            std::size_t inside = 0;
+            std::size_t overlap = 0;
+            std::size_t referenceInside = 0;
+            for (std::size_t n = 0; n < mask.size(); ++n) {
+                inside += mask[n];
+                if (!o.compare.empty()) {
+                    const bool in = reference.rescale().apply(reference.storedAt(n)) > 0.5;
+                    referenceInside += in ? 1 : 0;
+                    overlap += (in && mask[n] != 0) ? 1 : 0;
+                }
+            }
+            std::printf("run %d: %d iterations, t = %.4f, %.4f s, %zu voxels inside", run + 1,
+                        r.iterations, static_cast<double>(r.evolvedTime), seconds.back(), inside);
+            if (!o.compare.empty()) {
+                std::printf(", Dice %.4f against %s (%zu voxels)",
+                            2.0 * static_cast<double>(overlap) /
+                                static_cast<double>(inside + referenceInside),
+                            o.compare.c_str(), referenceInside);
+            }
+            std::printf("\n");
+        }
+        std::sort(seconds.begin(), seconds.end());
+        std::printf("median solve seconds: %.4f\n", seconds[seconds.size() / 2]);
+        return 0;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "segment_bench: %s\n", e.what());
+        return 1;
+    }
+}
