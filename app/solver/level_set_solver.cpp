@@ -1,5 +1,6 @@
 #include "solver/level_set_solver.hpp"
 
+#include "common/bindings.h"
 #include "gpu/gl_error.hpp"
 #include "gpu/gpu_info.hpp"
 #include "solver/gpu_brick_pool.hpp"
@@ -273,7 +274,7 @@ bool LevelSetSolver::converged() const {
 
 StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool untilConverged) {
     requireParams();
-    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE0 + SOLVER_SCAN_UNIT);
     glBindTexture(GL_TEXTURE_3D, scan_.id());
     pool_->bind();
     // The block as the last call left it: no GPU sync before the first chunk, so a caller that
