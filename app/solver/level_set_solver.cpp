@@ -44,6 +44,18 @@ int defaultBrickSize() {
     return kDefaultBrickSize;
 }
 
+const char* stopReasonName(StopReason reason) {
+    switch (reason) {
+    case StopReason::IterationLimit:
+        return "iteration_limit";
+    case StopReason::TimeReached:
+        return "time_reached";
+    case StopReason::Converged:
+        return "converged";
+    }
+    return "unknown";
+}
+
 LevelSetSolver::LevelSetSolver(const Volume& volume, const SolverOptions& options)
     : LevelSetSolver(volume.realValues(), volume.dims(), options) {}
 
@@ -281,6 +293,16 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
     // steps a few iterations per frame pays one readback per call (after its chunk).
     ControlBlock ctrl = known_ ? *known_ : pool_->readControl();
     known_.reset(); // unknown if this call throws
+    if (!options_.dense && ctrl.requestCount > ctrl.freeCount &&
+        pool_->capacity() < pool_->maxCapacity()) {
+        // The requests an edit or the last call left (a new seed's neighbours) would stall the
+        // first chunk, which then runs for nothing: make room for them now.
+        const std::uint32_t used = pool_->usedSlots(ctrl);
+        pool_->grow(solver_detail::poolTarget(used, 0, ctrl.requestCount), ctrl);
+        ++stats_.poolGrowths;
+        pool_->bind();
+        ctrl = pool_->readControl();
+    }
     const std::uint32_t start = ctrl.iteration;
     int remaining = maxIterations;
     while (remaining > 0) {
@@ -325,7 +347,13 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
     lastTime_ = ctrl.time;
     stats_.activeBricks = ctrl.activeCount;
     known_ = ctrl;
-    return {static_cast<int>(ctrl.iteration - start), ctrl.time, converged_};
+    StopReason reason = StopReason::IterationLimit;
+    if (untilConverged && converged_) {
+        reason = StopReason::Converged;
+    } else if (ctrl.time >= timeLimit) {
+        reason = StopReason::TimeReached;
+    }
+    return {static_cast<int>(ctrl.iteration - start), ctrl.time, converged_, reason};
 }
 
 // Keeps a margin of free slots for the band's advance until the next check, and gives memory
