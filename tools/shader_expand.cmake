@@ -1,6 +1,8 @@
 # Expands `#include "file"` lines of one GLSL ES shader (paths relative to SHADER_ROOT), writes
 # the result to OUTPUT and validates it with glslangValidator, so that a shader error fails the
-# build with the shader's own file name rather than at run time on the appliance.
+# build with the shader's own file name rather than at run time on the appliance. Compute
+# shaders must also keep GLSL ES's barrier rule (tools/shader_barrier_check.cmake), which
+# glslangValidator does not check.
 #   cmake -DSHADER_ROOT=... -DINPUT=... -DOUTPUT=... -DVALIDATOR=... -P shader_expand.cmake
 cmake_minimum_required(VERSION 3.25)
 
@@ -36,6 +38,10 @@ file(WRITE "${OUTPUT}.tmp" "${expanded}")
 # Validate with the constants the program injects at run time given placeholder values.
 get_filename_component(ext "${INPUT}" LAST_EXT)
 string(SUBSTRING "${ext}" 1 -1 stage)
+if(stage STREQUAL "comp")
+  include("${CMAKE_CURRENT_LIST_DIR}/shader_barrier_check.cmake")
+  check_shader_barriers("${expanded}" "${INPUT}")
+endif()
 execute_process(COMMAND "${VALIDATOR}" -S ${stage} "${OUTPUT}.tmp"
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)

@@ -1,5 +1,7 @@
 #include "render/view_bindings.hpp"
 
+#include "common/bindings.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -32,9 +34,9 @@ void bindCommon(GLuint program, const RenderInputs& in, const ViewParams& params
             throw std::invalid_argument("the level set's brick pool is not set up");
         }
     }
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0,
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PAGE_TABLE_BINDING,
                      in.pool != nullptr ? in.pool->pageTableBuffer : in.emptyBuffer);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1,
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PHI_POOL_BINDING,
                      in.pool != nullptr ? in.pool->phiPoolBuffer : in.emptyBuffer);
     glUniform3i(uniform(program, "volumeDims"), dims.x, dims.y, dims.z);
     const glm::ivec3 grid = in.pool != nullptr ? in.pool->brickGrid : glm::ivec3(1);
@@ -47,9 +49,10 @@ void bindCommon(GLuint program, const RenderInputs& in, const ViewParams& params
     glUniform2f(uniform(program, "windowRange"), static_cast<float>(lo), static_cast<float>(scale));
     const glm::vec2 toNormalised = in.scan.toNormalised();
     glUniform2f(uniform(program, "scanToNormalised"), toNormalised.x, toNormalised.y);
-    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE0 + VIEW_SCAN_UNIT);
     glBindTexture(GL_TEXTURE_3D, in.scan.display());
-    glBindImageTexture(0, in.target.texture(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glBindImageTexture(VIEW_OUT_IMAGE_UNIT, in.target.texture(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                       GL_RGBA8);
 }
 
 void dispatchPixels(const glm::ivec2& size) {

@@ -1,5 +1,6 @@
 #include "render/volume_view.hpp"
 
+#include "common/bindings.h"
 #include "gpu/gl_error.hpp"
 
 #include <algorithm>
@@ -29,7 +30,7 @@ bool sameTransfer(const TransferFunction& a, const TransferFunction& b) {
 
 VolumeView::VolumeView() {
     lut_ = gpu::createTexture();
-    glActiveTexture(GL_TEXTURE1);
+    glActiveTexture(GL_TEXTURE0 + VIEW_TF_LUT_UNIT);
     glBindTexture(GL_TEXTURE_2D, lut_.id());
     glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, kTfIntensityBins, kTfGradientBins);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -37,7 +38,7 @@ VolumeView::VolumeView() {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     occupancy_ = gpu::createTexture();
-    glActiveTexture(GL_TEXTURE3);
+    glActiveTexture(GL_TEXTURE0 + VIEW_OCCUPANCY_UNIT);
     glBindTexture(GL_TEXTURE_2D, occupancy_.id());
     glTexStorage2D(GL_TEXTURE_2D, 1, GL_R32F, kTfIntensityBins + 1, 1);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -60,11 +61,11 @@ void VolumeView::bakeTransfer(const gpu::ScanTexture& scan, const TransferFuncti
     }
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-    glActiveTexture(GL_TEXTURE1);
+    glActiveTexture(GL_TEXTURE0 + VIEW_TF_LUT_UNIT);
     glBindTexture(GL_TEXTURE_2D, lut_.id());
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kTfIntensityBins, kTfGradientBins, GL_RGBA,
                     GL_UNSIGNED_BYTE, lut.data());
-    glActiveTexture(GL_TEXTURE3);
+    glActiveTexture(GL_TEXTURE0 + VIEW_OCCUPANCY_UNIT);
     glBindTexture(GL_TEXTURE_2D, occupancy_.id());
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kTfIntensityBins + 1, 1, GL_RED, GL_FLOAT,
                     prefix.data());
@@ -78,11 +79,11 @@ void VolumeView::draw(const RenderInputs& in, const ViewParams& params) {
     const GLuint program = program_.get(in.pool);
     glUseProgram(program);
     bindCommon(program, in, params);
-    glActiveTexture(GL_TEXTURE1);
+    glActiveTexture(GL_TEXTURE0 + VIEW_TF_LUT_UNIT);
     glBindTexture(GL_TEXTURE_2D, lut_.id());
-    glActiveTexture(GL_TEXTURE2);
+    glActiveTexture(GL_TEXTURE0 + VIEW_SKIP_GRID_UNIT);
     glBindTexture(GL_TEXTURE_3D, in.skip.texture());
-    glActiveTexture(GL_TEXTURE3);
+    glActiveTexture(GL_TEXTURE0 + VIEW_OCCUPANCY_UNIT);
     glBindTexture(GL_TEXTURE_2D, occupancy_.id());
 
     const Geometry& g = in.geometry;

@@ -28,6 +28,7 @@ std::string segmentReport(const Session& session, const RunOutcome& run,
     j["solve_seconds"] = seconds;
     j["iterations_per_second"] = seconds > 0.0 ? stats.iterations / seconds : 0.0;
     j["converged"] = session.converged();
+    j["stop_reason"] = stopReasonName(run.result.stopReason);
     j["inside_voxels"] = inside;
     const double voxelMl = geometry.spacing.x * geometry.spacing.y * geometry.spacing.z / 1000.0;
     j["volume_ml"] = static_cast<double>(inside) * voxelMl;

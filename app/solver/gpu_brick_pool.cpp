@@ -1,5 +1,6 @@
 #include "solver/gpu_brick_pool.hpp"
 
+#include "common/bindings.h"
 #include "gpu/gl_error.hpp"
 #include "solver/level_set_params.hpp"
 
@@ -301,16 +302,16 @@ void GpuBrickPool::shrink(std::uint32_t newCapacity, const ControlBlock& ctrl) {
 }
 
 void GpuBrickPool::bind() const {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPageTable, pageTable_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPhiPool, phi_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShellNext, shellNext_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kControl, control_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSlotBrick, slotBrick_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFreeList, freeList_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kActiveList, activeList_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRequests, requests_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWantEpoch, wantEpoch_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSlotState, slotState_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PAGE_TABLE_BINDING, pageTable_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PHI_POOL_BINDING, phi_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SHELL_NEXT_BINDING, shellNext_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CONTROL_BINDING, control_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SLOT_BRICK_BINDING, slotBrick_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, FREE_LIST_BINDING, freeList_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ACTIVE_LIST_BINDING, activeList_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, REQUESTS_BINDING, requests_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, WANT_EPOCH_BINDING, wantEpoch_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SLOT_STATE_BINDING, slotState_.id());
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, control_.id());
 }
 

@@ -12,20 +12,6 @@
 
 namespace steerseg::solver_detail {
 
-// Binding points of shaders/solver/solver_common.glsl (0 and 1 from common/brick_pool.glsl).
-enum Binding : GLuint {
-    kPageTable = 0,
-    kPhiPool = 1,
-    kShellNext = 2,
-    kControl = 3,
-    kSlotBrick = 4,
-    kFreeList = 5,
-    kActiveList = 6,
-    kRequests = 7,
-    kWantEpoch = 8,
-    kSlotState = 9,
-};
-
 inline constexpr std::uint32_t kNoBrick = 0xFFFFFFFFu;
 
 // Pool slots to hold `used` bricks plus a margin for the band's advance until the next check:

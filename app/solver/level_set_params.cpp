@@ -23,7 +23,7 @@ void validateParams(const LevelSetParams& p) {
 TimeStepRule timeStepRule(const LevelSetParams& p) {
     validateParams(p);
     TimeStepRule rule;
-    rule.fixedRate = (1.0F - p.alpha) * 6.0F + kRescaleWeight * kPhiFar;
+    rule.fixedRate = kRescaleWeight * kPhiFar / rule.courant + (1.0F - p.alpha) * 6.0F;
     return rule;
 }
 

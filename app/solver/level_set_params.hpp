@@ -29,11 +29,18 @@ void validateParams(const LevelSetParams& params);
 
 // Explicit-Euler stability, shared by both solvers (the GPU evaluates the same expression with
 // these constants as uniforms):
-//   dt = 1 / (max over the front (onFront, phi_stencil.hpp) of |alpha * D| / courant + fixedRate)
-// fixedRate = (1 - alpha) * 6 (central-difference curvature term, 1 / (2 * 3) at unit spacing)
-// + the rescaling term's speed. courant is 0.5, not 0.9: the 3D up-wind scheme is stable for
-// dt * |F| * (|nx| + |ny| + |nz|) <= 1, up to sqrt(3) * dt * |F| on a diagonal front; with 0.9
-// a growing sphere ran ahead along the diagonals (measured on the reference solver).
+//   dt = 1 / ((max|alpha * D| + kRescaleWeight * kPhiFar) / courant + (1 - alpha) * 6)
+// with the maximum over the front (onFront, phi_stencil.hpp); fixedRate holds the last two
+// terms. The step obeys, each term alone and together (the rates add):
+// - Courant on the up-wind terms, the data speed |alpha D| and the rescaling term's speed
+//   kRescaleWeight * |phi| <= kRescaleWeight * kPhiFar: dt * speed <= courant = 0.5. The 3D
+//   up-wind scheme needs dt * speed * (|nx| + |ny| + |nz|) <= 1, up to sqrt(3) * dt * speed on a
+//   diagonal front; with 0.9 a growing sphere ran ahead along the diagonals, and with the
+//   rescaling term outside the factor (dt -> 1 at alpha = 1) phi oscillated where the seed's
+//   distance has a kink (SolverTimeStepTest).
+// - the explicit-diffusion limit of the curvature term, (1 - alpha) times a diffusion across the
+//   normal: dt <= h^2 / (2 * dim * (1 - alpha)) = 1 / (6 * (1 - alpha)) at unit spacing h; at
+//   1 / (3 * (1 - alpha)) the cube of SolverTimeStepTest blows up.
 struct TimeStepRule {
     float courant = 0.5F;
     float fixedRate = 0.0F;

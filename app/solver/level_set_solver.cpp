@@ -1,5 +1,6 @@
 #include "solver/level_set_solver.hpp"
 
+#include "common/bindings.h"
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_state_guard.hpp"
 #include "gpu/gpu_info.hpp"
@@ -42,6 +43,18 @@ void setUniform(GLuint program, const char* name, float v) {
 
 int defaultBrickSize() {
     return kDefaultBrickSize;
+}
+
+const char* stopReasonName(StopReason reason) {
+    switch (reason) {
+    case StopReason::IterationLimit:
+        return "iteration_limit";
+    case StopReason::TimeReached:
+        return "time_reached";
+    case StopReason::Converged:
+        return "converged";
+    }
+    return "unknown";
 }
 
 LevelSetSolver::LevelSetSolver(const Volume& volume, const SolverOptions& options)
@@ -275,13 +288,23 @@ bool LevelSetSolver::converged() const {
 StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool untilConverged) {
     requireParams();
     gpu::GlStateGuard guard;
-    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE0 + SOLVER_SCAN_UNIT);
     glBindTexture(GL_TEXTURE_3D, scan_->exact());
     pool_->bind();
     // The block as the last call left it: no GPU sync before the first chunk, so a caller that
     // steps a few iterations per frame pays one readback per call (after its chunk).
     ControlBlock ctrl = known_ ? *known_ : pool_->readControl();
     known_.reset(); // unknown if this call throws
+    if (!options_.dense && ctrl.requestCount > ctrl.freeCount &&
+        pool_->capacity() < pool_->maxCapacity()) {
+        // The requests an edit or the last call left (a new seed's neighbours) would stall the
+        // first chunk, which then runs for nothing: make room for them now.
+        const std::uint32_t used = pool_->usedSlots(ctrl);
+        pool_->grow(solver_detail::poolTarget(used, 0, ctrl.requestCount), ctrl);
+        ++stats_.poolGrowths;
+        pool_->bind();
+        ctrl = pool_->readControl();
+    }
     const std::uint32_t start = ctrl.iteration;
     int remaining = maxIterations;
     while (remaining > 0) {
@@ -326,7 +349,13 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
     lastTime_ = ctrl.time;
     stats_.activeBricks = ctrl.activeCount;
     known_ = ctrl;
-    return {static_cast<int>(ctrl.iteration - start), ctrl.time, converged_};
+    StopReason reason = StopReason::IterationLimit;
+    if (untilConverged && converged_) {
+        reason = StopReason::Converged;
+    } else if (ctrl.time >= timeLimit) {
+        reason = StopReason::TimeReached;
+    }
+    return {static_cast<int>(ctrl.iteration - start), ctrl.time, converged_, reason};
 }
 
 // Keeps a margin of free slots for the band's advance until the next check, and gives memory

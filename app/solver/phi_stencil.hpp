@@ -11,8 +11,10 @@
 
 namespace steerseg {
 
-// phi at the centre, its 6 face neighbours and 12 edge neighbours (the 21 derivatives of the
-// paper need no corner voxels). Names: p = +1, m = -1 along the axis.
+// phi at the centre, its 6 face neighbours and 12 edge neighbours: what the up-wind gradient
+// and the central first and second differences of the curvature term read (the mixed second
+// differences need the edge neighbours, no stencil needs a corner). Names: p = +1, m = -1 along
+// the axis.
 struct PhiStencil {
     float c = 0.0F;
     float xm = 0.0F, xp = 0.0F, ym = 0.0F, yp = 0.0F, zm = 0.0F, zp = 0.0F;
@@ -34,8 +36,13 @@ inline float upwindGradient(const PhiStencil& s, float direction) {
     return std::sqrt(sum);
 }
 
-// H * |grad phi| with central differences (H = div(grad phi / |grad phi|)); 0 where the
-// gradient vanishes (far from the surface).
+// H * |grad phi| (H = div(grad phi / |grad phi|), the sum of the principal curvatures) by the
+// direct mean-curvature formula
+//   ((phi_yy + phi_zz) phi_x^2 + (phi_xx + phi_zz) phi_y^2 + (phi_xx + phi_yy) phi_z^2
+//    - 2 (phi_x phi_y phi_xy + phi_x phi_z phi_xz + phi_y phi_z phi_yz)) / |grad phi|^2
+// from central first and second differences at the voxel (as ITK's ComputeMeanCurvature), not
+// the paper's difference of normals taken at the half-voxel faces; 0 where the central gradient
+// vanishes (far from the surface, or at a saddle of phi).
 inline float curvatureTimesGradient(const PhiStencil& s) {
     const float x = 0.5F * (s.xp - s.xm);
     const float y = 0.5F * (s.yp - s.ym);

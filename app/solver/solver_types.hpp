@@ -22,10 +22,20 @@ struct SolverOptions {
     float convergeTime = 0.5F;
 };
 
+// Why a step call returned.
+enum class StopReason {
+    IterationLimit, // the call's iteration count (step) or maxIterations ran out first
+    TimeReached,    // evolveUntil's time was reached (the last step cut to land on it)
+    Converged,      // runUntilConverged: converged() holds
+};
+// "iteration_limit", "time_reached", "converged" (the segment report's stop_reason).
+const char* stopReasonName(StopReason reason);
+
 struct StepResult {
     int iterations = 0;       // performed by this call
     float evolvedTime = 0.0F; // total since the start
-    bool converged = false;
+    bool converged = false;   // converged() after the call, whatever stopped it
+    StopReason stopReason = StopReason::IterationLimit;
 };
 
 struct SolverStats {

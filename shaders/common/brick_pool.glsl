@@ -16,12 +16,7 @@
 #ifndef PHI_FAR
 #define PHI_FAR 4.0
 #endif
-#ifndef PAGE_TABLE_BINDING
-#define PAGE_TABLE_BINDING 0
-#endif
-#ifndef PHI_POOL_BINDING
-#define PHI_POOL_BINDING 1
-#endif
+#include "common/bindings.h"
 // Readers leave these as they are; the solver's passes that allocate bricks define them empty
 // (before including this file) to write the page table and the pool.
 #ifndef PAGE_TABLE_ACCESS

@@ -8,9 +8,9 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "render/view_common.glsl"
 
-layout(binding = 1) uniform sampler2D tfLut;      // RGBA8, intensity x gradient bins
-layout(binding = 2) uniform sampler3D skipGrid;   // RG16F block min/max
-layout(binding = 3) uniform sampler2D occupancy;  // R32F, 257 prefix counts of occupied bins
+layout(binding = VIEW_TF_LUT_UNIT) uniform sampler2D tfLut;      // RGBA8, intensity x gradient bins
+layout(binding = VIEW_SKIP_GRID_UNIT) uniform sampler3D skipGrid;   // RG16F block min/max
+layout(binding = VIEW_OCCUPANCY_UNIT) uniform sampler2D occupancy;  // R32F, 257 prefix counts of occupied bins
 
 uniform vec3 eyeIndex;       // camera eye in voxel-index space
 uniform mat3 worldToIndex;   // inverse of direction * diag(spacing)

@@ -5,8 +5,8 @@ precision highp sampler2D;
 
 #include "common/brick_pool.glsl"
 
-layout(rgba8, binding = 0) uniform writeonly highp image2D outImage;
-layout(binding = 0) uniform sampler3D scanTex; // intensity, linear filtering
+layout(rgba8, binding = VIEW_OUT_IMAGE_UNIT) uniform writeonly highp image2D outImage;
+layout(binding = VIEW_SCAN_UNIT) uniform sampler3D scanTex; // intensity, linear filtering
 uniform vec2 scanToNormalised; // texture value -> normalised intensity: v * x + y (ScanTexture)
 
 uniform ivec2 outSize;

@@ -13,14 +13,13 @@ layout(std430, binding = REQUESTS_BINDING) readonly buffer Requests { uint reque
 
 shared uint slot;
 
+// Every invocation reaches the barrier (GLSL ES 3.10): groups past the requests only skip work.
 void main() {
     uint request = gl_WorkGroupID.x + gl_WorkGroupID.y * GROUPS_PER_ROW;
-    if (request >= ctrl.requestCount) {
-        return;
-    }
-    uint brick = requests[request];
-    uint old = pageTable[brick];
-    if (gl_LocalInvocationIndex == 0u) {
+    bool hasWork = request < ctrl.requestCount;
+    uint brick = hasWork ? requests[request] : 0u;
+    uint old = hasWork ? pageTable[brick] : BRICK_OUTSIDE;
+    if (hasWork && gl_LocalInvocationIndex == 0u) {
         uint k = atomicAdd(ctrl.popped, 1u);
         if (k < ctrl.freeCount) {
             slot = freeList[ctrl.freeCount - 1u - k];
@@ -30,7 +29,7 @@ void main() {
         }
     }
     barrier();
-    if (slot == NO_BRICK) {
+    if (!hasWork || slot == NO_BRICK) {
         return;
     }
     float value = old == BRICK_INSIDE ? -PHI_FAR : PHI_FAR;

@@ -1,6 +1,7 @@
 #version 310 es
-// One thread: dt = 1 / (max |alpha * D| / courant + fixedRate) (TimeStepRule in
-// app/solver/level_set_params.hpp), cut to reach timeLimit exactly; no step while stalled.
+// One thread: dt = 1 / (max |alpha * D| / courant + fixedRate), fixedRate = the rescaling
+// term's speed / courant + the curvature term's diffusion rate (the bound it obeys: TimeStepRule
+// in app/solver/level_set_params.hpp), cut to reach timeLimit exactly; no step while stalled.
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
 layout(local_size_x = 1) in;

@@ -6,22 +6,21 @@
 #include "solver/brick_state.glsl"
 layout(local_size_x = LOCAL_SIZE) in;
 
+// Every invocation reaches both barriers (GLSL ES 3.10): groups past the list only skip work.
 void main() {
     uint n = activeListIndex();
-    if (n == NO_BRICK) {
-        return;
-    }
-    uint slot = activeList[n];
-    ivec3 origin = brickCoord(slotBrick[slot]) * BRICK_SIZE;
+    bool hasWork = n != NO_BRICK;
+    uint slot = hasWork ? activeList[n] : 0u;
+    ivec3 origin = hasWork ? brickCoord(slotBrick[slot]) * BRICK_SIZE : ivec3(0);
     beginBrickState();
     barrier();
-    for (uint v = gl_LocalInvocationIndex; v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
+    for (uint v = gl_LocalInvocationIndex; hasWork && v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
         if (all(lessThan(origin + localVoxel(v), volumeDims))) {
             noteVoxelState(phiPool[slot * BRICK_VOXELS + v]);
         }
     }
     barrier();
-    if (gl_LocalInvocationIndex == 0u) {
+    if (hasWork && gl_LocalInvocationIndex == 0u) {
         slotState[slot] = brickState();
     }
 }

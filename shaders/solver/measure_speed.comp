@@ -11,19 +11,20 @@ layout(local_size_x = LOCAL_SIZE) in;
 uniform float alpha;
 shared uint groupMax;
 
+// Every invocation reaches both barriers (GLSL ES 3.10): groups past the list only skip work.
 void main() {
     uint n = activeListIndex();
-    if (n == NO_BRICK) {
-        return;
+    bool hasWork = n != NO_BRICK;
+    ivec3 origin = hasWork ? brickCoord(slotBrick[activeList[n]]) * BRICK_SIZE : ivec3(0);
+    if (hasWork) {
+        loadTile(origin);
     }
-    ivec3 origin = brickCoord(slotBrick[activeList[n]]) * BRICK_SIZE;
-    loadTile(origin);
     if (gl_LocalInvocationIndex == 0u) {
         groupMax = 0u;
     }
     barrier();
     float localMax = 0.0;
-    for (uint v = gl_LocalInvocationIndex; v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
+    for (uint v = gl_LocalInvocationIndex; hasWork && v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
         ivec3 l = localVoxel(v);
         ivec3 g = origin + l;
         if (any(greaterThanEqual(g, volumeDims))) {
@@ -35,7 +36,7 @@ void main() {
     }
     atomicMax(groupMax, floatBitsToUint(localMax));
     barrier();
-    if (gl_LocalInvocationIndex == 0u) {
+    if (hasWork && gl_LocalInvocationIndex == 0u) {
         atomicMax(ctrl.maxRateBits, groupMax);
     }
 }

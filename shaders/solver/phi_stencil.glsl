@@ -20,6 +20,8 @@ float upwindGradient(PhiStencil s, float direction) {
     return sqrt(dot(back, back) + dot(ahead, ahead));
 }
 
+// H * |grad phi| by the direct mean-curvature formula from central first and second
+// differences (not the paper's difference of normals); see app/solver/phi_stencil.hpp.
 float curvatureTimesGradient(PhiStencil s) {
     float x = 0.5 * (s.xp - s.xm);
     float y = 0.5 * (s.yp - s.ym);

@@ -1,16 +1,9 @@
 // Bookkeeping buffers of the sparse solver (host mirror: app/solver/gpu_brick_pool.hpp).
-// Include after common/brick_pool.glsl. Slots are pool slots; "brick" is a brick's linear index.
+// Include after common/brick_pool.glsl (which brings the binding points, common/bindings.h).
+// Slots are pool slots; "brick" is a brick's linear index.
 #ifndef LOCAL_SIZE
 #define LOCAL_SIZE 512
 #endif
-#define SHELL_NEXT_BINDING 2
-#define CONTROL_BINDING 3
-#define SLOT_BRICK_BINDING 4
-#define FREE_LIST_BINDING 5
-#define ACTIVE_LIST_BINDING 6
-#define REQUESTS_BINDING 7
-#define WANT_EPOCH_BINDING 8
-#define SLOT_STATE_BINDING 9
 
 const uint NO_BRICK = 0xFFFFFFFFu;
 // Per-slot state after the last update: does the brick hold the surface's narrow band?

@@ -2,8 +2,9 @@
 // the intensity lies within T +/- eps. CPU twin: thresholdSpeed() in app/solver/phi_stencil.hpp.
 // Another speed function replaces this file, keeping dataSpeed(voxel)'s meaning: the outward
 // speed in voxels per unit time before the alpha weighting.
+#include "common/bindings.h"
 precision highp sampler3D;
-uniform highp sampler3D scan; // real-unit intensities (R32F), uploaded once
+layout(binding = SOLVER_SCAN_UNIT) uniform highp sampler3D scan; // real-unit intensities (R32F)
 uniform float targetT;
 uniform float halfWidth;
 

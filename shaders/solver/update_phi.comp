@@ -17,21 +17,22 @@ uniform float alpha;
 
 shared uint changedSide;
 
+// Every invocation reaches both barriers (GLSL ES 3.10): groups past the list only skip work.
 void main() {
     uint n = activeListIndex();
-    if (n == NO_BRICK) {
-        return;
+    bool hasWork = n != NO_BRICK;
+    uint slot = hasWork ? activeList[n] : 0u;
+    ivec3 origin = hasWork ? brickCoord(slotBrick[slot]) * BRICK_SIZE : ivec3(0);
+    if (hasWork) {
+        loadTile(origin);
     }
-    uint slot = activeList[n];
-    ivec3 origin = brickCoord(slotBrick[slot]) * BRICK_SIZE;
-    loadTile(origin);
     beginBrickState();
     if (gl_LocalInvocationIndex == 0u) {
         changedSide = 0u;
     }
     barrier();
     float dt = ctrl.dt;
-    for (uint v = gl_LocalInvocationIndex; v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
+    for (uint v = gl_LocalInvocationIndex; hasWork && v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
         ivec3 l = localVoxel(v);
         ivec3 g = origin + l;
         PhiStencil s = tileStencil(l);
@@ -52,7 +53,7 @@ void main() {
         }
     }
     barrier();
-    if (gl_LocalInvocationIndex == 0u) {
+    if (hasWork && gl_LocalInvocationIndex == 0u) {
         slotState[slot] = brickState();
         if (changedSide != 0u) {
             atomicMax(ctrl.lastChange, ctrl.iteration);

@@ -68,10 +68,11 @@ TEST(SolverCli, SegmentsTheSampleLesionAndWritesMaskAndReport) {
     for (const char* key :
          {"iterations", "evolved_time", "solve_seconds", "iterations_per_second", "converged",
           "inside_voxels", "volume_ml", "peak_active_bricks", "total_bricks", "peak_pool_bytes",
-          "dense_phi_bytes", "active_bricks", "pool_bytes", "renderer"}) {
+          "dense_phi_bytes", "active_bricks", "pool_bytes", "renderer", "stop_reason"}) {
         EXPECT_TRUE(j.contains(key)) << key;
     }
     EXPECT_NEAR(j["evolved_time"].get<double>(), 0.1, 1e-5);
+    EXPECT_EQ(j["stop_reason"], "time_reached");
     EXPECT_GT(j["inside_voxels"].get<double>(), 4.0 / 3.0 * 3.14159 * 125.0); // grew from r = 5
     EXPECT_LT(j["peak_active_bricks"].get<double>(), j["total_bricks"].get<double>());
     EXPECT_LE(j["active_bricks"].get<double>(), j["peak_active_bricks"].get<double>());

@@ -1,0 +1,31 @@
+// Binding points of the compute passes' buffers, images and samplers: one list for the shaders
+// (`#include "common/bindings.h"`, expanded at build time by tools/shader_expand.cmake) and for
+// the C++ that binds them (include path shaders/). Only comments, #define and include guards,
+// so that the file is valid GLSL ES 3.10 and C++.
+#ifndef STEERSEG_SHADERS_COMMON_BINDINGS_H
+#define STEERSEG_SHADERS_COMMON_BINDINGS_H
+
+// Shader storage buffers. The brick pool's two (common/brick_pool.glsl) are the renderer's too.
+#define PAGE_TABLE_BINDING 0
+#define PHI_POOL_BINDING 1
+// The solver's bookkeeping (solver/solver_common.glsl, solver/brick_shell.glsl).
+#define SHELL_NEXT_BINDING 2
+#define CONTROL_BINDING 3
+#define SLOT_BRICK_BINDING 4
+#define FREE_LIST_BINDING 5
+#define ACTIVE_LIST_BINDING 6
+#define REQUESTS_BINDING 7
+#define WANT_EPOCH_BINDING 8
+#define SLOT_STATE_BINDING 9
+
+// Texture units of the samplers (glActiveTexture(GL_TEXTURE0 + unit)).
+#define SOLVER_SCAN_UNIT 0  // solver/speed_threshold.glsl: the scan, texelFetch only
+#define VIEW_SCAN_UNIT 0    // render/view_common.glsl: the scan, linear filtering
+#define VIEW_TF_LUT_UNIT 1  // render/raycast.comp: transfer function
+#define VIEW_SKIP_GRID_UNIT 2 // render/raycast.comp: block min/max for empty-space skipping
+#define VIEW_OCCUPANCY_UNIT 3 // render/raycast.comp: occupied transfer-function bins
+
+// Image units.
+#define VIEW_OUT_IMAGE_UNIT 0 // render/view_common.glsl: the rendered picture
+
+#endif
