@@ -3,7 +3,12 @@
 // against a reference mask. The GPU half of the ITK comparison (tools/bench-itk.sh gives the
 // parameters and ITK's times; this runs where ITK cannot, on the lent GPU machine).
 //   segment_bench --scan PATH --seed i,j,k,r [--seed ...] --T v --eps v --alpha a --time t
-//                 [--max-iterations N] [--repeat N] [--compare MASK]
+//                 [--max-iterations N] [--repeat N] [--compare MASK] [--trace N]
+//                 [--dense 1] [--brick 4|8|16] [--check N] [--dump-phi FILE]
+// --dump-phi writes phi after the trace as raw float32, i fastest, to diff two runs voxel by
+// voxel.
+// --trace N steps one iteration at a time for N iterations and prints the evolved time and a
+// checksum of phi after each: two runs of it show where a driver stops being deterministic.
 #include "bench/bench_scan.hpp"
 #include "gpu/gl.hpp"
 #include "gpu/gpu_info.hpp"
@@ -14,6 +19,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -30,6 +36,9 @@ struct Options {
     int maxIterations = 100000;
     int repeat = 3;
     std::string compare;
+    int trace = 0;
+    SolverOptions solver;
+    std::string dumpPhi;
 };
 
 Sphere parseSeed(const std::string& text) {
@@ -62,6 +71,16 @@ Options parse(int argc, char** argv) {
             o.maxIterations = std::max(1, std::stoi(value));
         } else if (key == "--repeat") {
             o.repeat = std::clamp(std::stoi(value), 1, 100);
+        } else if (key == "--dense") {
+            o.solver.dense = value == "1";
+        } else if (key == "--brick") {
+            o.solver.brickSize = std::stoi(value);
+        } else if (key == "--check") {
+            o.solver.checkInterval = std::stoi(value);
+        } else if (key == "--dump-phi") {
+            o.dumpPhi = value;
+        } else if (key == "--trace") {
+            o.trace = std::clamp(std::stoi(value), 0, 100000);
         } else if (key == "--compare") {
             o.compare = value;
         } else {
@@ -86,9 +105,34 @@ int main(int argc, char** argv) {
         std::printf("GL_RENDERER: %s\nscan: %s %dx%dx%d\n", gpu::queryGpuInfo().renderer.c_str(),
                     o.scan.c_str(), d.x, d.y, d.z);
         const gpu::ScanTexture texture(volume);
+        if (o.trace > 0) {
+            LevelSetSolver solver(texture, o.solver);
+            for (const Sphere& s : o.seeds) {
+                solver.addSphere(s);
+            }
+            solver.setParams(o.params);
+            for (int n = 0; n < o.trace; ++n) {
+                const StepResult r = solver.step(1);
+                double sum = 0.0;
+                std::size_t inside = 0;
+                for (const float v : solver.readPhi()) {
+                    sum += static_cast<double>(v);
+                    inside += v < 0.0F ? 1 : 0;
+                }
+                std::printf("trace %d: t %.9g phi-sum %.9g inside %zu\n", n + 1,
+                            static_cast<double>(r.evolvedTime), sum, inside);
+            }
+            if (!o.dumpPhi.empty()) {
+                const std::vector<float> phi = solver.readPhi();
+                std::ofstream out(o.dumpPhi, std::ios::binary);
+                out.write(reinterpret_cast<const char*>(phi.data()),
+                          static_cast<std::streamsize>(phi.size() * sizeof(float)));
+            }
+            return 0;
+        }
         std::vector<double> seconds;
         for (int run = 0; run < o.repeat; ++run) {
-            LevelSetSolver solver(texture);
+            LevelSetSolver solver(texture, o.solver);
             for (const Sphere& s : o.seeds) {
                 solver.addSphere(s);
             }

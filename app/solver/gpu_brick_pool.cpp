@@ -22,8 +22,13 @@ gpu::Buffer makeBuffer(std::size_t bytes, const void* data = nullptr) {
                              GL_DYNAMIC_COPY);
 }
 
+// Copies and host writes must see the shaders' earlier writes (and not be overtaken by them):
+// without GL_BUFFER_UPDATE_BARRIER_BIT a pool growth on the NVIDIA driver copied some bricks as
+// they were before the last iteration, and the same run gave different masks (llvmpipe, which
+// finishes each dispatch before the next command, never showed it).
 void copyBuffer(const gpu::Buffer& from, const gpu::Buffer& to, std::size_t fromOffset,
                 std::size_t toOffset, std::size_t bytes) {
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glBindBuffer(GL_COPY_READ_BUFFER, from.id());
     glBindBuffer(GL_COPY_WRITE_BUFFER, to.id());
     glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER,
@@ -35,6 +40,7 @@ void writeBuffer(const gpu::Buffer& b, std::size_t offset, const void* data, std
     if (bytes == 0) {
         return;
     }
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, b.id());
     glBufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(offset),
                     static_cast<GLsizeiptr>(bytes), data);
