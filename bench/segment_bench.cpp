@@ -119,8 +119,11 @@ int main(int argc, char** argv) {
                     sum += static_cast<double>(v);
                     inside += v < 0.0F ? 1 : 0;
                 }
-                std::printf("trace %d: t %.9g phi-sum %.9g inside %zu\n", n + 1,
-                            static_cast<double>(r.evolvedTime), sum, inside);
+                const SolverStats st = solver.stats();
+                std::printf("trace %d: t %.9g phi-sum %.9g inside %zu active %u capacity %u "
+                            "growths %d stalls %d\n",
+                            n + 1, static_cast<double>(r.evolvedTime), sum, inside,
+                            st.activeBricks, st.capacity, st.poolGrowths, st.stalls);
             }
             if (!o.dumpPhi.empty()) {
                 const std::vector<float> phi = solver.readPhi();
