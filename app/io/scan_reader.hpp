@@ -2,6 +2,7 @@
 
 #include "core/volume.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -21,6 +22,13 @@ class ScanError : public std::runtime_error {
 struct ReadLimits {
     std::size_t maxVoxels = std::size_t{1} << 31; // 2 Gi voxels (an 1290^3 scan)
     int maxDimension = 65536;                     // per axis
+    // Voxel data a scan may declare, as stored in the file before conversion: 4 GiB holds a
+    // 1024^3 float32 or a 1290^3 int16 scan.
+    std::uint64_t maxDataBytes = std::uint64_t{4} << 30;
+    // How far compressed data may expand. Deflate (gzip, zlib, DICOM deflate) cannot exceed
+    // 1032:1 (a 258-byte match in 2 bits), so a header declaring more than the compressed bytes
+    // times this is refused before anything is decoded; a genuine file never is.
+    double maxCompressionRatio = 1032.0;
 };
 
 struct LoadedScan {
