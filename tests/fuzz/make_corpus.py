@@ -29,14 +29,14 @@ VOX = bytes(range(8))  # 2x2x2 uint8
 
 
 def nifti1(dtype=2, bitpix=8, dims=(2, 2, 2), data=VOX, endian="<", sform=1, qform=1,
-           slope=0.0, vox_offset=352.0, magic=b"n+1\0", ndim=3, extra_dims=(1, 1, 1, 1)):
+           slope=0.0, inter=0.0, vox_offset=352.0, magic=b"n+1\0", ndim=3, extra_dims=(1, 1, 1, 1)):
     h = bytearray(348)
     e = endian
     struct.pack_into(e + "i", h, 0, 348)
     struct.pack_into(e + "8h", h, 40, ndim, *dims, *extra_dims)
     struct.pack_into(e + "hh", h, 70, dtype, bitpix)
     struct.pack_into(e + "8f", h, 76, 1.0, 0.9, 1.1, 2.5, 1, 1, 1, 1)
-    struct.pack_into(e + "3f", h, 108, vox_offset, slope, 0.0)
+    struct.pack_into(e + "3f", h, 108, vox_offset, slope, inter)
     struct.pack_into(e + "hh", h, 252, qform, sform)
     struct.pack_into(e + "6f", h, 256, 0.1, 0.2, 0.3, -10.0, 20.0, 5.0)
     struct.pack_into(e + "12f", h, 280, -0.9, 0, 0, 10, 0, 1.1, 0, -20, 0, 0, 2.5, 5)
@@ -67,6 +67,12 @@ def nifti():
     out("nifti", "nifti2_float.nii", nifti2())
     out("nifti", "truncated.nii", nifti1()[:352 + 3])
     out("nifti", "pair_header.nii", nifti1(magic=b"ni1\0"))
+    # Hostile rescales: not finite, or past float32 (stored 7 * 1e38).
+    out("nifti", "scl_slope_nan.nii", nifti1(slope=float("nan")))
+    out("nifti", "scl_inter_inf.nii", nifti1(slope=1.0, inter=float("inf")))
+    out("nifti", "scl_slope_overflow.nii", nifti1(slope=1e38))
+    # Decompression bomb: 4 Mi voxels declared, a few dozen bytes of gzip behind them.
+    out("nifti", "bomb_claim.nii.gz", gz(nifti1(dims=(256, 256, 63))))
 
 
 def nrrd():
@@ -84,6 +90,11 @@ def nrrd():
     out("nrrd", "detached.nhdr", base.format(t="uint8", s="LPS")
         + "encoding: raw\ndata file: missing.raw\nline skip: 1\n")
     out("nrrd", "no_sizes.nrrd", "NRRD0004\ntype: uint8\ndimension: 3\nencoding: raw\n\n")
+    # Decompression bomb and an ascii claim: far more voxels declared than the data can hold.
+    out("nrrd", "gzip_bomb_claim.nrrd", b"NRRD0004\ntype: uint8\ndimension: 3\nsizes: 256 256 63\n"
+        b"encoding: gzip\n\n" + gz(VOX))
+    out("nrrd", "ascii_claim.nrrd", "NRRD0004\ntype: float\ndimension: 3\nsizes: 256 256 63\n"
+        "encoding: ascii\n\n1 2 3 4\n")
 
 
 def metaimage():
@@ -97,6 +108,8 @@ def metaimage():
                                        "ElementDataFile = LOCAL\n").encode() + struct.pack(">8h", *range(8)))
     out("metaimage", "ascii_2d.mha", "NDims = 2\nDimSize = 2 2\nElementType = MET_DOUBLE\nBinaryData = False\n"
         "ElementDataFile = LOCAL\n1 2 3 4\n")
+    out("metaimage", "zlib_bomb_claim.mha", "NDims = 3\nDimSize = 256 256 63\nElementType = MET_UCHAR\n"
+        "CompressedData = True\nElementDataFile = LOCAL\n".encode() + zlib.compress(VOX))
     out("metaimage", "detached.mhd", head + "ElementType = MET_UCHAR\nHeaderSize = -1\nElementDataFile = d.raw\n")
 
 
@@ -115,6 +128,7 @@ def mgz():
     out("mgz", "float.mgz", gz(mgh(3, data=struct.pack(">8f", *[v / 2 for v in range(8)]))))
     out("mgz", "short_noras.mgz", gz(mgh(4, data=struct.pack(">8h", *range(8)), good=0)))
     out("mgz", "int_truncated.mgz", gz(mgh(1, data=struct.pack(">4i", 1, 2, 3, 4))))
+    out("mgz", "bomb_claim.mgz", gz(mgh(dims=(256, 256, 63))))
     out("mgz", "frames.mgh", mgh()[:16] + struct.pack(">i", 3) + mgh()[20:] + VOX * 2)
 
 
