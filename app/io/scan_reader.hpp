@@ -16,6 +16,14 @@ class ScanError : public std::runtime_error {
     ScanError(const std::filesystem::path& path, const std::string& problem);
 };
 
+// An output that cannot be written (a mask, a file replaced atomically). A ScanError too, so
+// code that treats every io failure alike still does; the command line tells them apart (exit
+// status 4).
+class WriteError : public ScanError {
+  public:
+    using ScanError::ScanError;
+};
+
 // Caps that keep a hostile header from making us allocate or loop beyond reason. A loader
 // never allocates more voxel memory than the file can back (compressed data grows as it is
 // actually decoded), and refuses dimensions past these caps up front.
