@@ -46,8 +46,8 @@ struct Rescale {
 
 // Why `rescale` cannot take stored values in [storedMin, storedMax] to finite real values within
 // float32's range (the solver and renderer hold real values as float), e.g. "slope is nan" or
-// "takes stored 32767 to 3.3e+42, beyond float32's range"; empty when it can. A file's rescale
-// is checked against the stored min and max before the volume is used.
+// "slope 1e+38 and intercept 0 take stored 32767 to 3.3e+42, beyond float32's range"; empty
+// when it can. Readers check a file's rescale against its stored min and max.
 std::string rescaleProblem(const Rescale& rescale, double storedMin, double storedMax);
 
 struct IntensityStats {

@@ -83,9 +83,10 @@ class GzipSource final : public ByteSource {
     std::size_t read(std::span<std::byte> out) override;
     [[nodiscard]] std::optional<std::uint64_t> remaining() const override { return std::nullopt; }
     [[nodiscard]] std::optional<std::uint64_t> compressedRemaining() const override;
-    // Output inflate may owe for input it already consumed (a match in progress, 258 bytes at
-    // most) beyond what compressedRemaining() bounds; with room to spare.
-    static constexpr std::uint64_t kPendingBytes = 1024;
+    // Output inflate may still owe for input it already consumed, beyond what
+    // compressedRemaining() bounds: its bit buffer (up to 8 bytes, 8 x 1032 bytes of output)
+    // and a match in progress (258 bytes); with room to spare.
+    static constexpr std::uint64_t kPendingBytes = 16 * 1024;
 
   private:
     struct State;
