@@ -189,10 +189,12 @@ DicomPixels::DicomPixels(const DicomHeader& header) : d_(std::make_unique<Decode
                                       std::to_string(header.samplesPerPixel) +
                                       " samples per pixel): only greyscale scans can be segmented");
         }
+        // GDCM asserts (aborts the process) on a high bit other than bits stored - 1, as DICOM
+        // now requires; older files that kept their bits higher are refused, not decoded.
         const int allocated = header.bitsAllocated;
         if ((allocated != 8 && allocated != 16 && allocated != 32) || header.bitsStored < 1 ||
             header.bitsStored > allocated || header.highBit >= allocated ||
-            header.highBit + 1 < header.bitsStored) {
+            header.highBit + 1 != header.bitsStored) {
             throw ScanError(file, "unsupported pixel format: " + std::to_string(allocated) +
                                       " bits allocated, " + std::to_string(header.bitsStored) +
                                       " stored, high bit " + std::to_string(header.highBit));

@@ -255,6 +255,16 @@ TEST(IoDicomCorpusHostile, NonFiniteRescaleAndDeclaredSizePastTheLimit) {
     fs::remove_all(dir);
 }
 
+// Found by fuzz_dicom: 16 bits allocated, 1 stored, high bit 15. GDCM's decoder asserts on a
+// high bit past bits stored, which aborted the process; it is refused instead.
+TEST(IoDicomCorpusHostile, HighBitPastBitsStoredIsRefused) {
+    const fs::path file = fs::path(STEERSEG_DICOM_CORPUS) / "highbit_past_stored.dcm";
+    const std::string msg = scanErrorOf([&] { (void)readDicom(file, {}); });
+    EXPECT_NE(msg.find("unsupported pixel format: 16 bits allocated, 1 stored, high bit 15"),
+              std::string::npos)
+        << msg;
+}
+
 TEST_F(IoDicomHostile, SeriesWithoutPositionsIsRefused) {
     const auto files = copyLungSlices(lung_, dir_, 3);
     for (const auto& f : files) {
