@@ -354,6 +354,26 @@ TEST_F(Hostile, ImageStackWithMixedSizes) {
     }
 }
 
+// OpenImageIO decodes a whole page at its declared size: the stack is bounded before that.
+TEST_F(Hostile, ImageStackPastTheConfiguredLimitIsRefused) {
+    std::filesystem::create_directory(dir / "stack");
+    for (const char* name : {"s1.png", "s2.png"}) {
+        const auto file = (dir / "stack" / name).string();
+        auto out = OIIO::ImageOutput::create(file);
+        ASSERT_TRUE(out);
+        ASSERT_TRUE(out->open(file, OIIO::ImageSpec(16, 16, 1, OIIO::TypeDesc::UINT8)));
+        const std::vector<std::uint8_t> pixels(256, 9);
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels.data()));
+        out->close();
+    }
+    io::ReadLimits limits;
+    limits.maxDataBytes = 500;
+    expectScanError(dir / "stack",
+                    "the images make 16x16x2 uint8 (512 bytes), more than the limit of 500 bytes",
+                    limits);
+    EXPECT_EQ(io::readScan(dir / "stack").volume.dims(), glm::ivec3(16, 16, 2));
+}
+
 TEST_F(Hostile, FourDimensionalNiftiIsRefused) {
     test::NiftiOptions o;
     o.volumes = 3;
