@@ -1,27 +1,70 @@
 #!/usr/bin/env bash
-# Builds and runs every test: the default build, the ASan+UBSan build, and each libFuzzer target
-# briefly on its seed corpus. Installs what it needs first. Used by the README and .ci/run.
+# Builds and runs every test: the default build, the ASan+UBSan build (leak detection on), and
+# each libFuzzer target briefly on its seed corpus. Installs what it needs first. Used by the
+# README and .ci/run. Prints how many tests ran and skipped per build, then one summary line.
 #   tools/test.sh            everything
 #   tools/test.sh --quick    the default build's tests only
+# STEERSEG_REQUIRE_DATA=1 (set by .ci/run) makes a test whose real scan is missing fail instead
+# of skipping, and any skipped test fail the run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 tools/install-deps.sh
 jobs=$(nproc)
+summary=()
+
+# Runs one build's CTest suite (its preset errors on zero tests) and reports the counts from
+# CTest's JUnit output.
+run_ctest() {
+  local preset=$1
+  local junit="$PWD/build/$preset/ctest-junit.xml"
+  rm -f "$junit"
+  local rc=0
+  ctest --preset "$preset" -j "$jobs" --output-junit "$junit" || rc=$?
+  if [[ ! -f "$junit" ]]; then
+    echo "$preset: CTest wrote no results ($junit)" >&2
+    exit 1
+  fi
+  local counts
+  # tests= counts every test, skipped ones included; failures= and skipped= are separate.
+  counts=$(python3 - "$junit" <<'EOF'
+import sys, xml.etree.ElementTree as ET
+root = ET.parse(sys.argv[1]).getroot()
+suite = root if root.tag == "testsuite" else root.find("testsuite")
+total = int(suite.get("tests", 0))
+skipped = int(suite.get("skipped", 0)) + int(suite.get("disabled", 0))
+failed = int(suite.get("failures", 0)) + int(suite.get("errors", 0))
+print(total - skipped, skipped, failed)
+EOF
+)
+  local ran skipped failed
+  read -r ran skipped failed <<<"$counts"
+  echo "$preset: $ran tests ran, $skipped skipped, $failed failed"
+  summary+=("$preset $ran ran/$skipped skipped/$failed failed")
+  if ((rc != 0)); then
+    echo "test.sh: FAILED in the $preset build (${summary[*]})" >&2
+    exit "$rc"
+  fi
+  if [[ "${STEERSEG_REQUIRE_DATA:-}" == "1" ]] && ((skipped > 0)); then
+    echo "test.sh: FAILED: $skipped tests skipped in the $preset build with STEERSEG_REQUIRE_DATA=1" >&2
+    exit 1
+  fi
+}
 
 echo "== default build"
 cmake --preset default >/dev/null
 cmake --build --preset default -j "$jobs"
-ctest --preset default -j "$jobs"
+run_ctest default
 
 if [[ "${1:-}" == "--quick" ]]; then
+  echo "test.sh: passed (${summary[*]})"
   exit 0
 fi
 
 echo "== ASan + UBSan build"
 cmake --preset asan >/dev/null
 cmake --build --preset asan -j "$jobs"
-ctest --preset asan -j "$jobs"
+run_ctest asan
 
 echo "== fuzz targets"
 cmake --preset fuzz >/dev/null
@@ -33,12 +76,24 @@ for target in build/fuzz/tests/fuzz/fuzz_*; do
   [[ -x "$target" ]] || continue
   name=$(basename "$target")
   corpus="tests/fuzz/corpus/${name#fuzz_}"
+  # A fuzzer started on an empty folder only mutates from nothing: that is not the test CI means.
+  seeds=("$corpus"/*)
+  if ((${#seeds[@]} == 0)); then
+    echo "test.sh: FAILED: $name has no seed corpus in $corpus (tests/fuzz/make_corpus.py)" >&2
+    exit 1
+  fi
   work=$(mktemp -d)
-  cp -r "$corpus"/. "$work"/ 2>/dev/null || true
-  echo "-- $name for ${fuzz_seconds}s on $corpus"
+  cp -r "$corpus"/. "$work"/
+  echo "-- $name for ${fuzz_seconds}s on $corpus (${#seeds[@]} seeds)"
   "$target" -max_total_time="$fuzz_seconds" -rss_limit_mb=2048 -max_len=65536 -print_final_stats=0 \
     "$work" 2>&1 | tail -n 3
   rm -rf "$work"
   ran=$((ran + 1))
 done
+if ((ran == 0)); then
+  echo "test.sh: FAILED: no fuzz targets under build/fuzz/tests/fuzz" >&2
+  exit 1
+fi
 echo "fuzz: $ran targets ran without a crash"
+summary+=("fuzz $ran targets")
+echo "test.sh: passed (${summary[*]})"

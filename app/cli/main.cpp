@@ -2,6 +2,9 @@
 // cmd_*.cpp; this file only dispatches and turns exceptions into one-line messages.
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "gpu/gl_error.hpp"
+#include "io/scan_reader.hpp"
+#include "platform/gpu_context.hpp"
 
 #include <cstdio>
 #include <exception>
@@ -43,15 +46,44 @@ void printUsage(std::FILE* out) {
         std::fprintf(out, "  %s\n", c.summary);
     }
     std::fprintf(out, "\nA scan PATH may be a file, a DICOM folder, or %s.\n", "builtin:sample");
+    std::fprintf(out, "\nexit status:\n%s", steerseg::cli::exitStatusHelp());
 }
 
 } // namespace
+
+namespace steerseg::cli {
+
+// Most specific type first: WriteError is a ScanError.
+ExitStatus exitStatusOf(const std::exception& e) {
+    if (dynamic_cast<const UsageError*>(&e) != nullptr) {
+        return kExitUsage;
+    }
+    if (dynamic_cast<const io::WriteError*>(&e) != nullptr) {
+        return kExitWrite;
+    }
+    if (dynamic_cast<const platform::GpuContextError*>(&e) != nullptr ||
+        dynamic_cast<const gpu::GlError*>(&e) != nullptr) {
+        return kExitGpu;
+    }
+    return kExitFailure;
+}
+
+const char* exitStatusHelp() {
+    return "  0  done\n"
+           "  1  the scan (or --mask) cannot be read, or another failure\n"
+           "  2  a bad or missing option, or a --seed/--erase that does not fit the scan\n"
+           "  3  no GPU context, or the GPU reported an error\n"
+           "  4  an output file cannot be written\n"
+           "Every failure prints one line on stderr naming the file or option and the problem.\n";
+}
+
+} // namespace steerseg::cli
 
 int main(int argc, char** argv) {
     std::vector<std::string> words(argv + 1, argv + argc);
     if (words.empty() || words[0] == "--help" || words[0] == "-h" || words[0] == "help") {
         printUsage(words.empty() ? stderr : stdout);
-        return words.empty() ? 2 : 0;
+        return words.empty() ? steerseg::cli::kExitUsage : steerseg::cli::kExitOk;
     }
     for (const Command& c : kCommands) {
         if (words[0] != c.name) {
@@ -59,16 +91,16 @@ int main(int argc, char** argv) {
         }
         try {
             return c.run(std::span<const std::string>(words).subspan(1));
-        } catch (const steerseg::cli::UsageError& e) {
-            std::fprintf(stderr, "steerseg %s: %s\nusage: steerseg %s\n", c.name, e.what(),
-                         c.summary);
-            return 2;
         } catch (const std::exception& e) {
+            const steerseg::cli::ExitStatus status = steerseg::cli::exitStatusOf(e);
             std::fprintf(stderr, "steerseg %s: %s\n", c.name, e.what());
-            return 1;
+            if (status == steerseg::cli::kExitUsage) {
+                std::fprintf(stderr, "usage: steerseg %s\n", c.summary);
+            }
+            return status;
         }
     }
     std::fprintf(stderr, "steerseg: unknown command '%s'\n", words[0].c_str());
     printUsage(stderr);
-    return 2;
+    return steerseg::cli::kExitUsage;
 }

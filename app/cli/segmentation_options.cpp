@@ -1,5 +1,7 @@
 #include "cli/segmentation_options.hpp"
 
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace steerseg::cli {
@@ -8,6 +10,13 @@ namespace {
 
 Sphere parseSphere(const std::string& text, const std::string& what) {
     const std::vector<double> v = parseNumberList(text, 4, what);
+    // Spheres are float; a double past float's range would not convert (undefined behaviour).
+    // What fits the scan is checked once it is read (checkSpheresInside).
+    for (const double x : v) {
+        if (std::abs(x) > static_cast<double>(std::numeric_limits<float>::max())) {
+            throw UsageError(what + ": " + text + " holds a number out of range");
+        }
+    }
     return {glm::vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])),
             static_cast<float>(v[3])};
 }

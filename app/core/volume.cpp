@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 namespace steerseg {
@@ -79,6 +80,52 @@ double Volume::storedAt(std::size_t linear) const {
         return static_cast<double>(voxels<float>()[linear]);
     }
     return 0.0;
+}
+
+std::string rescaleProblem(const Rescale& rescale, double storedMin, double storedMax) {
+    const auto text = [](double v) {
+        std::ostringstream s;
+        s << v;
+        return s.str();
+    };
+    if (!std::isfinite(rescale.slope)) {
+        return "slope is " + text(rescale.slope);
+    }
+    if (!std::isfinite(rescale.intercept)) {
+        return "intercept is " + text(rescale.intercept);
+    }
+    // The map is linear: its extremes are at the ends of the stored range.
+    for (const double stored : {storedMin, storedMax}) {
+        const double real = rescale.apply(stored);
+        if (!std::isfinite(real) ||
+            std::abs(real) > static_cast<double>(std::numeric_limits<float>::max())) {
+            return "slope " + text(rescale.slope) + " and intercept " + text(rescale.intercept) +
+                   " take stored " + text(stored) + " to " + text(real) +
+                   ", beyond float32's range";
+        }
+    }
+    return {};
+}
+
+std::pair<double, double> Volume::storedRange() const {
+    const auto range = [](auto v) -> std::pair<double, double> {
+        if (v.empty()) {
+            return {0.0, 0.0};
+        }
+        const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+        return {static_cast<double>(*lo), static_cast<double>(*hi)};
+    };
+    switch (type_) {
+    case VoxelType::UInt8:
+        return range(voxels<std::uint8_t>());
+    case VoxelType::Int16:
+        return range(voxels<std::int16_t>());
+    case VoxelType::UInt16:
+        return range(voxels<std::uint16_t>());
+    case VoxelType::Float32:
+        return range(voxels<float>());
+    }
+    return {0.0, 0.0};
 }
 
 namespace {

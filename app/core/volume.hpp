@@ -7,6 +7,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace steerseg {
@@ -42,6 +43,12 @@ struct Rescale {
     double intercept = 0.0;
     [[nodiscard]] double apply(double stored) const { return slope * stored + intercept; }
 };
+
+// Why `rescale` cannot take stored values in [storedMin, storedMax] to finite real values within
+// float32's range (the solver and renderer hold real values as float), e.g. "slope is nan" or
+// "slope 1e+38 and intercept 0 take stored 32767 to 3.3e+42, beyond float32's range"; empty
+// when it can. Readers check a file's rescale against its stored min and max.
+std::string rescaleProblem(const Rescale& rescale, double storedMin, double storedMax);
 
 struct IntensityStats {
     double min = 0.0; // real units
@@ -86,6 +93,9 @@ class Volume {
     [[nodiscard]] double valueAt(int i, int j, int k) const {
         return rescale_.apply(storedAt(linearIndex(i, j, k)));
     }
+
+    // Smallest and largest stored value (no rescale); {0, 0} for an empty volume.
+    [[nodiscard]] std::pair<double, double> storedRange() const;
 
     // Min/max/mean in real units and a histogram; computed on demand and cached.
     [[nodiscard]] const IntensityStats& stats() const;

@@ -79,6 +79,14 @@ GzipSource::~GzipSource() {
     inflateEnd(&state_->zs);
 }
 
+std::optional<std::uint64_t> GzipSource::compressedRemaining() const {
+    const auto left = inner_.remaining();
+    if (!left) {
+        return std::nullopt;
+    }
+    return *left + state_->zs.avail_in;
+}
+
 std::size_t GzipSource::read(std::span<std::byte> out) {
     State& s = *state_;
     z_stream& zs = s.zs;

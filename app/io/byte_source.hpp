@@ -22,6 +22,11 @@ class ByteSource {
     virtual std::size_t read(std::span<std::byte> out) = 0;
     // Bytes left before the end, where known without reading (not for compressed streams).
     [[nodiscard]] virtual std::optional<std::uint64_t> remaining() const = 0;
+    // For a decompressing stream, the compressed bytes not yet decoded, where known: what
+    // bounds how much it can still deliver (checkDataFits). nullopt for plain data.
+    [[nodiscard]] virtual std::optional<std::uint64_t> compressedRemaining() const {
+        return std::nullopt;
+    }
 };
 
 // A source that can jump: files and memory.
@@ -77,6 +82,11 @@ class GzipSource final : public ByteSource {
     GzipSource& operator=(const GzipSource&) = delete;
     std::size_t read(std::span<std::byte> out) override;
     [[nodiscard]] std::optional<std::uint64_t> remaining() const override { return std::nullopt; }
+    [[nodiscard]] std::optional<std::uint64_t> compressedRemaining() const override;
+    // Output inflate may still owe for input it already consumed, beyond what
+    // compressedRemaining() bounds: its bit buffer (up to 8 bytes, 8 x 1032 bytes of output)
+    // and a match in progress (258 bytes); with room to spare.
+    static constexpr std::uint64_t kPendingBytes = 16 * 1024;
 
   private:
     struct State;

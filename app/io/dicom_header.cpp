@@ -1,5 +1,6 @@
 #include "io/dicom_header.hpp"
 
+#include "io/byte_source.hpp"
 #include "io/dicom_multiframe.hpp"
 #include "io/dicom_structure.hpp"
 #include "io/load_checks.hpp"
@@ -216,13 +217,19 @@ DicomHeader readDicomHeader(const std::filesystem::path& path, const ReadLimits&
         readOneDecimal(path, ds, gdcm::Tag(0x0028, 0x1052), "RescaleIntercept").value_or(0.0);
     if (h.isImage()) {
         checkDims(path, {h.columns, h.rows, h.frames}, limits);
+        const std::uint64_t bits = static_cast<std::uint64_t>(h.columns) *
+                                   static_cast<std::uint64_t>(h.rows) *
+                                   static_cast<std::uint64_t>(h.frames) *
+                                   static_cast<std::uint64_t>(std::max(h.samplesPerPixel, 1)) *
+                                   static_cast<std::uint64_t>(std::max(h.bitsAllocated, 0));
+        // Compressed pixel data (JPEG, RLE, ...) is decoded by GDCM into a buffer of the declared
+        // size, so the declaration is bounded before GDCM sees it.
+        checkDataLimit(path, (bits + 7) / 8, limits,
+                       "the image declares " + dimsText({h.columns, h.rows, h.frames}) + " x " +
+                           std::to_string(h.bitsAllocated) + " bits (" + sizeText((bits + 7) / 8) +
+                           ")");
         const std::size_t offset = reader.GetStreamCurrentPosition();
         if (h.rawPixelData && offset != static_cast<std::size_t>(-1) && offset <= h.fileSize) {
-            const std::uint64_t bits = static_cast<std::uint64_t>(h.columns) *
-                                       static_cast<std::uint64_t>(h.rows) *
-                                       static_cast<std::uint64_t>(h.frames) *
-                                       static_cast<std::uint64_t>(std::max(h.samplesPerPixel, 1)) *
-                                       static_cast<std::uint64_t>(h.bitsAllocated);
             checkAvailable(path, (bits + 7) / 8, h.fileSize - offset, "the pixel data");
         }
         h.planes.assign(static_cast<std::size_t>(h.frames), plane);

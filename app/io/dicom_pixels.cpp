@@ -3,6 +3,7 @@
 #include "io/dicom_codestream.hpp"
 #include "io/load_checks.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <gdcmImage.h>
 #include <gdcmReader.h>
@@ -10,6 +11,7 @@
 #include <new>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace steerseg::io {
@@ -97,6 +99,24 @@ void convertFrame(const Src* src, std::size_t count, const StoredTransform& t, V
     }
 }
 
+// One frame's stored range as its rescale sees it (after masking and MONOCHROME1 inversion).
+template <typename Src>
+std::pair<double, double> storedRange(const Src* src, std::size_t count, const StoredTransform& t) {
+    double lo = std::numeric_limits<double>::infinity();
+    double hi = -lo;
+    for (std::size_t n = 0; n < count; ++n) {
+        double v = 0.0;
+        if constexpr (std::is_floating_point_v<Src>) {
+            v = t.invert ? -static_cast<double>(src[n]) : static_cast<double>(src[n]);
+        } else {
+            v = static_cast<double>(t.apply(static_cast<std::int64_t>(src[n])));
+        }
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+    }
+    return {lo, hi};
+}
+
 } // namespace
 
 struct DicomPixels::Decoded {
@@ -169,10 +189,12 @@ DicomPixels::DicomPixels(const DicomHeader& header) : d_(std::make_unique<Decode
                                       std::to_string(header.samplesPerPixel) +
                                       " samples per pixel): only greyscale scans can be segmented");
         }
+        // GDCM asserts (aborts the process) on a high bit other than bits stored - 1, as DICOM
+        // now requires; older files that kept their bits higher are refused, not decoded.
         const int allocated = header.bitsAllocated;
         if ((allocated != 8 && allocated != 16 && allocated != 32) || header.bitsStored < 1 ||
             header.bitsStored > allocated || header.highBit >= allocated ||
-            header.highBit + 1 < header.bitsStored) {
+            header.highBit + 1 != header.bitsStored) {
             throw ScanError(file, "unsupported pixel format: " + std::to_string(allocated) +
                                       " bits allocated, " + std::to_string(header.bitsStored) +
                                       " stored, high bit " + std::to_string(header.highBit));
@@ -287,6 +309,10 @@ void DicomPixels::copyFrames(std::span<const std::size_t> sliceOfFrame,
         const auto run = [&]<typename T>(T*) {
             std::vector<T> typed(voxels);
             std::memcpy(typed.data(), src, voxels * sizeof(T));
+            if (plan.realUnits && voxels > 0) {
+                const auto [lo, hi] = storedRange(typed.data(), voxels, t);
+                checkRescale(d_->file, r, lo, hi, kDicomRescaleFields);
+            }
             convertFrame<T>(typed.data(), voxels, t, out.type(), plan.realUnits, r, dst);
         };
         switch (pf.GetScalarType()) {

@@ -9,6 +9,10 @@
 
 namespace steerseg::io {
 
+// The attributes a rescale comes from, for messages.
+inline constexpr const char* kDicomRescaleFields =
+    "Rescale Slope (0028,1053)/Rescale Intercept (0028,1052)";
+
 // How decoded frames are stored: in their native type with one shared rescale, or as float32
 // real values when rescales differ between frames or the data is 32-bit.
 struct PixelPlan {

@@ -131,6 +131,9 @@ Volume assemble(const std::filesystem::path& where, const std::vector<DicomHeade
                 pixels.copyFrames(layout.slices[i], files[i].planes, plan, volume);
             }
             checkFinite(where, volume);
+            if (!plan.realUnits) {
+                checkRescale(where, volume, kDicomRescaleFields);
+            }
             return volume;
         } catch (const PixelPlanMismatch&) {
             if (attempt > 0) {

@@ -78,7 +78,7 @@ void writeFileAtomically(const std::filesystem::path& path,
     {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
         if (!out) {
-            throw ScanError(path, std::string("cannot create the file: ") + std::strerror(errno));
+            throw WriteError(path, std::string("cannot create the file: ") + std::strerror(errno));
         }
         for (const auto& piece : pieces) {
             out.write(reinterpret_cast<const char*>(piece.data()),
@@ -88,7 +88,7 @@ void writeFileAtomically(const std::filesystem::path& path,
         if (!out) {
             std::error_code ignored;
             std::filesystem::remove(temp, ignored);
-            throw ScanError(path, "writing failed (disk full?)");
+            throw WriteError(path, "writing failed (disk full?)");
         }
     }
     std::error_code ec;
@@ -96,7 +96,7 @@ void writeFileAtomically(const std::filesystem::path& path,
     if (ec) {
         std::error_code ignored;
         std::filesystem::remove(temp, ignored);
-        throw ScanError(path, "cannot replace the file: " + ec.message());
+        throw WriteError(path, "cannot replace the file: " + ec.message());
     }
 }
 

@@ -29,7 +29,7 @@ class GzipWriter {
 std::vector<std::byte> gzipBytes(std::span<const std::byte> bytes, int level = 6);
 
 // Writes the pieces to a temporary file beside `path`, then renames it over `path`, so readers
-// never see a half-written file. Throws ScanError naming `path`.
+// never see a half-written file. Throws WriteError naming `path`.
 void writeFileAtomically(const std::filesystem::path& path,
                          std::initializer_list<std::span<const std::byte>> pieces);
 

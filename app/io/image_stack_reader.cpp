@@ -6,6 +6,7 @@
 // alpha is ignored. Spacing: 2D image files rarely carry a physical pixel size, and their DPI
 // (often a default 72) is about printing, so pixels are 1 mm unless the file gives a resolution
 // in pixels per centimetre (as microscopy TIFFs do); slices are 1 mm apart. Origin 0, axes LPS.
+#include "io/byte_source.hpp"
 #include "io/file_name.hpp"
 #include "io/load_checks.hpp"
 #include "io/readers.hpp"
@@ -247,8 +248,13 @@ Volume readImageStack(const std::filesystem::path& path, const ReadLimits& limit
             glm::dvec3(10.0 / static_cast<double>(xres), 10.0 / static_cast<double>(yres), 1.0);
     }
     checkGeometry(path, g);
+    const VoxelType type = typeFor(spec0.format);
+    const std::uint64_t bytes = g.voxelCount() * voxelBytes(type);
+    checkDataLimit(path, bytes, limits,
+                   "the images make " + dimsText(g.dims) + " " + voxelTypeName(type) + " (" +
+                       sizeText(bytes) + ")");
 
-    Volume volume(typeFor(spec0.format), g);
+    Volume volume(type, g);
     const std::size_t sliceVoxels =
         static_cast<std::size_t>(format.width) * static_cast<std::size_t>(format.height);
     std::unique_ptr<OIIO::ImageInput> in;

@@ -1,6 +1,9 @@
 #include "io/load_checks.hpp"
 
+#include "io/byte_source.hpp"
+
 #include <cmath>
+#include <sstream>
 
 namespace steerseg::io {
 
@@ -77,6 +80,50 @@ void checkFinite(const std::filesystem::path& path, const Volume& volume) {
         throw ScanError(path, std::to_string(bad) + " voxels are NaN or infinite (first at " +
                                   std::to_string(i) + "," + std::to_string(j) + "," +
                                   std::to_string(k) + ")");
+    }
+}
+
+void checkRescale(const std::filesystem::path& path, const Rescale& rescale, double storedMin,
+                  double storedMax, const std::string& fields) {
+    const std::string problem = rescaleProblem(rescale, storedMin, storedMax);
+    if (!problem.empty()) {
+        throw ScanError(path, "rescale (" + fields + ") refused: " + problem);
+    }
+}
+
+void checkRescale(const std::filesystem::path& path, const Volume& volume,
+                  const std::string& fields) {
+    const auto [lo, hi] = volume.storedRange();
+    checkRescale(path, volume.rescale(), lo, hi, fields);
+}
+
+void checkDataLimit(const std::filesystem::path& path, std::uint64_t bytes,
+                    const ReadLimits& limits, const std::string& what) {
+    if (bytes > limits.maxDataBytes) {
+        throw ScanError(path, what + ", more than the limit of " + sizeText(limits.maxDataBytes) +
+                                  " of scan data");
+    }
+}
+
+void checkDataFits(const std::filesystem::path& path, std::uint64_t bytes, const ByteSource& source,
+                   const ReadLimits& limits, const std::string& what) {
+    checkDataLimit(path, bytes, limits, what);
+    if (source.remaining()) {
+        return;
+    }
+    const auto compressed = source.compressedRemaining();
+    if (!compressed) {
+        return;
+    }
+    const double most = static_cast<double>(*compressed) * limits.maxCompressionRatio +
+                        static_cast<double>(GzipSource::kPendingBytes);
+    if (static_cast<double>(bytes) > most) {
+        std::ostringstream ratio;
+        ratio << limits.maxCompressionRatio;
+        throw ScanError(path, what + " but " + sizeText(*compressed) +
+                                  " of compressed data expand to at most " +
+                                  sizeText(static_cast<std::uint64_t>(most)) +
+                                  " (compression ratio limit " + ratio.str() + ":1)");
     }
 }
 

@@ -128,14 +128,14 @@ void writeMask(const std::filesystem::path& path, const Geometry& geometry,
                std::span<const std::uint8_t> mask) {
     checkGeometry(path, geometry);
     if (geometry.voxelCount() == 0 || mask.size() != geometry.voxelCount()) {
-        throw ScanError(path, "mask has " + std::to_string(mask.size()) + " voxels but the grid " +
-                                  dimsText(geometry.dims) + " has " +
-                                  std::to_string(geometry.voxelCount()));
+        throw WriteError(path, "mask has " + std::to_string(mask.size()) + " voxels but the grid " +
+                                   dimsText(geometry.dims) + " has " +
+                                   std::to_string(geometry.voxelCount()));
     }
     const std::string name = lowerFileName(path);
     if (hasSuffix(name, ".nii.gz") || hasSuffix(name, ".nii")) {
         if (std::max({geometry.dims.x, geometry.dims.y, geometry.dims.z}) > 32767) {
-            throw ScanError(path, "NIfTI-1 holds at most 32767 voxels per axis; write .nrrd");
+            throw WriteError(path, "NIfTI-1 holds at most 32767 voxels per axis; write .nrrd");
         }
         const auto header = niftiHeader(geometry);
         if (hasSuffix(name, ".gz")) {
@@ -156,7 +156,7 @@ void writeMask(const std::filesystem::path& path, const Geometry& geometry,
         writeFileAtomically(path, {std::as_bytes(std::span(header)), writer.finish()});
         return;
     }
-    throw ScanError(path, "unsupported mask format (use .nii.gz, .nii or .nrrd)");
+    throw WriteError(path, "unsupported mask format (use .nii.gz, .nii or .nrrd)");
 }
 
 } // namespace steerseg::io

@@ -191,7 +191,7 @@ Volume readMetaImageFrom(const std::filesystem::path& path, SeekableSource& file
     if (text.empty()) {
         throw ScanError(path, "the file is empty");
     }
-    return loadRawData(path, file, parseMetaImageHeader(path, text, limits));
+    return loadRawData(path, file, parseMetaImageHeader(path, text, limits), limits);
 }
 
 Volume readMetaImage(const std::filesystem::path& path, const ReadLimits& limits) {

@@ -103,7 +103,9 @@ Volume readMgzFrom(const std::filesystem::path& path, SeekableSource& file,
     const Geometry geometry = geometryFromAffine(path, flipRasLps(ras), dims);
 
     const std::uint64_t dataBytes = geometry.voxelCount() * sampleBytes(type);
-    const auto raw = readExactly(path, src, dataBytes, expectedDataText("header", dims, type));
+    const std::string expected = expectedDataText("header", dims, type);
+    checkDataFits(path, dataBytes, src, limits, expected);
+    const auto raw = readExactly(path, src, dataBytes, expected);
     return decodeVolume(path, geometry, type, ByteOrder::Big, raw);
 }
 

@@ -270,13 +270,17 @@ Volume readNiftiFrom(const std::filesystem::path& path, SeekableSource& file,
                                   " lies beyond the end of the file");
     }
     const std::uint64_t dataBytes = geometry.voxelCount() * sampleBytes(type);
-    const std::vector<std::byte> raw =
-        readExactly(path, src, dataBytes, expectedDataText("header", dims, type));
+    const std::string expected = expectedDataText("header", dims, type);
+    checkDataFits(path, dataBytes, src, limits, expected);
+    const std::vector<std::byte> raw = readExactly(path, src, dataBytes, expected);
     Volume volume = decodeVolume(path, geometry, type, order, raw);
 
-    // scl_slope 0 (or not finite) means "no scaling" in NIfTI.
-    if (std::isfinite(f.sclSlope) && f.sclSlope != 0.0) {
-        volume.setRescale({f.sclSlope, std::isfinite(f.sclInter) ? f.sclInter : 0.0});
+    // scl_slope 0 means "no scaling" in NIfTI. nifticlib also reads a slope or intercept that is
+    // not finite as "no scaling"; we refuse it, as one that takes the data past float32: either
+    // way the intensities (and T, eps) would be in units the file did not mean.
+    if (f.sclSlope != 0.0) {
+        volume.setRescale({f.sclSlope, f.sclInter});
+        checkRescale(path, volume, "scl_slope/scl_inter");
     }
     return volume;
 }

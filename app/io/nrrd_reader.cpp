@@ -316,7 +316,7 @@ Volume readNrrdFrom(const std::filesystem::path& path, SeekableSource& file,
         throw ScanError(path, "the file is empty");
     }
     const RawDataSpec spec = parseNrrdHeader(path, text, text.size() == file.size(), limits);
-    return loadRawData(path, file, spec);
+    return loadRawData(path, file, spec, limits);
 }
 
 Volume readNrrd(const std::filesystem::path& path, const ReadLimits& limits) {

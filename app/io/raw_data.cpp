@@ -1,6 +1,7 @@
 #include "io/raw_data.hpp"
 
 #include "io/byte_source.hpp"
+#include "io/load_checks.hpp"
 #include "io/scan_reader.hpp"
 
 #include <memory>
@@ -8,7 +9,7 @@
 namespace steerseg::io {
 
 Volume loadRawData(const std::filesystem::path& headerPath, SeekableSource& headerFile,
-                   const RawDataSpec& spec) {
+                   const RawDataSpec& spec, const ReadLimits& limits) {
     std::unique_ptr<FileSource> detached;
     SeekableSource* file = &headerFile;
     std::filesystem::path where = headerPath;
@@ -30,10 +31,10 @@ Volume loadRawData(const std::filesystem::path& headerPath, SeekableSource& head
     }
     const auto& dims = spec.geometry.dims;
     const std::uint64_t dataBytes = spec.geometry.voxelCount() * sampleBytes(spec.type);
+    const std::string expected = expectedDataText("header", dims, spec.type);
     if (spec.fileSkip < 0) {
         if (file->size() < dataBytes) {
-            throw ScanError(where, expectedDataText("header", dims, spec.type) +
-                                       " but the file holds only " + sizeText(file->size()));
+            throw ScanError(where, expected + " but the file holds only " + sizeText(file->size()));
         }
         file->seek(file->size() - dataBytes);
     } else if (skipBytes(*file, static_cast<std::uint64_t>(spec.fileSkip)) <
@@ -44,8 +45,8 @@ Volume loadRawData(const std::filesystem::path& headerPath, SeekableSource& head
 
     switch (spec.encoding) {
     case DataEncoding::Raw: {
-        const auto raw =
-            readExactly(where, *file, dataBytes, expectedDataText("header", dims, spec.type));
+        checkDataFits(where, dataBytes, *file, limits, expected);
+        const auto raw = readExactly(where, *file, dataBytes, expected);
         return decodeVolume(where, spec.geometry, spec.type, spec.order, raw);
     }
     case DataEncoding::Compressed: {
@@ -54,12 +55,21 @@ Volume loadRawData(const std::filesystem::path& headerPath, SeekableSource& head
             throw ScanError(where, "byte skip " + std::to_string(spec.decodedSkip) +
                                        " goes past the end of the decompressed data");
         }
-        const auto raw =
-            readExactly(where, gz, dataBytes, expectedDataText("header", dims, spec.type));
+        checkDataFits(where, dataBytes, gz, limits, expected);
+        const auto raw = readExactly(where, gz, dataBytes, expected);
         return decodeVolume(where, spec.geometry, spec.type, spec.order, raw);
     }
     case DataEncoding::Ascii: {
-        const auto text = readUpTo(*file, *file->remaining());
+        checkDataFits(where, dataBytes, *file, limits, expected);
+        // Every number takes a character and a separator (the last one none): a 1 KiB file
+        // cannot make us allocate a gigavoxel volume.
+        const std::uint64_t left = *file->remaining();
+        if (spec.geometry.voxelCount() > left / 2 + 1) {
+            throw ScanError(where, expected + " but " + sizeText(left) +
+                                       " of ascii data hold at most " +
+                                       std::to_string(left / 2 + 1) + " numbers");
+        }
+        const auto text = readUpTo(*file, left);
         return decodeAsciiVolume(
             where, spec.geometry, spec.type,
             std::string_view(reinterpret_cast<const char*>(text.data()), text.size()));

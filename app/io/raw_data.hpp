@@ -3,6 +3,7 @@
 // Where a text-header format (NRRD, MetaImage) keeps its voxels, and loading them.
 #include "core/volume.hpp"
 #include "io/sample_decode.hpp"
+#include "io/scan_reader.hpp"
 
 #include <filesystem>
 #include <string>
@@ -28,6 +29,6 @@ struct RawDataSpec {
 // Reads the voxels `spec` describes: attached data from `headerFile`, detached data from
 // spec.dataFile beside `headerPath`. Throws ScanError naming the file that falls short.
 Volume loadRawData(const std::filesystem::path& headerPath, SeekableSource& headerFile,
-                   const RawDataSpec& spec);
+                   const RawDataSpec& spec, const ReadLimits& limits);
 
 } // namespace steerseg::io

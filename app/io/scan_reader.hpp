@@ -2,6 +2,7 @@
 
 #include "core/volume.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -18,12 +19,27 @@ class ScanError : public std::runtime_error {
         : std::runtime_error(path.string() + ": " + problem) {}
 };
 
+// An output that cannot be written (a mask, a file replaced atomically). A ScanError too, so
+// code that treats every io failure alike still does; the command line tells them apart (exit
+// status 4).
+class WriteError : public ScanError {
+  public:
+    using ScanError::ScanError;
+};
+
 // Caps that keep a hostile header from making us allocate or loop beyond reason. A loader
 // never allocates more voxel memory than the file can back (compressed data grows as it is
 // actually decoded), and refuses dimensions past these caps up front.
 struct ReadLimits {
     std::size_t maxVoxels = std::size_t{1} << 31; // 2 Gi voxels (an 1290^3 scan)
     int maxDimension = 65536;                     // per axis
+    // Voxel data a scan may declare, as stored in the file before conversion: 4 GiB holds a
+    // 1024^3 float32 or a 1290^3 int16 scan.
+    std::uint64_t maxDataBytes = std::uint64_t{4} << 30;
+    // How far compressed data may expand. Deflate (gzip, zlib, DICOM deflate) cannot exceed
+    // 1032:1 (a 258-byte match in 2 bits), so a header declaring more than the compressed bytes
+    // times this is refused before anything is decoded; a genuine file never is.
+    double maxCompressionRatio = 1032.0;
 };
 
 struct LoadedScan {

@@ -36,6 +36,13 @@ void validateSphere(const Sphere& s, const glm::ivec3& dims) {
         throw std::invalid_argument("sphere radius must be a positive number of voxels (got " +
                                     std::to_string(s.radius) + ")");
     }
+    const float diagonal = glm::length(glm::vec3(dims));
+    if (s.radius > diagonal) {
+        std::ostringstream msg;
+        msg << "sphere radius " << s.radius << " voxels is larger than the volume's diagonal ("
+            << diagonal << " voxels for " << dims.x << " x " << dims.y << " x " << dims.z << ")";
+        throw std::invalid_argument(msg.str());
+    }
     for (int a = 0; a < 3; ++a) {
         if (!std::isfinite(s.centre[a]) || s.centre[a] < 0.0F ||
             s.centre[a] > static_cast<float>(dims[a] - 1)) {

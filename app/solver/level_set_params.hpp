@@ -54,8 +54,10 @@ struct Sphere {
     float radius = 0.0F;
 };
 
-// Throws std::invalid_argument unless the radius is positive and finite and the centre lies
-// inside the volume.
+// Throws std::invalid_argument unless the radius is positive, finite and at most the volume's
+// diagonal (dims, in voxels) and the centre lies inside the volume. Every sphere edit (the GPU
+// and reference solvers' addSphere/removeSphere, the command line's --seed/--erase) goes through
+// it: a larger radius adds nothing but overflows the edit's voxel bounds.
 void validateSphere(const Sphere& sphere, const glm::ivec3& dims);
 
 // Signed distance from voxel centre `voxel` to the sphere's surface (negative inside).

@@ -16,6 +16,7 @@ inline io::ReadLimits fuzzLimits() {
     io::ReadLimits limits;
     limits.maxVoxels = std::size_t{1} << 22;
     limits.maxDimension = 4096;
+    limits.maxDataBytes = std::uint64_t{32} << 20;
     return limits;
 }
 

@@ -1,5 +1,7 @@
 // Golden images of every view kind, rendered on Mesa llvmpipe from a small synthetic scene.
 // STEERSEG_UPDATE_GOLDEN=1 rewrites tests/golden/*.png (see docs/renderer.md).
+#include "golden_compare.hpp"
+#include "io/image_file.hpp"
 #include "render/renderer.hpp"
 #include "render_scene.hpp"
 #include "support/gpu_fixture.hpp"
@@ -63,6 +65,85 @@ TEST_F(RenderGolden, CoronalZoomedPannedWithoutSurface) {
     p.zoom = 1.6;
     p.pan = {8.0, -4.0};
     expectGolden("coronal_zoom", p, false);
+}
+
+// The comparison itself, on the committed goldens (no GPU needed).
+
+RgbaImage eraseYellow(RgbaImage image, int& erased) {
+    erased = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            std::uint8_t* px = image.at(x, y);
+            if (isYellow(px)) {
+                px[0] = px[1] = px[2] = 90; // the grey of the scan around it
+                ++erased;
+            }
+        }
+    }
+    return image;
+}
+
+// A picture that lost its yellow line (the slice contour, or the clip plane's intersection with
+// the surface) must not match its golden, however few pixels the line covers.
+TEST(GoldenComparison, FailsWhenTheContourOrClipLineIsErased) {
+    for (const char* name : {"axial_contour", "volume_clip_dim"}) {
+        SCOPED_TRACE(name);
+        const RgbaImage golden = io::readImage(goldenPath(name));
+        ASSERT_TRUE(compareImages(name, golden, golden).ok);
+        int erased = 0;
+        const RgbaImage without = eraseYellow(golden, erased);
+        ASSERT_GT(erased, 20) << "the golden shows no yellow line";
+        // Colour and alpha alone (the comparison before the yellow check) let the axial
+        // contour vanish: it is under the 1% differing-pixel budget.
+        if (std::string(name) == "axial_contour") {
+            GoldenTolerance colourOnly;
+            colourOnly.yellowCountTolerance = 1e9;
+            EXPECT_TRUE(compareImages(name, golden, without, colourOnly).ok)
+                << erased << " yellow pixels: past the pixel budget, so this no longer shows "
+                << "the gap the yellow check closes";
+        }
+        const GoldenResult r = compareImages(name, golden, without);
+        EXPECT_FALSE(r.ok);
+        EXPECT_NE(r.message.find("0 contour-yellow pixels where the golden has " +
+                                 std::to_string(erased)),
+                  std::string::npos)
+            << r.message;
+    }
+}
+
+// Alpha is compared like the colour channels: a picture gone transparent does not match.
+TEST(GoldenComparison, FailsWhenOnlyAlphaDiffers) {
+    const RgbaImage golden = io::readImage(goldenPath("volume_surface"));
+    RgbaImage clear = golden;
+    for (int y = 0; y < clear.height / 4; ++y) {
+        for (int x = 0; x < clear.width; ++x) {
+            clear.at(x, y)[3] = static_cast<std::uint8_t>(golden.at(x, y)[3] > 127 ? 0 : 255);
+        }
+    }
+    const GoldenResult r = compareImages("volume_surface", golden, clear);
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.message.find("alpha 255"), std::string::npos) << r.message;
+}
+
+// A view without a surface has no yellow; one with a contour keeps it within the tolerance.
+TEST(GoldenComparison, YellowCountTolerance) {
+    const RgbaImage golden = io::readImage(goldenPath("axial_contour"));
+    int erased = 0;
+    (void)eraseYellow(golden, erased);
+    RgbaImage fewer = golden;
+    int removed = 0;
+    const int keep = erased - static_cast<int>(0.1 * erased); // 10% fewer: within 20%
+    int seen = 0;
+    for (int y = 0; y < fewer.height; ++y) {
+        for (int x = 0; x < fewer.width; ++x) {
+            if (isYellow(fewer.at(x, y)) && ++seen > keep) {
+                fewer.at(x, y)[2] = 255;
+                ++removed;
+            }
+        }
+    }
+    ASSERT_GT(removed, 0);
+    EXPECT_TRUE(compareImages("axial_contour", golden, fewer).ok);
 }
 
 } // namespace

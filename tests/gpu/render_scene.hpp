@@ -25,17 +25,6 @@ inline constexpr double kHeadLesionRadius = 7.0; // voxels
 PackedPool spherePool(const glm::ivec3& dims, const glm::dvec3& centre, double radius,
                       int brickSize = 8, float phiFar = 4.0F);
 
-// Golden comparison: a pixel differs when any channel differs by more than `pixelTolerance`;
-// the images match when at most `maxDifferingFraction` of pixels differ. On a mismatch (or a
-// missing golden) writes NAME.actual.png and NAME.diff.png beside the test binary and returns
-// a message naming them; with STEERSEG_UPDATE_GOLDEN=1 rewrites tests/golden/NAME.png instead.
-struct GoldenResult {
-    bool ok = false;
-    std::string message;
-};
-GoldenResult compareGolden(const std::string& name, const RgbaImage& actual,
-                           int pixelTolerance = 24, double maxDifferingFraction = 0.01);
-
 // Pixel colour helpers.
 bool isYellow(const std::uint8_t* px);
 bool isBlack(const std::uint8_t* px);

@@ -36,6 +36,22 @@ std::optional<std::filesystem::path> dataPath(const std::filesystem::path& relat
     return p;
 }
 
+bool dataRequired() {
+    const char* env = std::getenv("STEERSEG_REQUIRE_DATA");
+    return env != nullptr && std::string(env) == "1";
+}
+
+std::string missingDataMessage(const std::filesystem::path& relative) {
+    const auto dir = dataDir();
+    std::string msg = "real scan data '" + relative.string() + "' not found ";
+    msg += dir ? "in " + dir->string() : std::string("(no data folder)");
+    msg += " (set STEERSEG_DATA_DIR; default ../shared/data)";
+    if (dataRequired()) {
+        msg += "; STEERSEG_REQUIRE_DATA=1 makes missing data a failure";
+    }
+    return msg;
+}
+
 std::filesystem::path steersegBinary() {
     const char* env = std::getenv("STEERSEG_BINARY");
     return env != nullptr ? std::filesystem::path(env)

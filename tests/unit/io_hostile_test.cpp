@@ -15,9 +15,10 @@ namespace steerseg {
 namespace {
 
 // Reads `path`, expecting a ScanError whose message names the file and contains `problem`.
-void expectScanError(const std::filesystem::path& path, const std::string& problem) {
+void expectScanError(const std::filesystem::path& path, const std::string& problem,
+                     const io::ReadLimits& limits = {}) {
     try {
-        (void)io::readScan(path);
+        (void)io::readScan(path, limits);
         ADD_FAILURE() << path << " was read but should have failed with \"" << problem << "\"";
     } catch (const io::ScanError& e) {
         const std::string what = e.what();
@@ -94,24 +95,153 @@ TEST_F(Hostile, HugeDimensionsInHeader) {
     expectScanError(dir / "huge.mha", "exceed the limit");
 }
 
-// Within the limits (1200^3 float, 6.6 GiB) but backed by a few bytes of gzip: the reader must
-// fail after decompressing what is there, never reserving the claimed size.
+// 4 KiB of incompressible bytes, whose gzip could in principle expand past 4 MiB.
+std::vector<std::byte> noise(std::size_t count) {
+    std::vector<std::byte> out(count);
+    std::uint32_t x = 12345;
+    for (std::byte& b : out) {
+        x = x * 1664525U + 1013904223U;
+        b = static_cast<std::byte>(x >> 24);
+    }
+    return out;
+}
+
+// A claim the compressed bytes could meet (3.8 MiB from 4 KiB of gzip) but do not: the reader
+// fails after decompressing what is there, never reserving the claimed size.
 TEST_F(Hostile, ClaimedSizeNotBackedByCompressedData) {
+    Geometry g;
+    g.dims = glm::ivec3(100);
+    test::NiftiOptions o;
+    o.datatype = NIFTI_TYPE_FLOAT32;
+    test::writeFile(dir / "claim.nii.gz", io::gzipBytes(test::niftiFile(g, noise(4096), o)));
+    expectScanError(dir / "claim.nii.gz",
+                    "header says 100x100x100 float32 (3.8 MiB) but the data ends after 4.0 KiB");
+    test::writeFile(
+        dir / "claim.nrrd",
+        test::concat("NRRD0004\ntype: float\ndimension: 3\nsizes: 100 100 100\nencoding: gzip\n\n",
+                     io::gzipBytes(noise(4096))));
+    expectScanError(dir / "claim.nrrd", "but the data ends after 4.0 KiB");
+    EXPECT_LT(peakRssMiB(), 512.0);
+}
+
+// Decompression bombs: a header declaring more than its compressed bytes can expand to at
+// deflate's ceiling (1032:1) is refused before anything is decoded or allocated, with the numbers.
+TEST_F(Hostile, DeclaredSizeBeyondWhatCompressedDataCanHold) {
+    Geometry g;
+    g.dims = glm::ivec3(1000); // 954 MiB of uint8: under every size limit
+    const std::vector<std::byte> zeros(4096);
+    test::writeFile(dir / "bomb.nii.gz", io::gzipBytes(test::niftiFile(g, zeros)));
+    expectScanError(dir / "bomb.nii.gz", "header says 1000x1000x1000 uint8 (954 MiB) but ");
+    expectScanError(dir / "bomb.nii.gz", " of compressed data expand to at most ");
+    expectScanError(dir / "bomb.nii.gz", "(compression ratio limit 1032:1)");
+    test::writeFile(
+        dir / "bomb.nrrd",
+        test::concat(
+            "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 1000 1000 1000\nencoding: gzip\n\n",
+            io::gzipBytes(zeros)));
+    expectScanError(dir / "bomb.nrrd", "of compressed data expand to at most");
+    test::writeFile(dir / "bomb.mha",
+                    test::concat("NDims = 3\nDimSize = 1000 1000 1000\nElementType = MET_UCHAR\n"
+                                 "CompressedData = True\nElementDataFile = LOCAL\n",
+                                 io::gzipBytes(zeros)));
+    expectScanError(dir / "bomb.mha", "of compressed data expand to at most");
+    test::writeFile(dir / "bomb.mgz", io::gzipBytes(test::mghFile(g, 0, std::vector<double>(8))));
+    expectScanError(dir / "bomb.mgz", "of compressed data expand to at most");
+    // A configured ratio is stated as such: 64^3 zeros compress far better than 10:1.
+    io::ReadLimits strict;
+    strict.maxCompressionRatio = 10.0;
+    Geometry small;
+    small.dims = glm::ivec3(64);
+    test::writeFile(dir / "ratio.nii.gz",
+                    io::gzipBytes(test::niftiFile(small, std::vector<std::byte>(64 * 64 * 64))));
+    expectScanError(dir / "ratio.nii.gz", "(compression ratio limit 10:1)", strict);
+    EXPECT_LT(peakRssMiB(), 256.0);
+}
+
+// The bound must never refuse a genuine file: an all-zero mask compresses close to deflate's
+// ceiling and still reads.
+TEST_F(Hostile, GenuineHighlyCompressedDataIsRead) {
+    Geometry g;
+    g.dims = glm::ivec3(128);
+    const std::vector<std::byte> zeros(g.voxelCount());
+    const auto gz = io::gzipBytes(test::niftiFile(g, zeros), 9);
+    ASSERT_GT(static_cast<double>(zeros.size()) / static_cast<double>(gz.size()), 900.0);
+    test::writeFile(dir / "zeros.nii.gz", gz);
+    EXPECT_EQ(io::readScan(dir / "zeros.nii.gz").volume.dims(), g.dims);
+}
+
+// The configurable maximum on declared voxel data, compressed or not, named with the numbers.
+TEST_F(Hostile, DataPastTheConfiguredLimitIsRefused) {
+    io::ReadLimits limits;
+    limits.maxDataBytes = 256;
+    test::writeFile(dir / "small.nii", smallNifti());
+    expectScanError(dir / "small.nii",
+                    "header says 8x8x8 uint8 (512 bytes), more than the limit of 256 bytes of scan "
+                    "data",
+                    limits);
+    test::writeFile(dir / "small.nii.gz", io::gzipBytes(smallNifti()));
+    expectScanError(dir / "small.nii.gz", "more than the limit of 256 bytes", limits);
+    test::writeFile(dir / "small.nrrd",
+                    test::concat("NRRD0004\ntype: uchar\ndimension: 3\nsizes: 8 8 8\nencoding: "
+                                 "raw\n\n",
+                                 std::vector<std::byte>(512)));
+    expectScanError(dir / "small.nrrd", "more than the limit of 256 bytes", limits);
+    EXPECT_NO_THROW((void)io::readScan(dir / "small.nrrd"));
+    // The default: 1200^3 float32 (6.4 GiB) is past 4 GiB, refused from the header alone.
     Geometry g;
     g.dims = glm::ivec3(1200);
     test::NiftiOptions o;
     o.datatype = NIFTI_TYPE_FLOAT32;
-    test::writeFile(dir / "claim.nii.gz",
-                    io::gzipBytes(test::niftiFile(g, std::vector<std::byte>(4096), o)));
-    expectScanError(dir / "claim.nii.gz",
-                    "header says 1200x1200x1200 float32 (6.4 GiB) but the data ends after 4.0 KiB");
-    test::writeFile(
-        dir / "claim.nrrd",
-        test::concat(
-            "NRRD0004\ntype: float\ndimension: 3\nsizes: 1200 1200 1200\nencoding: gzip\n\n",
-            io::gzipBytes(std::vector<std::byte>(4096))));
-    expectScanError(dir / "claim.nrrd", "but the data ends after 4.0 KiB");
-    EXPECT_LT(peakRssMiB(), 512.0);
+    test::writeFile(dir / "big.nii.gz", io::gzipBytes(test::niftiFile(g, noise(4096), o)));
+    expectScanError(dir / "big.nii.gz",
+                    "header says 1200x1200x1200 float32 (6.4 GiB), more than the limit of 4.0 GiB");
+    EXPECT_LT(peakRssMiB(), 256.0);
+}
+
+// ASCII data holds a number per two characters at most: a few bytes cannot claim a gigavoxel.
+TEST_F(Hostile, AsciiDataClaimingMoreNumbersThanItHolds) {
+    test::writeFile(dir / "ascii.nrrd",
+                    std::string("NRRD0004\ntype: float\ndimension: 3\nsizes: 1000 1000 100\n"
+                                "encoding: ascii\n\n1 2 3 4\n"));
+    expectScanError(dir / "ascii.nrrd", "but 8 bytes of ascii data hold at most 5 numbers");
+    EXPECT_LT(peakRssMiB(), 256.0);
+}
+
+// A rescale that is not finite, or that takes the stored range past float32, is refused with
+// the fields named. (nifticlib reads a NaN slope as "no scaling": wrong units without a word.)
+TEST_F(Hostile, NiftiRescaleNotFiniteOrPastFloat) {
+    test::NiftiOptions o;
+    o.slope = std::numeric_limits<double>::quiet_NaN();
+    test::writeFile(dir / "nan_slope.nii", smallNifti(o));
+    expectScanError(dir / "nan_slope.nii", "rescale (scl_slope/scl_inter) refused: slope is nan");
+    o.slope = 2.0;
+    o.inter = std::numeric_limits<double>::infinity();
+    test::writeFile(dir / "inf_inter.nii", smallNifti(o));
+    expectScanError(dir / "inf_inter.nii", "refused: intercept is inf");
+    // The pattern's largest stored value is 77: 77e37 is past float32's 3.4e38.
+    o.inter = 0.0;
+    o.slope = 1e37;
+    test::writeFile(dir / "big_slope.nii", smallNifti(o));
+    expectScanError(dir / "big_slope.nii", "take stored 77 to 7.7e+38, beyond float32's range");
+    o.slope = -1e37;
+    test::writeFile(dir / "neg_slope.nii", smallNifti(o));
+    expectScanError(dir / "neg_slope.nii", "beyond float32's range");
+    // NIfTI-2 keeps a double intercept: 1e300 is finite but no float.
+    o.version = 2;
+    o.slope = 1.0;
+    o.inter = 1e300;
+    test::writeFile(dir / "big_inter.nii", smallNifti(o));
+    expectScanError(dir / "big_inter.nii", "take stored 0 to 1e+300, beyond float32's range");
+    // Within range it reads; slope 0 means no scaling whatever the intercept.
+    o.version = 1;
+    o.slope = 1e36;
+    o.inter = 0.0;
+    test::writeFile(dir / "ok.nii", smallNifti(o));
+    EXPECT_FLOAT_EQ(static_cast<float>(io::readScan(dir / "ok.nii").volume.stats().max), 77e36F);
+    o.slope = 0.0;
+    o.inter = std::numeric_limits<double>::quiet_NaN();
+    test::writeFile(dir / "none.nii", smallNifti(o));
+    EXPECT_EQ(io::readScan(dir / "none.nii").volume.rescale().slope, 1.0);
 }
 
 TEST_F(Hostile, HeaderDataSizeMismatch) {
@@ -222,6 +352,26 @@ TEST_F(Hostile, ImageStackWithMixedSizes) {
             std::string::npos)
             << e.what();
     }
+}
+
+// OpenImageIO decodes a whole page at its declared size: the stack is bounded before that.
+TEST_F(Hostile, ImageStackPastTheConfiguredLimitIsRefused) {
+    std::filesystem::create_directory(dir / "stack");
+    for (const char* name : {"s1.png", "s2.png"}) {
+        const auto file = (dir / "stack" / name).string();
+        auto out = OIIO::ImageOutput::create(file);
+        ASSERT_TRUE(out);
+        ASSERT_TRUE(out->open(file, OIIO::ImageSpec(16, 16, 1, OIIO::TypeDesc::UINT8)));
+        const std::vector<std::uint8_t> pixels(256, 9);
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels.data()));
+        out->close();
+    }
+    io::ReadLimits limits;
+    limits.maxDataBytes = 500;
+    expectScanError(dir / "stack",
+                    "the images make 16x16x2 uint8 (512 bytes), more than the limit of 500 bytes",
+                    limits);
+    EXPECT_EQ(io::readScan(dir / "stack").volume.dims(), glm::ivec3(16, 16, 2));
 }
 
 TEST_F(Hostile, FourDimensionalNiftiIsRefused) {

@@ -87,8 +87,32 @@ TEST(LevelSetParams, RejectsSpheresOutsideTheVolume) {
     EXPECT_NO_THROW(validateSphere({{9, 0, 5}, 2.0F}, d));
     ReferenceSolver s(std::vector<float>(1000, 0.0F), d);
     EXPECT_THROW(s.addSphere({{5, 5, 50}, 2.0F}), std::invalid_argument);
+    EXPECT_THROW(s.removeSphere({{5, 5, 5}, 3e9F}), std::invalid_argument);
     EXPECT_THROW(s.setParams({0.0F, -2.0F, 0.5F}), std::invalid_argument);
     EXPECT_THROW(s.step(1), std::logic_error); // no parameters yet
+}
+
+// The radius is bounded by the volume's diagonal (17.3 voxels here): a larger one changes
+// nothing but overflows the edit's integer bounds.
+TEST(LevelSetParams, RejectsRadiiThatDoNotFitTheVolume) {
+    const glm::ivec3 d{10, 10, 10};
+    const auto message = [&](const Sphere& s) {
+        try {
+            validateSphere(s, d);
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_EQ(message({{5, 5, 5}, 3e9F}),
+              "sphere radius 3e+09 voxels is larger than the volume's diagonal (17.3205 voxels "
+              "for 10 x 10 x 10)");
+    EXPECT_NE(message({{5, 5, 5}, -2.0F}).find("positive"), std::string::npos);
+    EXPECT_NE(message({{5, 5, 5}, NAN}).find("positive"), std::string::npos);
+    EXPECT_NE(message({{NAN, 5, 5}, 2.0F}).find("lies outside the volume"), std::string::npos);
+    EXPECT_NE(message({{5, -INFINITY, 5}, 2.0F}).find("lies outside"), std::string::npos);
+    EXPECT_NE(message({{5, 5, 3e9F}, 2.0F}).find("lies outside"), std::string::npos);
+    EXPECT_EQ(message({{5, 5, 5}, 17.3F}), "accepted");
 }
 
 TEST(ReferenceSolver, RejectsEmptyThresholdRange) {

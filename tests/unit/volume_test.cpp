@@ -1,6 +1,7 @@
 #include "core/volume.hpp"
 
 #include <gtest/gtest.h>
+#include <limits>
 
 namespace steerseg {
 namespace {
@@ -37,6 +38,35 @@ TEST(Volume, NegativeSlopeSwapsRangeEnds) {
     v.setRescale({-2.0, 0.0});
     EXPECT_DOUBLE_EQ(v.stats().min, -20.0);
     EXPECT_DOUBLE_EQ(v.stats().max, 0.0);
+}
+
+// The extremes of a linear map lie at the ends of the stored range: both ends are checked,
+// whichever sign the slope has.
+TEST(Volume, RescaleProblemNamesWhatIsWrong) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(rescaleProblem({1.0, -1024.0}, -2000.0, 3000.0), "");
+    EXPECT_EQ(rescaleProblem({nan, 0.0}, 0.0, 1.0), "slope is nan");
+    EXPECT_EQ(rescaleProblem({1.0, -inf}, 0.0, 1.0), "intercept is -inf");
+    EXPECT_EQ(rescaleProblem({1e36, 0.0}, 0.0, 1000.0),
+              "slope 1e+36 and intercept 0 take stored 1000 to 1e+39, beyond float32's range");
+    EXPECT_NE(rescaleProblem({1e36, 0.0}, -1000.0, 0.0).find("take stored -1000 to -1e+39"),
+              std::string::npos);
+    EXPECT_NE(rescaleProblem({-1e36, 0.0}, 0.0, 1000.0).find("beyond float32's range"),
+              std::string::npos);
+    EXPECT_NE(rescaleProblem({1.0, 1e300}, 0.0, 0.0).find("take stored 0 to 1e+300"),
+              std::string::npos);
+    EXPECT_EQ(rescaleProblem({1e35, 0.0}, 0.0, 1000.0), ""); // 1e38 fits float32
+}
+
+TEST(Volume, StoredRangeIgnoresTheRescale) {
+    Geometry g;
+    g.dims = {3, 1, 1};
+    Volume v(VoxelType::Int16, g);
+    v.voxels<std::int16_t>()[0] = -7;
+    v.voxels<std::int16_t>()[2] = 12;
+    v.setRescale({2.0, 100.0});
+    EXPECT_EQ(v.storedRange(), std::make_pair(-7.0, 12.0));
 }
 
 TEST(Geometry, IndexWorldRoundTripWithObliqueDirection) {
