@@ -2,7 +2,7 @@
 
 // Decodes one DICOM file's pixel data through GDCM (every transfer syntax GDCM supports) and
 // copies its frames into slices of a Volume.
-#include "io/dicom_header.hpp"
+#include "io/dicom/header.hpp"
 
 #include <memory>
 #include <span>

@@ -1,4 +1,4 @@
-#include "io/dicom_geometry.hpp"
+#include "io/dicom/geometry.hpp"
 
 #include "io/load_checks.hpp"
 

@@ -1,4 +1,4 @@
-#include "io/dicom_structure.hpp"
+#include "io/dicom/structure.hpp"
 
 #include "io/byte_source.hpp"
 

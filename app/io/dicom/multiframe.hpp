@@ -2,7 +2,7 @@
 
 // Enhanced multi-frame objects (Enhanced CT/MR/PET, ...) give each frame's position, orientation,
 // pixel spacing and rescale in functional group sequences instead of top-level attributes.
-#include "io/dicom_header.hpp"
+#include "io/dicom/header.hpp"
 
 namespace steerseg::io {
 

@@ -1,8 +1,8 @@
-#include "io/dicom_header.hpp"
+#include "io/dicom/header.hpp"
 
 #include "io/byte_source.hpp"
-#include "io/dicom_multiframe.hpp"
-#include "io/dicom_structure.hpp"
+#include "io/dicom/multiframe.hpp"
+#include "io/dicom/structure.hpp"
 #include "io/load_checks.hpp"
 
 #include <charconv>

@@ -1,6 +1,6 @@
-#include "io/dicom_pixels.hpp"
+#include "io/dicom/pixels.hpp"
 
-#include "io/dicom_codestream.hpp"
+#include "io/dicom/codestream.hpp"
 #include "io/load_checks.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include "io/dicom_series.hpp"
+#include "io/dicom/series.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "io/dicom_multiframe.hpp"
+#include "io/dicom/multiframe.hpp"
 
 #include <gdcmDataSet.h>
 #include <gdcmSequenceOfItems.h>

@@ -1,4 +1,4 @@
-#include "io/dicom_codestream.hpp"
+#include "io/dicom/codestream.hpp"
 
 #include <gdcmImage.h>
 #include <gdcmSequenceOfFragments.h>

@@ -1,7 +1,7 @@
 #pragma once
 
 // Finds the one image series in a folder of DICOM files.
-#include "io/dicom_header.hpp"
+#include "io/dicom/header.hpp"
 
 #include <vector>
 

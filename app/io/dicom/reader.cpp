@@ -1,8 +1,8 @@
-// DICOM series / file -> Volume: header scan and series choice (dicom_series), slice geometry
-// (dicom_geometry), pixel decoding (dicom_pixels). docs/dicom.md describes the rules.
-#include "io/dicom_geometry.hpp"
-#include "io/dicom_pixels.hpp"
-#include "io/dicom_series.hpp"
+// DICOM series / file -> Volume: header scan and series choice (series), slice geometry
+// (geometry), pixel decoding (pixels). docs/dicom.md describes the rules.
+#include "io/dicom/geometry.hpp"
+#include "io/dicom/pixels.hpp"
+#include "io/dicom/series.hpp"
 #include "io/load_checks.hpp"
 #include "io/readers.hpp"
 
