@@ -84,10 +84,19 @@ for target in build/fuzz/tests/fuzz/fuzz_*; do
   fi
   work=$(mktemp -d)
   cp -r "$corpus"/. "$work"/
+  # A crashing input is kept under build/fuzz/artifacts/, not dropped in the checkout.
+  artifacts="build/fuzz/artifacts/$name/"
+  mkdir -p "$artifacts"
   echo "-- $name for ${fuzz_seconds}s on $corpus (${#seeds[@]} seeds)"
+  rc=0
   "$target" -max_total_time="$fuzz_seconds" -rss_limit_mb=2048 -max_len=65536 -print_final_stats=0 \
-    "$work" 2>&1 | tail -n 3
-  rm -rf "$work"
+    -artifact_prefix="$artifacts" "$work" >"$work.log" 2>&1 || rc=$?
+  tail -n "$( ((rc == 0)) && echo 3 || echo 40)" "$work.log"
+  rm -rf "$work" "$work.log"
+  if ((rc != 0)); then
+    echo "test.sh: FAILED: $name found a crash (exit $rc; input in $artifacts) (${summary[*]})" >&2
+    exit 1
+  fi
   ran=$((ran + 1))
 done
 if ((ran == 0)); then
