@@ -42,7 +42,7 @@ int runSegment(std::span<const std::string> words) {
         std::ofstream out(*report);
         out << text << "\n";
         if (!out) {
-            throw std::runtime_error(*report + ": cannot write the report");
+            throw io::WriteError(*report, "cannot write the report");
         }
     }
     std::printf("%s\n", text.c_str());

@@ -72,7 +72,7 @@ const char* exitStatusHelp() {
     return "  0  done\n"
            "  1  the scan (or --mask) cannot be read, or another failure\n"
            "  2  a bad or missing option, or a --seed/--erase that does not fit the scan\n"
-           "  3  no GPU context, or the GPU reported an error\n"
+           "  3  no GPU context, the GPU reported an error, or the scan does not fit the GPU\n"
            "  4  an output file cannot be written\n"
            "Every failure prints one line on stderr naming the file or option and the problem.\n";
 }

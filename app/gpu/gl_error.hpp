@@ -12,6 +12,13 @@ class GlError : public std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// The scan or the level set does not fit what this GPU offers (3D texture size, shader storage
+// block size). A GlError, so that callers treat it as a GPU failure, not a bad file.
+class GpuCapacityError : public GlError {
+  public:
+    using GlError::GlError;
+};
+
 std::string glErrorName(GLenum code);
 
 // Throws GlError naming `what` if the GL error flag is set (drains all pending errors).

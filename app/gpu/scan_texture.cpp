@@ -26,7 +26,7 @@ void checkSize(const glm::ivec3& dims) {
     }
     const int limit = queryGpuInfo().max3dTextureSize;
     if (std::max({dims.x, dims.y, dims.z}) > limit) {
-        throw std::runtime_error("the scan (" + std::to_string(dims.x) + "x" +
+        throw GpuCapacityError("the scan (" + std::to_string(dims.x) + "x" +
                                  std::to_string(dims.y) + "x" + std::to_string(dims.z) +
                                  ") is larger than the GPU's 3D texture limit (" +
                                  std::to_string(limit) + " per side)");

@@ -1,5 +1,7 @@
 #include "io/image_file.hpp"
 
+#include "io/scan_reader.hpp"
+
 #include <OpenImageIO/imageio.h>
 #include <stdexcept>
 
@@ -8,13 +10,13 @@ namespace steerseg::io {
 void writeImage(const std::filesystem::path& path, const RgbaImage& image) {
     auto out = OIIO::ImageOutput::create(path.string());
     if (!out) {
-        throw std::runtime_error(path.string() + ": " + OIIO::geterror());
+        throw WriteError(path, OIIO::geterror());
     }
     const OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
     if (!out->open(path.string(), spec) ||
         !out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data())) {
         const std::string message = out->geterror();
-        throw std::runtime_error(path.string() + ": " + message);
+        throw WriteError(path, message);
     }
     out->close();
 }

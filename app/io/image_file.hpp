@@ -8,8 +8,7 @@
 
 namespace steerseg::io {
 
-// PNG (or any format OpenImageIO writes, by extension). Throws std::runtime_error
-// "path: problem".
+// PNG (or any format OpenImageIO writes, by extension). Throws io::WriteError "path: problem".
 void writeImage(const std::filesystem::path& path, const RgbaImage& image);
 
 // Any 8-bit picture OpenImageIO reads, as RGBA (grey and grey+alpha expanded). Throws

@@ -72,7 +72,7 @@ GpuBrickPool::GpuBrickPool(const glm::ivec3& dims, int brickSize, std::size_t ma
       brickCount_(static_cast<std::uint32_t>(grid_.x * grid_.y * grid_.z)) {
     if (static_cast<std::size_t>(brickCount_) * 4 > maxBlockBytes_ ||
         maxBlockBytes_ < brickBytes()) {
-        throw std::runtime_error("volume too large for the GPU's shader storage block limit (" +
+        throw gpu::GpuCapacityError("volume too large for the GPU's shader storage block limit (" +
                                  std::to_string(maxBlockBytes_ >> 20) + " MiB)");
     }
     const std::vector<std::uint32_t> outside(brickCount_, kBrickOutside);
@@ -160,7 +160,7 @@ void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
     }
     const auto used = static_cast<std::uint32_t>(usedBricks.size());
     if (used > maxCapacity()) {
-        throw std::runtime_error("the level set needs " + std::to_string(used) +
+        throw gpu::GpuCapacityError("the level set needs " + std::to_string(used) +
                                  " bricks, more than the GPU's storage block holds (" +
                                  std::to_string(maxCapacity()) + ")");
     }

@@ -244,7 +244,7 @@ void LevelSetSolver::editSphere(const Sphere& sphere, bool add) {
              groupsOf(static_cast<std::uint32_t>(size.z), 4));
     allocateAndList();
     if (pool_->readControl().stalled != 0) {
-        throw std::runtime_error("sphere edit needs more bricks than the GPU's storage holds");
+        throw gpu::GpuCapacityError("sphere edit needs more bricks than the GPU's storage holds");
     }
     dispatch(apply, static_cast<GLuint>(size.x), static_cast<GLuint>(size.y),
              static_cast<GLuint>(size.z));
@@ -324,7 +324,7 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
         if (ctrl.stalled != 0) {
             ++stats_.stalls;
             if (pool_->capacity() >= pool_->maxCapacity()) {
-                throw std::runtime_error(
+                throw gpu::GpuCapacityError(
                     "the level set outgrew the GPU's shader storage block limit (" +
                     std::to_string(pool_->maxCapacity()) + " bricks)");
             }

@@ -50,11 +50,11 @@ TEST(RenderCli, RejectsBadOptionsWithUsageStatus) {
     EXPECT_FALSE(std::filesystem::exists("/tmp/steerseg-never.png"));
 }
 
-TEST(RenderCli, UnreadableScanOrUnwritableOutputFailsWithStatusOne) {
+TEST(RenderCli, UnreadableScanIsOneUnwritableOutputIsFour) {
     EXPECT_EQ(runSteerseg("render --input /nonexistent/scan.nii --output /tmp/x.png"), 1);
     EXPECT_EQ(runSteerseg("render --input builtin:sample --size 16x16 --output "
                           "/nonexistent-dir/out.png"),
-              1);
+              4);
 }
 
 // Yellow contour pixels in an axial slice image.

@@ -94,6 +94,17 @@ TEST(CliExit, UnwritableOutputIsFour) {
         test::runSteerseg(kSegment + "--seed 80,56,52,4 --output " + (dir / "m.png").string());
     EXPECT_EQ(png.exitCode, 4) << png.err;
     EXPECT_NE(png.err.find("unsupported mask format"), std::string::npos) << png.err;
+    const test::CliRun report =
+        test::runSteerseg(kSegment + "--seed 80,56,52,4 --output " + (dir / "ok.nii.gz").string() +
+                          " --report " + (dir / "no/r.json").string());
+    EXPECT_EQ(report.exitCode, 4) << report.err;
+    EXPECT_NE(report.err.find("no/r.json: cannot write the report"), std::string::npos)
+        << report.err;
+    const test::CliRun picture = test::runSteerseg("render --input builtin:sample --size 8x8 "
+                                                   "--output " +
+                                                   (dir / "no/view.png").string());
+    EXPECT_EQ(picture.exitCode, 4) << picture.err;
+    EXPECT_NE(picture.err.find("no/view.png"), std::string::npos) << picture.err;
 }
 
 } // namespace
