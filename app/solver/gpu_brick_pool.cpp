@@ -52,6 +52,10 @@ template <typename T> std::vector<T> readBuffer(const gpu::Buffer& b, std::size_
         return out;
     }
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    // On the H100's driver the mapped read after the barrier alone gave control blocks that
+    // differed between identical runs (docs/benchmarks-gpu.md); after a finish they repeat. The
+    // map waits for the GPU anyway, so the finish costs nothing measurable.
+    glFinish();
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, b.id());
     const void* mapped = glMapBufferRange(
         GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(count * sizeof(T)), GL_MAP_READ_BIT);
