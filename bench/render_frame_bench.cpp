@@ -35,13 +35,14 @@ struct Case {
 };
 
 // One frame: optionally a solver iteration, then the view of the current level set.
-double frameMs(render::Renderer& renderer, const render::ViewParams& p, LevelSetSolver* solver,
-               bool stepping) {
+double frameMs(render::Renderer& renderer, const render::ViewParams& p,
+               solver::LevelSetSolver* solver, bool stepping) {
     const auto start = std::chrono::steady_clock::now();
     if (solver != nullptr && stepping) {
         solver->step(1);
     }
-    const BrickPoolView view = solver != nullptr ? solver->poolView() : BrickPoolView{};
+    const solver::BrickPoolView view =
+        solver != nullptr ? solver->poolView() : solver::BrickPoolView{};
     renderer.render(p, solver != nullptr ? &view : nullptr);
     glFinish();
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -50,8 +51,8 @@ double frameMs(render::Renderer& renderer, const render::ViewParams& p, LevelSet
 
 // The README's pictures: 3D with the surface, the clip plane with its yellow line, an axial
 // slice with the contour, the speed function on a sagittal slice.
-void writeDocImages(render::Renderer& renderer, const BrickPoolView& view, const glm::dvec3& centre,
-                    const std::filesystem::path& dir) {
+void writeDocImages(render::Renderer& renderer, const solver::BrickPoolView& view,
+                    const glm::dvec3& centre, const std::filesystem::path& dir) {
     std::filesystem::create_directories(dir);
     const glm::ivec2 size{256, 256};
     render::ViewParams p = renderer.defaultParams(render::ViewKind::Volume3d, size);
@@ -122,7 +123,7 @@ int main(int argc, char** argv) {
         std::printf("GL_RENDERER: %s\nscan: %s %dx%dx%d\n",
                     reinterpret_cast<const char*>(glGetString(GL_RENDERER)), scanPath.c_str(),
                     g.dims.x, g.dims.y, g.dims.z);
-        LevelSetSolver solver(volume);
+        solver::LevelSetSolver solver(volume);
         render::Renderer renderer(volume, solver.scan());
         glm::dvec3 centre = 0.5 * glm::dvec3(g.dims - 1);
         if (scanPath == builtin) {
@@ -130,7 +131,7 @@ int main(int argc, char** argv) {
                      (glm::dvec3(g.dims - 1) / glm::dvec3(127, 127, 95));
             solver.addSphere({glm::vec3(centre), 5.0F * static_cast<float>(scale)});
             solver.setParams({static_cast<float>(kPhantomLesion.intensity), 100.0F, 0.8F});
-            const StepResult r = solver.runUntilConverged(2000);
+            const solver::StepResult r = solver.runUntilConverged(2000);
             std::size_t inside = 0;
             for (const std::uint8_t m : solver.readMask()) {
                 inside += m;
@@ -146,7 +147,7 @@ int main(int argc, char** argv) {
             solver.setParams(
                 {static_cast<float>(st.mean), static_cast<float>(st.max - st.min), 0.5F});
         }
-        const BrickPoolView view = solver.poolView();
+        const solver::BrickPoolView view = solver.poolView();
 
         if (!docsDir.empty()) {
             writeDocImages(renderer, view, centre, docsDir);
@@ -170,7 +171,7 @@ int main(int argc, char** argv) {
                 if (c.clip) {
                     p.clip = {true, {0.0, -1.0, 0.0}, -centre.y};
                 }
-                LevelSetSolver* s = c.surface ? &solver : nullptr;
+                solver::LevelSetSolver* s = c.surface ? &solver : nullptr;
                 frameMs(renderer, p, s, c.stepping); // warm-up: program build, first dispatch
                 std::vector<double> times;
                 for (int f = 0; f < frames; ++f) {

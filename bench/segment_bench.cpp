@@ -30,19 +30,19 @@ using namespace steerseg;
 
 struct Options {
     std::string scan;
-    std::vector<Sphere> seeds;
-    LevelSetParams params;
+    std::vector<solver::Sphere> seeds;
+    solver::LevelSetParams params;
     float time = -1.0F;
     int maxIterations = 100000;
     int repeat = 3;
     std::string compare;
     int trace = 0;
-    SolverOptions solver;
+    solver::SolverOptions solver;
     std::string dumpPhi;
 };
 
-Sphere parseSeed(const std::string& text) {
-    Sphere s;
+solver::Sphere parseSeed(const std::string& text) {
+    solver::Sphere s;
     if (std::sscanf(text.c_str(), "%f,%f,%f,%f", &s.centre.x, &s.centre.y, &s.centre.z,
                     &s.radius) != 4) {
         throw std::invalid_argument("--seed expects i,j,k,r (got '" + text + "')");
@@ -106,24 +106,24 @@ int main(int argc, char** argv) {
                     o.scan.c_str(), d.x, d.y, d.z);
         const gpu::ScanTexture texture(volume);
         if (o.trace > 0) {
-            LevelSetSolver solver(texture, o.solver);
-            for (const Sphere& s : o.seeds) {
+            solver::LevelSetSolver solver(texture, o.solver);
+            for (const solver::Sphere& s : o.seeds) {
                 solver.addSphere(s);
             }
             solver.setParams(o.params);
             for (int n = 0; n < o.trace; ++n) {
-                const StepResult r = solver.step(1);
+                const solver::StepResult r = solver.step(1);
                 double sum = 0.0;
                 std::size_t inside = 0;
                 for (const float v : solver.readPhi()) {
                     sum += static_cast<double>(v);
                     inside += v < 0.0F ? 1 : 0;
                 }
-                const SolverStats st = solver.stats();
+                const solver::SolverStats st = solver.stats();
                 std::printf("trace %d: t %.9g phi-sum %.9g inside %zu active %u capacity %u "
                             "growths %d stalls %d\n",
-                            n + 1, static_cast<double>(r.evolvedTime), sum, inside,
-                            st.activeBricks, st.capacity, st.poolGrowths, st.stalls);
+                            n + 1, static_cast<double>(r.evolvedTime), sum, inside, st.activeBricks,
+                            st.capacity, st.poolGrowths, st.stalls);
             }
             if (!o.dumpPhi.empty()) {
                 const std::vector<float> phi = solver.readPhi();
@@ -135,14 +135,14 @@ int main(int argc, char** argv) {
         }
         std::vector<double> seconds;
         for (int run = 0; run < o.repeat; ++run) {
-            LevelSetSolver solver(texture, o.solver);
-            for (const Sphere& s : o.seeds) {
+            solver::LevelSetSolver solver(texture, o.solver);
+            for (const solver::Sphere& s : o.seeds) {
                 solver.addSphere(s);
             }
             solver.setParams(o.params);
             glFinish();
             const auto start = std::chrono::steady_clock::now();
-            const StepResult r = solver.evolveUntil(o.time, o.maxIterations);
+            const solver::StepResult r = solver.evolveUntil(o.time, o.maxIterations);
             glFinish();
             seconds.push_back(
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

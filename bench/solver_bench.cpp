@@ -19,21 +19,21 @@ namespace {
 
 struct Measurement {
     double iterationsPerSecond = 0.0;
-    SolverStats stats;
+    solver::SolverStats stats;
 };
 
 // A static-ish workload: a sphere of radius r under a zero data speed (T = intensity) and a
 // little curvature, so the active set stays the same while every pass does its full work.
-Measurement measure(int size, float radius, const SolverOptions& options, int iterations) {
+Measurement measure(int size, float radius, const solver::SolverOptions& options, int iterations) {
     const glm::ivec3 d(size);
     const std::vector<float> volume(static_cast<std::size_t>(size) * size * size, 100.0F);
-    LevelSetSolver solver(volume, d, options);
+    solver::LevelSetSolver solver(volume, d, options);
     solver.addSphere({glm::vec3(static_cast<float>(size) / 2.0F), radius});
     solver.setParams({100.0F, 0.0F, 0.9F});
     solver.step(options.checkInterval); // warm-up: programs, pool growth
     glFinish();
     const auto start = std::chrono::steady_clock::now();
-    const StepResult r = solver.step(iterations);
+    const solver::StepResult r = solver.step(iterations);
     glFinish();
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
     std::printf("| brick | active bricks | active voxels | iterations/s | voxel-updates/s (M) |\n");
     std::printf("|---|---|---|---|---|\n");
     for (const int b : {4, 8, 16}) {
-        SolverOptions o;
+        solver::SolverOptions o;
         o.brickSize = b;
         const Measurement m = measure(size, static_cast<float>(size) / 4.0F, o, iterations);
         const double voxels = static_cast<double>(m.stats.activeBricks) * b * b * b;
@@ -75,19 +75,19 @@ int main(int argc, char** argv) {
                     m.iterationsPerSecond, voxels * m.iterationsPerSecond / 1e6);
     }
 
-    std::printf("\n## Sparse vs dense (brick %d)\n\n", defaultBrickSize());
+    std::printf("\n## Sparse vs dense (brick %d)\n\n", solver::defaultBrickSize());
     std::printf("| sphere r | active bricks | active %% | sparse it/s | dense it/s | speed-up | "
                 "level-set MiB | active bricks' MiB + page table | ratio | dense phi MiB |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
-    SolverOptions denseOptions;
+    solver::SolverOptions denseOptions;
     denseOptions.dense = true;
     const Measurement dense =
         measure(size, static_cast<float>(size) / 8.0F, denseOptions, iterations);
     for (const float fraction : {0.06F, 0.12F, 0.25F, 0.4F}) {
         const float r = fraction * static_cast<float>(size);
-        const Measurement m = measure(size, r, SolverOptions{}, iterations);
-        const std::size_t brickBytes = static_cast<std::size_t>(defaultBrickSize()) *
-                                       defaultBrickSize() * defaultBrickSize() * 4;
+        const Measurement m = measure(size, r, solver::SolverOptions{}, iterations);
+        const std::size_t brickBytes = static_cast<std::size_t>(solver::defaultBrickSize()) *
+                                       solver::defaultBrickSize() * solver::defaultBrickSize() * 4;
         const std::size_t activeBytes =
             m.stats.activeBricks * brickBytes + static_cast<std::size_t>(m.stats.totalBricks) * 4;
         std::printf("| %.0f | %u | %.1f | %.1f | %.2f | %.1fx | %.2f | %.2f | %.2f | %.1f |\n",

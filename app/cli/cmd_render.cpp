@@ -200,7 +200,7 @@ int runRender(std::span<const std::string> words) {
     auto context = platform::createOffscreenContext();
     // The level set comes from the solver's brick pool; the renderer never copies phi.
     session::Session session(std::move(scan.volume), std::move(scan.format),
-                             request ? request->options : SolverOptions{});
+                             request ? request->options : solver::SolverOptions{});
     if (const auto mask = args.value("mask")) {
         session.startFromMask(*mask);
     } else if (request) {

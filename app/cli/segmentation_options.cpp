@@ -8,7 +8,7 @@ namespace steerseg::cli {
 
 namespace {
 
-Sphere parseSphere(const std::string& text, const std::string& what) {
+solver::Sphere parseSphere(const std::string& text, const std::string& what) {
     const std::vector<double> v = parseNumberList(text, 4, what);
     // Spheres are float; a double past float's range would not convert (undefined behaviour).
     // What fits the scan is checked once it is read (checkSpheresInside).
@@ -52,10 +52,11 @@ session::RunMode parseRunMode(const Args& args) {
     return mode;
 }
 
-void checkInside(const std::vector<Sphere>& spheres, const glm::ivec3& dims, const char* what) {
-    for (const Sphere& s : spheres) {
+void checkInside(const std::vector<solver::Sphere>& spheres, const glm::ivec3& dims,
+                 const char* what) {
+    for (const solver::Sphere& s : spheres) {
         try {
-            validateSphere(s, dims);
+            solver::validateSphere(s, dims);
         } catch (const std::invalid_argument& e) {
             throw UsageError(std::string(what) + ": " + e.what());
         }
@@ -84,7 +85,7 @@ SegmentationRequest parseSegmentation(const Args& args) {
     r.params.eps = static_cast<float>(parseNumber(args.required("eps"), "--eps"));
     r.params.alpha = static_cast<float>(parseNumber(args.required("alpha"), "--alpha"));
     try {
-        validateParams(r.params);
+        solver::validateParams(r.params);
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
@@ -113,10 +114,10 @@ void checkSpheresInside(const SegmentationRequest& request, const glm::ivec3& di
 }
 
 void applySegmentation(session::Session& session, const SegmentationRequest& request) {
-    for (const Sphere& s : request.seeds) {
+    for (const solver::Sphere& s : request.seeds) {
         session.addSeed(s);
     }
-    for (const Sphere& s : request.erases) {
+    for (const solver::Sphere& s : request.erases) {
         session.erase(s);
     }
     session.setParams(request.params);

@@ -12,11 +12,11 @@
 namespace steerseg::cli {
 
 struct SegmentationRequest {
-    LevelSetParams params;
-    std::vector<Sphere> seeds;
-    std::vector<Sphere> erases;
+    solver::LevelSetParams params;
+    std::vector<solver::Sphere> seeds;
+    std::vector<solver::Sphere> erases;
     session::RunMode mode; // exactly one of --iterations, --time, --converge
-    SolverOptions options;
+    solver::SolverOptions options;
 };
 
 // Option names to declare to Args.

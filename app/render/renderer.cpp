@@ -37,7 +37,8 @@ Renderer::Renderer(const Volume& scan)
       ownScan_(std::make_unique<gpu::ScanTexture>(scan)), scan_(ownScan_.get()),
       skip_(scan, *scan_), empty_(makeEmptyBuffer()) {}
 
-std::optional<SliceFrame> Renderer::render(const ViewParams& params, const BrickPoolView* pool) {
+std::optional<SliceFrame> Renderer::render(const ViewParams& params,
+                                           const solver::BrickPoolView* pool) {
     gpu::GlStateGuard guard;
     target_.ensureSize(params.size);
     const RenderInputs in{*scan_, skip_, geometry_, pool, empty_.id(), target_};

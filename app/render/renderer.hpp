@@ -29,7 +29,7 @@ class Renderer {
 
     // Draws one view into target(); `pool` is the level set (the solver's poolView(), valid
     // for this call) or null for the scan alone. Returns the slice frame for slice views.
-    std::optional<SliceFrame> render(const ViewParams& params, const BrickPoolView* pool);
+    std::optional<SliceFrame> render(const ViewParams& params, const solver::BrickPoolView* pool);
 
     [[nodiscard]] const RenderTarget& target() const { return target_; }
     [[nodiscard]] RgbaImage readback() const { return target_.readback(); }

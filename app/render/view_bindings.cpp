@@ -7,7 +7,7 @@
 
 namespace steerseg::render {
 
-GLuint PoolProgram::get(const BrickPoolView* pool) {
+GLuint PoolProgram::get(const solver::BrickPoolView* pool) {
     const int brick = pool != nullptr ? pool->brickSize : 8;
     const float far = pool != nullptr ? pool->phiFar : 4.0F;
     if (!program_ || brick != brickSize_ || far != phiFar_) {

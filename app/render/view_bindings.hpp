@@ -19,7 +19,7 @@ struct RenderInputs {
     const gpu::ScanTexture& scan;
     const SkipGrid& skip;
     const Geometry& geometry;
-    const BrickPoolView* pool;
+    const solver::BrickPoolView* pool;
     GLuint emptyBuffer; // bound in place of the pool when there is none
     const RenderTarget& target;
 };
@@ -28,7 +28,7 @@ struct RenderInputs {
 class PoolProgram {
   public:
     explicit PoolProgram(std::string shader) : shader_(std::move(shader)) {}
-    GLuint get(const BrickPoolView* pool);
+    GLuint get(const solver::BrickPoolView* pool);
 
   private:
     std::string shader_;

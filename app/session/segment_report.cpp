@@ -7,14 +7,14 @@ namespace steerseg::session {
 std::string segmentReport(const Session& session, const RunOutcome& run,
                           std::span<const std::uint8_t> mask, const ReportContext& context) {
     const Geometry& geometry = session.scan().geometry();
-    const LevelSetParams& params = context.params;
-    const SolverOptions& options = session.options();
+    const solver::LevelSetParams& params = context.params;
+    const solver::SolverOptions& options = session.options();
     const double seconds = run.solveSeconds;
     std::size_t inside = 0;
     for (const std::uint8_t m : mask) {
         inside += m;
     }
-    const SolverStats stats = session.stats();
+    const solver::SolverStats stats = session.stats();
     nlohmann::ordered_json j;
     j["input"] = context.input;
     j["output"] = context.output;
@@ -22,13 +22,13 @@ std::string segmentReport(const Session& session, const RunOutcome& run,
     j["eps"] = params.eps;
     j["alpha"] = params.alpha;
     j["mode"] = options.dense ? "dense" : "sparse";
-    j["brick_size"] = options.brickSize == 0 ? defaultBrickSize() : options.brickSize;
+    j["brick_size"] = options.brickSize == 0 ? solver::defaultBrickSize() : options.brickSize;
     j["iterations"] = stats.iterations;
     j["evolved_time"] = stats.evolvedTime;
     j["solve_seconds"] = seconds;
     j["iterations_per_second"] = seconds > 0.0 ? stats.iterations / seconds : 0.0;
     j["converged"] = session.converged();
-    j["stop_reason"] = stopReasonName(run.result.stopReason);
+    j["stop_reason"] = solver::stopReasonName(run.result.stopReason);
     j["inside_voxels"] = inside;
     const double voxelMl = geometry.spacing.x * geometry.spacing.y * geometry.spacing.z / 1000.0;
     j["volume_ml"] = static_cast<double>(inside) * voxelMl;

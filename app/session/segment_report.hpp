@@ -15,7 +15,7 @@ struct ReportContext {
     std::string input;
     std::string output;
     std::string renderer; // GL_RENDERER
-    LevelSetParams params;
+    solver::LevelSetParams params;
 };
 // `mask`: session.mask() as exported (read back once by the caller).
 std::string segmentReport(const Session& session, const RunOutcome& run,

@@ -23,19 +23,19 @@ std::string dimsText(const glm::ivec3& d) {
 // Everything that lives in the GL context, in the order it must be built and torn down: the
 // scan texture outlives the solver and the renderer that borrow it.
 struct Session::Gpu {
-    Gpu(const Volume& scan, const SolverOptions& options)
+    Gpu(const Volume& scan, const solver::SolverOptions& options)
         : texture(scan), solver(texture, options), renderer(scan, texture) {}
     gpu::ScanTexture texture;
-    LevelSetSolver solver;
+    solver::LevelSetSolver solver;
     render::Renderer renderer;
 };
 
-Session Session::open(const std::filesystem::path& path, const SolverOptions& options) {
+Session Session::open(const std::filesystem::path& path, const solver::SolverOptions& options) {
     io::LoadedScan loaded = io::readScan(path);
     return Session(std::move(loaded.volume), std::move(loaded.format), options);
 }
 
-Session::Session(Volume scan, std::string format, const SolverOptions& options)
+Session::Session(Volume scan, std::string format, const solver::SolverOptions& options)
     : scan_(std::move(scan)), format_(std::move(format)), options_(options),
       gpu_(std::make_unique<Gpu>(scan_, options_)) {}
 
@@ -51,12 +51,12 @@ const std::string& Session::format() const {
     return format_;
 }
 
-void Session::addSeed(const Sphere& sphere) {
+void Session::addSeed(const solver::Sphere& sphere) {
     gpu_->solver.addSphere(sphere);
     hasLevelSet_ = true;
 }
 
-void Session::erase(const Sphere& sphere) {
+void Session::erase(const solver::Sphere& sphere) {
     gpu_->solver.removeSphere(sphere);
 }
 
@@ -78,11 +78,11 @@ bool Session::hasLevelSet() const {
     return hasLevelSet_;
 }
 
-void Session::setParams(const LevelSetParams& params) {
+void Session::setParams(const solver::LevelSetParams& params) {
     gpu_->solver.setParams(params);
 }
 
-StepResult Session::step(int iterations) {
+solver::StepResult Session::step(int iterations) {
     return gpu_->solver.step(iterations);
 }
 
@@ -110,11 +110,11 @@ bool Session::converged() const {
     return gpu_->solver.converged();
 }
 
-SolverStats Session::stats() const {
+solver::SolverStats Session::stats() const {
     return gpu_->solver.stats();
 }
 
-const SolverOptions& Session::options() const {
+const solver::SolverOptions& Session::options() const {
     return options_;
 }
 
@@ -134,7 +134,7 @@ std::optional<render::SliceFrame> Session::render(const render::ViewParams& para
     if (!hasLevelSet_) {
         return gpu_->renderer.render(params, nullptr);
     }
-    const BrickPoolView pool = gpu_->solver.poolView();
+    const solver::BrickPoolView pool = gpu_->solver.poolView();
     return gpu_->renderer.render(params, &pool);
 }
 

@@ -30,15 +30,16 @@ struct RunMode {
 };
 
 struct RunOutcome {
-    StepResult result;
+    solver::StepResult result;
     double solveSeconds = 0.0; // solver only, GPU work finished
 };
 
 class Session {
   public:
     // Reads a scan (a file, a DICOM folder or "builtin:sample"; io::readScan's errors).
-    static Session open(const std::filesystem::path& path, const SolverOptions& options = {});
-    Session(Volume scan, std::string format, const SolverOptions& options = {});
+    static Session open(const std::filesystem::path& path,
+                        const solver::SolverOptions& options = {});
+    Session(Volume scan, std::string format, const solver::SolverOptions& options = {});
     ~Session();
     Session(Session&&) noexcept;
     Session& operator=(Session&&) noexcept;
@@ -49,20 +50,20 @@ class Session {
     // Seeds grow the level set, erasers cut it; voxel-index centre, radius in voxels. A sphere
     // whose centre is outside the scan or whose radius is not a positive finite number is
     // refused (std::invalid_argument naming the problem).
-    void addSeed(const Sphere& sphere);
-    void erase(const Sphere& sphere);
+    void addSeed(const solver::Sphere& sphere);
+    void erase(const solver::Sphere& sphere);
     // A mask on the scan's grid (inside where > 0.5) replaces the level set. Throws
     // std::runtime_error naming the file when it cannot be read or its grid differs.
     void startFromMask(const std::filesystem::path& mask);
     [[nodiscard]] bool hasLevelSet() const;
 
     // Validated (std::invalid_argument); may change between any two steps.
-    void setParams(const LevelSetParams& params);
-    StepResult step(int iterations);
+    void setParams(const solver::LevelSetParams& params);
+    solver::StepResult step(int iterations);
     RunOutcome run(const RunMode& mode);
     [[nodiscard]] bool converged() const;
-    [[nodiscard]] SolverStats stats() const;
-    [[nodiscard]] const SolverOptions& options() const;
+    [[nodiscard]] solver::SolverStats stats() const;
+    [[nodiscard]] const solver::SolverOptions& options() const;
 
     // 1 inside, i fastest; reads the level set back from the GPU.
     [[nodiscard]] std::vector<std::uint8_t> mask() const;
@@ -84,7 +85,7 @@ class Session {
     struct Gpu;
     Volume scan_;
     std::string format_;
-    SolverOptions options_;
+    solver::SolverOptions options_;
     std::unique_ptr<Gpu> gpu_;
     bool hasLevelSet_ = false;
 };

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 
-namespace steerseg {
+namespace steerseg::solver {
 
 // Host mirror of shaders/common/brick_pool.glsl: what a reader of the level set (the renderer,
 // tests) needs to bind to read phi straight from the solver's pool. Valid until the solver's
@@ -22,4 +22,4 @@ struct BrickPoolView {
 inline constexpr std::uint32_t kBrickInside = 0xFFFFFFFEu;
 inline constexpr std::uint32_t kBrickOutside = 0xFFFFFFFFu;
 
-} // namespace steerseg
+} // namespace steerseg::solver

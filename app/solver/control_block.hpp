@@ -2,7 +2,7 @@
 
 #include <cstdint>
 
-namespace steerseg::solver_detail {
+namespace steerseg::solver::detail {
 
 // Host mirror of solver_common.glsl's Control block (std430, 4-byte members).
 struct ControlBlock {
@@ -24,4 +24,4 @@ struct ControlBlock {
 };
 static_assert(sizeof(ControlBlock) == 21 * 4);
 
-} // namespace steerseg::solver_detail
+} // namespace steerseg::solver::detail

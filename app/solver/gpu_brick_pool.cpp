@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace steerseg::solver_detail {
+namespace steerseg::solver::detail {
 
 namespace {
 
@@ -77,7 +77,7 @@ GpuBrickPool::GpuBrickPool(const glm::ivec3& dims, int brickSize, std::size_t ma
     if (static_cast<std::size_t>(brickCount_) * 4 > maxBlockBytes_ ||
         maxBlockBytes_ < brickBytes()) {
         throw gpu::GpuCapacityError("volume too large for the GPU's shader storage block limit (" +
-                                 std::to_string(maxBlockBytes_ >> 20) + " MiB)");
+                                    std::to_string(maxBlockBytes_ >> 20) + " MiB)");
     }
     const std::vector<std::uint32_t> outside(brickCount_, kBrickOutside);
     pageTable_ = makeBuffer(brickCount_ * 4, outside.data());
@@ -165,8 +165,8 @@ void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
     const auto used = static_cast<std::uint32_t>(usedBricks.size());
     if (used > maxCapacity()) {
         throw gpu::GpuCapacityError("the level set needs " + std::to_string(used) +
-                                 " bricks, more than the GPU's storage block holds (" +
-                                 std::to_string(maxCapacity()) + ")");
+                                    " bricks, more than the GPU's storage block holds (" +
+                                    std::to_string(maxCapacity()) + ")");
     }
     const std::uint32_t capacity =
         dense ? brickCount_
@@ -347,4 +347,4 @@ BrickPoolView GpuBrickPool::view() const {
     return v;
 }
 
-} // namespace steerseg::solver_detail
+} // namespace steerseg::solver::detail

@@ -10,7 +10,7 @@
 #include <span>
 #include <vector>
 
-namespace steerseg::solver_detail {
+namespace steerseg::solver::detail {
 
 inline constexpr std::uint32_t kNoBrick = 0xFFFFFFFFu;
 
@@ -89,4 +89,4 @@ class GpuBrickPool {
     gpu::Buffer slotState_;
 };
 
-} // namespace steerseg::solver_detail
+} // namespace steerseg::solver::detail

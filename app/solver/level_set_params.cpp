@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace steerseg {
+namespace steerseg::solver {
 
 void validateParams(const LevelSetParams& p) {
     if (!std::isfinite(p.T) || !std::isfinite(p.eps) || !std::isfinite(p.alpha)) {
@@ -61,4 +61,4 @@ std::string describe(const LevelSetParams& p) {
     return s.str();
 }
 
-} // namespace steerseg
+} // namespace steerseg::solver

@@ -3,7 +3,7 @@
 #include <glm/glm.hpp>
 #include <string>
 
-namespace steerseg {
+namespace steerseg::solver {
 
 // The segmentation speed's parameters (Lefohn et al. 2003):
 //   F = alpha * (eps - |I - T|) - (1 - alpha) * H,   H = div(grad phi / |grad phi|)
@@ -67,4 +67,4 @@ inline float sphereDistance(const Sphere& s, const glm::vec3& voxel) {
 
 std::string describe(const LevelSetParams& params);
 
-} // namespace steerseg
+} // namespace steerseg::solver

@@ -14,9 +14,9 @@
 #include <stdexcept>
 #include <string>
 
-namespace steerseg {
+namespace steerseg::solver {
 
-using solver_detail::ControlBlock;
+using detail::ControlBlock;
 
 namespace {
 
@@ -88,8 +88,8 @@ LevelSetSolver::LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own,
                                static_cast<std::size_t>(dims.z);
     const gpu::GpuInfo info = gpu::queryGpuInfo();
     const int localSize = std::min(b * b * b, 64);
-    programs_ = std::make_unique<solver_detail::SolverPrograms>(b, localSize);
-    pool_ = std::make_unique<solver_detail::GpuBrickPool>(
+    programs_ = std::make_unique<detail::SolverPrograms>(b, localSize);
+    pool_ = std::make_unique<detail::GpuBrickPool>(
         dims, b, static_cast<std::size_t>(info.maxShaderStorageBlockBytes));
     const glm::ivec3 grid = pool_->brickGrid();
     programs_->forEach([&](gpu::Program& p) {
@@ -300,7 +300,7 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
         // The requests an edit or the last call left (a new seed's neighbours) would stall the
         // first chunk, which then runs for nothing: make room for them now.
         const std::uint32_t used = pool_->usedSlots(ctrl);
-        pool_->grow(solver_detail::poolTarget(used, 0, ctrl.requestCount), ctrl);
+        pool_->grow(detail::poolTarget(used, 0, ctrl.requestCount), ctrl);
         ++stats_.poolGrowths;
         pool_->bind();
         ctrl = pool_->readControl();
@@ -331,7 +331,7 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
             // The band outran the margin: grow for twice the advance it made by now.
             const std::uint32_t used = pool_->usedSlots(ctrl);
             const std::uint32_t growth = used > lastUsed_ ? used - lastUsed_ : used / 4;
-            pool_->grow(solver_detail::poolTarget(used, 2 * growth, ctrl.requestCount), ctrl);
+            pool_->grow(detail::poolTarget(used, 2 * growth, ctrl.requestCount), ctrl);
             ++stats_.poolGrowths;
             pool_->bind();
             ctrl = pool_->readControl();
@@ -369,7 +369,7 @@ bool LevelSetSolver::managePool(const ControlBlock& ctrl) {
     const std::uint32_t used = pool_->usedSlots(ctrl);
     const std::uint32_t growth = used > lastUsed_ ? used - lastUsed_ : 0;
     lastUsed_ = used;
-    const std::uint32_t target = solver_detail::poolTarget(used, growth, ctrl.requestCount);
+    const std::uint32_t target = detail::poolTarget(used, growth, ctrl.requestCount);
     if (ctrl.freeCount < used / 32 + growth + ctrl.requestCount + 2 &&
         pool_->capacity() < pool_->maxCapacity()) {
         pool_->grow(target, ctrl);
@@ -408,4 +408,4 @@ SolverStats LevelSetSolver::stats() const {
     return s;
 }
 
-} // namespace steerseg
+} // namespace steerseg::solver

@@ -15,12 +15,12 @@
 #include <span>
 #include <vector>
 
-namespace steerseg {
+namespace steerseg::solver {
 
-namespace solver_detail {
+namespace detail {
 class GpuBrickPool;
 struct SolverPrograms;
-} // namespace solver_detail
+} // namespace detail
 
 // The sparse packed-brick level-set solver (GLES 3.1 compute). Needs a current GL context for
 // its whole life. It reads the scan from a gpu::ScanTexture; phi lives in a brick pool that
@@ -78,7 +78,7 @@ class LevelSetSolver {
     void editSphere(const Sphere& sphere, bool add);
     void uploadPhi(const std::vector<float>& phi);
     void noteChange();
-    bool managePool(const solver_detail::ControlBlock& ctrl);
+    bool managePool(const detail::ControlBlock& ctrl);
     void dispatch(GLuint program, GLuint x, GLuint y = 1, GLuint z = 1);
     void dispatchIndirect(GLuint program, GLintptr offset);
     void requireParams() const;
@@ -87,17 +87,17 @@ class LevelSetSolver {
     const gpu::ScanTexture* scan_;
     glm::ivec3 dims_;
     SolverOptions options_;
-    std::unique_ptr<solver_detail::SolverPrograms> programs_;
-    std::unique_ptr<solver_detail::GpuBrickPool> pool_;
+    std::unique_ptr<detail::SolverPrograms> programs_;
+    std::unique_ptr<detail::GpuBrickPool> pool_;
     LevelSetParams params_;
     bool haveParams_ = false;
     std::uint32_t epoch_ = 1;
     SolverStats stats_;
     float lastTime_ = 0.0F;
     int lastIteration_ = 0;
-    std::uint32_t lastUsed_ = 0;                       // used slots at the last pool check
-    std::optional<solver_detail::ControlBlock> known_; // the GPU's control block, when known
+    std::uint32_t lastUsed_ = 0;                // used slots at the last pool check
+    std::optional<detail::ControlBlock> known_; // the GPU's control block, when known
     bool converged_ = false;
 };
 
-} // namespace steerseg
+} // namespace steerseg::solver

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace steerseg {
+namespace steerseg::solver {
 
 namespace {
 
@@ -104,4 +104,4 @@ std::vector<std::uint8_t> insideMask(std::span<const float> phi) {
     return mask;
 }
 
-} // namespace steerseg
+} // namespace steerseg::solver

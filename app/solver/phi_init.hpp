@@ -9,7 +9,7 @@
 #include <span>
 #include <vector>
 
-namespace steerseg {
+namespace steerseg::solver {
 
 // Clamped signed distance (voxel units, negative inside) to the boundary of a binary mask
 // (non-zero = inside): phi = +-(distance to the nearest voxel of the other label - 0.5), so the
@@ -26,4 +26,4 @@ void applySphere(std::vector<float>& phi, const glm::ivec3& dims, const Sphere& 
 // 1 where phi < 0.
 std::vector<std::uint8_t> insideMask(std::span<const float> phi);
 
-} // namespace steerseg
+} // namespace steerseg::solver

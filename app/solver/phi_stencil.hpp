@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace steerseg {
+namespace steerseg::solver {
 
 // phi at the centre, its 6 face neighbours and 12 edge neighbours: what the up-wind gradient
 // and the central first and second differences of the curvature term read (the mixed second
@@ -107,4 +107,4 @@ inline float thresholdSpeed(float intensity, const LevelSetParams& p) {
     return p.eps - std::abs(intensity - p.T);
 }
 
-} // namespace steerseg
+} // namespace steerseg::solver

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-namespace steerseg {
+namespace steerseg::solver {
 
 ReferenceSolver::ReferenceSolver(std::vector<float> intensities, const glm::ivec3& dims)
     : intensities_(std::move(intensities)), dims_(dims) {
@@ -144,4 +144,4 @@ std::vector<std::uint8_t> ReferenceSolver::mask() const {
     return insideMask(phi_);
 }
 
-} // namespace steerseg
+} // namespace steerseg::solver

@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-namespace steerseg {
+namespace steerseg::solver {
 
 // The test oracle: a plain dense CPU solver with the GPU solver's discretisation
 // (solver/phi_stencil.hpp) and time-step rule. Simple rather than fast.
@@ -52,4 +52,4 @@ class ReferenceSolver {
     float time_ = 0.0F;
 };
 
-} // namespace steerseg
+} // namespace steerseg::solver

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-namespace steerseg::solver_detail {
+namespace steerseg::solver::detail {
 
 namespace {
 
@@ -40,4 +40,4 @@ SolverPrograms::SolverPrograms(int brickSize, int localSize) {
     applySphere = gpu::buildComputeProgram("solver/apply_sphere.comp", d);
 }
 
-} // namespace steerseg::solver_detail
+} // namespace steerseg::solver::detail

@@ -2,7 +2,7 @@
 
 #include "gpu/gl_handle.hpp"
 
-namespace steerseg::solver_detail {
+namespace steerseg::solver::detail {
 
 // The solver's compute passes (shaders/solver/*.comp), compiled for one brick size. Binding
 // points and the control block layout are shared with shaders/solver/solver_common.glsl.
@@ -34,4 +34,4 @@ struct SolverPrograms {
     }
 };
 
-} // namespace steerseg::solver_detail
+} // namespace steerseg::solver::detail

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace steerseg {
+namespace steerseg::solver {
 
 // Brick edge in voxels. Measured on llvmpipe (2 cores, bench/solver_bench): see kDefaultBrickSize
 // in level_set_solver.cpp for the figures.
@@ -54,4 +54,4 @@ struct SolverStats {
     int stalls = 0; // chunks that ran out of slots before a growth
 };
 
-} // namespace steerseg
+} // namespace steerseg::solver

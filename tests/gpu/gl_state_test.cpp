@@ -11,6 +11,7 @@
 #include <vector>
 
 namespace steerseg::test {
+using namespace steerseg::solver; // the solver under test
 namespace {
 
 class GlStatePolicy : public GpuTest {};

@@ -2,11 +2,11 @@
 // transfer-function baking, the skipping grid, and displaying the solver's scan texture.
 #include "gpu/gl_handle.hpp"
 #include "gpu/gpu_info.hpp"
-#include "session/probe.hpp"
 #include "render/renderer.hpp"
 #include "render/skip_grid.hpp"
 #include "render/transfer_function.hpp"
 #include "render_scene.hpp"
+#include "session/probe.hpp"
 #include "solver/level_set_solver.hpp"
 #include "support/gpu_fixture.hpp"
 
@@ -16,6 +16,7 @@
 #include <stdexcept>
 
 namespace steerseg::test {
+using namespace steerseg::solver; // the solver under test
 namespace {
 
 using render::ViewKind;

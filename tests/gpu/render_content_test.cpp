@@ -8,6 +8,7 @@
 #include <cmath>
 
 namespace steerseg::test {
+using namespace steerseg::solver; // the solver under test
 namespace {
 
 using render::ViewKind;

@@ -7,6 +7,7 @@
 #include "support/gpu_fixture.hpp"
 
 namespace steerseg::test {
+using namespace steerseg::solver; // the solver under test
 namespace {
 
 using render::ViewKind;

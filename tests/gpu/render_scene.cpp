@@ -8,6 +8,7 @@
 #include <sstream>
 
 namespace steerseg::test {
+using namespace steerseg::solver; // the solver under test
 
 Volume makeScan(const Geometry& geometry, const std::function<float(glm::ivec3)>& f) {
     Volume v(VoxelType::Float32, geometry);

@@ -17,6 +17,7 @@
 #include <numbers>
 
 namespace steerseg::test {
+using namespace steerseg::solver; // the solver under test
 namespace {
 
 class SessionTest : public GpuTest {};

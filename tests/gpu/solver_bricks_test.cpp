@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 namespace steerseg::test {
+using namespace steerseg::solver; // the solver under test
 namespace {
 
 class SolverBricksTest : public GpuTest {};

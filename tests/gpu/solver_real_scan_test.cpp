@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 namespace steerseg::test {
+using namespace steerseg::solver; // the solver under test
 namespace {
 
 class SolverRealScanTest : public GpuTest {};

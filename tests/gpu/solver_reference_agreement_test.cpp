@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 namespace steerseg::test {
+using namespace steerseg::solver; // the solver under test
 namespace {
 
 class SolverAgreementTest : public GpuTest {};

@@ -8,6 +8,7 @@
 #include <limits>
 
 namespace steerseg::test {
+using namespace steerseg::solver; // the solver under test
 namespace {
 
 using SolverSphereValidation = GpuTest;

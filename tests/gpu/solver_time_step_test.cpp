@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 namespace steerseg::test {
+using namespace steerseg::solver; // the solver under test
 namespace {
 
 class SolverTimeStepTest : public GpuTest {};

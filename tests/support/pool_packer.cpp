@@ -3,6 +3,7 @@
 #include <algorithm>
 
 namespace steerseg::test {
+using namespace steerseg::solver; // the solver under test
 
 namespace {
 

@@ -32,13 +32,13 @@ std::vector<float> densePhi(const glm::ivec3& dims, const std::function<float(gl
 class GpuPool {
   public:
     explicit GpuPool(const PackedPool& packed);
-    [[nodiscard]] BrickPoolView view() const;
+    [[nodiscard]] solver::BrickPoolView view() const;
     [[nodiscard]] std::size_t pooledBricks() const { return pooledBricks_; }
 
   private:
     gpu::Buffer pageTable_;
     gpu::Buffer pool_;
-    BrickPoolView view_;
+    solver::BrickPoolView view_;
     std::size_t pooledBricks_ = 0;
 };
 

@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <gtest/gtest.h>
 
-namespace steerseg {
+namespace steerseg::test {
 namespace {
 
 const std::string kSegment =
@@ -108,4 +108,4 @@ TEST(CliExit, UnwritableOutputIsFour) {
 }
 
 } // namespace
-} // namespace steerseg
+} // namespace steerseg::test

@@ -10,7 +10,7 @@
 #include <sstream>
 #include <sys/wait.h>
 
-namespace steerseg {
+namespace steerseg::test {
 namespace {
 
 test::CliRun runInfo(const std::string& scan) {
@@ -41,4 +41,4 @@ TEST(CliInfo, BuiltinSampleGivesJson) {
 }
 
 } // namespace
-} // namespace steerseg
+} // namespace steerseg::test

@@ -13,7 +13,7 @@
 #include <gtest/gtest.h>
 #include <zlib.h>
 
-namespace steerseg {
+namespace steerseg::test {
 namespace {
 
 using test::pattern;
@@ -353,4 +353,4 @@ TEST(ImageStackReader, MultiPageTiff) {
 }
 
 } // namespace
-} // namespace steerseg
+} // namespace steerseg::test

@@ -11,7 +11,7 @@
 #include <nifti2_io.h>
 #include <sys/resource.h>
 
-namespace steerseg {
+namespace steerseg::test {
 namespace {
 
 // Reads `path`, expecting a ScanError whose message names the file and contains `problem`.
@@ -410,4 +410,4 @@ TEST_F(Hostile, ShearedOrDegenerateGeometry) {
 }
 
 } // namespace
-} // namespace steerseg
+} // namespace steerseg::test

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 #include <nifti2_io.h>
 
-namespace steerseg {
+namespace steerseg::test {
 namespace {
 
 std::vector<std::uint8_t> sphereMask(const glm::ivec3& dims) {
@@ -130,4 +130,4 @@ TEST(MaskWriter, OverlaysRealScan) {
 }
 
 } // namespace
-} // namespace steerseg
+} // namespace steerseg::test

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 #include <nifti2_io.h>
 
-namespace steerseg {
+namespace steerseg::test {
 namespace {
 
 using test::pattern;
@@ -245,4 +245,4 @@ TEST(NiftiReader, GzipAndPlainGiveTheSameVolume) {
 }
 
 } // namespace
-} // namespace steerseg
+} // namespace steerseg::test

@@ -10,7 +10,8 @@
 #include <stdexcept>
 #include <vector>
 
-namespace steerseg {
+namespace steerseg::test {
+using namespace steerseg::solver; // the solver under test
 namespace {
 
 double equivalentRadius(const std::vector<std::uint8_t>& mask) {
@@ -121,4 +122,4 @@ TEST(ReferenceSolver, RejectsEmptyThresholdRange) {
 }
 
 } // namespace
-} // namespace steerseg
+} // namespace steerseg::test

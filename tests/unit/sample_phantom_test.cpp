@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-namespace steerseg {
+namespace steerseg::test {
 namespace {
 
 TEST(SamplePhantom, IsDeterministicAndHasItsStructures) {
@@ -19,4 +19,4 @@ TEST(SamplePhantom, IsDeterministicAndHasItsStructures) {
 }
 
 } // namespace
-} // namespace steerseg
+} // namespace steerseg::test

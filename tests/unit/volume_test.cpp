@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 #include <limits>
 
-namespace steerseg {
+namespace steerseg::test {
 namespace {
 
 TEST(Volume, RejectsNonPositiveDims) {
@@ -90,4 +90,4 @@ TEST(Geometry, IndexWorldRoundTripWithObliqueDirection) {
 }
 
 } // namespace
-} // namespace steerseg
+} // namespace steerseg::test
