@@ -19,9 +19,9 @@
 #define SLOT_STATE_BINDING 9
 
 // Texture units of the samplers (glActiveTexture(GL_TEXTURE0 + unit)).
-#define SOLVER_SCAN_UNIT 0  // solver/speed_threshold.glsl: the scan, texelFetch only
-#define VIEW_SCAN_UNIT 0    // render/view_common.glsl: the scan, linear filtering
-#define VIEW_TF_LUT_UNIT 1  // render/raycast.comp: transfer function
+#define SOLVER_SCAN_UNIT 0    // solver/speed_threshold.glsl: the scan, texelFetch only
+#define VIEW_SCAN_UNIT 0      // render/view_common.glsl: the scan, linear filtering
+#define VIEW_TF_LUT_UNIT 1    // render/raycast.comp: transfer function
 #define VIEW_SKIP_GRID_UNIT 2 // render/raycast.comp: block min/max for empty-space skipping
 #define VIEW_OCCUPANCY_UNIT 3 // render/raycast.comp: occupied transfer-function bins
 

@@ -15,8 +15,9 @@ void main() {
     beginBrickState();
     barrier();
     for (uint v = gl_LocalInvocationIndex; hasWork && v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
-        if (all(lessThan(origin + localVoxel(v), volumeDims))) {
-            noteVoxelState(phiPool[slot * BRICK_VOXELS + v]);
+        ivec3 l = localVoxel(v);
+        if (all(lessThan(origin + l, volumeDims))) {
+            noteVoxelState(l, phiPool[slot * BRICK_VOXELS + v]);
         }
     }
     barrier();

@@ -1,6 +1,9 @@
 #version 310 es
-// One thread per active brick: a live brick asks for storage for its constant face neighbours,
-// which the front may reach next. wantEpoch keeps each brick to one request per pass.
+// One thread per active brick: a live brick asks for storage for a constant face neighbour
+// when the band reaches the face they share (a voxel on it has |phi| < PHI_FAR, so the voxels
+// across it step next iteration; solver_common.glsl's FACE_REACH_SHIFT). The first version
+// asked for all six neighbours of every live brick, most of which the band never entered.
+// wantEpoch keeps each brick to one request per pass.
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
 layout(local_size_x = 64) in;
@@ -16,13 +19,14 @@ void main() {
         return;
     }
     uint slot = activeList[n];
-    if (slotState[slot] != STATE_LIVE) {
+    uint word = slotState[slot];
+    if (stateOf(word) != STATE_LIVE) {
         return;
     }
     ivec3 b = brickCoord(slotBrick[slot]);
     for (int f = 0; f < 6; ++f) {
         ivec3 nb = b + FACE_NEIGHBOURS[f];
-        if (!brickInGrid(nb)) {
+        if (!reachesFace(word, f) || !brickInGrid(nb)) {
             continue;
         }
         uint brick = brickIndex(nb);

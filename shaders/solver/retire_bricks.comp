@@ -1,6 +1,7 @@
 #version 310 es
 // One thread per active brick: a brick that became uniform (all -PHI_FAR or all +PHI_FAR) and
-// has no live face neighbour gives its slot back and becomes BRICK_INSIDE / BRICK_OUTSIDE.
+// that no face neighbour's band reaches (the rule mark_wanted_bricks requests storage by) gives
+// its slot back and becomes BRICK_INSIDE / BRICK_OUTSIDE.
 #define PAGE_TABLE_ACCESS
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
@@ -14,7 +15,7 @@ void main() {
         return;
     }
     uint slot = activeList[n];
-    uint state = slotState[slot];
+    uint state = stateOf(slotState[slot]);
     if (state == STATE_LIVE || state == STATE_MIXED) {
         return;
     }
@@ -24,7 +25,8 @@ void main() {
         ivec3 nb = b + FACE_NEIGHBOURS[f];
         if (brickInGrid(nb)) {
             uint s = pageTable[brickIndex(nb)];
-            if (s < BRICK_INSIDE && slotState[s] == STATE_LIVE) {
+            // FACE_NEIGHBOURS pairs opposite faces: f ^ 1 is the neighbour's face towards us.
+            if (s < BRICK_INSIDE && reachesFace(slotState[s], f ^ 1)) {
                 return;
             }
         }

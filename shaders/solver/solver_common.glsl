@@ -11,6 +11,18 @@ const uint STATE_LIVE = 0u;    // some voxel has |phi| < PHI_FAR
 const uint STATE_INSIDE = 1u;  // every voxel at -PHI_FAR: may retire to BRICK_INSIDE
 const uint STATE_OUTSIDE = 2u; // every voxel at +PHI_FAR: may retire to BRICK_OUTSIDE
 const uint STATE_MIXED = 3u;   // clamped values of both signs: kept
+const uint STATE_MASK = 0xFFu;
+// Above the state, bit FACE_REACH_SHIFT + f: a voxel on the brick's face f (FACE_NEIGHBOURS
+// order) has |phi| < PHI_FAR, so the voxels across that face are in the narrow band (they have
+// an unclamped face neighbour) and the brick there needs storage. Only such a face lets the band
+// into a constant neighbour: its other voxels' face neighbours are all clamped.
+const uint FACE_REACH_SHIFT = 8u;
+
+uint stateOf(uint slotWord) { return slotWord & STATE_MASK; }
+
+bool reachesFace(uint slotWord, int face) {
+    return (slotWord & (1u << (FACE_REACH_SHIFT + uint(face)))) != 0u;
+}
 
 // Groups over the active list are laid out 2D (x < 1024) to stay under the 65535 group limit.
 const uint GROUPS_PER_ROW = 1024u;
@@ -35,7 +47,7 @@ layout(std430, binding = CONTROL_BINDING) coherent buffer Control {
 
 layout(std430, binding = SLOT_BRICK_BINDING) buffer SlotBrick { uint slotBrick[]; };
 layout(std430, binding = ACTIVE_LIST_BINDING) buffer ActiveList { uint activeList[]; };
-layout(std430, binding = SLOT_STATE_BINDING) buffer SlotState { uint slotState[]; };
+layout(std430, binding = SLOT_STATE_BINDING) buffer SlotState { uint slotState[]; }; // state | reach
 
 ivec3 brickCoord(uint brick) {
     int b = int(brick);

@@ -41,7 +41,7 @@ void main() {
             if (dt > 0.0 && inNarrowBand(s)) {
                 out_ = phiStep(s, dataSpeed(g), alpha, dt);
             }
-            noteVoxelState(out_);
+            noteVoxelState(l, out_);
             if ((out_ < 0.0) != (s.c < 0.0)) {
                 atomicOr(changedSide, 1u);
             }
