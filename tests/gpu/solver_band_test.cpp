@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 namespace steerseg::test {
+using namespace steerseg::solver; // the solver under test
 namespace {
 
 class SolverBandTest : public GpuTest {};
