@@ -12,6 +12,15 @@
 
 namespace steerseg {
 
+// Position of voxel (i, j, k) in an i-fastest array of `dims` voxels (the storage order of every
+// volume, mask and level set here).
+inline std::size_t linearIndex(const glm::ivec3& dims, int i, int j, int k) {
+    return static_cast<std::size_t>(i) +
+           static_cast<std::size_t>(dims.x) *
+               (static_cast<std::size_t>(j) +
+                static_cast<std::size_t>(dims.y) * static_cast<std::size_t>(k));
+}
+
 // Stored voxel type. Scans keep their native type on the GPU and in memory (a 512^3 CT stays
 // 256 MiB of int16, not 512 MiB of float); real units come from Volume::rescale.
 enum class VoxelType : std::uint8_t { UInt8, Int16, UInt16, Float32 };
@@ -81,11 +90,7 @@ class Volume {
     }
 
     [[nodiscard]] std::size_t linearIndex(int i, int j, int k) const {
-        const auto& d = geometry_.dims;
-        return static_cast<std::size_t>(i) +
-               static_cast<std::size_t>(d.x) *
-                   (static_cast<std::size_t>(j) +
-                    static_cast<std::size_t>(d.y) * static_cast<std::size_t>(k));
+        return steerseg::linearIndex(geometry_.dims, i, j, k);
     }
     // Stored value at a voxel as double (no rescale).
     [[nodiscard]] double storedAt(std::size_t linear) const;

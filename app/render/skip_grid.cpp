@@ -42,19 +42,12 @@ void layerMinMax(const glm::ivec3& dims, const glm::ivec3& grid, int bz, const A
     }
 }
 
-std::size_t linear(const glm::ivec3& dims, int i, int j, int k) {
-    return static_cast<std::size_t>(i) +
-           static_cast<std::size_t>(dims.x) *
-               (static_cast<std::size_t>(j) +
-                static_cast<std::size_t>(dims.y) * static_cast<std::size_t>(k));
-}
-
 } // namespace
 
 std::vector<float> blockMinMax(const std::vector<float>& values, const glm::ivec3& dims) {
     const glm::ivec3 grid = (dims + kSkipBlock - 1) / kSkipBlock;
     std::vector<float> out(static_cast<std::size_t>(grid.x) * grid.y * grid.z * 2);
-    const auto at = [&](int i, int j, int k) { return values[linear(dims, i, j, k)]; };
+    const auto at = [&](int i, int j, int k) { return values[linearIndex(dims, i, j, k)]; };
     for (int bz = 0; bz < grid.z; ++bz) {
         layerMinMax(dims, grid, bz, at, out);
     }
@@ -75,7 +68,7 @@ SkipGrid::SkipGrid(const Volume& volume, const gpu::ScanTexture& scan)
             const double real = volume.rescale().apply(volume.storedAt(slice * k0 + n));
             slab[n] = static_cast<float>(scan.normalise(real));
         }
-        const auto at = [&](int i, int j, int k) { return slab[linear(d, i, j, k - k0)]; };
+        const auto at = [&](int i, int j, int k) { return slab[linearIndex(d, i, j, k - k0)]; };
         layerMinMax(d, dims_, bz, at, out);
     }
     gpu::GlStateGuard guard;

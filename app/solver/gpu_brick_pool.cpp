@@ -1,6 +1,7 @@
 #include "solver/gpu_brick_pool.hpp"
 
 #include "common/bindings.h"
+#include "core/volume.hpp"
 #include "gpu/gl_error.hpp"
 #include "solver/level_set_params.hpp"
 
@@ -130,10 +131,7 @@ void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
         i = std::min(i, dims_.x - 1);
         j = std::min(j, dims_.y - 1);
         k = std::min(k, dims_.z - 1);
-        return phi[static_cast<std::size_t>(i) +
-                   static_cast<std::size_t>(dims_.x) *
-                       (static_cast<std::size_t>(j) +
-                        static_cast<std::size_t>(dims_.y) * static_cast<std::size_t>(k))];
+        return phi[linearIndex(dims_, i, j, k)];
     };
     std::vector<std::uint32_t> page(brickCount_, kBrickOutside);
     std::vector<std::uint32_t> usedBricks;
@@ -230,10 +228,7 @@ std::vector<float> GpuBrickPool::download() const {
                     value = pool[slot * bv +
                                  static_cast<std::size_t>(i % b + b * (j % b + b * (k % b)))];
                 }
-                phi[static_cast<std::size_t>(i) +
-                    static_cast<std::size_t>(dims_.x) *
-                        (static_cast<std::size_t>(j) +
-                         static_cast<std::size_t>(dims_.y) * static_cast<std::size_t>(k))] = value;
+                phi[linearIndex(dims_, i, j, k)] = value;
             }
         }
     }

@@ -1,5 +1,6 @@
 #include "solver/phi_init.hpp"
 
+#include "core/volume.hpp"
 #include "solver/phi_stencil.hpp"
 
 #include <algorithm>
@@ -16,13 +17,6 @@ std::size_t voxelCount(const glm::ivec3& d) {
            static_cast<std::size_t>(d.z);
 }
 
-std::size_t linear(const glm::ivec3& d, int i, int j, int k) {
-    return static_cast<std::size_t>(i) +
-           static_cast<std::size_t>(d.x) *
-               (static_cast<std::size_t>(j) +
-                static_cast<std::size_t>(d.y) * static_cast<std::size_t>(k));
-}
-
 } // namespace
 
 std::vector<float> maskToPhi(std::span<const std::uint8_t> mask, const glm::ivec3& d) {
@@ -34,7 +28,7 @@ std::vector<float> maskToPhi(std::span<const std::uint8_t> mask, const glm::ivec
     // |phi| of the other label's voxels within reach. Cost follows the surface, not the volume.
     std::vector<float> magnitude(mask.size(), kPhiFar);
     const int reach = static_cast<int>(std::ceil(kPhiFar + 0.5F));
-    auto label = [&](int i, int j, int k) { return mask[linear(d, i, j, k)] != 0; };
+    auto label = [&](int i, int j, int k) { return mask[linearIndex(d, i, j, k)] != 0; };
     for (int k = 0; k < d.z; ++k) {
         for (int j = 0; j < d.y; ++j) {
             for (int i = 0; i < d.x; ++i) {
@@ -59,7 +53,7 @@ std::vector<float> maskToPhi(std::span<const std::uint8_t> mask, const glm::ivec
                                 std::sqrt(static_cast<float>((a - i) * (a - i) + (b - j) * (b - j) +
                                                              (c - k) * (c - k))) -
                                 0.5F;
-                            float& m = magnitude[linear(d, a, b, c)];
+                            float& m = magnitude[linearIndex(d, a, b, c)];
                             m = std::min(m, dist);
                         }
                     }
@@ -90,7 +84,7 @@ void applySphere(std::vector<float>& phi, const glm::ivec3& d, const Sphere& s, 
         for (int j = 0; j < d.y; ++j) {
             for (int i = 0; i < d.x; ++i) {
                 const float sd = sphereDistance(s, glm::vec3(i, j, k));
-                float& p = phi[linear(d, i, j, k)];
+                float& p = phi[linearIndex(d, i, j, k)];
                 p = clampPhi(add ? std::min(p, sd) : std::max(p, -sd));
             }
         }

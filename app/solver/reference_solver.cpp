@@ -1,5 +1,6 @@
 #include "solver/reference_solver.hpp"
 
+#include "core/volume.hpp"
 #include "solver/phi_init.hpp"
 #include "solver/phi_stencil.hpp"
 
@@ -44,10 +45,7 @@ void ReferenceSolver::initFromThreshold(float lo, float hi) {
 }
 
 std::size_t ReferenceSolver::index(int i, int j, int k) const {
-    return static_cast<std::size_t>(i) +
-           static_cast<std::size_t>(dims_.x) *
-               (static_cast<std::size_t>(j) +
-                static_cast<std::size_t>(dims_.y) * static_cast<std::size_t>(k));
+    return linearIndex(dims_, i, j, k);
 }
 
 float ReferenceSolver::at(int i, int j, int k) const {
