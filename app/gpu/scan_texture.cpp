@@ -71,7 +71,7 @@ ScanTexture::ScanTexture(std::span<const float> intensities, const glm::ivec3& d
         throw std::invalid_argument("scan texture: intensities do not match the dimensions");
     }
     const auto [lo, hi] = std::minmax_element(intensities.begin(), intensities.end());
-    min_ = *lo;
+    min_ = static_cast<double>(*lo);
     max_ = *hi > *lo ? static_cast<double>(*hi) : static_cast<double>(*lo) + 1.0;
     upload(
         [&](int k0, int count, std::vector<float>& out) {
