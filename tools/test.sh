@@ -12,6 +12,7 @@ cd "$(dirname "$0")/.."
 tools/install-deps.sh
 jobs=$(nproc)
 summary=()
+passed_total=0
 
 # Runs one build's CTest suite (its preset errors on zero tests) and reports the counts from
 # CTest's JUnit output.
@@ -41,6 +42,7 @@ EOF
   read -r ran skipped failed <<<"$counts"
   echo "$preset: $ran tests ran, $skipped skipped, $failed failed"
   summary+=("$preset $ran ran/$skipped skipped/$failed failed")
+  passed_total=$((passed_total + ran - failed))
   if ((rc != 0)); then
     echo "test.sh: FAILED in the $preset build (${summary[*]})" >&2
     exit "$rc"
@@ -105,4 +107,28 @@ if ((ran == 0)); then
 fi
 echo "fuzz: $ran targets ran without a crash"
 summary+=("fuzz $ran targets")
+
+# The GPU benchmark's whole plumbing in its small form, so the one command for the lent GPU
+# machine cannot rot between the sessions that have one (its figures here are llvmpipe's).
+echo "== tools/bench-gpu.sh --small"
+tools/bench-gpu.sh --small --out build/bench-gpu-small >build/bench-gpu-small.log 2>&1 || {
+  tail -n 40 build/bench-gpu-small.log
+  echo "test.sh: FAILED: tools/bench-gpu.sh --small (log: build/bench-gpu-small.log)" >&2
+  exit 1
+}
+python3 - build/bench-gpu-small/bench-gpu.json <<'EOF'
+import json, os, sys
+r = json.load(open(sys.argv[1]))
+missing = [k for k in ("solver", "render") if not r[k]]
+if missing or r["sample_lesion"] is None:
+    sys.exit(f"bench-gpu.json lacks {missing or 'the sample lesion'}")
+ran = [c for c in r["segment"] if c.get("median_seconds") is not None]
+if len(ran) < 2 and os.environ.get("STEERSEG_REQUIRE_DATA") == "1":
+    sys.exit("bench-gpu.json: the real cases did not run (STEERSEG_DATA_DIR)")
+print(f"bench-gpu --small: {len(r['solver'])} solver tables, {len(r['render'])} frame rows, "
+      f"{len(r['segment'])} real cases, {r['seconds']} s on {r['renderer']}")
+EOF
+summary+=("bench-gpu --small")
 echo "test.sh: passed (${summary[*]})"
+echo "tests: $passed_total passed, 0 failed"
+

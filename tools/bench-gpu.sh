@@ -1,0 +1,232 @@
+#!/usr/bin/env bash
+# The GPU figures in one command: solver iterations/s at 256^3 and 512^3 over a range of active
+# fractions, renderer frame times at 1920x1080 with the solver stepping, time to ITK's evolved
+# time on the real cases, and the README's pictures for comparison with llvmpipe's. Writes
+# bench-gpu.md (the tables) and bench-gpu.json (the same figures) to the output folder.
+#
+#   tools/bench-gpu.sh [--small] [--skip PART[,PART...]] [--out DIR] [--bin DIR]
+#   tools/bench-gpu.sh --pack DIR
+#
+# PARTs: solver, render, segment, pictures. --small uses sizes a software rasteriser finishes
+# in a minute or two (CI runs it, so the script cannot rot between GPU sessions). Without --bin
+# it installs what it needs (apt) and builds the benchmarks in build/bench-gpu.
+#
+# The lent GPU machine has no package registry: on a development machine, --pack DIR builds the
+# benchmarks without OpenImageIO and GDCM (STEERSEG_BENCH_IO=OFF: built-in sample and NIfTI
+# only, pictures as PPM), and puts them, the two libraries they need (nifticlib) and the real
+# cases' scans (from STEERSEG_DATA_DIR) in DIR; there, `DIR/bench-gpu.sh --bin DIR` runs them.
+# It says so when the renderer is a software one: those figures are not GPU figures.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+
+small=0
+skip=""
+out=${STEERSEG_OUT:-out/bench-gpu}
+bin=""
+pack=""
+while (($#)); do
+  case $1 in
+    --small) small=1 ;;
+    --skip) skip=${2:?--skip needs a list}; shift ;;
+    --out) out=${2:?--out needs a folder}; shift ;;
+    --bin) bin=${2:?--bin needs a folder}; shift ;;
+    --pack) pack=${2:?--pack needs a folder}; shift ;;
+    -h|--help) sed -n '2,19p' "$0"; exit 0 ;;
+    *) echo "bench-gpu: unknown option '$1' (see --help)" >&2; exit 2 ;;
+  esac
+  shift
+done
+wants() { [[ ",$skip," != *",$1,"* ]]; }
+
+data=${STEERSEG_DATA_DIR:-$root/../shared/data}
+# The ITK comparison's cases: scan, expert mask, seed, T, eps, alpha and ITK's converged time and
+# solve seconds (docs/benchmarks-itk.md: ITK 5 on one core of the 2-core development VM).
+cases=(
+  "sarcoma|thigh-sarcoma-sts001/STS_001_CT_image.nii.gz|thigh-sarcoma-sts001/STS_001_CT_mask.nii.gz|97,107,28,3|28.5|23.7|0.2|22.89|1.90"
+  "lung|lung-ct-ibsi/nifti/image.nii.gz|lung-ct-ibsi/nifti/mask.nii.gz|94,89,29,3|-46.9|231.1|0.2|2.08|57.6"
+)
+
+build_benches() { # build-dir io(ON|OFF)
+  cmake -S "$root" -B "$1" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSTEERSEG_BUILD_TESTS=OFF \
+    -DSTEERSEG_BENCH_IO="$2" >/dev/null
+  cmake --build "$1" -j "$(nproc)" --target solver_bench render_frame_bench segment_bench >&2
+}
+
+if [[ -n $pack ]]; then
+  "$root/tools/install-deps.sh"
+  build_benches "$root/build/bench-gpu-pack" OFF
+  mkdir -p "$pack/lib" "$pack/data"
+  for b in solver_bench render_frame_bench segment_bench; do
+    cp "$root/build/bench-gpu-pack/bench/$b" "$pack/"
+  done
+  cp "$0" "$pack/bench-gpu.sh"
+  for lib in libnifti2.so.2 libznz.so.3; do
+    cp -L "$(ldconfig -p | awk -v l="$lib" '$1 == l { print $NF; exit }')" "$pack/lib/"
+  done
+  for c in "${cases[@]}"; do
+    IFS='|' read -r name scan mask _ <<<"$c"
+    if [[ -f $data/$scan && -f $data/$mask ]]; then
+      cp "$data/$scan" "$pack/data/$name.nii.gz"
+      cp "$data/$mask" "$pack/data/${name}_mask.nii.gz"
+    else
+      echo "bench-gpu: $name not packed: $data/$scan or its mask is missing" >&2
+    fi
+  done
+  echo "bench-gpu: packed in $pack ($(du -sh "$pack" | cut -f1)); run '$pack/bench-gpu.sh --bin $pack' there"
+  exit 0
+fi
+
+if [[ -z $bin ]]; then
+  "$root/tools/install-deps.sh"
+  build_benches "$root/build/bench-gpu" ON
+  bin=$root/build/bench-gpu/bench
+  scandir=$data
+  scan_of() { echo "$scandir/$2"; }
+else
+  bin=$(cd "$bin" && pwd)
+  export LD_LIBRARY_PATH="$bin/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+  scan_of() { echo "$bin/data/$1$3"; } # packed names: sarcoma.nii.gz, sarcoma_mask.nii.gz
+fi
+mkdir -p "$out"
+log=$out/bench-gpu.log
+: >"$log"
+md=$out/bench-gpu.md
+started=$(date +%s)
+
+run() { # part command...: runs one benchmark, keeping its output in the log and in $part.txt
+  local part=$1
+  shift
+  echo "bench-gpu: $part: $*" >&2
+  "$@" 2>&1 | tee -a "$log" >>"$out/$part.txt"
+}
+rm -f "$out"/{solver,render,segment,pictures}.txt
+
+renderer=$("$bin/solver_bench" --size 16 --iterations 1 --dense-size 0 2>&1 | sed -n 's/^renderer: \(.*\), volume .*/\1/p')
+software=0
+if [[ -z $renderer || $renderer == *llvmpipe* || $renderer == *softpipe* || $renderer == *SwiftShader* ]]; then
+  software=1
+fi
+
+if ((small)); then
+  solver_sizes=(48); solver_iterations=8; frame_size=320x200; frames=1; scales=(1)
+else
+  solver_sizes=(256 512); solver_iterations=400; frame_size=1920x1080; frames=30; scales=(2 4)
+fi
+if wants solver; then
+  for n in "${solver_sizes[@]}"; do
+    run solver "$bin/solver_bench" --size "$n" --iterations "$solver_iterations" --dense-size 0
+  done
+fi
+if wants render; then
+  for s in "${scales[@]}"; do
+    run render "$bin/render_frame_bench" --scale "$s" --size "$frame_size" --frames "$frames"
+  done
+fi
+if wants segment; then
+  for c in "${cases[@]}"; do
+    IFS='|' read -r name scan mask seed T eps alpha t itk <<<"$c"
+    s=$(scan_of "$name" "$scan" .nii.gz)
+    m=$(scan_of "$name" "$mask" _mask.nii.gz)
+    if [[ ! -f $s || ! -f $m ]]; then
+      echo "bench-gpu: segment: $name skipped: $s or $m not found (STEERSEG_DATA_DIR)" >&2
+      echo "case $name skipped: scan not found" >>"$out/segment.txt"
+      continue
+    fi
+    repeat=5
+    if ((small)); then
+      repeat=1 t=0.5 itk=0 # llvmpipe takes tens of seconds to ITK's time: no comparison
+    fi
+    echo "case $name itk_seconds $itk time $t" >>"$out/segment.txt"
+    run segment "$bin/segment_bench" --scan "$s" --seed "$seed" --T "$T" --eps "$eps" \
+      --alpha "$alpha" --time "$t" --repeat "$repeat" --compare "$m"
+  done
+fi
+if wants pictures; then
+  run pictures "$bin/render_frame_bench" --docs "$out/pictures"
+fi
+
+# One Markdown report and one JSON file from the benchmarks' own output.
+python3 - "$out" "$renderer" "$software" "$small" "$(($(date +%s) - started))" <<'EOF'
+import json, re, sys, pathlib
+out, renderer, software, small, seconds = sys.argv[1], sys.argv[2], sys.argv[3] == "1", sys.argv[4] == "1", int(sys.argv[5])
+out = pathlib.Path(out)
+def text(part):
+    p = out / f"{part}.txt"
+    return p.read_text() if p.exists() else ""
+
+def tables(s):  # every Markdown table: list of rows as dicts, with the heading above it
+    found, heading, lines = [], "", s.splitlines()
+    i = 0
+    while i < len(lines):
+        if lines[i].startswith("## ") or lines[i].startswith("renderer:"):
+            heading = lines[i].lstrip("# ").strip()
+        if lines[i].startswith("|") and i + 1 < len(lines) and lines[i + 1].startswith("|---"):
+            head = [h.strip() for h in lines[i].strip("|").split("|")]
+            rows, i = [], i + 2
+            while i < len(lines) and lines[i].startswith("|"):
+                rows.append(dict(zip(head, [c.strip() for c in lines[i].strip("|").split("|")])))
+                i += 1
+            found.append({"table": heading, "rows": rows})
+            continue
+        i += 1
+    return found
+
+frames, scan = [], ""
+for line in text("render").splitlines():
+    if line.startswith("scan: "):
+        scan = line[6:]
+    m = re.match(r"(\S+)\s+(\d+)x(\d+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)$", line)
+    if m:
+        frames.append({"scan": scan, "view": m[1], "size": f"{m[2]}x{m[3]}", "min_ms": float(m[4]),
+                       "median_ms": float(m[5]), "fps": float(m[6])})
+cases, case = [], None
+for line in text("segment").splitlines():
+    m = re.match(r"case (\S+) itk_seconds (\S+) time (\S+)", line)
+    if m:
+        case = {"case": m[1], "itk_seconds": float(m[2]), "evolved_time": float(m[3]), "runs": []}
+        cases.append(case)
+    m = re.match(r"run \d+: (\d+) iterations, t = ([\d.]+), ([\d.]+) s, (\d+) voxels inside(?:, Dice ([\d.]+))?", line)
+    if m and case is not None:
+        case["runs"].append({"iterations": int(m[1]), "seconds": float(m[3]), "inside": int(m[4]),
+                             "dice_expert": float(m[5]) if m[5] else None})
+    m = re.match(r"median solve seconds: ([\d.]+)", line)
+    if m and case is not None:
+        case["median_seconds"] = float(m[1])
+        case["speedup_vs_itk"] = (round(case["itk_seconds"] / case["median_seconds"], 1)
+                                  if case["itk_seconds"] > 0 and case["median_seconds"] > 0 else None)
+        case["same_mask_every_run"] = len({r["inside"] for r in case["runs"]}) == 1
+lesion = re.search(r"lesion: (\d+) iterations, evolved time ([\d.]+), (\d+) voxels inside", text("pictures"))
+report = {"renderer": renderer, "software_renderer": software, "small": small, "seconds": seconds,
+          "solver": tables(text("solver")), "render": frames, "segment": cases,
+          "sample_lesion": {"iterations": int(lesion[1]), "inside": int(lesion[3])} if lesion else None}
+(out / "bench-gpu.json").write_text(json.dumps(report, indent=2) + "\n")
+
+md = [f"# GPU benchmarks: {renderer}", ""]
+if software:
+    md += ["**Software renderer: these are not GPU figures** (the script's plumbing ran; run it on the GPU machine for the targets).", ""]
+md += [f"{'Small sizes (--small). ' if small else ''}{seconds} s in all.", ""]
+for t in report["solver"]:
+    if not t["rows"]:
+        continue
+    md += [f"## Solver: {t['table']}", "", "| " + " | ".join(t["rows"][0]) + " |", "|" + "---|" * len(t["rows"][0])]
+    md += ["| " + " | ".join(r.values()) + " |" for r in t["rows"]] + [""]
+if frames:
+    md += ["## Renderer", "", "| scan | view | size | median ms | fps |", "|---|---|---|---|---|"]
+    md += [f"| {f['scan']} | {f['view']} | {f['size']} | {f['median_ms']} | {f['fps']} |" for f in frames] + [""]
+if cases:
+    md += ["## Time to ITK's evolved time (ITK: one core of the development VM)", "",
+           "| case | t | median s | ITK s | speed-up | same mask every run | inside voxels | Dice vs expert |", "|---|---|---|---|---|---|---|---|"]
+    for c in cases:
+        if "median_seconds" in c and c["runs"]:
+            r = c["runs"][0]
+            md.append(f"| {c['case']} | {c['evolved_time']} | {c['median_seconds']} | {c['itk_seconds'] or 'n/a'} | {str(c['speedup_vs_itk']) + 'x' if c['speedup_vs_itk'] else 'n/a'} | {'yes' if c['same_mask_every_run'] else 'NO'} | {r['inside']} | {r['dice_expert']} |")
+    md.append("")
+if lesion:
+    md += [f"Sample lesion: {lesion[1]} iterations, {lesion[3]} voxels inside; pictures in pictures/ (compare with llvmpipe's: `idiff`).", ""]
+(out / "bench-gpu.md").write_text("\n".join(md))
+EOF
+cat "$md"
+if ((software)); then
+  echo "bench-gpu: the renderer is '$renderer', a software one: these are not GPU figures"
+fi
+echo "bench-gpu: $md and $out/bench-gpu.json"
