@@ -52,20 +52,23 @@ template <typename T> std::vector<T> readBuffer(const gpu::Buffer& b, std::size_
     if (count == 0) {
         return out;
     }
+    const auto bytes = static_cast<GLsizeiptr>(count * sizeof(T));
+    // Read through a staging copy: on the H100's driver a buffer mapped directly after the
+    // shaders' last dispatch lacked that dispatch's atomics (requestCount read 0 where the next
+    // iteration served requests), even after GL_BUFFER_UPDATE_BARRIER_BIT and glFinish.
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    // On the H100's driver the mapped read after the barrier alone gave control blocks that
-    // differed between identical runs (docs/benchmarks-gpu.md); after a finish they repeat. The
-    // map waits for the GPU anyway, so the finish costs nothing measurable.
-    glFinish();
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, b.id());
-    const void* mapped = glMapBufferRange(
-        GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(count * sizeof(T)), GL_MAP_READ_BIT);
+    const gpu::Buffer staging =
+        gpu::createBuffer(GL_COPY_WRITE_BUFFER, bytes, nullptr, GL_STREAM_READ);
+    glBindBuffer(GL_COPY_READ_BUFFER, b.id());
+    glBindBuffer(GL_COPY_WRITE_BUFFER, staging.id());
+    glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, bytes);
+    const void* mapped = glMapBufferRange(GL_COPY_WRITE_BUFFER, 0, bytes, GL_MAP_READ_BIT);
     if (mapped == nullptr) {
         gpu::checkGl("mapping a solver buffer");
         throw gpu::GlError("mapping a solver buffer failed");
     }
     std::memcpy(out.data(), mapped, count * sizeof(T));
-    glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+    glUnmapBuffer(GL_COPY_WRITE_BUFFER);
     return out;
 }
 
