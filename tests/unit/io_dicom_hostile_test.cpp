@@ -265,6 +265,27 @@ TEST(IoDicomCorpusHostile, HighBitPastBitsStoredIsRefused) {
         << msg;
 }
 
+// Found by fuzz_dicom: a JPEG-LS frame of 16-bit samples in a header that allocates 32 bits.
+// GDCM's JPEG-LS codec asserts on it, which aborted the process; it is refused instead.
+TEST(IoDicomCorpusHostile, JpegLsWithThirtyTwoAllocatedBitsIsRefused) {
+    const fs::path file = fs::path(STEERSEG_DICOM_CORPUS) / "jpegls_32_bits_allocated.dcm";
+    const std::string msg = scanErrorOf([&] { (void)readDicom(file, {}); });
+    EXPECT_NE(msg.find("JPEG-LS codestream does not match the DICOM header: 32 allocated bits"),
+              std::string::npos)
+        << msg;
+}
+
+// Found by fuzz_dicom: a JPEG lossless frame on which GDCM's JPEG16 codec asserts. The decode
+// runs in a child process (io/dicom/isolated_decode), so the assertion ends the child and the
+// file is refused; this test process surviving is half of the check.
+TEST(IoDicomCorpusHostile, DecoderAbortIsContainedAndReported) {
+    const fs::path file = fs::path(STEERSEG_DICOM_CORPUS) / "jpeg_lossless_decoder_assert.dcm";
+    const std::string msg = scanErrorOf([&] { (void)readDicom(file, {}); });
+    EXPECT_NE(msg.find("the compressed pixel data is malformed: the decoder crashed on it"),
+              std::string::npos)
+        << msg;
+}
+
 TEST_F(IoDicomHostile, SeriesWithoutPositionsIsRefused) {
     const auto files = copyLungSlices(lung_, dir_, 3);
     for (const auto& f : files) {

@@ -92,6 +92,13 @@ bool checkJpeg(const std::filesystem::path& file, std::span<const std::uint8_t> 
             }
             const std::string codec = m == 0xf7 ? "JPEG-LS" : "JPEG";
             checkSize(file, codec, be16(b, at + 7), be16(b, at + 5), b[at + 9], b[at + 4], e);
+            // JPEG and JPEG-LS samples are at most 16 bits, stored in 8 or 16 (PS3.5 8.2); with
+            // 32 allocated, GDCM 3.0.21's JPEG-LS codec asserts and aborts (found by fuzz_dicom).
+            if (e.bitsAllocated > 16) {
+                mismatch(file, codec,
+                         std::to_string(e.bitsAllocated) +
+                             " allocated bits per sample, where JPEG stores 8 or 16");
+            }
             return true;
         }
         if (m == 0xda || length < 2) {

@@ -1,6 +1,7 @@
 #include "io/dicom/pixels.hpp"
 
 #include "io/dicom/codestream.hpp"
+#include "io/dicom/isolated_decode.hpp"
 #include "io/load_checks.hpp"
 
 #include <algorithm>
@@ -255,7 +256,13 @@ DicomPixels::DicomPixels(const DicomHeader& header) : d_(std::make_unique<Decode
         }
         checkCompressedFrames(file, image);
         d_->buffer.resize(expected);
-        if (!image.GetBuffer(d_->buffer.data())) {
+        // Compressed frames go through GDCM's codecs, which can abort on malformed data: decode
+        // them in a child process. Uncompressed data is a copy.
+        const bool decoded =
+            d_->raw ? image.GetBuffer(d_->buffer.data())
+                    : decodeIsolated(file, std::span<char>(d_->buffer.data(), d_->buffer.size()),
+                                     [&image](char* out) { return image.GetBuffer(out); });
+        if (!decoded) {
             throw ScanError(file, "cannot decode the pixel data (" + encoding + ")");
         }
     } catch (const ScanError&) {
