@@ -5,8 +5,8 @@
 // (bench_scan_light.cpp, STEERSEG_BENCH_IO=OFF) for the lent GPU machine, which has no package
 // registry and so no OpenImageIO or GDCM: there the built-in sample and NIfTI are read, and
 // pictures are written as PPM.
-#include "core/volume.hpp"
 #include "core/rgba_image.hpp"
+#include "core/volume.hpp"
 
 #include <filesystem>
 #include <string>

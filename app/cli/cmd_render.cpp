@@ -11,7 +11,6 @@
 #include "session/session.hpp"
 
 #include <cstdio>
-#include <memory>
 #include <optional>
 #include <stdexcept>
 

@@ -191,10 +191,17 @@ const IntensityStats& Volume::stats() const {
 
 std::vector<float> Volume::realValues() const {
     std::vector<float> out(geometry_.voxelCount());
-    for (std::size_t n = 0; n < out.size(); ++n) {
-        out[n] = static_cast<float>(rescale_.apply(storedAt(n)));
-    }
+    realValues(0, out);
     return out;
+}
+
+void Volume::realValues(std::size_t first, std::span<float> out) const {
+    if (first > geometry_.voxelCount() || out.size() > geometry_.voxelCount() - first) {
+        throw std::out_of_range("Volume::realValues: range past the last voxel");
+    }
+    for (std::size_t n = 0; n < out.size(); ++n) {
+        out[n] = static_cast<float>(rescale_.apply(storedAt(first + n)));
+    }
 }
 
 } // namespace steerseg

@@ -109,6 +109,9 @@ class Volume {
 
     // Real-unit copy as float (the solver's and reference's view of the scan).
     [[nodiscard]] std::vector<float> realValues() const;
+    // Real units of voxels first .. first + out.size() - 1 (linear index), for readers that
+    // go through a large scan a slab of slices at a time.
+    void realValues(std::size_t first, std::span<float> out) const;
 
   private:
     VoxelType type_ = VoxelType::UInt8;

@@ -27,9 +27,9 @@ void checkSize(const glm::ivec3& dims) {
     const int limit = queryGpuInfo().max3dTextureSize;
     if (std::max({dims.x, dims.y, dims.z}) > limit) {
         throw GpuCapacityError("the scan (" + std::to_string(dims.x) + "x" +
-                                 std::to_string(dims.y) + "x" + std::to_string(dims.z) +
-                                 ") is larger than the GPU's 3D texture limit (" +
-                                 std::to_string(limit) + " per side)");
+                               std::to_string(dims.y) + "x" + std::to_string(dims.z) +
+                               ") is larger than the GPU's 3D texture limit (" +
+                               std::to_string(limit) + " per side)");
     }
 }
 
@@ -56,10 +56,7 @@ ScanTexture::ScanTexture(const Volume& volume, ScanDisplay display) : dims_(volu
     upload(
         [&](int k0, int count, std::vector<float>& out) {
             out.resize(slice * static_cast<std::size_t>(count));
-            const std::size_t first = slice * static_cast<std::size_t>(k0);
-            for (std::size_t n = 0; n < out.size(); ++n) {
-                out[n] = static_cast<float>(volume.rescale().apply(volume.storedAt(first + n)));
-            }
+            volume.realValues(slice * static_cast<std::size_t>(k0), out);
         },
         display);
 }

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "gpu/gl_handle.hpp"
 #include "core/rgba_image.hpp"
+#include "gpu/gl_handle.hpp"
 
 #include <glm/glm.hpp>
 

@@ -64,9 +64,9 @@ SkipGrid::SkipGrid(const Volume& volume, const gpu::ScanTexture& scan)
         const int k0 = std::max(bz * kSkipBlock - 1, 0);
         const int k1 = std::min(bz * kSkipBlock + kSkipBlock + 1, d.z);
         slab.resize(slice * static_cast<std::size_t>(k1 - k0));
-        for (std::size_t n = 0; n < slab.size(); ++n) {
-            const double real = volume.rescale().apply(volume.storedAt(slice * k0 + n));
-            slab[n] = static_cast<float>(scan.normalise(real));
+        volume.realValues(slice * static_cast<std::size_t>(k0), slab);
+        for (float& v : slab) {
+            v = static_cast<float>(scan.normalise(static_cast<double>(v)));
         }
         const auto at = [&](int i, int j, int k) { return slab[linearIndex(d, i, j, k - k0)]; };
         layerMinMax(d, dims_, bz, at, out);

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/volume.hpp"
 #include "core/rgba_image.hpp"
+#include "core/volume.hpp"
 #include "support/pool_packer.hpp"
 
 #include <filesystem>
