@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 namespace steerseg::solver::detail {
@@ -23,5 +24,15 @@ struct ControlBlock {
     std::uint32_t peakActive;
 };
 static_assert(sizeof(ControlBlock) == 21 * 4);
+
+// Byte offsets of the indirect dispatch arguments in the control block.
+inline constexpr std::ptrdiff_t kAllocArgs = 0;
+inline constexpr std::ptrdiff_t kBrickArgs = 12;
+inline constexpr std::ptrdiff_t kListArgs = 24;
+
+// Work groups of `size` invocations that cover `count` items.
+inline std::uint32_t groupsOf(std::uint32_t count, std::uint32_t size) {
+    return (count + size - 1) / size;
+}
 
 } // namespace steerseg::solver::detail

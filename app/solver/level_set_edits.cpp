@@ -1,0 +1,110 @@
+// The level set's edits: a new start (threshold, mask) and sphere seeds and erasers, each ending
+// with the band's bricks classified and the convergence clock restarted.
+#include "gpu/gl_error.hpp"
+#include "gpu/gl_state_guard.hpp"
+#include "solver/gpu_brick_pool.hpp"
+#include "solver/level_set_solver.hpp"
+#include "solver/phi_init.hpp"
+#include "solver/solver_programs.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace steerseg::solver {
+
+using detail::ControlBlock;
+using detail::groupsOf;
+using detail::kBrickArgs;
+
+void LevelSetSolver::uploadPhi(const std::vector<float>& phi) {
+    gpu::GlStateGuard guard;
+    pool_->upload(phi, options_.dense);
+    pool_->bind();
+    allocateAndList();
+    dispatchIndirect(programs_->classifyBricks.id(), kBrickArgs);
+    settle();
+    noteChange();
+    stats_.peakLevelSetBytes = std::max(stats_.peakLevelSetBytes, pool_->levelSetBytes());
+}
+
+void LevelSetSolver::initFromThreshold(std::span<const float> intensities, float lo, float hi) {
+    if (intensities.size() != static_cast<std::size_t>(dims_.x) *
+                                  static_cast<std::size_t>(dims_.y) *
+                                  static_cast<std::size_t>(dims_.z)) {
+        throw std::invalid_argument("solver: intensities do not match the volume's dimensions");
+    }
+    uploadPhi(maskToPhi(thresholdMask(intensities, lo, hi), dims_));
+}
+
+void LevelSetSolver::initFromMask(std::span<const std::uint8_t> mask) {
+    uploadPhi(maskToPhi(mask, dims_));
+}
+
+void LevelSetSolver::addSphere(const Sphere& sphere) {
+    editSphere(sphere, true);
+}
+void LevelSetSolver::removeSphere(const Sphere& sphere) {
+    editSphere(sphere, false);
+}
+
+void LevelSetSolver::editSphere(const Sphere& sphere, bool add) {
+    validateSphere(sphere, dims_);
+    gpu::GlStateGuard guard;
+    const int b = options_.brickSize;
+    const float reach = sphere.radius + kPhiFar + 1.0F;
+    const glm::ivec3 lo = glm::clamp(glm::ivec3(glm::floor(sphere.centre - reach)) / b,
+                                     glm::ivec3(0), pool_->brickGrid() - 1);
+    const glm::ivec3 hi = glm::clamp(glm::ivec3(glm::ceil(sphere.centre + reach)) / b,
+                                     glm::ivec3(0), pool_->brickGrid() - 1);
+    const glm::ivec3 size = hi - lo + 1;
+    const auto boxBricks = static_cast<std::uint32_t>(size.x * size.y * size.z);
+    // Make room for every brick of the box up front: an edit must not stall half-applied.
+    ControlBlock ctrl = pool_->readControl();
+    const std::uint32_t used = pool_->usedSlots(ctrl);
+    if (ctrl.freeCount < boxBricks + ctrl.requestCount) {
+        const std::uint32_t want = used + boxBricks + ctrl.requestCount;
+        pool_->grow(want + want / 4, ctrl);
+        ++stats_.poolGrowths;
+        stats_.peakLevelSetBytes = std::max(stats_.peakLevelSetBytes, pool_->levelSetBytes());
+    }
+    pool_->bind();
+    auto& p = *programs_;
+    const GLuint req = p.requestEditBricks.id();
+    const GLuint apply = p.applySphere.id();
+    for (GLuint prog : {req, apply}) {
+        glProgramUniform3i(prog, glGetUniformLocation(prog, "boxMin"), lo.x, lo.y, lo.z);
+        glProgramUniform3i(prog, glGetUniformLocation(prog, "boxSize"), size.x, size.y, size.z);
+        glProgramUniform3f(prog, glGetUniformLocation(prog, "centre"), sphere.centre.x,
+                           sphere.centre.y, sphere.centre.z);
+        glProgramUniform1f(prog, glGetUniformLocation(prog, "radius"), sphere.radius);
+        glProgramUniform1i(prog, glGetUniformLocation(prog, "addMode"), add ? 1 : 0);
+    }
+    glProgramUniform1ui(req, glGetUniformLocation(req, "epoch"), epoch_);
+    dispatch(req, groupsOf(static_cast<std::uint32_t>(size.x), 4),
+             groupsOf(static_cast<std::uint32_t>(size.y), 4),
+             groupsOf(static_cast<std::uint32_t>(size.z), 4));
+    allocateAndList();
+    if (pool_->readControl().stalled != 0) {
+        throw gpu::GpuCapacityError("sphere edit needs more bricks than the GPU's storage holds");
+    }
+    dispatch(apply, static_cast<GLuint>(size.x), static_cast<GLuint>(size.y),
+             static_cast<GLuint>(size.z));
+    dispatchIndirect(p.classifyBricks.id(), kBrickArgs);
+    settle();
+    noteChange();
+    gpu::checkGl("sphere edit");
+}
+
+// An edit or a parameter change restarts the convergence clock, and the baseline of the pool's
+// growth estimate (managePool): an edit's bricks are not the band's advance.
+void LevelSetSolver::noteChange() {
+    ControlBlock ctrl = pool_->readControl();
+    lastUsed_ = pool_->usedSlots(ctrl);
+    ctrl.lastChange = ctrl.iteration;
+    ctrl.lastChangeTime = ctrl.time;
+    pool_->writeControl(ctrl);
+    known_ = ctrl;
+    converged_ = false;
+}
+
+} // namespace steerseg::solver
