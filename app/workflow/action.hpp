@@ -1,0 +1,134 @@
+#pragma once
+
+// The workflow's vocabulary: the states of the fixed operator workflow and the actions that
+// move it. Devices, gestures, bindings and scripts all end here; nothing in this folder knows
+// where an action came from. No GL, no OS: the workflow runs in unit tests without a GPU.
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace steerseg::workflow {
+
+// load -> inspect -> seed -> evolve <-> pause (steering) -> review -> export -> done.
+enum class State {
+    NoScan,    // nothing loaded (start, or a load failed)
+    Loading,   // a scan is being read off the frame loop
+    Inspect,   // probe, window/level, presets, transfer function
+    Seeding,   // place seed spheres (and erasers) before the first run
+    Evolving,  // the solver runs; every parameter and sphere edit applies live
+    Paused,    // steering with the solver stopped (also where convergence lands)
+    Review,    // the operator looks at the result before exporting
+    Exporting, // a write is under way
+    Done,      // the result was written; a new scan may be loaded
+    Error,     // something failed; the message says what, Dismiss goes back
+};
+std::string_view stateName(State state);
+
+// The parameters a knob, the panel or a script can set. Radius is the brush (seed/erase sphere).
+enum class Param { Target, Epsilon, Alpha, Radius };
+inline constexpr int kParamCount = 4;
+std::string_view paramName(Param param); // "T", "eps", "alpha", "radius"
+std::optional<Param> paramFromName(std::string_view name);
+
+// Which 2D views the screen shows; the view state is the workflow's so scripts and the audit
+// log see it, and a replay draws the same frames.
+enum class SliceAxis { Axial, Coronal, Sagittal };
+
+// --- actions -------------------------------------------------------------------------------
+struct LoadScan {
+    std::string path; // a file, a DICOM folder or "builtin:sample"
+};
+struct Probe { // statistics of a sphere -> T and eps (with the eps floor)
+    glm::dvec3 voxel{0.0};
+    double radiusMm = 5.0;
+};
+struct ApplyPreset {
+    std::string name; // a tissue preset of the config
+};
+struct SetParam { // absolute value, clamped to the parameter's range
+    Param param = Param::Target;
+    double value = 0.0;
+};
+struct NudgeParam { // relative control: steps of the parameter's fine step (knobs, +/- keys)
+    Param param = Param::Target;
+    double steps = 0.0;
+};
+struct NudgeSelected { // the same on the parameter a knob currently drives
+    double steps = 0.0;
+};
+struct SelectParam { // absolute selection (panel) ...
+    Param param = Param::Target;
+};
+struct CycleParam { // ... or the next/previous one (a button)
+    int delta = 1;
+};
+struct SetWindow {
+    double level = 0.0;
+    double width = 1.0;
+};
+struct AddSeed { // voxel-index centre, radius in voxels
+    glm::dvec3 voxel{0.0};
+    double radius = 0.0; // <= 0: the brush radius (Param::Radius)
+};
+struct Erase {
+    glm::dvec3 voxel{0.0};
+    double radius = 0.0; // <= 0: the brush radius
+};
+struct SetEraseMode { // a tap on a slice seeds, or erases in erase mode
+    bool erase = false;
+};
+struct Run {};
+struct Pause {};
+struct ToggleRun {}; // run if stopped, pause if running (a PowerMate press, the space bar)
+struct Finish {};    // -> review
+struct Resume {};    // review -> paused: back to steering
+struct Export {
+    std::string path; // empty: the export folder, a name from the scan and the time
+};
+struct Undo {};
+struct Redo {};
+struct Restart {}; // drop the level set and go back to seeding (undoable)
+struct Dismiss {}; // acknowledge an error
+// View state.
+struct RotateView { // 3D view, degrees
+    double yaw = 0.0;
+    double pitch = 0.0;
+};
+struct ZoomView { // 3D view, factor (> 1 = closer)
+    double factor = 1.0;
+};
+struct PageSlice { // a slice view, in slices
+    SliceAxis axis = SliceAxis::Axial;
+    int delta = 0;
+};
+struct SetSlice {
+    SliceAxis axis = SliceAxis::Axial;
+    int index = 0;
+};
+struct ShowSlices { // which two orientations the slice views show
+    SliceAxis first = SliceAxis::Axial;
+    SliceAxis second = SliceAxis::Coronal;
+};
+struct Quit {};
+
+using Action =
+    std::variant<LoadScan, Probe, ApplyPreset, SetParam, NudgeParam, NudgeSelected, SelectParam,
+                 CycleParam, SetWindow, AddSeed, Erase, SetEraseMode, Run, Pause, ToggleRun,
+                 Finish, Resume, Export, Undo, Redo, Restart, Dismiss, RotateView, ZoomView,
+                 PageSlice, SetSlice, ShowSlices, Quit>;
+
+// "load_scan", "probe", ... (snake_case of the type): the audit log's and scripts' names.
+std::string_view actionName(const Action& action);
+
+// The actions a binding can name (config's [bindings]): the ones without arguments, plus the
+// relative ones with a step ("nudge:T", "nudge_selected", "page:axial", "rotate_yaw", ...).
+// Returns the action for one step of the control (`steps` = signed detents or key repeats).
+// nullopt for a name that is not bindable; bindableNames() lists them for the config's message.
+std::optional<Action> bindingAction(std::string_view name, double steps);
+const std::vector<std::string_view>& bindableNames();
+
+} // namespace steerseg::workflow

@@ -1,0 +1,74 @@
+#pragma once
+
+// What the workflow needs from the scan, the solver and the writers, and nothing more. The
+// kiosk implements it over session::Session (GL, on the frame loop's thread); tests implement
+// it in memory. Errors are exceptions with one line for the operator (std::exception::what()).
+#include "solver/level_set_params.hpp" // plain structs only: the workflow links no solver code
+#include "solver/solver_types.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+namespace steerseg::workflow {
+
+struct ScanInfo {
+    std::string identity; // what the audit log names: the path and, for DICOM, the series UID
+    std::string name;     // short, for file names and the panel ("CT_sarcoma", "sample")
+    glm::ivec3 dims{0};
+    glm::dvec3 spacing{1.0}; // mm
+    double minValue = 0.0;   // real units, the whole scan
+    double maxValue = 0.0;
+    std::string units; // "HU", "" ...
+};
+
+struct LoadPoll {
+    enum Kind { Running, Ready, Failed } kind = Running;
+    double progress = 0.0; // 0..1 when known, < 0 when not
+    std::string error;     // Failed: the reader's message
+};
+
+struct ProbeResult {
+    double mean = 0.0;
+    double stddev = 0.0;
+    std::size_t count = 0; // 0: the sphere missed the scan
+};
+
+// A copy of the level set that undo can go back to.
+using SnapshotId = std::uint64_t;
+
+class Engine {
+  public:
+    virtual ~Engine() = default;
+
+    // Starts reading a scan off the frame loop; pollLoad() on later frames says how it goes.
+    // A second beginLoad replaces the first.
+    virtual void beginLoad(const std::string& path) = 0;
+    // Ready: the scan is attached (GPU upload done on the caller's thread), the level set empty.
+    virtual LoadPoll pollLoad() = 0;
+    [[nodiscard]] virtual ScanInfo scanInfo() const = 0;
+
+    [[nodiscard]] virtual ProbeResult probe(const glm::dvec3& voxel, double radiusMm) const = 0;
+
+    // Sphere edits; std::invalid_argument for a sphere outside the scan.
+    virtual void addSeed(const solver::Sphere& sphere) = 0;
+    virtual void erase(const solver::Sphere& sphere) = 0;
+    virtual void clearLevelSet() = 0;
+    [[nodiscard]] virtual bool hasLevelSet() const = 0;
+
+    virtual void setParams(const solver::LevelSetParams& params) = 0;
+    virtual solver::StepResult step(int iterations) = 0;
+    [[nodiscard]] virtual solver::SolverStats stats() const = 0;
+    // Segmented volume in millilitres (counted on the GPU side's mask).
+    [[nodiscard]] virtual double volumeMl() const = 0;
+
+    // Level-set copies for undo; restore keeps the snapshot, drop frees it.
+    virtual SnapshotId snapshot() = 0;
+    virtual void restore(SnapshotId id) = 0;
+    virtual void drop(SnapshotId id) = 0;
+
+    // Writes the mask on the scan's grid; std::runtime_error naming the path on failure.
+    virtual void exportMask(const std::filesystem::path& path) = 0;
+};
+
+} // namespace steerseg::workflow

@@ -1,0 +1,57 @@
+#pragma once
+
+// Everything the screen shows about the workflow, as one plain value the UI reads each frame.
+#include "workflow/action.hpp"
+#include "workflow/engine.hpp"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace steerseg::workflow {
+
+struct ParamRange {
+    double min = 0.0;
+    double max = 1.0;
+    double fineStep = 0.01; // one knob detent or key press
+};
+
+// The view state the kiosk turns into render::ViewParams.
+struct ViewState {
+    double yawDeg = 0.0; // 3D camera about the scan's centre; 0,0 = anterior view
+    double pitchDeg = 0.0;
+    double zoom = 1.0;
+    glm::ivec3 slice{-1}; // per SliceAxis (axial, coronal, sagittal); -1 = middle
+    SliceAxis first = SliceAxis::Axial; // the slice view with the yellow contour
+    SliceAxis second = SliceAxis::Coronal; // the slice view with the speed
+    double windowLevel = 0.0;
+    double windowWidth = 0.0; // 0 = not set yet: the kiosk's default for the scan
+    std::string transfer;     // transfer-function preset name ("" = the scan's default)
+};
+
+struct Status {
+    State state = State::NoScan;
+    std::string message; // the last error or notice for the operator ("" = none)
+    double loadProgress = 0.0;
+    ScanInfo scan;
+    solver::LevelSetParams params;
+    double radius = 3.0; // brush, voxels
+    Param selected = Param::Target;
+    std::array<ParamRange, kParamCount> ranges{};
+    bool eraseMode = false;
+    bool hasLevelSet = false;
+    int seeds = 0;
+    int erasures = 0;
+    int iterations = 0;
+    double evolvedTime = 0.0;
+    double volumeMl = 0.0;
+    bool converged = false;
+    bool canUndo = false;
+    bool canRedo = false;
+    std::string preset;       // the last preset applied ("" = none)
+    std::string exportedPath; // Done: where the mask went
+    ViewState view;
+    std::vector<std::string> presets; // names, in the config's order
+};
+
+} // namespace steerseg::workflow
