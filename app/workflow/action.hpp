@@ -92,6 +92,10 @@ struct Export {
 struct Undo {};
 struct Redo {};
 struct Restart {}; // drop the level set and go back to seeding (undoable)
+// The workflow's next and previous step, for a single button or pedal: inspect -> seeding ->
+// evolving -> review -> export; back: seeding -> inspect, review -> paused, done -> review.
+struct Proceed {};
+struct Back {};
 struct Dismiss {}; // acknowledge an error
 // View state.
 struct RotateView { // 3D view, degrees
@@ -118,7 +122,7 @@ struct Quit {};
 using Action =
     std::variant<LoadScan, Probe, ApplyPreset, SetParam, NudgeParam, NudgeSelected, SelectParam,
                  CycleParam, SetWindow, AddSeed, Erase, SetEraseMode, Run, Pause, ToggleRun,
-                 Finish, Resume, Export, Undo, Redo, Restart, Dismiss, RotateView, ZoomView,
+                 Finish, Resume, Export, Undo, Redo, Restart, Proceed, Back, Dismiss, RotateView, ZoomView,
                  PageSlice, SetSlice, ShowSlices, Quit>;
 
 // "load_scan", "probe", ... (snake_case of the type): the audit log's and scripts' names.
