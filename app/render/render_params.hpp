@@ -51,6 +51,15 @@ struct ViewParams {
     SpeedParams speed;
     bool contour = true; // slice views: yellow contour of phi = 0
     bool labels = true;  // slice views: orientation letters
+    // Which of the renderer's pictures to draw into (0..kRenderTargets-1). A screen that shows
+    // several views keeps one picture each, so a 3D view refined over several frames survives
+    // the slice views drawn in between.
+    int target = 0;
+    // 3D view: draw only rows [x, x + y) of the picture and keep the others as they were, so a
+    // picture too slow for one frame is drawn over several. y < 0 = every row.
+    glm::ivec2 rows{0, -1};
 };
+
+inline constexpr int kRenderTargets = 4;
 
 } // namespace steerseg::render

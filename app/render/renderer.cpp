@@ -3,6 +3,7 @@
 #include "gpu/gl_state_guard.hpp"
 
 #include <stdexcept>
+#include <string>
 
 namespace steerseg::render {
 
@@ -39,14 +40,28 @@ Renderer::Renderer(const Volume& scan)
 
 std::optional<SliceFrame> Renderer::render(const ViewParams& params,
                                            const solver::BrickPoolView* pool) {
+    if (params.target < 0 || params.target >= kRenderTargets) {
+        throw std::invalid_argument("render target " + std::to_string(params.target) +
+                                    " is not 0.." + std::to_string(kRenderTargets - 1));
+    }
     gpu::GlStateGuard guard;
-    target_.ensureSize(params.size);
-    const RenderInputs in{*scan_, skip_, geometry_, pool, empty_.id(), target_};
+    last_ = static_cast<std::size_t>(params.target);
+    RenderTarget& target = targets_[last_];
+    target.ensureSize(params.size);
+    const RenderInputs in{*scan_, skip_, geometry_, pool, empty_.id(), target};
     if (params.kind == ViewKind::Volume3d) {
         volume_.draw(in, params);
         return std::nullopt;
     }
     return slices_.draw(in, params);
+}
+
+const RenderTarget& Renderer::target(int index) const {
+    if (index < 0 || index >= kRenderTargets) {
+        throw std::invalid_argument("render target " + std::to_string(index) + " is not 0.." +
+                                    std::to_string(kRenderTargets - 1));
+    }
+    return targets_[static_cast<std::size_t>(index)];
 }
 
 ViewParams Renderer::defaultParams(ViewKind kind, const glm::ivec2& size) const {

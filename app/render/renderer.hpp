@@ -10,6 +10,7 @@
 #include "render/volume_view.hpp"
 #include "solver/brick_pool_view.hpp"
 
+#include <array>
 #include <memory>
 #include <optional>
 
@@ -31,8 +32,10 @@ class Renderer {
     // for this call) or null for the scan alone. Returns the slice frame for slice views.
     std::optional<SliceFrame> render(const ViewParams& params, const solver::BrickPoolView* pool);
 
-    [[nodiscard]] const RenderTarget& target() const { return target_; }
-    [[nodiscard]] RgbaImage readback() const { return target_.readback(); }
+    // The picture the last render() drew into, or picture `index` (ViewParams::target).
+    [[nodiscard]] const RenderTarget& target() const { return targets_[last_]; }
+    [[nodiscard]] const RenderTarget& target(int index) const;
+    [[nodiscard]] RgbaImage readback() const { return target().readback(); }
     [[nodiscard]] const Geometry& geometry() const { return geometry_; }
     [[nodiscard]] const gpu::ScanTexture& scan() const { return *scan_; }
 
@@ -45,7 +48,8 @@ class Renderer {
     std::unique_ptr<gpu::ScanTexture> ownScan_;
     const gpu::ScanTexture* scan_;
     SkipGrid skip_;
-    RenderTarget target_;
+    std::array<RenderTarget, kRenderTargets> targets_;
+    std::size_t last_ = 0;
     gpu::Buffer empty_;
     VolumeView volume_;
     SliceView slices_;

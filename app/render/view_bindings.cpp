@@ -55,9 +55,16 @@ void bindCommon(GLuint program, const RenderInputs& in, const ViewParams& params
                        GL_RGBA8);
 }
 
-void dispatchPixels(const glm::ivec2& size) {
-    glDispatchCompute(static_cast<GLuint>((size.x + 7) / 8), static_cast<GLuint>((size.y + 7) / 8),
-                      1);
+void dispatchRows(GLuint program, const ViewParams& params) {
+    const int first = std::clamp(params.rows.x, 0, params.size.y);
+    const int count = params.rows.y < 0 ? params.size.y - first
+                                        : std::min(params.rows.y, params.size.y - first);
+    if (count <= 0) {
+        return;
+    }
+    glUniform1i(uniform(program, "firstRow"), first);
+    glDispatchCompute(static_cast<GLuint>((params.size.x + 7) / 8),
+                      static_cast<GLuint>((count + 7) / 8), 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                     GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }

@@ -41,8 +41,9 @@ class PoolProgram {
 // the uniforms of shaders/render/view_common.glsl. The program must be current.
 void bindCommon(GLuint program, const RenderInputs& in, const ViewParams& params);
 
-// Dispatches one invocation per pixel (8x8 work groups) and orders the writes before reads.
-void dispatchPixels(const glm::ivec2& size);
+// Dispatches one invocation per pixel of the rows params.rows asks for (all by default; 8x8
+// work groups) and orders the writes before reads. The other rows keep what they held.
+void dispatchRows(GLuint program, const ViewParams& params);
 
 GLint uniform(GLuint program, const char* name);
 

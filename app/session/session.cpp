@@ -7,6 +7,7 @@
 #include "render/renderer.hpp"
 #include "solver/level_set_solver.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -70,8 +71,22 @@ void Session::startFromMask(const std::filesystem::path& path) {
     for (std::size_t n = 0; n < inside.size(); ++n) {
         inside[n] = mask.volume.rescale().apply(mask.volume.storedAt(n)) > 0.5 ? 1 : 0;
     }
+    setMask(inside);
+}
+
+void Session::setMask(std::span<const std::uint8_t> inside) {
+    if (inside.size() != scan_.geometry().voxelCount()) {
+        throw std::invalid_argument("mask has " + std::to_string(inside.size()) +
+                                    " voxels but the scan " +
+                                    std::to_string(scan_.geometry().voxelCount()));
+    }
     gpu_->solver.initFromMask(inside);
-    hasLevelSet_ = true;
+    hasLevelSet_ = std::any_of(inside.begin(), inside.end(), [](std::uint8_t v) { return v != 0; });
+}
+
+void Session::clearLevelSet() {
+    const std::vector<std::uint8_t> none(scan_.geometry().voxelCount(), 0);
+    setMask(none);
 }
 
 bool Session::hasLevelSet() const {
@@ -140,6 +155,14 @@ std::optional<render::SliceFrame> Session::render(const render::ViewParams& para
 
 RgbaImage Session::picture() const {
     return gpu_->renderer.readback();
+}
+
+unsigned int Session::pictureTexture(int index) const {
+    return gpu_->renderer.target(index).texture();
+}
+
+glm::ivec2 Session::pictureSize(int index) const {
+    return gpu_->renderer.target(index).size();
 }
 
 ProbeStats Session::probeAt(const glm::dvec3& index, double radiusMm) const {

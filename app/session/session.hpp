@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,11 @@ class Session {
     // A mask on the scan's grid (inside where > 0.5) replaces the level set. Throws
     // std::runtime_error naming the file when it cannot be read or its grid differs.
     void startFromMask(const std::filesystem::path& mask);
+    // Replaces the level set with `inside` (non-zero = inside, i fastest, one byte per voxel of
+    // the scan): undo and resume go back to a mask they kept. All zero leaves no level set.
+    // std::invalid_argument for a mask of the wrong size.
+    void setMask(std::span<const std::uint8_t> inside);
+    void clearLevelSet();
     [[nodiscard]] bool hasLevelSet() const;
 
     // Validated (std::invalid_argument); may change between any two steps.
@@ -77,6 +83,10 @@ class Session {
     std::optional<render::SliceFrame> render(const render::ViewParams& params);
     // The last view drawn.
     [[nodiscard]] RgbaImage picture() const;
+    // Picture `index` (ViewParams::target) as a GL texture name and its size, for a screen that
+    // composes the views itself (the kiosk); 0 and 0x0 before anything was drawn into it.
+    [[nodiscard]] unsigned int pictureTexture(int index) const;
+    [[nodiscard]] glm::ivec2 pictureSize(int index) const;
 
     // Intensity statistics around a voxel-index point (the probe of any view).
     [[nodiscard]] ProbeStats probeAt(const glm::dvec3& index, double radiusMm) const;

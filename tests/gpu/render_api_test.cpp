@@ -29,6 +29,36 @@ Geometry cube(int n) {
 
 class RenderApi : public GpuTest {};
 
+// The kiosk draws a slow 3D view over several frames in bands of rows, into a picture of its
+// own that the slice views drawn in between leave alone: the bands must add up to the picture
+// drawn at once.
+TEST_F(RenderApi, BandsOfRowsInTheirOwnPictureAddUpToTheWholePicture) {
+    const Volume scan = makeHeadScene();
+    render::Renderer renderer(scan);
+    GpuPool pool(spherePool(scan.dims(), kHeadLesionCentre, kHeadLesionRadius));
+    const BrickPoolView view = pool.view();
+    for (ViewKind kind : {ViewKind::Volume3d, ViewKind::Coronal}) {
+        render::ViewParams whole = renderer.defaultParams(kind, {48, 37});
+        renderer.render(whole, &view);
+        const RgbaImage expected = renderer.readback();
+
+        render::ViewParams band = whole;
+        band.target = 3;
+        for (int first = 0; first < 37; first += 11) {
+            band.rows = {first, 11};
+            renderer.render(band, &view);
+            // A slice view into another picture between bands must not disturb this one.
+            render::ViewParams other = renderer.defaultParams(ViewKind::Axial, {20, 20});
+            other.target = 1;
+            renderer.render(other, &view);
+        }
+        EXPECT_EQ(renderer.target(3).readback().pixels, expected.pixels);
+    }
+    render::ViewParams bad = renderer.defaultParams(ViewKind::Axial, {8, 8});
+    bad.target = render::kRenderTargets;
+    EXPECT_THROW(renderer.render(bad, nullptr), std::invalid_argument);
+}
+
 TEST_F(RenderApi, RestoresTheGlStateItChanges) {
     const Volume scan = makeHeadScene();
     render::Renderer renderer(scan);

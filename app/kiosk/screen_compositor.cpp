@@ -1,0 +1,145 @@
+#include "kiosk/screen_compositor.hpp"
+
+#include "gpu/gl_error.hpp"
+#include "gpu/gl_state_guard.hpp"
+#include "gpu/program.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace steerseg::kiosk {
+
+namespace {
+
+int quarterTurnsOf(int rotationDeg) {
+    if (rotationDeg != 0 && rotationDeg != 90 && rotationDeg != 180 && rotationDeg != 270) {
+        throw std::invalid_argument("display rotation " + std::to_string(rotationDeg) +
+                                    " is not 0, 90, 180 or 270");
+    }
+    return rotationDeg / 90;
+}
+
+GLuint newFramebuffer() {
+    GLuint fb = 0;
+    glGenFramebuffers(1, &fb);
+    return fb;
+}
+
+} // namespace
+
+glm::ivec2 logicalSize(const glm::ivec2& physical, int rotationDeg) {
+    return quarterTurnsOf(rotationDeg) % 2 == 1 ? glm::ivec2(physical.y, physical.x) : physical;
+}
+
+ScreenCompositor::ScreenCompositor(const glm::ivec2& physicalSize, int rotationDeg)
+    : size_(logicalSize(physicalSize, rotationDeg)), quarterTurns_(quarterTurnsOf(rotationDeg)) {
+    if (size_.x <= 0 || size_.y <= 0) {
+        throw std::invalid_argument("screen size must be positive");
+    }
+    gpu::GlStateGuard guard;
+    colour_ = gpu::createTexture();
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, colour_.id());
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, size_.x, size_.y);
+    // Nearest: unturned or turned by quarter turns, each display pixel shows one logical pixel.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    framebuffer_ = gpu::Framebuffer(newFramebuffer());
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_.id(), 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        throw gpu::GlError("the logical screen's framebuffer is incomplete");
+    }
+    source_ = gpu::Framebuffer(newFramebuffer());
+    if (quarterTurns_ != 0) {
+        present_ = gpu::buildGraphicsProgram("kiosk/present.vert", "kiosk/present.frag");
+        GLuint vao = 0;
+        glGenVertexArrays(1, &vao);
+        vertexArray_ = gpu::VertexArray(vao);
+    }
+    gpu::checkGl("creating the logical screen");
+}
+
+void ScreenCompositor::begin(const glm::vec3& background) {
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+    glViewport(0, 0, size_.x, size_.y);
+    glDisable(GL_SCISSOR_TEST);
+    glClearColor(background.r, background.g, background.b, 1.0F);
+    glClear(GL_COLOR_BUFFER_BIT);
+}
+
+void ScreenCompositor::drawPicture(unsigned int texture, const glm::ivec2& pictureSize,
+                                   const ScreenRect& rect) {
+    if (texture == 0 || pictureSize.x <= 0 || pictureSize.y <= 0 || rect.width <= 0 ||
+        rect.height <= 0) {
+        return;
+    }
+    gpu::GlStateGuard guard;
+    // The compute shaders' writes must land before the blit reads them.
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, source_.id());
+    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
+    glDisable(GL_SCISSOR_TEST);
+    // Row 0 of the picture is its top; GL counts rows from the bottom: the blit flips.
+    const int top = size_.y - rect.y;
+    const int bottom = size_.y - rect.y - rect.height;
+    const bool exact = pictureSize.x == rect.width && pictureSize.y == rect.height;
+    glBlitFramebuffer(0, 0, pictureSize.x, pictureSize.y, rect.x, top, rect.x + rect.width, bottom,
+                      GL_COLOR_BUFFER_BIT, exact ? GL_NEAREST : GL_LINEAR);
+    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
+    gpu::checkGl("drawing a view onto the screen");
+}
+
+void ScreenCompositor::present(unsigned int displayFramebuffer, const glm::ivec2& displaySize) {
+    gpu::GlStateGuard guard;
+    if (quarterTurns_ == 0) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, displayFramebuffer);
+        glDisable(GL_SCISSOR_TEST);
+        glBlitFramebuffer(0, 0, size_.x, size_.y, 0, 0, displaySize.x, displaySize.y,
+                          GL_COLOR_BUFFER_BIT,
+                          displaySize == size_ ? GL_NEAREST : GL_LINEAR);
+    } else {
+        glBindFramebuffer(GL_FRAMEBUFFER, displayFramebuffer);
+        glViewport(0, 0, displaySize.x, displaySize.y);
+        glDisable(GL_SCISSOR_TEST);
+        glDisable(GL_BLEND);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_CULL_FACE);
+        glUseProgram(present_.id());
+        glUniform1i(glGetUniformLocation(present_.id(), "quarterTurns"), quarterTurns_);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, colour_.id());
+        glBindVertexArray(vertexArray_.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindVertexArray(0);
+    }
+    gpu::checkGl("presenting the screen");
+}
+
+RgbaImage ScreenCompositor::capture() const {
+    gpu::GlStateGuard guard;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    RgbaImage bottomUp{size_.x, size_.y, {}};
+    bottomUp.pixels.resize(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y) * 4);
+    glReadPixels(0, 0, size_.x, size_.y, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.pixels.data());
+    gpu::checkGl("reading the screen back");
+    RgbaImage image{size_.x, size_.y, std::vector<std::uint8_t>(bottomUp.pixels.size())};
+    const auto row = static_cast<std::size_t>(size_.x) * 4;
+    for (int y = 0; y < size_.y; ++y) {
+        std::copy_n(bottomUp.pixels.begin() +
+                        static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(size_.y - 1 - y)),
+                    row, image.pixels.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y)));
+    }
+    // A screen has no transparency: the 3D view's picture carries its own coverage in alpha.
+    for (std::size_t n = 3; n < image.pixels.size(); n += 4) {
+        image.pixels[n] = 255;
+    }
+    return image;
+}
+
+} // namespace steerseg::kiosk

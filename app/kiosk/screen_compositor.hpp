@@ -1,0 +1,50 @@
+#pragma once
+
+// The logical screen, as the operator sees it upright: the views' pictures blitted into their
+// rectangles, the UI drawn on top, then the whole turned by the panel's mounting onto the
+// display's framebuffer. Frames saved to files are the logical screen, so a scripted session
+// draws the same PNGs on every backend and rotation.
+#include "core/rgba_image.hpp"
+#include "gpu/gl_handle.hpp"
+
+#include <glm/glm.hpp>
+
+namespace steerseg::kiosk {
+
+// x, y (top left), width, height in logical screen pixels.
+struct ScreenRect {
+    int x = 0;
+    int y = 0;
+    int width = 0;
+    int height = 0;
+};
+
+// The logical size of a display of `physical` pixels mounted at `rotationDeg` (0, 90, 180, 270).
+glm::ivec2 logicalSize(const glm::ivec2& physical, int rotationDeg);
+
+class ScreenCompositor {
+  public:
+    ScreenCompositor(const glm::ivec2& physicalSize, int rotationDeg);
+
+    [[nodiscard]] glm::ivec2 size() const { return size_; }
+    // The logical screen's framebuffer, bound and cleared to the background.
+    void begin(const glm::vec3& background);
+    [[nodiscard]] unsigned int framebuffer() const { return framebuffer_.id(); }
+    // A picture (row 0 at the top, as the renderer writes it) scaled into `rect`.
+    void drawPicture(unsigned int texture, const glm::ivec2& pictureSize, const ScreenRect& rect);
+    // The logical screen onto the display's framebuffer, turned as mounted.
+    void present(unsigned int displayFramebuffer, const glm::ivec2& displaySize);
+    // The logical screen as it is now (row 0 at the top).
+    [[nodiscard]] RgbaImage capture() const;
+
+  private:
+    glm::ivec2 size_;
+    int quarterTurns_;
+    gpu::Texture colour_;
+    gpu::Framebuffer framebuffer_;
+    gpu::Framebuffer source_; // a picture attached for blitting
+    gpu::Program present_;
+    gpu::VertexArray vertexArray_;
+};
+
+} // namespace steerseg::kiosk

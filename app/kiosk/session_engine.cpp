@@ -1,0 +1,239 @@
+#include "kiosk/session_engine.hpp"
+
+#include "gpu/gl.hpp"
+#include "io/scan_reader.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace steerseg::kiosk {
+
+struct SessionEngine::PendingLoad {
+    std::string path;
+    std::future<void> done;
+    io::LoadedScan result;
+    std::string error;
+};
+
+namespace {
+
+constexpr auto kVolumeRefresh = std::chrono::milliseconds(500);
+
+bool endsWith(const std::string& s, const std::string& tail) {
+    return s.size() > tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+} // namespace
+
+std::string scanShortName(const std::string& path) {
+    if (path == io::kBuiltinSample) {
+        return "sample";
+    }
+    std::filesystem::path p(path);
+    while (!p.empty() && p.filename().empty()) {
+        p = p.parent_path(); // "series/" names the folder
+    }
+    std::string name = p.filename().string();
+    for (const char* ext : {".nii.gz", ".nii", ".nrrd", ".nhdr", ".mha", ".mhd", ".mgz", ".dcm"}) {
+        if (endsWith(name, ext)) {
+            name.resize(name.size() - std::string(ext).size());
+            break;
+        }
+    }
+    // The name ends up in export paths: keep it to characters every filesystem takes.
+    for (char& c : name) {
+        const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                           (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.';
+        if (!plain) {
+            c = '_';
+        }
+    }
+    return name.empty() ? "scan" : name;
+}
+
+SessionEngine::SessionEngine(solver::SolverOptions options) : options_(options) {}
+
+SessionEngine::~SessionEngine() {
+    if (pending_) {
+        abandoned_.push_back(std::move(pending_));
+    }
+    for (auto& load : abandoned_) {
+        if (load->done.valid()) {
+            load->done.wait();
+        }
+    }
+}
+
+void SessionEngine::beginLoad(const std::string& path) {
+    if (pending_) {
+        abandoned_.push_back(std::move(pending_));
+    }
+    auto load = std::make_unique<PendingLoad>();
+    load->path = path;
+    PendingLoad* raw = load.get();
+    // The worker writes only into its own PendingLoad, which lives (in pending_ or abandoned_)
+    // until the worker has been joined.
+    load->done = std::async(std::launch::async, [raw] {
+        try {
+            raw->result = io::readScan(raw->path);
+        } catch (const std::exception& e) {
+            raw->error = e.what();
+        } catch (...) {
+            raw->error = raw->path + ": unknown error while reading";
+        }
+    });
+    pending_ = std::move(load);
+}
+
+workflow::LoadPoll SessionEngine::pollLoad() {
+    workflow::LoadPoll poll;
+    poll.progress = -1.0; // the readers do not report progress
+    if (!pending_) {
+        poll.kind = workflow::LoadPoll::Failed;
+        poll.error = "no scan is being loaded";
+        return poll;
+    }
+    if (pending_->done.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
+        return poll;
+    }
+    pending_->done.get();
+    std::unique_ptr<PendingLoad> load = std::move(pending_);
+    if (!load->error.empty()) {
+        poll.kind = workflow::LoadPoll::Failed;
+        poll.error = load->error;
+        return poll;
+    }
+    try {
+        // The GPU upload: on this thread, which holds the context. The previous scan's session
+        // goes first so two scans never share the GPU's memory.
+        session_.reset();
+        snapshots_.clear();
+        session_ = std::make_unique<session::Session>(std::move(load->result.volume),
+                                                      std::move(load->result.format), options_);
+    } catch (const std::exception& e) {
+        session_.reset();
+        poll.kind = workflow::LoadPoll::Failed;
+        poll.error = load->path + ": " + e.what();
+        return poll;
+    }
+    const Volume& scan = session_->scan();
+    info_ = {};
+    info_.identity = load->path + " (" + session_->format() + ")";
+    info_.name = scanShortName(load->path);
+    info_.dims = scan.dims();
+    info_.spacing = scan.geometry().spacing;
+    info_.minValue = scan.stats().min;
+    info_.maxValue = scan.stats().max;
+    info_.units = session_->format() == "dicom" && scan.stats().min < -500.0 ? "HU" : "";
+    volumeMl_.reset();
+    changed();
+    poll.kind = workflow::LoadPoll::Ready;
+    poll.progress = 1.0;
+    return poll;
+}
+
+session::Session& SessionEngine::requireSession() const {
+    if (!session_) {
+        throw std::logic_error("no scan is loaded");
+    }
+    return *session_;
+}
+
+void SessionEngine::changed() {
+    ++version_;
+}
+
+workflow::ScanInfo SessionEngine::scanInfo() const {
+    return info_;
+}
+
+workflow::ProbeResult SessionEngine::probe(const glm::dvec3& voxel, double radiusMm) const {
+    const session::ProbeStats s = requireSession().probeAt(voxel, radiusMm);
+    return {s.mean, s.stddev, s.count};
+}
+
+void SessionEngine::addSeed(const solver::Sphere& sphere) {
+    requireSession().addSeed(sphere);
+    volumeMl_.reset();
+    changed();
+}
+
+void SessionEngine::erase(const solver::Sphere& sphere) {
+    requireSession().erase(sphere);
+    volumeMl_.reset();
+    changed();
+}
+
+void SessionEngine::clearLevelSet() {
+    requireSession().clearLevelSet();
+    volumeMl_.reset();
+    changed();
+}
+
+bool SessionEngine::hasLevelSet() const {
+    return session_ && session_->hasLevelSet();
+}
+
+void SessionEngine::setParams(const solver::LevelSetParams& params) {
+    requireSession().setParams(params);
+    changed(); // the speed view shows the parameters
+}
+
+solver::StepResult SessionEngine::step(int iterations) {
+    const solver::StepResult result = requireSession().step(iterations);
+    // The frame loop times this call against its budget: the GPU's work belongs to it.
+    glFinish();
+    changed();
+    return result;
+}
+
+solver::SolverStats SessionEngine::stats() const {
+    return session_ ? session_->stats() : solver::SolverStats{};
+}
+
+double SessionEngine::volumeMl() const {
+    if (!session_ || !session_->hasLevelSet()) {
+        return 0.0;
+    }
+    const auto now = std::chrono::steady_clock::now();
+    if (volumeMl_ && now - volumeAt_ < kVolumeRefresh) {
+        return *volumeMl_;
+    }
+    const std::vector<std::uint8_t> mask = session_->mask();
+    const auto inside = static_cast<double>(
+        std::count_if(mask.begin(), mask.end(), [](std::uint8_t v) { return v != 0; }));
+    const glm::dvec3 s = session_->scan().geometry().spacing;
+    volumeMl_ = inside * s.x * s.y * s.z / 1000.0;
+    volumeAt_ = now;
+    return *volumeMl_;
+}
+
+workflow::SnapshotId SessionEngine::snapshot() {
+    const workflow::SnapshotId id = nextSnapshot_++;
+    snapshots_[id] = hasLevelSet() ? encodeRuns(requireSession().mask()) : MaskRuns{};
+    return id;
+}
+
+void SessionEngine::restore(workflow::SnapshotId id) {
+    const auto it = snapshots_.find(id);
+    if (it == snapshots_.end()) {
+        throw std::logic_error("undo: snapshot " + std::to_string(id) + " is gone");
+    }
+    if (it->second.runs.empty()) {
+        requireSession().clearLevelSet();
+    } else {
+        requireSession().setMask(decodeRuns(it->second));
+    }
+    volumeMl_.reset();
+    changed();
+}
+
+void SessionEngine::drop(workflow::SnapshotId id) {
+    snapshots_.erase(id);
+}
+
+void SessionEngine::exportMask(const std::filesystem::path& path) {
+    requireSession().exportMask(path);
+}
+
+} // namespace steerseg::kiosk

@@ -1,0 +1,74 @@
+#pragma once
+
+// The workflow's engine on the real thing: scans read by io on a worker thread, then the
+// session (scan texture, solver, renderer) built on the frame loop's thread, which owns the GL
+// context. Level-set snapshots for undo are masks kept in host memory.
+#include "core/mask_runs.hpp"
+#include "session/session.hpp"
+#include "workflow/engine.hpp"
+
+#include <chrono>
+#include <future>
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace steerseg::kiosk {
+
+class SessionEngine final : public workflow::Engine {
+  public:
+    explicit SessionEngine(solver::SolverOptions options = {});
+    ~SessionEngine() override;
+    SessionEngine(const SessionEngine&) = delete;
+    SessionEngine& operator=(const SessionEngine&) = delete;
+
+    void beginLoad(const std::string& path) override;
+    workflow::LoadPoll pollLoad() override;
+    [[nodiscard]] workflow::ScanInfo scanInfo() const override;
+    [[nodiscard]] workflow::ProbeResult probe(const glm::dvec3& voxel,
+                                              double radiusMm) const override;
+    void addSeed(const solver::Sphere& sphere) override;
+    void erase(const solver::Sphere& sphere) override;
+    void clearLevelSet() override;
+    [[nodiscard]] bool hasLevelSet() const override;
+    void setParams(const solver::LevelSetParams& params) override;
+    solver::StepResult step(int iterations) override;
+    [[nodiscard]] solver::SolverStats stats() const override;
+    [[nodiscard]] double volumeMl() const override;
+    workflow::SnapshotId snapshot() override;
+    void restore(workflow::SnapshotId id) override;
+    void drop(workflow::SnapshotId id) override;
+    void exportMask(const std::filesystem::path& path) override;
+
+    // The session, once a scan is attached (the kiosk draws through it).
+    [[nodiscard]] session::Session* session() { return session_.get(); }
+    // Counts every change of the level set (edits, steps, restores): the views redraw on it.
+    [[nodiscard]] std::uint64_t levelSetVersion() const { return version_; }
+
+  private:
+    session::Session& requireSession() const;
+    void changed();
+
+    struct PendingLoad;
+    solver::SolverOptions options_;
+    std::unique_ptr<session::Session> session_;
+    workflow::ScanInfo info_;
+    std::unique_ptr<PendingLoad> pending_;
+    // Loads replaced before they finished: a read cannot be interrupted, so they are joined on
+    // destruction instead of detached with the scan they are writing into.
+    std::vector<std::unique_ptr<PendingLoad>> abandoned_;
+    std::map<workflow::SnapshotId, MaskRuns> snapshots_; // empty runs: no level set
+    workflow::SnapshotId nextSnapshot_ = 1;
+    std::uint64_t version_ = 0;
+    // The volume is counted on a mask read back from the GPU: at most a few times a second
+    // while the front moves, and at once after an edit.
+    mutable std::optional<double> volumeMl_;
+    mutable std::chrono::steady_clock::time_point volumeAt_{};
+};
+
+// "CT_sarcoma" from ".../CT_sarcoma.nii.gz", "sample" from "builtin:sample", the folder's
+// name for a DICOM series: what export names and the panel use.
+std::string scanShortName(const std::string& path);
+
+} // namespace steerseg::kiosk

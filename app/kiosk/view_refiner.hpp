@@ -1,0 +1,46 @@
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace steerseg::kiosk {
+
+// One view's picture on a machine that may be too slow to draw it whole within a frame
+// (llvmpipe draws a 1280x800 3D view in tens of seconds). While what the view shows changes
+// (camera, surface, parameters), each frame draws a preview whose resolution is chosen so the
+// draw fits the time it is given; once still, the full-resolution picture is drawn in bands of
+// rows over as many frames as it takes, and shown when complete. The cost per pixel is learned
+// from every draw. On a GPU the preview is full size and the refinement never starts.
+class ViewRefiner {
+  public:
+    struct Plan {
+        enum Kind { Nothing, Preview, Band } kind = Nothing;
+        glm::ivec2 size{0}; // the picture to draw
+        glm::ivec2 rows{0, -1}; // Band: first row, count
+    };
+
+    // maxPreviewScale: the largest preview relative to the full picture (config
+    // frame.interactive_scale); 1 lets a fast machine draw full previews.
+    explicit ViewRefiner(double maxPreviewScale = 1.0, double minPreviewScale = 1.0 / 16.0);
+
+    void changed();
+    [[nodiscard]] Plan plan(const glm::ivec2& fullSize, double seconds);
+    void drawn(const Plan& plan, double seconds);
+
+    // The full-resolution picture is complete and shows the current state.
+    [[nodiscard]] bool fullReady() const { return fullReady_; }
+    // Something has been drawn since the last change (a preview or the full picture).
+    [[nodiscard]] bool anyReady() const { return previewReady_ || fullReady_; }
+    [[nodiscard]] double secondsPerPixel() const { return secondsPerPixel_; }
+
+  private:
+    double maxScale_;
+    double minScale_;
+    double secondsPerPixel_ = 0.0;
+    glm::ivec2 full_{0};
+    bool dirty_ = true;
+    bool previewReady_ = false;
+    bool fullReady_ = false;
+    int nextRow_ = 0;
+};
+
+} // namespace steerseg::kiosk
