@@ -7,20 +7,23 @@ namespace steerseg::kiosk {
 
 namespace {
 
-// A band is at least this many rows: the ray caster works in 8x8 tiles, and a band thinner
-// than a tile costs a whole tile's time anyway.
-constexpr int kMinBandRows = 8;
+// Tiles are whole 8x8 work groups of the renderer's compute shaders: a thinner tile costs a
+// whole group's time anyway.
+constexpr int kGroup = 8;
+
+int groupsIn(double pixels) {
+    return static_cast<int>(std::floor(pixels / kGroup)) * kGroup;
+}
 
 } // namespace
 
-ViewRefiner::ViewRefiner(double maxPreviewScale, double minPreviewScale)
-    : maxScale_(std::clamp(maxPreviewScale, 1e-3, 1.0)),
-      minScale_(std::clamp(minPreviewScale, 1e-3, maxScale_)) {}
+ViewRefiner::ViewRefiner(double maxPreviewScale, double minPreviewPixels)
+    : maxScale_(std::clamp(maxPreviewScale, 1e-3, 1.0)), minPixels_(std::max(minPreviewPixels, 1.0)) {}
 
 void ViewRefiner::changed() {
     dirty_ = true;
     fullReady_ = false;
-    nextRow_ = 0;
+    cursor_ = glm::ivec2(0);
 }
 
 ViewRefiner::Plan ViewRefiner::plan(const glm::ivec2& fullSize, double seconds) {
@@ -35,12 +38,13 @@ ViewRefiner::Plan ViewRefiner::plan(const glm::ivec2& fullSize, double seconds) 
     const double pixels = static_cast<double>(full_.x) * full_.y;
     seconds = std::max(seconds, 0.0);
     if (dirty_) {
-        // Unknown cost: start small, the next frames grow to what fits.
-        double scale = minScale_ * 2.0;
+        const double minScale = std::min(maxScale_, std::sqrt(minPixels_ / pixels));
+        // Unknown cost: start small; the next frames grow to what fits.
+        double scale = minScale;
         if (secondsPerPixel_ > 0.0) {
             scale = std::sqrt(seconds / (secondsPerPixel_ * pixels));
         }
-        scale = std::clamp(scale, minScale_, maxScale_);
+        scale = std::clamp(scale, minScale, maxScale_);
         p.kind = Plan::Preview;
         p.size = glm::max(glm::ivec2(glm::round(glm::dvec2(full_) * scale)), glm::ivec2(1));
         return p;
@@ -48,14 +52,17 @@ ViewRefiner::Plan ViewRefiner::plan(const glm::ivec2& fullSize, double seconds) 
     if (fullReady_) {
         return p;
     }
-    int rows = kMinBandRows;
-    if (secondsPerPixel_ > 0.0) {
-        rows = static_cast<int>(seconds / (secondsPerPixel_ * full_.x));
-    }
-    rows = std::clamp(rows, kMinBandRows, full_.y - nextRow_);
-    p.kind = Plan::Band;
+    const double budget = secondsPerPixel_ > 0.0 ? seconds / secondsPerPixel_ : 0.0; // pixels
+    p.kind = Plan::Tile;
     p.size = full_;
-    p.rows = {nextRow_, rows};
+    const int left = full_.y - cursor_.y;
+    if (cursor_.x == 0 && budget >= static_cast<double>(full_.x) * kGroup) {
+        const int rows = std::clamp(groupsIn(budget / full_.x), kGroup, left);
+        p.region = {0, cursor_.y, full_.x, rows};
+    } else {
+        const int width = std::clamp(groupsIn(budget / kGroup), kGroup, full_.x - cursor_.x);
+        p.region = {cursor_.x, cursor_.y, width, std::min(kGroup, left)};
+    }
     return p;
 }
 
@@ -63,8 +70,9 @@ void ViewRefiner::drawn(const Plan& plan, double seconds) {
     if (plan.kind == Plan::Nothing) {
         return;
     }
-    const int rows = plan.kind == Plan::Band ? plan.rows.y : plan.size.y;
-    const double pixels = static_cast<double>(plan.size.x) * rows;
+    const glm::ivec2 drawnSize =
+        plan.kind == Plan::Tile ? glm::ivec2(plan.region.z, plan.region.w) : plan.size;
+    const double pixels = static_cast<double>(drawnSize.x) * drawnSize.y;
     if (pixels > 0.0 && std::isfinite(seconds) && seconds >= 0.0) {
         const double sample = seconds / pixels;
         secondsPerPixel_ =
@@ -75,11 +83,14 @@ void ViewRefiner::drawn(const Plan& plan, double seconds) {
         previewReady_ = true;
         // A preview at full size is the full picture: nothing left to refine.
         fullReady_ = plan.size == full_;
-        nextRow_ = fullReady_ ? full_.y : 0;
+        cursor_ = glm::ivec2(0);
         return;
     }
-    nextRow_ = plan.rows.x + plan.rows.y;
-    fullReady_ = nextRow_ >= full_.y;
+    cursor_.x = plan.region.x + plan.region.z;
+    if (cursor_.x >= full_.x) {
+        cursor_ = {0, plan.region.y + plan.region.w};
+    }
+    fullReady_ = cursor_.y >= full_.y;
 }
 
 } // namespace steerseg::kiosk

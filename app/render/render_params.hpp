@@ -55,9 +55,10 @@ struct ViewParams {
     // several views keeps one picture each, so a 3D view refined over several frames survives
     // the slice views drawn in between.
     int target = 0;
-    // 3D view: draw only rows [x, x + y) of the picture and keep the others as they were, so a
-    // picture too slow for one frame is drawn over several. y < 0 = every row.
-    glm::ivec2 rows{0, -1};
+    // Draw only this part of the picture (x, y of the top-left pixel, width, height) and keep
+    // the rest as it was, so a picture too slow for one frame is drawn over several.
+    // width < 0 = the whole picture.
+    glm::ivec4 region{0, 0, -1, -1};
 };
 
 inline constexpr int kRenderTargets = 4;

@@ -40,7 +40,7 @@ SliceFrame SliceView::draw(const RenderInputs& in, const ViewParams& params) {
     }
     glUniform1i(uniform(program, "labelScale"),
                 std::max(1, std::min(params.size.x, params.size.y) / 160));
-    dispatchRows(program, params);
+    dispatchRegion(program, params);
     gpu::checkGl("drawing a slice view");
     return frame;
 }

@@ -41,9 +41,9 @@ class PoolProgram {
 // the uniforms of shaders/render/view_common.glsl. The program must be current.
 void bindCommon(GLuint program, const RenderInputs& in, const ViewParams& params);
 
-// Dispatches one invocation per pixel of the rows params.rows asks for (all by default; 8x8
-// work groups) and orders the writes before reads. The other rows keep what they held.
-void dispatchRows(GLuint program, const ViewParams& params);
+// Dispatches one invocation per pixel of params.region (the whole picture by default; 8x8 work
+// groups) and orders the writes before reads. The rest of the picture keeps what it held.
+void dispatchRegion(GLuint program, const ViewParams& params);
 
 GLint uniform(GLuint program, const char* name);
 

@@ -120,7 +120,7 @@ void VolumeView::draw(const RenderInputs& in, const ViewParams& params) {
     const double pixelMm = 2.0 * cam.distance() * t / params.size.y;
     const double lineVoxels = std::max(0.6, 0.9 * pixelMm / minSpacing);
     glUniform1f(uniform(program, "lineWidth"), static_cast<float>(lineVoxels));
-    dispatchRows(program, params);
+    dispatchRegion(program, params);
     gpu::checkGl("drawing the 3D view");
 }
 

@@ -67,7 +67,7 @@ void composite(inout vec4 acc, vec3 colour, float alpha) {
 }
 
 void main() {
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) + ivec2(0, firstRow);
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) + firstPixel;
     if (pixel.x >= outSize.x || pixel.y >= outSize.y) {
         return;
     }

@@ -52,7 +52,7 @@ bool inVolume(vec3 p) {
 }
 
 void main() {
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) + ivec2(0, firstRow);
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) + firstPixel;
     if (pixel.x >= outSize.x || pixel.y >= outSize.y) {
         return;
     }

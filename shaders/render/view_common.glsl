@@ -10,7 +10,7 @@ layout(binding = VIEW_SCAN_UNIT) uniform sampler3D scanTex; // intensity, linear
 uniform vec2 scanToNormalised; // texture value -> normalised intensity: v * x + y (ScanTexture)
 
 uniform ivec2 outSize;
-uniform int firstRow;       // the band of rows this dispatch draws starts here (ViewParams::rows)
+uniform ivec2 firstPixel;   // the part this dispatch draws starts here (ViewParams::region)
 uniform int hasSurface;     // 0: no level set bound
 uniform vec2 windowRange;   // normalised intensity at black, 1 / window width
 

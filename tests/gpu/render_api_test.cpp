@@ -29,10 +29,10 @@ Geometry cube(int n) {
 
 class RenderApi : public GpuTest {};
 
-// The kiosk draws a slow 3D view over several frames in bands of rows, into a picture of its
-// own that the slice views drawn in between leave alone: the bands must add up to the picture
-// drawn at once.
-TEST_F(RenderApi, BandsOfRowsInTheirOwnPictureAddUpToTheWholePicture) {
+// The kiosk draws a slow 3D view over several frames in tiles, into a picture of its own that
+// the slice views drawn in between leave alone: the tiles must add up to the picture drawn at
+// once.
+TEST_F(RenderApi, TilesInTheirOwnPictureAddUpToTheWholePicture) {
     const Volume scan = makeHeadScene();
     render::Renderer renderer(scan);
     GpuPool pool(spherePool(scan.dims(), kHeadLesionCentre, kHeadLesionRadius));
@@ -44,9 +44,11 @@ TEST_F(RenderApi, BandsOfRowsInTheirOwnPictureAddUpToTheWholePicture) {
 
         render::ViewParams band = whole;
         band.target = 3;
-        for (int first = 0; first < 37; first += 11) {
-            band.rows = {first, 11};
-            renderer.render(band, &view);
+        for (int y = 0; y < 37; y += 11) {
+            for (int x = 0; x < 48; x += 16) {
+                band.region = {x, y, 16, 11};
+                renderer.render(band, &view);
+            }
             // A slice view into another picture between bands must not disturb this one.
             render::ViewParams other = renderer.defaultParams(ViewKind::Axial, {20, 20});
             other.target = 1;

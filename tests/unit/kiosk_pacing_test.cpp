@@ -1,0 +1,136 @@
+// The frame loop's pacing decisions, without a GPU: how many solver iterations fit a frame and
+// how a slow view is previewed and refined in bands.
+#include "kiosk/iteration_budget.hpp"
+#include "kiosk/view_refiner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+#include <limits>
+#include <stdexcept>
+
+namespace steerseg::test {
+namespace {
+
+using kiosk::IterationBudget;
+using kiosk::ViewRefiner;
+
+TEST(IterationBudget, StartsAtTheMinimumThenFitsTheMeasuredCost) {
+    IterationBudget budget(0.010, 2, 500);
+    EXPECT_EQ(budget.next(), 2);
+    budget.record(2, 0.002); // 1 ms per iteration
+    EXPECT_EQ(budget.next(), 10);
+    for (int n = 0; n < 30; ++n) {
+        budget.record(10, 0.001); // the front shrank: 0.1 ms
+    }
+    EXPECT_NEAR(budget.next(), 100, 2);
+}
+
+TEST(IterationBudget, ClampsAndIgnoresNonsense) {
+    IterationBudget budget(0.010, 1, 50);
+    budget.record(1, 1e-9);
+    EXPECT_EQ(budget.next(), 50);
+    budget.record(0, 5.0);
+    budget.record(3, std::numeric_limits<double>::quiet_NaN());
+    budget.record(3, -1.0);
+    EXPECT_EQ(budget.next(), 50);
+    budget.record(1, 10.0); // one very slow frame weighs 30%, not all
+    EXPECT_GE(budget.next(), 1);
+    EXPECT_THROW(IterationBudget(0.0, 1, 2), std::invalid_argument);
+    EXPECT_THROW(IterationBudget(0.01, 3, 2), std::invalid_argument);
+}
+
+// A model of a software rasteriser: 20 microseconds per pixel.
+constexpr double kSecondsPerPixel = 20e-6;
+
+double cost(const ViewRefiner::Plan& p) {
+    if (p.kind == ViewRefiner::Plan::Tile) {
+        return kSecondsPerPixel * p.region.z * p.region.w;
+    }
+    return kSecondsPerPixel * p.size.x * p.size.y;
+}
+
+TEST(ViewRefiner, PreviewsFitTheFrameThenTilesCompleteTheFullPicture) {
+    ViewRefiner refiner(0.5);
+    const glm::ivec2 full(800, 600);
+    const double frame = 0.020;
+    ViewRefiner::Plan p = refiner.plan(full, frame);
+    ASSERT_EQ(p.kind, ViewRefiner::Plan::Preview);
+    refiner.drawn(p, cost(p));
+    EXPECT_TRUE(refiner.anyReady());
+    EXPECT_FALSE(refiner.fullReady());
+    // Still moving: the next preview is sized to the learned cost and fits the frame.
+    refiner.changed();
+    p = refiner.plan(full, frame);
+    ASSERT_EQ(p.kind, ViewRefiner::Plan::Preview);
+    EXPECT_LE(cost(p), frame * 1.1);
+    EXPECT_GT(cost(p), frame * 0.5);
+    refiner.drawn(p, cost(p));
+    // Still: tiles that each fit the frame and cover every pixel exactly once.
+    std::vector<int> covered(static_cast<std::size_t>(full.x * full.y), 0);
+    int frames = 0;
+    while (!refiner.fullReady()) {
+        p = refiner.plan(full, frame);
+        ASSERT_EQ(p.kind, ViewRefiner::Plan::Tile);
+        EXPECT_EQ(p.size, full);
+        EXPECT_LE(cost(p), frame * 1.1);
+        for (int y = p.region.y; y < p.region.y + p.region.w; ++y) {
+            for (int x = p.region.x; x < p.region.x + p.region.z; ++x) {
+                ++covered[static_cast<std::size_t>(y * full.x + x)];
+            }
+        }
+        refiner.drawn(p, cost(p));
+        ASSERT_LT(++frames, 100000);
+    }
+    EXPECT_TRUE(std::all_of(covered.begin(), covered.end(), [](int c) { return c == 1; }));
+    EXPECT_EQ(refiner.plan(full, frame).kind, ViewRefiner::Plan::Nothing);
+    // A faster frame budget on the same picture: whole bands of rows.
+    refiner.changed();
+    p = refiner.plan(full, 1.0);
+    refiner.drawn(p, cost(p));
+    p = refiner.plan(full, 1.0);
+    EXPECT_EQ(p.region.z, full.x);
+    EXPECT_EQ(p.region.w % 8, 0);
+    // A change mid-way starts over with a preview.
+    refiner.changed();
+    EXPECT_FALSE(refiner.fullReady());
+    EXPECT_EQ(refiner.plan(full, frame).kind, ViewRefiner::Plan::Preview);
+}
+
+TEST(ViewRefiner, AFastMachineDrawsTheFullPictureAsItsPreview) {
+    ViewRefiner refiner(1.0);
+    const glm::ivec2 full(1920, 1080);
+    ViewRefiner::Plan p = refiner.plan(full, 0.016);
+    refiner.drawn(p, 1e-9 * p.size.x * p.size.y);
+    refiner.changed();
+    p = refiner.plan(full, 0.016);
+    EXPECT_EQ(p.size, full);
+    refiner.drawn(p, 0.001);
+    EXPECT_TRUE(refiner.fullReady());
+    EXPECT_EQ(refiner.plan(full, 0.016).kind, ViewRefiner::Plan::Nothing);
+}
+
+TEST(ViewRefiner, ASizeChangeRestartsAndEmptySizesDrawNothing) {
+    ViewRefiner refiner(1.0);
+    ViewRefiner::Plan p = refiner.plan({100, 100}, 1.0); // unknown cost: a small preview first
+    EXPECT_LT(p.size.x, 100);
+    refiner.drawn(p, 0.0001);
+    refiner.changed();
+    p = refiner.plan({100, 100}, 1.0);
+    refiner.drawn(p, 0.0001);
+    EXPECT_TRUE(refiner.fullReady());
+    EXPECT_EQ(refiner.plan({120, 100}, 1.0).kind, ViewRefiner::Plan::Preview);
+    EXPECT_EQ(refiner.plan({0, 100}, 1.0).kind, ViewRefiner::Plan::Nothing);
+    // Tiles never go below one 8x8 work group, even with no time at all.
+    ViewRefiner slow(0.25);
+    p = slow.plan({64, 64}, 0.0);
+    slow.drawn(p, 1.0);
+    p = slow.plan({64, 64}, 0.0);
+    ASSERT_EQ(p.kind, ViewRefiner::Plan::Tile);
+    EXPECT_EQ(p.region, glm::ivec4(0, 0, 8, 8));
+}
+
+} // namespace
+} // namespace steerseg::test
