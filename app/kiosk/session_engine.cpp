@@ -30,8 +30,8 @@ std::string scanShortName(const std::string& path) {
         return "sample";
     }
     std::filesystem::path p(path);
-    while (!p.empty() && p.filename().empty()) {
-        p = p.parent_path(); // "series/" names the folder
+    while (!p.empty() && p.filename().empty() && p.parent_path() != p) {
+        p = p.parent_path(); // "series/" names the folder ("/" has no name and is its own parent)
     }
     std::string name = p.filename().string();
     for (const char* ext : {".nii.gz", ".nii", ".nrrd", ".nhdr", ".mha", ".mhd", ".mgz", ".dcm"}) {

@@ -1,0 +1,170 @@
+// The kiosk's engine on the real session: scans read off the calling thread, sphere edits,
+// steps, undo snapshots, export; and the screen compositor's placement and rotation.
+#include "core/sample_phantom.hpp"
+#include "io/scan_reader.hpp"
+#include "kiosk/screen_compositor.hpp"
+#include "kiosk/session_engine.hpp"
+#include "support/gpu_fixture.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+namespace steerseg::test {
+namespace {
+
+using kiosk::SessionEngine;
+using workflow::LoadPoll;
+
+LoadPoll waitForLoad(SessionEngine& engine) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    for (;;) {
+        LoadPoll poll = engine.pollLoad();
+        if (poll.kind != LoadPoll::Running || std::chrono::steady_clock::now() > deadline) {
+            return poll;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+}
+
+class KioskEngine : public GpuTest {};
+
+TEST_F(KioskEngine, LoadsSeedsStepsUndoesAndExports) {
+    SessionEngine engine;
+    engine.beginLoad("builtin:sample");
+    ASSERT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
+    const workflow::ScanInfo info = engine.scanInfo();
+    EXPECT_EQ(info.name, "sample");
+    EXPECT_EQ(info.dims, makeSamplePhantom().dims());
+    EXPECT_LT(info.minValue, info.maxValue);
+    EXPECT_FALSE(engine.hasLevelSet());
+
+    const glm::vec3 centre = glm::vec3(info.dims) * 0.5F;
+    const workflow::ProbeResult probe = engine.probe(glm::dvec3(centre), 4.0);
+    EXPECT_GT(probe.count, 0U);
+
+    const workflow::SnapshotId empty = engine.snapshot();
+    engine.addSeed({centre, 4.0F});
+    EXPECT_TRUE(engine.hasLevelSet());
+    const double seeded = engine.volumeMl();
+    EXPECT_GT(seeded, 0.0);
+    const workflow::SnapshotId oneSeed = engine.snapshot();
+    engine.setParams({static_cast<float>(probe.mean), static_cast<float>(3.0 * probe.stddev + 1.0), 1.0F});
+    const std::uint64_t before = engine.levelSetVersion();
+    const solver::StepResult r = engine.step(20);
+    EXPECT_EQ(r.iterations, 20);
+    EXPECT_GT(engine.levelSetVersion(), before);
+
+    engine.restore(oneSeed);
+    EXPECT_NEAR(engine.volumeMl(), seeded, seeded * 0.05);
+    engine.restore(empty);
+    EXPECT_FALSE(engine.hasLevelSet());
+    EXPECT_EQ(engine.volumeMl(), 0.0);
+    engine.restore(oneSeed);
+    EXPECT_TRUE(engine.hasLevelSet());
+    engine.drop(oneSeed);
+    EXPECT_THROW(engine.restore(oneSeed), std::logic_error);
+
+    const auto dir = std::filesystem::temp_directory_path() / "steerseg_kiosk_engine";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    engine.exportMask(dir / "mask.nii.gz");
+    const io::LoadedScan mask = io::readScan(dir / "mask.nii.gz");
+    EXPECT_EQ(mask.volume.dims(), info.dims);
+    EXPECT_THROW(engine.exportMask(dir / "missing" / "folder" / "mask.nii.gz"), std::exception);
+    std::filesystem::remove_all(dir);
+}
+
+TEST_F(KioskEngine, AFailedLoadSaysWhyAndKeepsTheScanItHad) {
+    SessionEngine engine;
+    EXPECT_EQ(engine.pollLoad().kind, LoadPoll::Failed); // nothing asked for
+    engine.beginLoad("builtin:sample");
+    ASSERT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
+    engine.beginLoad("/nonexistent/scan.nii.gz");
+    const LoadPoll failed = waitForLoad(engine);
+    ASSERT_EQ(failed.kind, LoadPoll::Failed);
+    EXPECT_NE(failed.error.find("/nonexistent/scan.nii.gz"), std::string::npos) << failed.error;
+    EXPECT_NE(engine.session(), nullptr);
+    EXPECT_EQ(engine.scanInfo().name, "sample");
+    // A truncated file is the reader's message, not a crash.
+    const auto path = std::filesystem::temp_directory_path() / "steerseg_truncated.nii";
+    std::ofstream(path) << "not a nifti";
+    engine.beginLoad(path.string());
+    EXPECT_EQ(waitForLoad(engine).kind, LoadPoll::Failed);
+    std::filesystem::remove(path);
+    // A load replaced before it finished is joined, not leaked or raced.
+    engine.beginLoad("builtin:sample");
+    engine.beginLoad("builtin:sample");
+    EXPECT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
+}
+
+TEST(KioskScanName, IsShortAndSafeForFileNames) {
+    EXPECT_EQ(kiosk::scanShortName("builtin:sample"), "sample");
+    EXPECT_EQ(kiosk::scanShortName("/data/CT sarcoma.nii.gz"), "CT_sarcoma");
+    EXPECT_EQ(kiosk::scanShortName("/data/series/"), "series");
+    EXPECT_EQ(kiosk::scanShortName("/"), "scan");
+}
+
+class KioskScreen : public GpuTest {};
+
+// A 2x2 picture of four colours, row 0 on top.
+unsigned int quadrantPicture(gpu::Texture& holder) {
+    holder = gpu::createTexture();
+    glBindTexture(GL_TEXTURE_2D, holder.id());
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, 2, 2);
+    const std::uint8_t px[16] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 0, 255};
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    return holder.id();
+}
+
+TEST_F(KioskScreen, PlacesPicturesTopDownAndTurnsTheScreenAsMounted) {
+    gpu::Texture holder;
+    const unsigned int picture = quadrantPicture(holder);
+    const auto colourAt = [](const RgbaImage& img, int x, int y) {
+        const std::uint8_t* p = img.at(x, y);
+        return glm::ivec3(p[0], p[1], p[2]);
+    };
+    kiosk::ScreenCompositor screen({40, 30}, 0);
+    screen.begin({0.0F, 0.0F, 0.0F});
+    screen.drawPicture(picture, {2, 2}, {10, 5, 20, 20});
+    const RgbaImage logical = screen.capture();
+    EXPECT_EQ(colourAt(logical, 12, 7), glm::ivec3(255, 0, 0));   // top left: red
+    EXPECT_EQ(colourAt(logical, 27, 7), glm::ivec3(0, 255, 0));   // top right: green
+    EXPECT_EQ(colourAt(logical, 12, 22), glm::ivec3(0, 0, 255));  // bottom left: blue
+    EXPECT_EQ(colourAt(logical, 5, 5), glm::ivec3(0, 0, 0));      // outside the rect
+    EXPECT_EQ(logical.at(5, 5)[3], 255);
+
+    // Mounted a quarter turn clockwise: the logical screen is 30x40, and its top-left corner
+    // shows at the display's top right.
+    kiosk::ScreenCompositor turned({40, 30}, 90);
+    EXPECT_EQ(turned.size(), glm::ivec2(30, 40));
+    turned.begin({0.0F, 0.0F, 0.0F});
+    turned.drawPicture(picture, {2, 2}, {0, 0, 30, 40});
+    gpu::Texture display = gpu::createTexture();
+    glBindTexture(GL_TEXTURE_2D, display.id());
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, 40, 30);
+    GLuint fb = 0;
+    glGenFramebuffers(1, &fb);
+    gpu::Framebuffer displayFb(fb);
+    glBindFramebuffer(GL_FRAMEBUFFER, fb);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, display.id(), 0);
+    turned.present(fb, {40, 30});
+    std::vector<std::uint8_t> px(40 * 30 * 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fb);
+    glReadPixels(0, 0, 40, 30, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    // GL rows bottom-up: display row y from the top is GL row 29 - y.
+    const auto displayAt = [&](int x, int y) {
+        const std::uint8_t* p = px.data() + 4 * ((29 - y) * 40 + x);
+        return glm::ivec3(p[0], p[1], p[2]);
+    };
+    EXPECT_EQ(displayAt(37, 2), glm::ivec3(255, 0, 0));  // logical top left -> display top right
+    EXPECT_EQ(displayAt(37, 27), glm::ivec3(0, 255, 0)); // logical top right -> bottom right
+    EXPECT_EQ(displayAt(2, 2), glm::ivec3(0, 0, 255));   // logical bottom left -> top left
+    EXPECT_THROW(kiosk::ScreenCompositor({40, 30}, 45), std::invalid_argument);
+}
+
+} // namespace
+} // namespace steerseg::test
