@@ -122,8 +122,13 @@ Workflow::Outcome Workflow::on(const NudgeParam& a) {
         return no("a nudge needs a finite number of steps");
     }
     const std::size_t i = indexOf(a.param);
-    return setParam(a.param, params_.values[i] + a.steps * status_.ranges[i].fineStep,
-                    "nudge_param");
+    const ParamRange& r = status_.ranges[i];
+    const double delta = a.steps * r.fineStep;
+    double v = params_.values[i] + delta;
+    if (!std::isfinite(v)) { // a flood of steps overflowed: as far as the range goes
+        v = delta > 0.0 ? r.max : r.min;
+    }
+    return setParam(a.param, v, "nudge_param");
 }
 
 Workflow::Outcome Workflow::on(const NudgeSelected& a) {
