@@ -2,7 +2,11 @@
 // clamping (the action's own "values" are what was asked for).
 #include "workflow/workflow.hpp"
 
+#include <array>
+#include <charconv>
+#include <cstdlib>
 #include <nlohmann/json.hpp>
+#include <system_error>
 #include <type_traits>
 
 namespace steerseg::workflow {
@@ -11,13 +15,25 @@ namespace {
 
 template <class T, class... U> constexpr bool isOneOf = (std::is_same_v<T, U> || ...);
 
+// The solver's floats as the shortest decimals that read back as them (0.8, not
+// 0.800000011920929): what the panel shows is what the log says.
+double decimal(float f) {
+    std::array<char, 32> buf{};
+    const auto [end, ec] = std::to_chars(buf.data(), buf.data() + buf.size() - 1, f);
+    if (ec != std::errc()) {
+        return static_cast<double>(f);
+    }
+    *end = '\0';
+    return std::strtod(buf.data(), nullptr);
+}
+
 } // namespace
 
 nlohmann::json Workflow::resultOf(const Action& action) const {
     const auto params = [this] {
-        nlohmann::json p{{"T", status_.params.T},
-                         {"eps", status_.params.eps},
-                         {"alpha", status_.params.alpha},
+        nlohmann::json p{{"T", decimal(status_.params.T)},
+                         {"eps", decimal(status_.params.eps)},
+                         {"alpha", decimal(status_.params.alpha)},
                          {"radius", status_.radius}};
         if (!status_.preset.empty()) {
             p["preset"] = status_.preset;
