@@ -79,6 +79,12 @@ bool keepsNotice(const Action& action) {
            std::holds_alternative<SetWindow>(action) || std::holds_alternative<Quit>(action);
 }
 
+// In Error the operator acknowledges first; only looking around, loading and quitting go on.
+bool allowedInError(const Action& action) {
+    return keepsNotice(action) || std::holds_alternative<Dismiss>(action) ||
+           std::holds_alternative<LoadScan>(action);
+}
+
 } // namespace
 
 Workflow::Workflow(Engine& engine, Settings settings, AuditLog* audit)
@@ -111,7 +117,9 @@ Workflow::Outcome Workflow::handle(const Action& action) {
     }
     Outcome out;
     try {
-        out = std::visit([this](const auto& a) { return on(a); }, action);
+        out = before == State::Error && !allowedInError(action)
+                  ? no("dismiss the error first")
+                  : std::visit([this](const auto& a) { return on(a); }, action);
     } catch (const std::exception& e) {
         out = no(oneLine(e.what()));
     } catch (...) {
