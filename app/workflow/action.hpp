@@ -37,6 +37,7 @@ std::optional<Param> paramFromName(std::string_view name);
 // Which 2D views the screen shows; the view state is the workflow's so scripts and the audit
 // log see it, and a replay draws the same frames.
 enum class SliceAxis { Axial, Coronal, Sagittal };
+std::string_view sliceAxisName(SliceAxis axis); // "axial", "coronal", "sagittal"
 
 // --- actions -------------------------------------------------------------------------------
 struct LoadScan {
@@ -131,7 +132,8 @@ std::string_view actionName(const Action& action);
 // The actions a binding can name (config's [bindings]): the ones without arguments, plus the
 // relative ones with a step ("nudge:T", "nudge_selected", "page:axial", "rotate_yaw", ...).
 // Returns the action for one step of the control (`steps` = signed detents or key repeats).
-// nullopt for a name that is not bindable; bindableNames() lists them for the config's message.
+// nullopt for a name that is not bindable (or a step that is not finite); bindableNames() lists
+// them for the config's message.
 std::optional<Action> bindingAction(std::string_view name, double steps);
 const std::vector<std::string_view>& bindableNames();
 

@@ -17,6 +17,9 @@ struct ScanInfo {
     std::string name;     // short, for file names and the panel ("CT_sarcoma", "sample")
     glm::ivec3 dims{0};
     glm::dvec3 spacing{1.0}; // mm
+    // Slices per SliceAxis (axial, coronal, sagittal), which depends on the scan's orientation
+    // (render::sliceAxisFor); 0: taken from dims as (k, j, i).
+    glm::ivec3 sliceCount{0};
     double minValue = 0.0;   // real units, the whole scan
     double maxValue = 0.0;
     std::string units; // "HU", "" ...

@@ -1,0 +1,249 @@
+#include "workflow/action.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <type_traits>
+#include <utility>
+
+namespace steerseg::workflow {
+
+namespace {
+
+constexpr std::array<std::string_view, kParamCount> kParamNames{"T", "eps", "alpha", "radius"};
+
+// Knobs and keys deliver detents; these turn one detent into the view's own units.
+constexpr double kRotateDegreesPerStep = 5.0;
+constexpr double kZoomPerStep = 1.1;
+
+// A whole number of detents for the integer-valued actions, at least one in the step's
+// direction (a fractional wheel delta still moves) and bounded (a flood of repeats is not UB).
+int wholeSteps(double steps) {
+    const double bounded = std::clamp(steps, -1.0e6, 1.0e6);
+    const double rounded = std::round(bounded);
+    if (rounded == 0.0 && bounded != 0.0) {
+        return bounded > 0.0 ? 1 : -1;
+    }
+    return static_cast<int>(rounded);
+}
+
+template <class T> constexpr std::string_view nameOf() {
+    if constexpr (std::is_same_v<T, LoadScan>) {
+        return "load_scan";
+    } else if constexpr (std::is_same_v<T, Probe>) {
+        return "probe";
+    } else if constexpr (std::is_same_v<T, ApplyPreset>) {
+        return "apply_preset";
+    } else if constexpr (std::is_same_v<T, SetParam>) {
+        return "set_param";
+    } else if constexpr (std::is_same_v<T, NudgeParam>) {
+        return "nudge_param";
+    } else if constexpr (std::is_same_v<T, NudgeSelected>) {
+        return "nudge_selected";
+    } else if constexpr (std::is_same_v<T, SelectParam>) {
+        return "select_param";
+    } else if constexpr (std::is_same_v<T, CycleParam>) {
+        return "cycle_param";
+    } else if constexpr (std::is_same_v<T, SetWindow>) {
+        return "set_window";
+    } else if constexpr (std::is_same_v<T, AddSeed>) {
+        return "add_seed";
+    } else if constexpr (std::is_same_v<T, Erase>) {
+        return "erase";
+    } else if constexpr (std::is_same_v<T, SetEraseMode>) {
+        return "set_erase_mode";
+    } else if constexpr (std::is_same_v<T, Run>) {
+        return "run";
+    } else if constexpr (std::is_same_v<T, Pause>) {
+        return "pause";
+    } else if constexpr (std::is_same_v<T, ToggleRun>) {
+        return "toggle_run";
+    } else if constexpr (std::is_same_v<T, Finish>) {
+        return "finish";
+    } else if constexpr (std::is_same_v<T, Resume>) {
+        return "resume";
+    } else if constexpr (std::is_same_v<T, Export>) {
+        return "export";
+    } else if constexpr (std::is_same_v<T, Undo>) {
+        return "undo";
+    } else if constexpr (std::is_same_v<T, Redo>) {
+        return "redo";
+    } else if constexpr (std::is_same_v<T, Restart>) {
+        return "restart";
+    } else if constexpr (std::is_same_v<T, Proceed>) {
+        return "proceed";
+    } else if constexpr (std::is_same_v<T, Back>) {
+        return "back";
+    } else if constexpr (std::is_same_v<T, Dismiss>) {
+        return "dismiss";
+    } else if constexpr (std::is_same_v<T, RotateView>) {
+        return "rotate_view";
+    } else if constexpr (std::is_same_v<T, ZoomView>) {
+        return "zoom_view";
+    } else if constexpr (std::is_same_v<T, PageSlice>) {
+        return "page_slice";
+    } else if constexpr (std::is_same_v<T, SetSlice>) {
+        return "set_slice";
+    } else if constexpr (std::is_same_v<T, ShowSlices>) {
+        return "show_slices";
+    } else {
+        static_assert(std::is_same_v<T, Quit>, "every action needs a name");
+        return "quit";
+    }
+}
+
+using Maker = Action (*)(double steps);
+
+struct Binding {
+    std::string_view name;
+    Maker make;
+};
+
+// One table for both lookups, so bindableNames() cannot list a name bindingAction() refuses.
+const std::vector<Binding>& bindings() {
+    static const std::vector<Binding> table{
+        {"run", [](double) -> Action { return Run{}; }},
+        {"pause", [](double) -> Action { return Pause{}; }},
+        {"toggle_run", [](double) -> Action { return ToggleRun{}; }},
+        {"finish", [](double) -> Action { return Finish{}; }},
+        {"resume", [](double) -> Action { return Resume{}; }},
+        {"export", [](double) -> Action { return Export{}; }},
+        {"undo", [](double) -> Action { return Undo{}; }},
+        {"redo", [](double) -> Action { return Redo{}; }},
+        {"restart", [](double) -> Action { return Restart{}; }},
+        {"proceed", [](double) -> Action { return Proceed{}; }},
+        {"back", [](double) -> Action { return Back{}; }},
+        {"dismiss", [](double) -> Action { return Dismiss{}; }},
+        {"quit", [](double) -> Action { return Quit{}; }},
+        {"erase_mode:on", [](double) -> Action { return SetEraseMode{true}; }},
+        {"erase_mode:off", [](double) -> Action { return SetEraseMode{false}; }},
+        {"select:T", [](double) -> Action { return SelectParam{Param::Target}; }},
+        {"select:eps", [](double) -> Action { return SelectParam{Param::Epsilon}; }},
+        {"select:alpha", [](double) -> Action { return SelectParam{Param::Alpha}; }},
+        {"select:radius", [](double) -> Action { return SelectParam{Param::Radius}; }},
+        {"cycle_param", [](double s) -> Action { return CycleParam{wholeSteps(s)}; }},
+        {"nudge:T",
+         [](double s) -> Action {
+             return NudgeParam{Param::Target, s};
+         }},
+        {"nudge:eps",
+         [](double s) -> Action {
+             return NudgeParam{Param::Epsilon, s};
+         }},
+        {"nudge:alpha",
+         [](double s) -> Action {
+             return NudgeParam{Param::Alpha, s};
+         }},
+        {"nudge:radius",
+         [](double s) -> Action {
+             return NudgeParam{Param::Radius, s};
+         }},
+        {"nudge_selected", [](double s) -> Action { return NudgeSelected{s}; }},
+        {"page:axial",
+         [](double s) -> Action {
+             return PageSlice{SliceAxis::Axial, wholeSteps(s)};
+         }},
+        {"page:coronal",
+         [](double s) -> Action {
+             return PageSlice{SliceAxis::Coronal, wholeSteps(s)};
+         }},
+        {"page:sagittal",
+         [](double s) -> Action {
+             return PageSlice{SliceAxis::Sagittal, wholeSteps(s)};
+         }},
+        {"rotate_yaw",
+         [](double s) -> Action {
+             return RotateView{s * kRotateDegreesPerStep, 0.0};
+         }},
+        {"rotate_pitch",
+         [](double s) -> Action {
+             return RotateView{0.0, s * kRotateDegreesPerStep};
+         }},
+        {"zoom", [](double s) -> Action { return ZoomView{std::pow(kZoomPerStep, s)}; }},
+    };
+    return table;
+}
+
+} // namespace
+
+std::string_view stateName(State state) {
+    switch (state) {
+    case State::NoScan:
+        return "no_scan";
+    case State::Loading:
+        return "loading";
+    case State::Inspect:
+        return "inspect";
+    case State::Seeding:
+        return "seeding";
+    case State::Evolving:
+        return "evolving";
+    case State::Paused:
+        return "paused";
+    case State::Review:
+        return "review";
+    case State::Exporting:
+        return "exporting";
+    case State::Done:
+        return "done";
+    case State::Error:
+        return "error";
+    }
+    return "unknown";
+}
+
+std::string_view paramName(Param param) {
+    const auto i = static_cast<std::size_t>(param);
+    return i < kParamNames.size() ? kParamNames[i] : std::string_view("unknown");
+}
+
+std::optional<Param> paramFromName(std::string_view name) {
+    for (std::size_t i = 0; i < kParamNames.size(); ++i) {
+        if (kParamNames[i] == name) {
+            return static_cast<Param>(i);
+        }
+    }
+    return std::nullopt;
+}
+
+std::string_view sliceAxisName(SliceAxis axis) {
+    switch (axis) {
+    case SliceAxis::Axial:
+        return "axial";
+    case SliceAxis::Coronal:
+        return "coronal";
+    case SliceAxis::Sagittal:
+        return "sagittal";
+    }
+    return "unknown";
+}
+
+std::string_view actionName(const Action& action) {
+    return std::visit([](const auto& a) { return nameOf<std::decay_t<decltype(a)>>(); }, action);
+}
+
+std::optional<Action> bindingAction(std::string_view name, double steps) {
+    // A NaN or infinite step has no meaning for any control; the caller names the binding.
+    if (!std::isfinite(steps)) {
+        return std::nullopt;
+    }
+    for (const Binding& b : bindings()) {
+        if (b.name == name) {
+            return b.make(steps);
+        }
+    }
+    return std::nullopt;
+}
+
+const std::vector<std::string_view>& bindableNames() {
+    static const std::vector<std::string_view> names = [] {
+        std::vector<std::string_view> out;
+        for (const Binding& b : bindings()) {
+            out.push_back(b.name);
+        }
+        return out;
+    }();
+    return names;
+}
+
+} // namespace steerseg::workflow

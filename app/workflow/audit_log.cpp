@@ -1,0 +1,179 @@
+#include "workflow/audit_log.hpp"
+
+#include "workflow/utc_time.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <nlohmann/json.hpp>
+#include <system_error>
+#include <type_traits>
+#include <utility>
+
+namespace steerseg::workflow {
+
+namespace {
+
+nlohmann::json vec(const glm::dvec3& v) {
+    return nlohmann::json::array({v.x, v.y, v.z});
+}
+
+nlohmann::json values(const LoadScan& a) {
+    return {{"path", a.path}};
+}
+nlohmann::json values(const Probe& a) {
+    return {{"voxel", vec(a.voxel)}, {"radius_mm", a.radiusMm}};
+}
+nlohmann::json values(const ApplyPreset& a) {
+    return {{"name", a.name}};
+}
+nlohmann::json values(const SetParam& a) {
+    return {{"param", paramName(a.param)}, {"value", a.value}};
+}
+nlohmann::json values(const NudgeParam& a) {
+    return {{"param", paramName(a.param)}, {"steps", a.steps}};
+}
+nlohmann::json values(const NudgeSelected& a) {
+    return {{"steps", a.steps}};
+}
+nlohmann::json values(const SelectParam& a) {
+    return {{"param", paramName(a.param)}};
+}
+nlohmann::json values(const CycleParam& a) {
+    return {{"delta", a.delta}};
+}
+nlohmann::json values(const SetWindow& a) {
+    return {{"level", a.level}, {"width", a.width}};
+}
+nlohmann::json values(const AddSeed& a) {
+    return {{"voxel", vec(a.voxel)}, {"radius", a.radius}};
+}
+nlohmann::json values(const Erase& a) {
+    return {{"voxel", vec(a.voxel)}, {"radius", a.radius}};
+}
+nlohmann::json values(const SetEraseMode& a) {
+    return {{"erase", a.erase}};
+}
+nlohmann::json values(const Export& a) {
+    return {{"path", a.path}};
+}
+nlohmann::json values(const RotateView& a) {
+    return {{"yaw", a.yaw}, {"pitch", a.pitch}};
+}
+nlohmann::json values(const ZoomView& a) {
+    return {{"factor", a.factor}};
+}
+nlohmann::json values(const PageSlice& a) {
+    return {{"axis", sliceAxisName(a.axis)}, {"delta", a.delta}};
+}
+nlohmann::json values(const SetSlice& a) {
+    return {{"axis", sliceAxisName(a.axis)}, {"index", a.index}};
+}
+nlohmann::json values(const ShowSlices& a) {
+    return {{"first", sliceAxisName(a.first)}, {"second", sliceAxisName(a.second)}};
+}
+template <class T> nlohmann::json values(const T&) {
+    return nlohmann::json::object();
+}
+
+} // namespace
+
+nlohmann::json actionValues(const Action& action) {
+    return std::visit([](const auto& a) { return values(a); }, action);
+}
+
+AuditLog::AuditLog(std::filesystem::path path, WallClock wall, SteadyClock steady)
+    : path_(std::move(path)), wall_(std::move(wall)), steady_(std::move(steady)) {
+    if (!wall_) {
+        wall_ = [] { return std::chrono::system_clock::now(); };
+    }
+    if (!steady_) {
+        steady_ = [] { return std::chrono::steady_clock::now(); };
+    }
+    opened_ = steady_();
+    std::error_code ec;
+    if (path_.has_parent_path()) {
+        std::filesystem::create_directories(path_.parent_path(), ec); // fopen names the failure
+    }
+    file_ = std::fopen(path_.c_str(), "a");
+    if (file_ == nullptr) {
+        fail(std::string("cannot open it: ") + std::strerror(errno));
+    }
+}
+
+AuditLog::~AuditLog() {
+    if (file_ != nullptr) {
+        std::fclose(file_);
+    }
+}
+
+void AuditLog::fail(const std::string& what) {
+    if (error_.empty()) {
+        error_ = "audit log " + path_.string() + ": " + what;
+    }
+}
+
+std::optional<std::string> AuditLog::takeError() {
+    if (error_.empty() || reported_) {
+        return std::nullopt;
+    }
+    reported_ = true;
+    return error_;
+}
+
+void AuditLog::write(nlohmann::json& record) {
+    if (file_ == nullptr) {
+        return;
+    }
+    try {
+        const std::chrono::duration<double> since = steady_() - opened_;
+        record["time"] = isoUtc(wall_());
+        record["mono"] = since.count();
+        // Paths and names come from operators and scripts: bad UTF-8 is replaced, not thrown.
+        std::string line = record.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+        line += '\n';
+        if (std::fwrite(line.data(), 1, line.size(), file_) != line.size() ||
+            std::fflush(file_) != 0) {
+            fail(std::string("write failed: ") + std::strerror(errno));
+            std::clearerr(file_);
+        }
+    } catch (const std::exception& e) {
+        fail(std::string("record failed: ") + e.what());
+    }
+}
+
+void AuditLog::action(State state, const Action& action, const nlohmann::json& result,
+                      std::string_view scan, bool accepted, std::string_view reason) {
+    try {
+        nlohmann::json r{{"event", "action"},
+                         {"state", stateName(state)},
+                         {"action", actionName(action)},
+                         {"values", actionValues(action)},
+                         {"accepted", accepted},
+                         {"scan", scan}};
+        if (!result.is_null()) {
+            r["result"] = result;
+        }
+        if (!accepted) {
+            r["reason"] = reason;
+        }
+        write(r);
+    } catch (const std::exception& e) {
+        fail(std::string("record failed: ") + e.what());
+    }
+}
+
+void AuditLog::transition(State from, State to, std::string_view cause, std::string_view scan,
+                          std::string_view message) {
+    try {
+        nlohmann::json r{{"event", "transition"},  {"from", stateName(from)}, {"to", stateName(to)},
+                         {"state", stateName(to)}, {"cause", cause},          {"scan", scan}};
+        if (!message.empty()) {
+            r["message"] = message;
+        }
+        write(r);
+    } catch (const std::exception& e) {
+        fail(std::string("record failed: ") + e.what());
+    }
+}
+
+} // namespace steerseg::workflow

@@ -1,0 +1,52 @@
+#include "workflow/settings.hpp"
+
+#include <cmath>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace steerseg::workflow {
+
+namespace {
+
+void require(bool ok, const std::string& what) {
+    if (!ok) {
+        throw std::invalid_argument("workflow settings: " + what);
+    }
+}
+
+std::string number(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+} // namespace
+
+void validateSettings(const Settings& s) {
+    require(std::isfinite(s.epsFloor) && s.epsFloor >= 0.0,
+            "eps floor must be a finite number >= 0 (got " + number(s.epsFloor) + ")");
+    require(std::isfinite(s.probeEpsFactor) && s.probeEpsFactor > 0.0,
+            "probe eps factor must be a finite number > 0 (got " + number(s.probeEpsFactor) + ")");
+    require(std::isfinite(s.probeRadiusMm) && s.probeRadiusMm > 0.0,
+            "probe radius must be a finite number of mm > 0 (got " + number(s.probeRadiusMm) + ")");
+    require(std::isfinite(s.defaultRadius) && s.defaultRadius > 0.0,
+            "brush radius must be a finite number of voxels > 0 (got " + number(s.defaultRadius) +
+                ")");
+    require(s.maxUndo >= 1 && s.maxUndo <= 10000,
+            "undo depth must be within [1, 10000] (got " + std::to_string(s.maxUndo) + ")");
+    std::set<std::string> names;
+    for (const TissuePreset& p : s.presets) {
+        require(!p.name.empty(), "a tissue preset has no name");
+        require(names.insert(p.name).second, "tissue preset '" + p.name + "' is named twice");
+        const std::string where = "tissue preset '" + p.name + "': ";
+        require(std::isfinite(p.T), where + "T must be a finite number");
+        require(std::isfinite(p.eps) && p.eps >= 0.0, where + "eps must be a finite number >= 0");
+        require(std::isfinite(p.alpha) && p.alpha >= 0.0 && p.alpha <= 1.0,
+                where + "alpha must be within [0, 1]");
+        require(std::isfinite(p.windowLevel) && std::isfinite(p.windowWidth),
+                where + "window level and width must be finite numbers");
+    }
+}
+
+} // namespace steerseg::workflow

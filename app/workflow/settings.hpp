@@ -1,0 +1,45 @@
+#pragma once
+
+// What the workflow takes from the configuration: tissue presets, the probe's rules, the brush,
+// the export folder and the depth of undo. Plain data; config/ fills it from TOML and
+// validateSettings() says in one line what is wrong with it.
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace steerseg::workflow {
+
+// A one-touch alternative to probing: the speed's parameters and the display for one tissue.
+struct TissuePreset {
+    std::string name; // "CT soft tissue"
+    double T = 0.0;   // real units
+    double eps = 0.0; // real units
+    double alpha = 0.8;
+    double windowLevel = 0.0;
+    double windowWidth = 0.0; // <= 0: keep the current window
+    std::string transfer;     // transfer-function preset name ("" = keep the current one)
+};
+
+using WallClock = std::function<std::chrono::system_clock::time_point()>;
+
+struct Settings {
+    std::vector<TissuePreset> presets; // in the order the panel lists them
+    // A small probe in homogeneous tissue has a tiny spread and the front would never move:
+    // a probe sets eps = max(probeEpsFactor * stddev, epsFloor). Real units.
+    double epsFloor = 0.0;
+    double probeEpsFactor = 2.0;
+    double probeRadiusMm = 5.0; // a Probe action's radius when it gives none (<= 0)
+    double defaultRadius = 3.0; // the brush after a load, voxels (clamped to the scan's range)
+    std::filesystem::path exportFolder = "."; // default exports: <folder>/<scan>_<UTC time>.nii.gz
+    int maxUndo = 32;                         // undo entries kept; older ones are dropped
+    WallClock clock; // export names' time stamps; empty: the system clock (tests fix it)
+};
+
+// Throws std::invalid_argument with one line naming the first bad value: non-finite numbers,
+// a negative eps floor, a probe factor or radius <= 0, maxUndo outside [1, 10000], a preset
+// without a name or with a duplicate one, or with eps < 0 or alpha outside [0, 1].
+void validateSettings(const Settings& settings);
+
+} // namespace steerseg::workflow

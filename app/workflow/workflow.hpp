@@ -1,0 +1,150 @@
+#pragma once
+
+// The fixed operator workflow: the only place that decides what an action means in the state
+// the console is in. It drives an Engine (the scan, the solver, the writers), keeps the undo
+// history and the view state, writes the audit log and publishes a Status for the screen. It
+// knows actions, not devices, and runs without a GPU. docs/workflow.md has the transition table.
+#include "workflow/action.hpp"
+#include "workflow/audit_log.hpp"
+#include "workflow/engine.hpp"
+#include "workflow/param_ranges.hpp"
+#include "workflow/settings.hpp"
+#include "workflow/status.hpp"
+#include "workflow/undo_stack.hpp"
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <nlohmann/json_fwd.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace steerseg::workflow {
+
+class Workflow {
+  public:
+    // Throws std::invalid_argument for invalid settings (validateSettings). The engine and the
+    // audit log must outlive the workflow.
+    Workflow(Engine& engine, Settings settings, AuditLog* audit = nullptr);
+    ~Workflow();
+    Workflow(const Workflow&) = delete;
+    Workflow& operator=(const Workflow&) = delete;
+
+    struct Outcome {
+        bool accepted = false;
+        std::string reason; // why it was refused, one line ("" when accepted)
+    };
+    // The only entry for operator intent. Never throws: a refusal says why.
+    Outcome handle(const Action& action);
+    // Each frame: polls a running load.
+    void update();
+    // The frame loop calls it while state() == Evolving (elsewhere it does nothing).
+    solver::StepResult evolve(int iterations);
+
+    [[nodiscard]] State state() const { return status_.state; }
+    [[nodiscard]] const Status& status() const { return status_; }
+    [[nodiscard]] bool quitRequested() const { return quit_; }
+    [[nodiscard]] const Settings& settings() const { return settings_; }
+    // The undo history's depth on each side, for tests and the soak's invariants.
+    [[nodiscard]] std::size_t undoDepth() const { return undo_.undoDepth(); }
+    [[nodiscard]] std::size_t redoDepth() const { return undo_.redoDepth(); }
+    [[nodiscard]] std::size_t heldSnapshots() const { return undo_.snapshotCount(); }
+
+  private:
+    static Outcome ok() { return {true, {}}; }
+    static Outcome no(std::string reason) { return {false, std::move(reason)}; }
+
+    // One handler per action (workflow.cpp: flow; workflow_params.cpp: parameters and probe;
+    // workflow_edits.cpp: spheres, restart, undo; workflow_view.cpp: the view state).
+    Outcome on(const LoadScan& a);
+    Outcome on(const Probe& a);
+    Outcome on(const ApplyPreset& a);
+    Outcome on(const SetParam& a);
+    Outcome on(const NudgeParam& a);
+    Outcome on(const NudgeSelected& a);
+    Outcome on(const SelectParam& a);
+    Outcome on(const CycleParam& a);
+    Outcome on(const SetWindow& a);
+    Outcome on(const AddSeed& a);
+    Outcome on(const Erase& a);
+    Outcome on(const SetEraseMode& a);
+    Outcome on(const Run& a);
+    Outcome on(const Pause& a);
+    Outcome on(const ToggleRun& a);
+    Outcome on(const Finish& a);
+    Outcome on(const Resume& a);
+    Outcome on(const Export& a);
+    Outcome on(const Undo& a);
+    Outcome on(const Redo& a);
+    Outcome on(const Restart& a);
+    Outcome on(const Proceed& a);
+    Outcome on(const Back& a);
+    Outcome on(const Dismiss& a);
+    Outcome on(const RotateView& a);
+    Outcome on(const ZoomView& a);
+    Outcome on(const PageSlice& a);
+    Outcome on(const SetSlice& a);
+    Outcome on(const ShowSlices& a);
+    Outcome on(const Quit& a);
+
+    // States and transitions (workflow.cpp).
+    void enter(State next, std::string message = {});
+    [[nodiscard]] bool unexportedWork() const;
+    // Why nothing that needs a scan can happen now (nullopt: a scan is there).
+    [[nodiscard]] std::optional<std::string> whyNoScan() const;
+    void finishLoad();
+    void forgetScan();
+    void noteAuditError();
+    void record(const Action& action, State before, const Outcome& outcome);
+    [[nodiscard]] nlohmann::json resultOf(const Action& action) const; // workflow_audit.cpp
+
+    // Parameters (workflow_params.cpp).
+    [[nodiscard]] std::optional<std::string> whyNoParamChange() const;
+    Outcome changeParams(ParamValues next, std::string_view what, std::optional<Param> coalesce);
+    Outcome setParam(Param param, double value, std::string_view what);
+    void applyParams(const ParamValues& values, bool force = false); // the engine, the status
+    [[nodiscard]] ParamValues clamped(ParamValues values) const;
+    void setDefaultParams();
+
+    // The level set (workflow_edits.cpp).
+    Outcome sphereEdit(const glm::dvec3& voxel, double radius, bool seed);
+    void editLevelSet(std::string_view what, const std::function<void()>& edit, int seeds,
+                      int erasures);
+    LevelSetMark markNow(int seeds, int erasures);
+    void restoreMark(const LevelSetMark& mark);
+    void releaseSnapshot(const std::optional<SnapshotId>& id);
+    void afterLevelSetChange();
+    void refreshEngineStatus();
+    void refreshUndoFlags();
+    [[nodiscard]] std::optional<std::string> whyNoUndo() const;
+
+    // Export (workflow_export.cpp).
+    Outcome exportTo(const std::string& path);
+    [[nodiscard]] std::filesystem::path defaultExportPath() const;
+
+    Engine& engine_;
+    Settings settings_;
+    AuditLog* audit_;
+    UndoStack undo_;
+    Status status_;
+    ParamValues params_; // as the status shows them (T, eps, alpha rounded to float)
+    bool scanLoaded_ = false;
+    bool dirty_ = false; // the level set changed since it was last exported
+    bool quit_ = false;
+    // Transitions made while handling one action, audited after the action's own record.
+    struct PendingTransition {
+        State from;
+        State to;
+        std::string message;
+    };
+    std::vector<PendingTransition> pending_;
+    bool handling_ = false;
+    std::string_view cause_; // the action being handled, or "load" / "evolve"
+    ProbeResult lastProbe_;  // for the probe's audit record
+    std::string lastUndone_; // what the last undo or redo took back or did again
+};
+
+} // namespace steerseg::workflow

@@ -1,0 +1,94 @@
+// What an accepted action changed, for its audit record's "result": the values it set after
+// clamping (the action's own "values" are what was asked for).
+#include "workflow/workflow.hpp"
+
+#include <array>
+#include <charconv>
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <system_error>
+#include <type_traits>
+
+namespace steerseg::workflow {
+
+namespace {
+
+template <class T, class... U> constexpr bool isOneOf = (std::is_same_v<T, U> || ...);
+
+// The solver's floats as the shortest decimals that read back as them (0.8, not
+// 0.800000011920929): what the panel shows is what the log says.
+double decimal(float f) {
+    std::array<char, 32> buf{};
+    const auto [end, ec] = std::to_chars(buf.data(), buf.data() + buf.size() - 1, f);
+    if (ec != std::errc()) {
+        return static_cast<double>(f);
+    }
+    *end = '\0';
+    return std::strtod(buf.data(), nullptr);
+}
+
+} // namespace
+
+nlohmann::json Workflow::resultOf(const Action& action) const {
+    const auto params = [this] {
+        nlohmann::json p{{"T", decimal(status_.params.T)},
+                         {"eps", decimal(status_.params.eps)},
+                         {"alpha", decimal(status_.params.alpha)},
+                         {"radius", status_.radius}};
+        if (!status_.preset.empty()) {
+            p["preset"] = status_.preset;
+        }
+        return p;
+    };
+    const auto levelSet = [this] {
+        return nlohmann::json{{"seeds", status_.seeds},
+                              {"erasures", status_.erasures},
+                              {"has_level_set", status_.hasLevelSet},
+                              {"volume_ml", status_.volumeMl}};
+    };
+    const ViewState& v = status_.view;
+    return std::visit(
+        [&](const auto& a) -> nlohmann::json {
+            using A = std::decay_t<decltype(a)>;
+            if constexpr (std::is_same_v<A, Probe>) {
+                nlohmann::json r = params();
+                r["mean"] = lastProbe_.mean;
+                r["stddev"] = lastProbe_.stddev;
+                r["count"] = lastProbe_.count;
+                return r;
+            } else if constexpr (std::is_same_v<A, ApplyPreset>) {
+                nlohmann::json r = params();
+                r["window_level"] = v.windowLevel;
+                r["window_width"] = v.windowWidth;
+                r["transfer"] = v.transfer;
+                return r;
+            } else if constexpr (isOneOf<A, SetParam, NudgeParam, NudgeSelected>) {
+                return params();
+            } else if constexpr (isOneOf<A, AddSeed, Erase, Restart>) {
+                return levelSet();
+            } else if constexpr (isOneOf<A, Undo, Redo>) {
+                nlohmann::json r = params();
+                r.update(levelSet());
+                r["entry"] = lastUndone_;
+                return r;
+            } else if constexpr (isOneOf<A, SelectParam, CycleParam>) {
+                return {{"selected", paramName(status_.selected)}};
+            } else if constexpr (isOneOf<A, Export, Proceed>) {
+                if (status_.state == State::Done && !status_.exportedPath.empty()) {
+                    return {{"exported", status_.exportedPath}};
+                }
+                return nullptr;
+            } else if constexpr (std::is_same_v<A, SetWindow>) {
+                return {{"window_level", v.windowLevel}, {"window_width", v.windowWidth}};
+            } else if constexpr (isOneOf<A, RotateView, ZoomView>) {
+                return {{"yaw", v.yawDeg}, {"pitch", v.pitchDeg}, {"zoom", v.zoom}};
+            } else if constexpr (isOneOf<A, PageSlice, SetSlice>) {
+                return {{"slice", {v.slice.x, v.slice.y, v.slice.z}}};
+            } else {
+                return nullptr;
+            }
+        },
+        action);
+}
+
+} // namespace steerseg::workflow

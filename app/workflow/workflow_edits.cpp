@@ -1,0 +1,258 @@
+// The level set: seed and erase spheres, restart, and undo/redo of every edit. A sphere edit is
+// recorded as snapshots of the level set before and after it (none for an empty level set), so
+// undo and redo are exact whatever evolved in between; the undo stack frees what it drops.
+#include "workflow/workflow.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace steerseg::workflow {
+
+namespace {
+
+bool finite(const glm::dvec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+} // namespace
+
+void Workflow::refreshEngineStatus() {
+    status_.hasLevelSet = engine_.hasLevelSet();
+    const solver::SolverStats s = engine_.stats();
+    status_.iterations = s.iterations;
+    status_.evolvedTime = static_cast<double>(s.evolvedTime);
+    status_.volumeMl = engine_.volumeMl();
+}
+
+void Workflow::refreshUndoFlags() {
+    status_.canUndo = undo_.undoTop() != nullptr;
+    status_.canRedo = undo_.redoTop() != nullptr;
+}
+
+void Workflow::afterLevelSetChange() {
+    dirty_ = true;
+    status_.converged = false;
+    refreshEngineStatus();
+}
+
+LevelSetMark Workflow::markNow(int seeds, int erasures) {
+    LevelSetMark m;
+    m.seeds = seeds;
+    m.erasures = erasures;
+    if (engine_.hasLevelSet()) {
+        m.snapshot = engine_.snapshot();
+    }
+    return m;
+}
+
+void Workflow::restoreMark(const LevelSetMark& mark) {
+    if (mark.snapshot) {
+        engine_.restore(*mark.snapshot);
+    } else {
+        engine_.clearLevelSet();
+    }
+    status_.seeds = mark.seeds;
+    status_.erasures = mark.erasures;
+}
+
+void Workflow::releaseSnapshot(const std::optional<SnapshotId>& id) {
+    if (id) {
+        try {
+            engine_.drop(*id);
+        } catch (...) {
+            // Nothing the operator can do about it; the engine keeps the copy.
+        }
+    }
+}
+
+void Workflow::editLevelSet(std::string_view what, const std::function<void()>& edit, int seeds,
+                            int erasures) {
+    const LevelSetMark before = markNow(status_.seeds, status_.erasures);
+    try {
+        edit();
+    } catch (...) {
+        releaseSnapshot(before.snapshot);
+        throw;
+    }
+    LevelSetMark after;
+    try {
+        after = markNow(seeds, erasures);
+    } catch (...) {
+        // Without a copy of the result the edit could not be redone: take it back.
+        try {
+            restoreMark(before);
+        } catch (...) {
+        }
+        releaseSnapshot(before.snapshot);
+        afterLevelSetChange();
+        throw;
+    }
+    UndoEntry e;
+    e.what = what;
+    e.levelSet = true;
+    e.paramsBefore = params_;
+    e.paramsAfter = params_;
+    e.before = before;
+    e.after = after;
+    undo_.push(std::move(e));
+    status_.seeds = seeds;
+    status_.erasures = erasures;
+    afterLevelSetChange();
+}
+
+Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, bool seed) {
+    switch (status_.state) {
+    case State::Inspect:
+        if (!seed) {
+            return no("place a seed before erasing");
+        }
+        break;
+    case State::Seeding:
+    case State::Evolving:
+    case State::Paused:
+        break;
+    case State::Review:
+        return no("go back to steering to edit the surface");
+    case State::Done:
+        return no("the result is exported: go back to review, or load the next scan");
+    case State::Error:
+        return no("dismiss the error first");
+    default:
+        return no(whyNoScan().value_or("no surface to edit now"));
+    }
+    if (!finite(voxel) || !std::isfinite(radius)) {
+        return no("a sphere needs a finite centre and radius");
+    }
+    const glm::ivec3 dims = status_.scan.dims;
+    for (int a = 0; a < 3; ++a) {
+        if (voxel[a] < 0.0 || voxel[a] > static_cast<double>(dims[a] - 1)) {
+            std::ostringstream msg;
+            msg << "sphere centre (" << voxel.x << ", " << voxel.y << ", " << voxel.z
+                << ") lies outside the scan (" << dims.x << " x " << dims.y << " x " << dims.z
+                << " voxels)";
+            return no(msg.str());
+        }
+    }
+    if (!seed && !status_.hasLevelSet) {
+        return no("nothing to erase");
+    }
+    const ParamRange& r = status_.ranges[indexOf(Param::Radius)];
+    const double rad = radius > 0.0 ? clampTo(r, radius) : params_.values[indexOf(Param::Radius)];
+    const solver::Sphere sphere{glm::vec3(voxel), static_cast<float>(rad)};
+    if (seed) {
+        editLevelSet(
+            "add_seed", [&] { engine_.addSeed(sphere); }, status_.seeds + 1, status_.erasures);
+    } else {
+        editLevelSet(
+            "erase", [&] { engine_.erase(sphere); }, status_.seeds, status_.erasures + 1);
+    }
+    if (status_.state == State::Inspect) {
+        enter(State::Seeding);
+    } else if (status_.state == State::Evolving && !status_.hasLevelSet) {
+        enter(State::Paused, "the level set is empty: add a seed");
+    }
+    return ok();
+}
+
+Workflow::Outcome Workflow::on(const AddSeed& a) {
+    return sphereEdit(a.voxel, a.radius, true);
+}
+
+Workflow::Outcome Workflow::on(const Erase& a) {
+    return sphereEdit(a.voxel, a.radius, false);
+}
+
+Workflow::Outcome Workflow::on(const SetEraseMode& a) {
+    if (auto why = whyNoScan()) {
+        return no(*why);
+    }
+    status_.eraseMode = a.erase;
+    return ok();
+}
+
+Workflow::Outcome Workflow::on(const Restart&) {
+    switch (status_.state) {
+    case State::Inspect:
+    case State::Seeding:
+    case State::Evolving:
+    case State::Paused:
+    case State::Review:
+    case State::Done:
+        break;
+    case State::Error:
+        return no("dismiss the error first");
+    default:
+        return no(whyNoScan().value_or("nothing to restart"));
+    }
+    if (!status_.hasLevelSet) {
+        return no("nothing to restart: the level set is empty");
+    }
+    editLevelSet(
+        "restart", [&] { engine_.clearLevelSet(); }, 0, 0);
+    enter(State::Seeding);
+    return ok();
+}
+
+std::optional<std::string> Workflow::whyNoUndo() const {
+    switch (status_.state) {
+    case State::Inspect:
+    case State::Seeding:
+    case State::Evolving:
+    case State::Paused:
+        return std::nullopt;
+    case State::Review:
+    case State::Done:
+        return "go back to steering to undo";
+    case State::Error:
+        return "dismiss the error first";
+    default:
+        break;
+    }
+    return whyNoScan().value_or("nothing to undo now");
+}
+
+Workflow::Outcome Workflow::on(const Undo&) {
+    if (auto why = whyNoUndo()) {
+        return no(*why);
+    }
+    const UndoEntry* e = undo_.undoTop();
+    if (e == nullptr) {
+        return no("nothing to undo");
+    }
+    if (status_.state == State::Evolving) {
+        enter(State::Paused); // the operator sees what came back before it moves again
+    }
+    lastUndone_ = e->what;
+    if (e->levelSet) {
+        restoreMark(e->before);
+        afterLevelSetChange();
+    } else {
+        applyParams(e->paramsBefore);
+    }
+    undo_.undone();
+    return ok();
+}
+
+Workflow::Outcome Workflow::on(const Redo&) {
+    if (auto why = whyNoUndo()) {
+        return no(*why);
+    }
+    const UndoEntry* e = undo_.redoTop();
+    if (e == nullptr) {
+        return no("nothing to redo");
+    }
+    if (status_.state == State::Evolving) {
+        enter(State::Paused);
+    }
+    lastUndone_ = e->what;
+    if (e->levelSet) {
+        restoreMark(e->after);
+        afterLevelSetChange();
+    } else {
+        applyParams(e->paramsAfter);
+    }
+    undo_.redone();
+    return ok();
+}
+
+} // namespace steerseg::workflow

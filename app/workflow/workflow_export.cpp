@@ -1,0 +1,75 @@
+// Export: the mask to a path the operator (or script) gives, or to the export folder under a
+// name from the scan and the UTC time. A failure goes back to review with the writer's message
+// and keeps the work, so the operator can try again (another folder, a freed disk).
+#include "workflow/utc_time.hpp"
+#include "workflow/workflow.hpp"
+
+#include <stdexcept>
+#include <system_error>
+
+namespace steerseg::workflow {
+
+namespace {
+
+// File-name safe: letters, digits, '.', '-', '_' (others become '_'), no leading dot, bounded.
+std::string fileStem(const std::string& name) {
+    std::string out;
+    for (const char c : name) {
+        const bool safe = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                          (c >= '0' && c <= '9') || c == '.' || c == '-' || c == '_';
+        out += safe ? c : '_';
+    }
+    while (!out.empty() && out.front() == '.') {
+        out.erase(out.begin());
+    }
+    if (out.size() > 100) {
+        out.resize(100);
+    }
+    return out.empty() ? std::string("scan") : out;
+}
+
+} // namespace
+
+std::filesystem::path Workflow::defaultExportPath() const {
+    const std::string base = fileStem(status_.scan.name) + "_" + compactUtc(settings_.clock());
+    std::filesystem::path path = settings_.exportFolder / (base + ".nii.gz");
+    // Two exports within a second must not overwrite each other.
+    std::error_code ec;
+    for (int n = 2; std::filesystem::exists(path, ec) && n < 1000; ++n) {
+        path = settings_.exportFolder / (base + "-" + std::to_string(n) + ".nii.gz");
+    }
+    return path;
+}
+
+Workflow::Outcome Workflow::exportTo(const std::string& requested) {
+    enter(State::Exporting);
+    std::filesystem::path path;
+    try {
+        if (requested.empty()) {
+            std::error_code ec;
+            std::filesystem::create_directories(settings_.exportFolder, ec);
+            if (ec) {
+                throw std::runtime_error("export folder " + settings_.exportFolder.string() + ": " +
+                                         ec.message());
+            }
+            path = defaultExportPath();
+        } else {
+            path = requested;
+        }
+        engine_.exportMask(path);
+    } catch (const std::exception& e) {
+        std::string message = e.what();
+        message = message.substr(0, message.find_first_of("\r\n"));
+        if (message.empty()) {
+            message = "the export failed";
+        }
+        enter(State::Review, message);
+        return no(message);
+    }
+    dirty_ = false;
+    status_.exportedPath = path.string();
+    enter(State::Done, "exported to " + status_.exportedPath);
+    return ok();
+}
+
+} // namespace steerseg::workflow

@@ -1,0 +1,209 @@
+// The speed's parameters and the brush: probe, presets, absolute and relative changes, the
+// knob's selection. Every change is clamped to the scan's ranges, sent to the engine at once
+// (live while evolving) and recorded for undo.
+#include "workflow/workflow.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace steerseg::workflow {
+
+namespace {
+
+bool validParam(Param p) {
+    return indexOf(p) < static_cast<std::size_t>(kParamCount);
+}
+
+bool speedParam(Param p) {
+    return p != Param::Radius;
+}
+
+} // namespace
+
+std::optional<std::string> Workflow::whyNoParamChange() const {
+    switch (status_.state) {
+    case State::Inspect:
+    case State::Seeding:
+    case State::Evolving:
+    case State::Paused:
+        return std::nullopt;
+    case State::Review:
+        return "go back to steering to change parameters";
+    case State::Exporting:
+        return "an export is under way";
+    case State::Done:
+        return "the result is exported: go back to review, or load the next scan";
+    case State::Error:
+        return "dismiss the error first";
+    default:
+        break;
+    }
+    return whyNoScan().value_or("no parameters to change now");
+}
+
+ParamValues Workflow::clamped(ParamValues v) const {
+    for (std::size_t i = 0; i < v.values.size(); ++i) {
+        const ParamRange& r = status_.ranges[i];
+        // T, eps and alpha travel to the solver as floats: keep the float the status shows.
+        v.values[i] = i == indexOf(Param::Radius)
+                          ? clampTo(r, v.values[i])
+                          : static_cast<double>(clampToFloat(r, v.values[i]));
+    }
+    return v;
+}
+
+void Workflow::applyParams(const ParamValues& values, bool force) {
+    const solver::LevelSetParams p{static_cast<float>(values.values[indexOf(Param::Target)]),
+                                   static_cast<float>(values.values[indexOf(Param::Epsilon)]),
+                                   static_cast<float>(values.values[indexOf(Param::Alpha)])};
+    const solver::LevelSetParams& now = status_.params;
+    if (force || p.T != now.T || p.eps != now.eps || p.alpha != now.alpha) {
+        engine_.setParams(p);
+        status_.converged = false; // the front moves again under a new speed
+    }
+    params_ = values;
+    status_.params = p;
+    status_.radius = values.values[indexOf(Param::Radius)];
+    status_.preset = values.preset;
+}
+
+void Workflow::setDefaultParams() {
+    // A probe or a preset is the operator's real first step; until then a centred, wide band
+    // and some smoothing, as the sample's demo uses.
+    const double lo = status_.scan.minValue;
+    const double hi = status_.scan.maxValue;
+    ParamValues v;
+    v.values[indexOf(Param::Target)] = lo + (hi - lo) / 2.0;
+    v.values[indexOf(Param::Epsilon)] = std::max(settings_.epsFloor, (hi - lo) / 10.0);
+    v.values[indexOf(Param::Alpha)] = 0.8;
+    v.values[indexOf(Param::Radius)] = settings_.defaultRadius;
+    applyParams(clamped(v), true); // a new scan: the engine hears its parameters
+}
+
+Workflow::Outcome Workflow::changeParams(ParamValues next, std::string_view what,
+                                         std::optional<Param> coalesce) {
+    UndoEntry e;
+    e.what = what;
+    e.paramsBefore = params_;
+    applyParams(clamped(std::move(next)));
+    e.paramsAfter = params_;
+    e.coalesce = coalesce;
+    undo_.push(std::move(e));
+    return ok();
+}
+
+Workflow::Outcome Workflow::setParam(Param param, double value, std::string_view what) {
+    if (!validParam(param)) {
+        return no("unknown parameter");
+    }
+    if (auto why = whyNoParamChange()) {
+        return no(*why);
+    }
+    if (!std::isfinite(value)) {
+        return no(std::string(paramName(param)) + " must be a finite number");
+    }
+    ParamValues next = params_;
+    next.values[indexOf(param)] = value;
+    if (speedParam(param)) {
+        next.preset.clear(); // the speed no longer is the preset's
+    }
+    return changeParams(std::move(next), what, param);
+}
+
+Workflow::Outcome Workflow::on(const SetParam& a) {
+    return setParam(a.param, a.value, "set_param");
+}
+
+Workflow::Outcome Workflow::on(const NudgeParam& a) {
+    if (!validParam(a.param)) {
+        return no("unknown parameter");
+    }
+    if (!std::isfinite(a.steps)) {
+        return no("a nudge needs a finite number of steps");
+    }
+    const std::size_t i = indexOf(a.param);
+    const ParamRange& r = status_.ranges[i];
+    const double delta = a.steps * r.fineStep;
+    double v = params_.values[i] + delta;
+    if (!std::isfinite(v)) { // a flood of steps overflowed: as far as the range goes
+        v = delta > 0.0 ? r.max : r.min;
+    }
+    return setParam(a.param, v, "nudge_param");
+}
+
+Workflow::Outcome Workflow::on(const NudgeSelected& a) {
+    return on(NudgeParam{status_.selected, a.steps});
+}
+
+Workflow::Outcome Workflow::on(const SelectParam& a) {
+    if (!validParam(a.param)) {
+        return no("unknown parameter");
+    }
+    if (auto why = whyNoScan()) {
+        return no(*why);
+    }
+    status_.selected = a.param;
+    return ok();
+}
+
+Workflow::Outcome Workflow::on(const CycleParam& a) {
+    if (auto why = whyNoScan()) {
+        return no(*why);
+    }
+    const long long n = kParamCount;
+    const long long next = ((static_cast<long long>(status_.selected) + a.delta) % n + n) % n;
+    status_.selected = static_cast<Param>(next);
+    return ok();
+}
+
+Workflow::Outcome Workflow::on(const Probe& a) {
+    if (auto why = whyNoParamChange()) {
+        return no(*why);
+    }
+    if (!std::isfinite(a.voxel.x) || !std::isfinite(a.voxel.y) || !std::isfinite(a.voxel.z) ||
+        !std::isfinite(a.radiusMm)) {
+        return no("a probe needs a finite position and radius");
+    }
+    const double radius = a.radiusMm > 0.0 ? a.radiusMm : settings_.probeRadiusMm;
+    const ProbeResult p = engine_.probe(a.voxel, radius);
+    if (p.count == 0) {
+        return no("probe outside the scan");
+    }
+    if (!std::isfinite(p.mean) || !std::isfinite(p.stddev)) {
+        return no("the scan's values under the probe are not finite numbers");
+    }
+    lastProbe_ = p;
+    ParamValues next = params_;
+    next.values[indexOf(Param::Target)] = p.mean;
+    next.values[indexOf(Param::Epsilon)] =
+        std::max(settings_.probeEpsFactor * p.stddev, settings_.epsFloor);
+    next.preset.clear();
+    return changeParams(std::move(next), "probe", std::nullopt);
+}
+
+Workflow::Outcome Workflow::on(const ApplyPreset& a) {
+    if (auto why = whyNoParamChange()) {
+        return no(*why);
+    }
+    const auto it = std::find_if(settings_.presets.begin(), settings_.presets.end(),
+                                 [&](const TissuePreset& p) { return p.name == a.name; });
+    if (it == settings_.presets.end()) {
+        return no("unknown preset '" + a.name + "'");
+    }
+    ParamValues next = params_;
+    next.values[indexOf(Param::Target)] = it->T;
+    next.values[indexOf(Param::Epsilon)] = it->eps;
+    next.values[indexOf(Param::Alpha)] = it->alpha;
+    next.preset = it->name;
+    Outcome out = changeParams(std::move(next), "apply_preset", std::nullopt);
+    if (it->windowWidth > 0.0) {
+        status_.view.windowLevel = it->windowLevel;
+        status_.view.windowWidth = it->windowWidth;
+    }
+    if (!it->transfer.empty()) {
+        status_.view.transfer = it->transfer;
+    }
+    return out;
+}
+
+} // namespace steerseg::workflow

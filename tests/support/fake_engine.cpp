@@ -1,0 +1,269 @@
+#include "support/fake_engine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+namespace steerseg::test {
+
+workflow::ScanInfo FakeEngine::defaultScan() {
+    workflow::ScanInfo s;
+    s.identity = "fake:scan";
+    s.name = "fake";
+    s.dims = {16, 12, 8};
+    s.spacing = {1.0, 1.0, 2.0};
+    s.minValue = -1000.0;
+    s.maxValue = 1000.0;
+    s.units = "HU";
+    return s;
+}
+
+FakeEngine::FakeEngine(workflow::ScanInfo scan) : scan_(std::move(scan)) {}
+
+void FakeEngine::misused(const std::string& what) const {
+    ++misuse_;
+    lastMisuse_ = what;
+    throw std::logic_error("fake engine misused: " + what);
+}
+
+void FakeEngine::requireScan(const char* call) const {
+    if (!attached_) {
+        misused(std::string(call) + " without a scan");
+    }
+}
+
+bool FakeEngine::inside(const glm::ivec3& v) const {
+    const glm::ivec3 d = scan_.dims;
+    if (!attached_ || glm::any(glm::lessThan(v, glm::ivec3(0))) ||
+        glm::any(glm::greaterThanEqual(v, d))) {
+        return false;
+    }
+    return mask_[static_cast<std::size_t>(v.x + d.x * (v.y + d.y * v.z))] != 0;
+}
+
+void FakeEngine::beginLoad(const std::string& path) {
+    loads.push_back(path);
+    // Like the kiosk's engine, the old scan is gone once a new one is asked for.
+    attached_ = false;
+    loading_ = true;
+    polls_ = 0;
+    mask_.clear();
+    inside_ = 0;
+    iterations_ = 0;
+    time_ = 0.0F;
+}
+
+workflow::LoadPoll FakeEngine::pollLoad() {
+    workflow::LoadPoll p;
+    if (!loading_) {
+        misused("pollLoad without a load");
+    }
+    if (polls_ < loadPolls) {
+        ++polls_;
+        p.progress = static_cast<double>(polls_) / static_cast<double>(loadPolls + 1);
+        return p;
+    }
+    loading_ = false;
+    if (!loadError.empty()) {
+        p.kind = workflow::LoadPoll::Failed;
+        p.error = loadError;
+        return p;
+    }
+    attached_ = true;
+    mask_.assign(static_cast<std::size_t>(scan_.dims.x) * static_cast<std::size_t>(scan_.dims.y) *
+                     static_cast<std::size_t>(scan_.dims.z),
+                 0);
+    inside_ = 0;
+    iterations_ = 0;
+    time_ = 0.0F;
+    changed();
+    p.kind = workflow::LoadPoll::Ready;
+    p.progress = 1.0;
+    return p;
+}
+
+workflow::ScanInfo FakeEngine::scanInfo() const {
+    requireScan("scanInfo");
+    return scan_;
+}
+
+workflow::ProbeResult FakeEngine::probe(const glm::dvec3& voxel, double radiusMm) const {
+    requireScan("probe");
+    if (!std::isfinite(voxel.x) || !std::isfinite(voxel.y) || !std::isfinite(voxel.z) ||
+        !std::isfinite(radiusMm) || radiusMm <= 0.0) {
+        misused("probe with a non-finite position or a radius <= 0");
+    }
+    // Voxels whose centres lie within the radius (mm), as session::probe counts them; the
+    // mean rises along i so different probes give different targets.
+    const glm::dvec3 reach = radiusMm / scan_.spacing;
+    const glm::dvec3 lo = glm::max(glm::ceil(voxel - reach), glm::dvec3(0.0));
+    const glm::dvec3 hi = glm::min(glm::floor(voxel + reach), glm::dvec3(scan_.dims - 1));
+    workflow::ProbeResult r;
+    for (double k = lo.z; k <= hi.z; ++k) {
+        for (double j = lo.y; j <= hi.y; ++j) {
+            for (double i = lo.x; i <= hi.x; ++i) {
+                const glm::dvec3 d = (glm::dvec3(i, j, k) - voxel) * scan_.spacing;
+                if (glm::dot(d, d) <= radiusMm * radiusMm) {
+                    ++r.count;
+                }
+            }
+        }
+    }
+    if (r.count > 0) {
+        const double along = std::clamp(voxel.x / std::max(1, scan_.dims.x - 1), 0.0, 1.0);
+        r.mean = scan_.minValue + (scan_.maxValue - scan_.minValue) * along;
+        r.stddev = probeStddev;
+    }
+    return r;
+}
+
+void FakeEngine::paint(const solver::Sphere& s, std::uint8_t value) {
+    requireScan(value != 0 ? "addSeed" : "erase");
+    const glm::ivec3 d = scan_.dims;
+    for (int a = 0; a < 3; ++a) {
+        if (!std::isfinite(s.centre[a]) || s.centre[a] < 0.0F ||
+            s.centre[a] > static_cast<float>(d[a] - 1)) {
+            misused("a sphere centred outside the scan");
+        }
+    }
+    if (!std::isfinite(s.radius) || s.radius <= 0.0F) {
+        misused("a sphere with a radius <= 0");
+    }
+    if (!editError.empty()) {
+        throw std::runtime_error(editError);
+    }
+    const glm::ivec3 lo = glm::max(glm::ivec3(glm::ceil(s.centre - s.radius)), glm::ivec3(0));
+    const glm::ivec3 hi = glm::min(glm::ivec3(glm::floor(s.centre + s.radius)), d - 1);
+    for (int k = lo.z; k <= hi.z; ++k) {
+        for (int j = lo.y; j <= hi.y; ++j) {
+            for (int i = lo.x; i <= hi.x; ++i) {
+                if (solver::sphereDistance(s, glm::vec3(i, j, k)) > 0.0F) {
+                    continue;
+                }
+                std::uint8_t& m = mask_[static_cast<std::size_t>(i + d.x * (j + d.y * k))];
+                if (m != value) {
+                    inside_ = value != 0 ? inside_ + 1 : inside_ - 1;
+                    m = value;
+                }
+            }
+        }
+    }
+    if (inside_ == 0) {
+        iterations_ = 0;
+        time_ = 0.0F;
+    }
+    changed();
+}
+
+void FakeEngine::addSeed(const solver::Sphere& sphere) {
+    paint(sphere, 1);
+}
+
+void FakeEngine::erase(const solver::Sphere& sphere) {
+    paint(sphere, 0);
+}
+
+void FakeEngine::clearLevelSet() {
+    requireScan("clearLevelSet");
+    std::fill(mask_.begin(), mask_.end(), std::uint8_t{0});
+    inside_ = 0;
+    iterations_ = 0;
+    time_ = 0.0F;
+    changed();
+}
+
+void FakeEngine::setParams(const solver::LevelSetParams& p) {
+    requireScan("setParams");
+    // The solver's own checks (validateParams), which the workflow's clamping must satisfy.
+    if (!std::isfinite(p.T) || !std::isfinite(p.eps) || !std::isfinite(p.alpha) || p.eps < 0.0F ||
+        p.alpha < 0.0F || p.alpha > 1.0F) {
+        misused("setParams with invalid values");
+    }
+    ++setParamsCalls;
+    params_ = p;
+    changed();
+}
+
+solver::StepResult FakeEngine::step(int iterations) {
+    requireScan("step");
+    if (inside_ == 0) {
+        misused("step without a level set");
+    }
+    if (iterations <= 0) {
+        misused("step with no iterations");
+    }
+    if (!stepError.empty()) {
+        throw std::runtime_error(stepError);
+    }
+    iterations_ += iterations;
+    sinceChange_ += iterations;
+    time_ += 0.25F * static_cast<float>(iterations);
+    solver::StepResult r;
+    r.iterations = iterations;
+    r.evolvedTime = time_;
+    r.converged = sinceChange_ >= convergeAfter;
+    r.stopReason = solver::StopReason::IterationLimit;
+    return r;
+}
+
+solver::SolverStats FakeEngine::stats() const {
+    solver::SolverStats s;
+    s.iterations = iterations_;
+    s.evolvedTime = time_;
+    return s;
+}
+
+double FakeEngine::volumeMl() const {
+    return static_cast<double>(inside_) * scan_.spacing.x * scan_.spacing.y * scan_.spacing.z /
+           1000.0;
+}
+
+workflow::SnapshotId FakeEngine::snapshot() {
+    requireScan("snapshot");
+    if (!snapshotError.empty()) {
+        throw std::runtime_error(snapshotError);
+    }
+    const workflow::SnapshotId id = nextId_++;
+    snapshots_[id] = LevelSet{mask_, inside_, iterations_, time_};
+    return id;
+}
+
+void FakeEngine::restore(workflow::SnapshotId id) {
+    requireScan("restore");
+    const auto it = snapshots_.find(id);
+    if (it == snapshots_.end()) {
+        misused("restore of snapshot " + std::to_string(id) + ", which is not live");
+    }
+    mask_ = it->second.mask;
+    inside_ = it->second.inside;
+    iterations_ = it->second.iterations;
+    time_ = it->second.time;
+    changed();
+}
+
+void FakeEngine::drop(workflow::SnapshotId id) {
+    if (snapshots_.erase(id) == 0) {
+        misused("drop of snapshot " + std::to_string(id) + ", which is not live");
+    }
+}
+
+void FakeEngine::exportMask(const std::filesystem::path& path) {
+    requireScan("exportMask");
+    if (inside_ == 0) {
+        misused("exportMask without a level set");
+    }
+    if (!exportError.empty()) {
+        throw std::runtime_error(exportError);
+    }
+    if (writeExports) {
+        std::ofstream out(path);
+        out << "fake mask " << inside_ << " voxels\n";
+        if (!out) {
+            throw std::runtime_error(path.string() + ": cannot write");
+        }
+    }
+    exports.push_back(path);
+}
+
+} // namespace steerseg::test

@@ -1,0 +1,96 @@
+#pragma once
+
+// An Engine in memory for the workflow's tests, the UI's and the kiosk's: deterministic, no GL.
+// The scan is a small grid, the level set a voxel mask edited by the spheres; steps count
+// iterations and converge after a fixed number without a change. Loads finish after a given
+// number of polls; loads, exports, steps, edits and snapshots fail on demand. It counts live
+// snapshots and every call the workflow should never make (misuse), so tests can assert both.
+#include "workflow/engine.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace steerseg::test {
+
+class FakeEngine : public workflow::Engine {
+  public:
+    // 16 x 12 x 8 voxels of 1 x 1 x 2 mm, values -1000..1000 HU, named "fake".
+    static workflow::ScanInfo defaultScan();
+    explicit FakeEngine(workflow::ScanInfo scan = defaultScan());
+
+    // --- what to do -------------------------------------------------------------------------
+    int loadPolls = 2;         // pollLoad() calls answered Running before the outcome
+    std::string loadError;     // non-empty: loads fail with it
+    std::string exportError;   // non-empty: exportMask throws it
+    std::string stepError;     // non-empty: step throws it
+    std::string editError;     // non-empty: addSeed and erase throw it
+    std::string snapshotError; // non-empty: snapshot throws it
+    double probeStddev = 10.0; // the spread every probe reports
+    int convergeAfter = 40;    // iterations without an edit or new parameters until converged
+    bool writeExports = false; // exportMask writes a small file at the path
+
+    // --- what happened ----------------------------------------------------------------------
+    std::vector<std::string> loads;             // beginLoad's paths
+    std::vector<std::filesystem::path> exports; // successful exports
+    int setParamsCalls = 0;
+    [[nodiscard]] const solver::LevelSetParams& params() const { return params_; }
+    [[nodiscard]] std::size_t liveSnapshots() const { return snapshots_.size(); }
+    [[nodiscard]] int misuse() const { return misuse_; }
+    [[nodiscard]] const std::string& lastMisuse() const { return lastMisuse_; }
+    [[nodiscard]] bool attached() const { return attached_; }
+    [[nodiscard]] std::size_t insideVoxels() const { return inside_; }
+    [[nodiscard]] bool inside(const glm::ivec3& voxel) const;
+
+    // --- Engine ------------------------------------------------------------------------------
+    void beginLoad(const std::string& path) override;
+    workflow::LoadPoll pollLoad() override;
+    [[nodiscard]] workflow::ScanInfo scanInfo() const override;
+    [[nodiscard]] workflow::ProbeResult probe(const glm::dvec3& voxel,
+                                              double radiusMm) const override;
+    void addSeed(const solver::Sphere& sphere) override;
+    void erase(const solver::Sphere& sphere) override;
+    void clearLevelSet() override;
+    [[nodiscard]] bool hasLevelSet() const override { return inside_ > 0; }
+    void setParams(const solver::LevelSetParams& params) override;
+    solver::StepResult step(int iterations) override;
+    [[nodiscard]] solver::SolverStats stats() const override;
+    [[nodiscard]] double volumeMl() const override;
+    workflow::SnapshotId snapshot() override;
+    void restore(workflow::SnapshotId id) override;
+    void drop(workflow::SnapshotId id) override;
+    void exportMask(const std::filesystem::path& path) override;
+
+  private:
+    struct LevelSet {
+        std::vector<std::uint8_t> mask;
+        std::size_t inside = 0;
+        int iterations = 0;
+        float time = 0.0F;
+    };
+    // Records a call the workflow should not have made, then throws it as std::logic_error.
+    [[noreturn]] void misused(const std::string& what) const;
+    void requireScan(const char* call) const;
+    void paint(const solver::Sphere& sphere, std::uint8_t value);
+    void changed() { sinceChange_ = 0; }
+
+    workflow::ScanInfo scan_;
+    bool attached_ = false;
+    bool loading_ = false;
+    int polls_ = 0;
+    std::vector<std::uint8_t> mask_; // 1 inside, i fastest
+    std::size_t inside_ = 0;
+    int iterations_ = 0;
+    float time_ = 0.0F;
+    int sinceChange_ = 0;
+    solver::LevelSetParams params_;
+    std::map<workflow::SnapshotId, LevelSet> snapshots_;
+    workflow::SnapshotId nextId_ = 1;
+    mutable int misuse_ = 0;
+    mutable std::string lastMisuse_;
+};
+
+} // namespace steerseg::test
