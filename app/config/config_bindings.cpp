@@ -30,7 +30,6 @@ std::optional<Binding> readBinding(const toml::node& node, const std::string& ke
         return std::nullopt;
     }
     TableReader t(*table, key, sink);
-    Binding binding;
     const auto action = t.text("action", checkAction);
     if (!t.has("action")) {
         sink.add(table->source(), key, "has no action");
