@@ -132,8 +132,22 @@ def mgz():
     out("mgz", "frames.mgh", mgh()[:16] + struct.pack(">i", 3) + mgh()[20:] + VOX * 2)
 
 
+def config():
+    # The shipped defaults (every key, presets, both binding forms) and near-valid variants.
+    with open(os.path.join(HERE, "..", "..", "config", "steerseg.toml"), encoding="utf-8") as f:
+        out("config", "shipped.toml", f.read())
+    out("config", "layer.toml", 'display.rotation = 90\n[frame]\nmin_iterations = 8\n'
+        '[bindings.keys]\n"ctrl+shift+z" = { action = "redo", steps = 2 }\nz = "none"\n'
+        '[[preset]]\nname = "CT bone"\nT = 1000\n')
+    out("config", "bad_values.toml", '[display]\nrotation = 45\nwidth = "wide"\nmode = "1920x@"\n'
+        '[export]\nformats = ["nrrd", "nrrd", 3]\n[ui]\ntouch_target_mm = nan\n')
+    out("config", "syntax.toml", '[display\nrotation = = 1\n"a\\nb" = 1\n')
+    out("config", "not_utf8.toml", b'[audit]\npath = "caf\xe9"\n')
+
+
 if __name__ == "__main__":
     nifti()
     nrrd()
     metaimage()
     mgz()
+    config()

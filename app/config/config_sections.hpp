@@ -1,0 +1,30 @@
+#pragma once
+
+// Internal to config: one reader per part of the file, each writing the fields its table gives
+// into a copy of the configuration and reporting every problem through the table reader.
+#include "config/config_loader.hpp"
+#include "config/kiosk_config.hpp"
+#include "config/toml_table_reader.hpp"
+
+namespace steerseg::config::detail {
+
+void readDisplay(TableReader& table, DisplayConfig& display);
+void readFrame(TableReader& table, FrameConfig& frame);
+void readUi(TableReader& table, UiConfig& ui);
+void readProbe(TableReader& table, ProbeConfig& probe);
+void readBrush(TableReader& table, BrushConfig& brush);
+void readExport(TableReader& table, ExportConfig& exports);
+void readAudit(TableReader& table, AuditConfig& audit);
+
+// [[preset]]: an entry whose name is already a preset changes the fields it gives; a new name
+// appends a preset and must give every field.
+void readPresets(const toml::array& entries, std::vector<Preset>& presets, ProblemSink& sink);
+
+// [bindings.keys], [bindings.knobs], [bindings.buttons], name -> action, key by key.
+void readBindings(TableReader& table, BindingsConfig& bindings, const BindingCheck& check);
+
+// Relations between keys, checked on the configuration a file would produce (`root` locates
+// the problem in that file).
+void checkRelations(const KioskConfig& config, const toml::table& root, ProblemSink& sink);
+
+} // namespace steerseg::config::detail

@@ -1,0 +1,75 @@
+#include "config/kiosk_config.hpp"
+
+#include <array>
+
+namespace steerseg::config {
+
+namespace {
+
+constexpr std::array<std::string_view, 4> kPlatformNames{"auto", "kms", "window", "offscreen"};
+
+} // namespace
+
+std::string_view platformName(DisplayPlatform platform) {
+    return kPlatformNames.at(static_cast<std::size_t>(platform));
+}
+
+std::optional<DisplayPlatform> parsePlatform(std::string_view word) {
+    for (std::size_t i = 0; i < kPlatformNames.size(); ++i) {
+        if (kPlatformNames[i] == word) {
+            return static_cast<DisplayPlatform>(i);
+        }
+    }
+    return std::nullopt;
+}
+
+const std::vector<std::string_view>& exportFormats() {
+    static const std::vector<std::string_view> formats{"nii.gz", "nii", "nrrd"};
+    return formats;
+}
+
+// Keep equal to config/steerseg.toml, whose comments say why each value is what it is
+// (config_test compares the two field by field).
+KioskConfig defaultConfig() {
+    KioskConfig c;
+    c.presets = {
+        {"CT soft tissue", 40.0, 60.0, 0.2, 40.0, 400.0, "soft"},
+        {"CT bone", 900.0, 600.0, 0.5, 400.0, 1800.0, "bone"},
+        {"MR tumour", 180.0, 50.0, 0.3, 128.0, 256.0, "mr"},
+    };
+    c.bindings.keys = {
+        {"space", {"toggle_run", 1.0}},
+        {"enter", {"proceed", 1.0}},
+        {"backspace", {"back", 1.0}},
+        {"escape", {"dismiss", 1.0}},
+        {"z", {"undo", 1.0}},
+        {"y", {"redo", 1.0}},
+        {"ctrl+z", {"undo", 1.0}},
+        {"ctrl+y", {"redo", 1.0}},
+        {"tab", {"cycle_param", 1.0}},
+        {"shift+tab", {"cycle_param", -1.0}},
+        {"plus", {"nudge_selected", 1.0}},
+        {"minus", {"nudge_selected", -1.0}},
+        {"up", {"nudge_selected", 1.0}},
+        {"down", {"nudge_selected", -1.0}},
+        {"shift+up", {"nudge_selected", 10.0}},
+        {"shift+down", {"nudge_selected", -10.0}},
+        {"pageup", {"page:axial", 1.0}},
+        {"pagedown", {"page:axial", -1.0}},
+        {"left", {"rotate_yaw", -1.0}},
+        {"right", {"rotate_yaw", 1.0}},
+    };
+    c.bindings.knobs = {
+        {"knob1", {"nudge_selected", 1.0}},
+        {"knob2", {"page:axial", 1.0}},
+    };
+    c.bindings.buttons = {
+        {"button1", {"proceed", 1.0}},
+        {"button2", {"back", 1.0}},
+        {"button3", {"undo", 1.0}},
+        {"pedal", {"toggle_run", 1.0}},
+    };
+    return c;
+}
+
+} // namespace steerseg::config

@@ -1,0 +1,117 @@
+#pragma once
+
+// The kiosk's settings as one plain value. The defaults here are the shipped file
+// config/steerseg.toml, which documents every key; a unit test keeps the two equal.
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace steerseg::config {
+
+enum class DisplayPlatform { Auto, Kms, Window, Offscreen };
+std::string_view platformName(DisplayPlatform platform); // "auto", "kms", "window", "offscreen"
+std::optional<DisplayPlatform> parsePlatform(std::string_view word);
+
+struct DisplayConfig {
+    DisplayPlatform platform = DisplayPlatform::Auto;
+    int width = 1280; // window and offscreen size
+    int height = 800;
+    bool fullscreen = false; // window backend
+    std::string drmDevice;   // kms: "" = the first card with a connected connector
+    std::string connector;   // kms: "" = the first connected one
+    std::string mode;        // kms: "1920x1080" or "1920x1080@60", "" = the preferred mode
+    int rotation = 0;        // degrees clockwise: 0, 90, 180, 270
+    double dpi = 0.0;        // 0 = from the display's physical size
+    bool operator==(const DisplayConfig&) const = default;
+};
+
+struct FrameConfig {
+    double budgetMs = 33.0;        // one frame, input to present
+    double solverShare = 0.5;      // the part of the budget the solver may take
+    int minIterations = 1;         // per frame while evolving, however slow the GPU
+    int maxIterations = 64;        // per frame, however fast
+    double interactiveScale = 0.5; // 3D view resolution while the camera or surface moves
+    bool operator==(const FrameConfig&) const = default;
+};
+
+struct UiConfig {
+    double touchTargetMm = 9.0;
+    double fontScale = 1.0;
+    int longPressMs = 500;
+    bool operator==(const UiConfig&) const = default;
+};
+
+struct ProbeConfig {
+    double radiusMm = 5.0;
+    double epsFactor = 2.0; // eps = stddev * factor ...
+    double epsFloor = 10.0; // ... but at least this (real units)
+    bool operator==(const ProbeConfig&) const = default;
+};
+
+struct BrushConfig {
+    double radius = 3.0; // voxels
+    bool operator==(const BrushConfig&) const = default;
+};
+
+struct ExportConfig {
+    std::filesystem::path folder = "steerseg-export";
+    std::vector<std::string> formats{"nii.gz"}; // one mask file per format
+    bool operator==(const ExportConfig&) const = default;
+};
+// The formats the mask writer knows, in the order the docs list them.
+const std::vector<std::string_view>& exportFormats();
+
+struct AuditConfig {
+    std::filesystem::path path = "steerseg-export/audit.jsonl";
+    bool operator==(const AuditConfig&) const = default;
+};
+
+// A one-touch tissue preset: the speed function's parameters and the view that goes with them.
+struct Preset {
+    std::string name;
+    double T = 0.0;   // real units
+    double eps = 0.0; // real units
+    double alpha = 1.0;
+    double windowLevel = 0.0;
+    double windowWidth = 1.0;
+    std::string transfer; // transfer-function preset, render's words: "soft", "bone", "mr"
+    bool operator==(const Preset&) const = default;
+};
+
+// What a key, knob or button does: a bindable action of the workflow (workflow::bindableNames)
+// and how many of its steps one press or detent makes (-1 turns "nudge_selected" into a minus).
+struct Binding {
+    std::string action;
+    double steps = 1.0;
+    bool operator==(const Binding&) const = default;
+};
+using BindingTable = std::map<std::string, Binding, std::less<>>;
+
+struct BindingsConfig {
+    BindingTable keys;    // key names of platform/input_event.hpp, optionally "ctrl+" / "shift+"
+    BindingTable knobs;   // control names of the input devices (devices issue)
+    BindingTable buttons; // buttons and pedals, likewise
+    bool operator==(const BindingsConfig&) const = default;
+};
+
+struct KioskConfig {
+    DisplayConfig display;
+    FrameConfig frame;
+    UiConfig ui;
+    ProbeConfig probe;
+    BrushConfig brush;
+    ExportConfig exports;
+    AuditConfig audit;
+    std::vector<Preset> presets; // in the order the panel shows them
+    BindingsConfig bindings;
+    bool operator==(const KioskConfig&) const = default;
+};
+
+// The built-in defaults, equal to the shipped config/steerseg.toml.
+KioskConfig defaultConfig();
+
+} // namespace steerseg::config

@@ -1,0 +1,521 @@
+// The kiosk's configuration: the shipped file against the built-in defaults, layering key by
+// key, and every kind of bad file reported with its file, line and key while the layers below
+// stay in force.
+#include "config/config_loader.hpp"
+#include "config/key_names.hpp"
+#include "support/test_data.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <sstream>
+
+namespace steerseg::test {
+namespace {
+
+using config::BindingCheck;
+using config::ConfigProblem;
+using config::ConfigSource;
+using config::KioskConfig;
+namespace fs = std::filesystem;
+
+// The workflow's bindable names (app/workflow/action.cpp) as this test's own list: config links
+// no workflow code, and the kiosk passes the workflow's real check.
+const std::vector<std::string_view> kBindable{
+    "run",        "pause",        "toggle_run",    "finish",        "resume",
+    "export",     "undo",         "redo",          "restart",       "proceed",
+    "back",       "dismiss",      "quit",          "erase_mode:on", "erase_mode:off",
+    "select:T",   "select:eps",   "select:alpha",  "select:radius", "cycle_param",
+    "nudge:T",    "nudge:eps",    "nudge:alpha",   "nudge:radius",  "nudge_selected",
+    "page:axial", "page:coronal", "page:sagittal", "rotate_yaw",    "rotate_pitch",
+    "zoom"};
+const BindingCheck kCheck = [](std::string_view action) {
+    return std::find(kBindable.begin(), kBindable.end(), action) != kBindable.end();
+};
+
+std::string readAll(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::string describeAll(const std::vector<ConfigProblem>& problems) {
+    std::string out;
+    for (const ConfigProblem& p : problems) {
+        out += config::describe(p) + "\n";
+    }
+    return out;
+}
+
+// Names the fields that differ, for a readable failure (operator== decides; it covers fields
+// this list might miss).
+std::vector<std::string> differences(const KioskConfig& a, const KioskConfig& b) {
+    std::vector<std::string> out;
+    const auto field = [&out](const char* name, bool same) {
+        if (!same) {
+            out.emplace_back(name);
+        }
+    };
+    field("display.platform", a.display.platform == b.display.platform);
+    field("display.width", a.display.width == b.display.width);
+    field("display.height", a.display.height == b.display.height);
+    field("display.fullscreen", a.display.fullscreen == b.display.fullscreen);
+    field("display.drm_device", a.display.drmDevice == b.display.drmDevice);
+    field("display.connector", a.display.connector == b.display.connector);
+    field("display.mode", a.display.mode == b.display.mode);
+    field("display.rotation", a.display.rotation == b.display.rotation);
+    field("display.dpi", a.display.dpi == b.display.dpi);
+    field("frame.budget_ms", a.frame.budgetMs == b.frame.budgetMs);
+    field("frame.solver_share", a.frame.solverShare == b.frame.solverShare);
+    field("frame.min_iterations", a.frame.minIterations == b.frame.minIterations);
+    field("frame.max_iterations", a.frame.maxIterations == b.frame.maxIterations);
+    field("frame.interactive_scale", a.frame.interactiveScale == b.frame.interactiveScale);
+    field("ui.touch_target_mm", a.ui.touchTargetMm == b.ui.touchTargetMm);
+    field("ui.font_scale", a.ui.fontScale == b.ui.fontScale);
+    field("ui.long_press_ms", a.ui.longPressMs == b.ui.longPressMs);
+    field("probe.radius_mm", a.probe.radiusMm == b.probe.radiusMm);
+    field("probe.eps_factor", a.probe.epsFactor == b.probe.epsFactor);
+    field("probe.eps_floor", a.probe.epsFloor == b.probe.epsFloor);
+    field("brush.radius", a.brush.radius == b.brush.radius);
+    field("export.folder", a.exports.folder == b.exports.folder);
+    field("export.formats", a.exports.formats == b.exports.formats);
+    field("audit.path", a.audit.path == b.audit.path);
+    if (a.presets.size() != b.presets.size()) {
+        out.push_back("preset count");
+    } else {
+        for (std::size_t i = 0; i < a.presets.size(); ++i) {
+            const config::Preset& p = a.presets[i];
+            const config::Preset& q = b.presets[i];
+            const std::string at = "preset[" + std::to_string(i + 1) + "].";
+            for (const auto& [name, same] : std::vector<std::pair<std::string, bool>>{
+                     {"name", p.name == q.name},
+                     {"T", p.T == q.T},
+                     {"eps", p.eps == q.eps},
+                     {"alpha", p.alpha == q.alpha},
+                     {"window_level", p.windowLevel == q.windowLevel},
+                     {"window_width", p.windowWidth == q.windowWidth},
+                     {"transfer", p.transfer == q.transfer}}) {
+                if (!same) {
+                    out.push_back(at + name);
+                }
+            }
+        }
+    }
+    const auto bindings = [&out](const char* table, const config::BindingTable& x,
+                                 const config::BindingTable& y) {
+        for (const auto& [key, binding] : x) {
+            const auto it = y.find(key);
+            if (it == y.end() || !(it->second == binding)) {
+                out.push_back(std::string("bindings.") + table + "." + key);
+            }
+        }
+        for (const auto& [key, binding] : y) {
+            if (!x.contains(key)) {
+                out.push_back(std::string("bindings.") + table + "." + key);
+            }
+        }
+    };
+    bindings("keys", a.bindings.keys, b.bindings.keys);
+    bindings("knobs", a.bindings.knobs, b.bindings.knobs);
+    bindings("buttons", a.bindings.buttons, b.bindings.buttons);
+    return out;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string out;
+    for (const std::string& n : names) {
+        out += n + " ";
+    }
+    return out;
+}
+
+class ConfigTest : public ::testing::Test {
+  protected:
+    fs::path write(const std::string& name, const std::string& text) {
+        const fs::path path = dir_ / name;
+        std::ofstream(path, std::ios::binary) << text;
+        return path;
+    }
+    config::LoadedConfig load(const std::vector<fs::path>& files) {
+        std::vector<ConfigSource> sources;
+        for (const fs::path& f : files) {
+            sources.push_back({f, true});
+        }
+        return config::loadConfig(sources, kCheck);
+    }
+    // One bad file over the defaults: exactly one problem at `line`, naming `key`; the
+    // defaults stay in place and the file is not applied.
+    void expectRejected(const std::string& text, int line, const std::string& key,
+                        const std::string& messagePart) {
+        const fs::path path = write("bad.toml", text);
+        const config::LoadedConfig loaded = load({path});
+        ASSERT_EQ(loaded.problems.size(), 1U) << describeAll(loaded.problems);
+        const ConfigProblem& p = loaded.problems.front();
+        EXPECT_EQ(p.file, path.string());
+        EXPECT_EQ(p.line, line) << config::describe(p);
+        EXPECT_GT(p.column, 0) << config::describe(p);
+        EXPECT_EQ(p.key, key) << config::describe(p);
+        EXPECT_NE(p.message.find(messagePart), std::string::npos) << config::describe(p);
+        EXPECT_TRUE(loaded.config == config::defaultConfig())
+            << joined(differences(loaded.config, config::defaultConfig()));
+        EXPECT_TRUE(loaded.applied.empty());
+    }
+
+    void TearDown() override {
+        std::error_code ignored;
+        fs::remove_all(dir_, ignored);
+    }
+
+    fs::path dir_ = tempDir("config_test");
+};
+
+TEST_F(ConfigTest, ShippedFileHasNoProblemAndEqualsTheDefaults) {
+    const fs::path shipped = STEERSEG_SHIPPED_CONFIG;
+    const config::LoadedConfig loaded = load({shipped});
+    EXPECT_TRUE(loaded.problems.empty()) << describeAll(loaded.problems);
+    ASSERT_EQ(loaded.applied.size(), 1U);
+    EXPECT_EQ(loaded.applied.front(), shipped);
+    EXPECT_TRUE(differences(loaded.config, config::defaultConfig()).empty())
+        << joined(differences(loaded.config, config::defaultConfig()));
+    EXPECT_TRUE(loaded.config == config::defaultConfig());
+    EXPECT_EQ(loaded.config.presets.size(), 3U);
+}
+
+// Applied over a configuration whose every field differs from the defaults, the shipped file
+// must give the defaults back: it sets every key, so it documents every key.
+TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
+    KioskConfig other = config::defaultConfig();
+    other.display = {config::DisplayPlatform::Kms,
+                     640,
+                     480,
+                     true,
+                     "/dev/dri/card9",
+                     "DP-9",
+                     "640x480",
+                     180,
+                     200.0};
+    other.frame = {50.0, 0.25, 2, 99, 0.75};
+    other.ui = {12.0, 2.0, 900};
+    other.probe = {7.0, 3.0, 20.0};
+    other.brush = {9.0};
+    other.exports = {"elsewhere", {"nrrd"}};
+    other.audit = {"elsewhere.jsonl"};
+    for (config::Preset& p : other.presets) {
+        p = {p.name, p.T + 1, p.eps + 1, p.alpha / 2, p.windowLevel + 1, p.windowWidth + 1, "x"};
+    }
+    for (config::BindingTable* table :
+         {&other.bindings.keys, &other.bindings.knobs, &other.bindings.buttons}) {
+        for (auto& [key, binding] : *table) {
+            binding = {"quit", 7.0};
+        }
+    }
+    // 24 plain fields, 6 per preset (its name is its identity), every binding.
+    ASSERT_EQ(differences(other, config::defaultConfig()).size(),
+              24U + 6U * other.presets.size() + other.bindings.keys.size() +
+                  other.bindings.knobs.size() + other.bindings.buttons.size());
+
+    const std::vector<ConfigProblem> problems =
+        config::applyConfigText(other, readAll(STEERSEG_SHIPPED_CONFIG), "steerseg.toml", kCheck);
+    EXPECT_TRUE(problems.empty()) << describeAll(problems);
+    EXPECT_TRUE(other == config::defaultConfig())
+        << "not set by the shipped file: " << joined(differences(other, config::defaultConfig()));
+}
+
+TEST_F(ConfigTest, LayersOverrideKeyByKey) {
+    const fs::path system = write("system.toml", "[display]\nrotation = 90\n");
+    const fs::path user = write("user.toml", "[frame]\nbudget_ms = 50\n"
+                                             "[bindings.keys]\nspace = \"run\"\n"
+                                             "\"ctrl+z\" = \"none\"\n"
+                                             "f5 = { action = \"zoom\", steps = -2.5 }\n");
+    const config::LoadedConfig loaded = load({system, user});
+    EXPECT_TRUE(loaded.problems.empty()) << describeAll(loaded.problems);
+    EXPECT_EQ(loaded.applied, (std::vector<fs::path>{system, user}));
+
+    KioskConfig expected = config::defaultConfig();
+    expected.display.rotation = 90;
+    expected.frame.budgetMs = 50.0;
+    expected.bindings.keys["space"] = {"run", 1.0};
+    expected.bindings.keys.erase("ctrl+z");
+    expected.bindings.keys["f5"] = {"zoom", -2.5};
+    EXPECT_TRUE(loaded.config == expected) << joined(differences(loaded.config, expected));
+}
+
+TEST_F(ConfigTest, TheLaterLayerWinsAndDottedKeysWork) {
+    const fs::path system = write("system.toml", "display.rotation = 90\ndisplay.dpi = 160\n");
+    const fs::path user = write("user.toml", "[display]\nrotation = 270\n");
+    const config::LoadedConfig loaded = load({system, user});
+    EXPECT_TRUE(loaded.problems.empty()) << describeAll(loaded.problems);
+    EXPECT_EQ(loaded.config.display.rotation, 270);
+    EXPECT_EQ(loaded.config.display.dpi, 160.0);
+}
+
+TEST_F(ConfigTest, AnEmptyFileIsFine) {
+    const fs::path empty = write("empty.toml", "");
+    const config::LoadedConfig loaded = load({empty});
+    EXPECT_TRUE(loaded.problems.empty()) << describeAll(loaded.problems);
+    EXPECT_EQ(loaded.applied.size(), 1U);
+    EXPECT_TRUE(loaded.config == config::defaultConfig());
+}
+
+TEST_F(ConfigTest, SyntaxError) {
+    expectRejected("[display]\nrotation = 90\nwidth = [1,\n", 3, "", "");
+}
+
+TEST_F(ConfigTest, UnknownKeyNamesTheKnownOnes) {
+    expectRejected("[display]\nwidth = 800\nrotaton = 90\n", 3, "display.rotaton",
+                   "unknown key; known here: platform, width");
+}
+
+TEST_F(ConfigTest, UnknownSection) {
+    expectRejected("\n[dispaly]\nrotation = 90\n", 2, "dispaly", "unknown key");
+}
+
+TEST_F(ConfigTest, WrongType) {
+    expectRejected("[display]\nwidth = \"wide\"\n", 2, "display.width",
+                   "expected an integer, got a string");
+    expectRejected("[display]\nwidth = 1280.0\n", 2, "display.width",
+                   "expected an integer, got a floating-point number");
+    expectRejected("[ui]\nfont_scale = true\n", 2, "ui.font_scale", "expected a number");
+    expectRejected("display = 3\n", 1, "display", "expected a table, got an integer");
+    expectRejected("[[display]]\nwidth = 3\n", 1, "display", "expected a table, got an array");
+}
+
+TEST_F(ConfigTest, OutOfRange) {
+    expectRejected("[display]\nrotation = 45\n", 2, "display.rotation",
+                   "must be 0, 90, 180 or 270");
+    expectRejected("[frame]\nbudget_ms = -5\n", 2, "frame.budget_ms", "is -5; must be at least");
+    expectRejected("[ui]\ntouch_target_mm = 8.5\n", 2, "ui.touch_target_mm", "must be at least 9");
+    expectRejected("[frame]\nsolver_share = nan\n", 2, "frame.solver_share", "is nan");
+    expectRejected("[display]\nwidth = 99999999999999\n", 2, "display.width", "at most 16384");
+    expectRejected("[display]\nplatform = \"x11\"\n", 2, "display.platform",
+                   "\"auto\", \"kms\", \"window\" or \"offscreen\"");
+    expectRejected("[display]\nmode = \"1920x\"\n", 2, "display.mode", "WIDTHxHEIGHT@HZ");
+    expectRejected("[display]\ndpi = 10\n", 2, "display.dpi", "at least 50");
+    expectRejected("[audit]\npath = \"\"\n", 2, "audit.path", "must not be empty");
+}
+
+TEST_F(ConfigTest, DisplayModes) {
+    for (const char* mode : {"", "1920x1080", "1920x1080@60", "800x480@144"}) {
+        KioskConfig c = config::defaultConfig();
+        const auto problems = config::applyConfigText(
+            c, std::string("display.mode = \"") + mode + "\"\n", "m.toml", kCheck);
+        EXPECT_TRUE(problems.empty()) << mode << ": " << describeAll(problems);
+        EXPECT_EQ(c.display.mode, mode);
+    }
+    for (const char* mode : {"1920", "x1080", "1920x1080@", "1920x1080@60Hz", "0x0", "-1x5",
+                             "1920 x 1080", "99999x1"}) {
+        KioskConfig c = config::defaultConfig();
+        EXPECT_EQ(config::applyConfigText(c, std::string("display.mode = \"") + mode + "\"\n",
+                                          "m.toml", kCheck)
+                      .size(),
+                  1U)
+            << mode;
+    }
+}
+
+TEST_F(ConfigTest, MinIterationsAboveMaxIsReported) {
+    expectRejected("[frame]\nmin_iterations = 100\n", 2, "frame.min_iterations",
+                   "min_iterations (100) is above max_iterations (64)");
+    expectRejected("[frame]\nmin_iterations = 10\nmax_iterations = 5\n", 3, "frame.max_iterations",
+                   "is above");
+}
+
+TEST_F(ConfigTest, ExportFormats) {
+    expectRejected("[export]\nformats = [\"nii.gz\", \"dicom\"]\n", 2, "export.formats[1]",
+                   "unknown format \"dicom\"");
+    expectRejected("[export]\nformats = [\"nrrd\", \"nrrd\"]\n", 2, "export.formats[1]",
+                   "listed twice");
+    expectRejected("[export]\nformats = []\n", 2, "export.formats", "at least one format");
+    expectRejected("[export]\nformats = \"nrrd\"\n", 2, "export.formats", "expected an array");
+    const fs::path good = write("formats.toml", "export.formats = [\"nrrd\", \"nii\"]\n");
+    const config::LoadedConfig loaded = load({good});
+    EXPECT_TRUE(loaded.problems.empty()) << describeAll(loaded.problems);
+    EXPECT_EQ(loaded.config.exports.formats, (std::vector<std::string>{"nrrd", "nii"}));
+}
+
+TEST_F(ConfigTest, BadBindings) {
+    expectRejected("[bindings.keys]\nspace = \"tooggle_run\"\n", 2, "bindings.keys.space",
+                   "\"tooggle_run\" is not an action a control can do");
+    expectRejected("[bindings.keys]\n\n\"hyper+q\" = \"quit\"\n", 3, "bindings.keys.\"hyper+q\"",
+                   "not a key name");
+    expectRejected("[bindings.keys]\nF5 = \"quit\"\n", 2, "bindings.keys.F5", "not a key name");
+    expectRejected("[bindings.knobs]\n\"Knob 1\" = \"zoom\"\n", 2, "bindings.knobs.\"Knob 1\"",
+                   "not a control name");
+    expectRejected("[bindings.buttons]\npedal = 3\n", 2, "bindings.buttons.pedal",
+                   "expected an action name");
+    expectRejected("[bindings.keys]\nminus = { action = \"zoom\", steps = 0 }\n", 2,
+                   "bindings.keys.minus.steps", "must not be 0");
+    expectRejected("[bindings.keys]\nminus = { action = \"zoom\", step = 2 }\n", 2,
+                   "bindings.keys.minus.step", "unknown key");
+    expectRejected("[bindings.keys]\nminus = { steps = 2 }\n", 2, "bindings.keys.minus",
+                   "has no action");
+    expectRejected("[bindings]\npedals = { pedal = \"run\" }\n", 2, "bindings.pedals",
+                   "unknown key; known here: keys, knobs, buttons");
+}
+
+TEST_F(ConfigTest, KeyNames) {
+    for (const char* name : {"a", "z", "0", "9", "f1", "f12", "space", "pagedown", "ctrl+z",
+                             "shift+tab", "ctrl+shift+z", "end"}) {
+        EXPECT_TRUE(config::isKeyName(name)) << name;
+    }
+    for (const char* name : {"", "A", "f0", "f13", "f01", "ctrl+", "shift+ctrl+z", "alt+x",
+                             "ctrl+ctrl+z", "spacebar", "insert", " ", "ab"}) {
+        EXPECT_FALSE(config::isKeyName(name)) << name;
+    }
+}
+
+TEST_F(ConfigTest, EveryProblemOfAFileIsReportedAndNoneApplied) {
+    const fs::path path = write("many.toml", "[display]\nrotation = 45\nwidth = 1024\n"
+                                             "[frame]\nbudget_ms = -1\n"
+                                             "[ui]\ntouch_target_mm = 3\ncolour = \"red\"\n");
+    const config::LoadedConfig loaded = load({path});
+    ASSERT_EQ(loaded.problems.size(), 4U) << describeAll(loaded.problems);
+    const std::vector<std::pair<int, std::string>> expected{{2, "display.rotation"},
+                                                            {5, "frame.budget_ms"},
+                                                            {7, "ui.touch_target_mm"},
+                                                            {8, "ui.colour"}};
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        EXPECT_EQ(loaded.problems[i].line, expected[i].first) << describeAll(loaded.problems);
+        EXPECT_EQ(loaded.problems[i].key, expected[i].second);
+    }
+    EXPECT_EQ(loaded.config.display.width, 1280) << "the file's good keys must not apply either";
+}
+
+TEST_F(ConfigTest, AHostileFileGivesABoundedReport) {
+    std::string text = "[ui]\n";
+    for (int i = 0; i < 5000; ++i) {
+        text += "k" + std::to_string(i) + " = 1\n";
+    }
+    const config::LoadedConfig loaded = load({write("hostile.toml", text)});
+    ASSERT_EQ(loaded.problems.size(), 101U);
+    EXPECT_EQ(loaded.problems.back().message, "4900 more problems not listed");
+}
+
+TEST_F(ConfigTest, ABadLayerLeavesTheLayersBelow) {
+    const fs::path system = write("system.toml", "[display]\nrotation = 90\n");
+    const fs::path user = write("user.toml", "[display]\nrotation = 180\nwidth = -1\n");
+    const config::LoadedConfig loaded = load({system, user});
+    ASSERT_EQ(loaded.problems.size(), 1U) << describeAll(loaded.problems);
+    EXPECT_EQ(loaded.problems.front().key, "display.width");
+    EXPECT_EQ(loaded.config.display.rotation, 90);
+    EXPECT_EQ(loaded.applied, std::vector<fs::path>{system});
+}
+
+TEST_F(ConfigTest, MissingFiles) {
+    const fs::path missing = dir_ / "nowhere.toml";
+    const config::LoadedConfig optional = config::loadConfig({{missing, false}}, kCheck);
+    EXPECT_TRUE(optional.problems.empty()) << describeAll(optional.problems);
+    EXPECT_TRUE(optional.applied.empty());
+
+    const config::LoadedConfig required = config::loadConfig({{missing, true}}, kCheck);
+    ASSERT_EQ(required.problems.size(), 1U);
+    EXPECT_EQ(config::describe(required.problems.front()), missing.string() + ": no such file");
+    EXPECT_TRUE(required.config == config::defaultConfig());
+
+    const auto sources = config::kioskConfigSources(fs::path("mine.toml"));
+    ASSERT_EQ(sources.size(), 2U);
+    EXPECT_EQ(sources[0].path, fs::path("/etc/steerseg/steerseg.toml"));
+    EXPECT_FALSE(sources[0].required);
+    EXPECT_TRUE(sources[1].required);
+    EXPECT_EQ(config::kioskConfigSources(std::nullopt).size(), 1U);
+}
+
+TEST_F(ConfigTest, AFolderIsNotAConfiguration) {
+    const config::LoadedConfig loaded = load({dir_});
+    ASSERT_EQ(loaded.problems.size(), 1U);
+    EXPECT_EQ(loaded.problems.front().message, "is not a regular file");
+}
+
+TEST_F(ConfigTest, HugeFileIsRefusedUnread) {
+    std::string text(config::kMaxConfigBytes + 1, '#');
+    const fs::path path = write("huge.toml", text);
+    const config::LoadedConfig loaded = load({path});
+    ASSERT_EQ(loaded.problems.size(), 1U);
+    EXPECT_EQ(loaded.problems.front().line, 0);
+    EXPECT_NE(loaded.problems.front().message.find("larger than 1 MiB"), std::string::npos);
+    // Exactly the limit is still read (a comment is valid TOML).
+    text.pop_back();
+    EXPECT_TRUE(load({write("limit.toml", text)}).problems.empty());
+}
+
+TEST_F(ConfigTest, NonUtf8IsASyntaxErrorWithItsPosition) {
+    expectRejected("[audit]\npath = \"caf\xe9.jsonl\"\n", 2, "", "utf-8");
+}
+
+TEST_F(ConfigTest, PresetsKeepTheirOrderAndMergeByName) {
+    const fs::path path = write("presets.toml", "[[preset]]\nname = \"CT bone\"\nT = 1000\n"
+                                                "[[preset]]\nname = \"Liver\"\nT = 60\n"
+                                                "eps = 25\nalpha = 0.3\nwindow_level = 60\n"
+                                                "window_width = 150\ntransfer = \"soft\"\n");
+    const config::LoadedConfig loaded = load({path});
+    EXPECT_TRUE(loaded.problems.empty()) << describeAll(loaded.problems);
+    std::vector<std::string> names;
+    for (const config::Preset& p : loaded.config.presets) {
+        names.push_back(p.name);
+    }
+    EXPECT_EQ(names, (std::vector<std::string>{"CT soft tissue", "CT bone", "MR tumour", "Liver"}));
+    config::Preset bone = config::defaultConfig().presets[1];
+    bone.T = 1000.0;
+    EXPECT_TRUE(loaded.config.presets[1] == bone) << "only the given field changes";
+    EXPECT_EQ(loaded.config.presets[3].windowWidth, 150.0);
+}
+
+TEST_F(ConfigTest, BadPresets) {
+    expectRejected("[[preset]]\nname = \"Liver\"\nT = 60\n", 1, "preset[1]",
+                   "new preset \"Liver\" lacks eps, alpha, window_level, window_width, transfer");
+    expectRejected("[[preset]]\nT = 60\n", 1, "preset[1]", "has no name");
+    expectRejected("[[preset]]\nname = \"CT bone\"\nalpha = 1.5\n", 3, "preset[1].alpha",
+                   "at most 1");
+    expectRejected("[[preset]]\nname = \"CT bone\"\neps = 0\n", 3, "preset[1].eps", "above 0");
+    expectRejected("[[preset]]\nname = \"CT bone\"\nT = inf\n", 3, "preset[1].T", "is inf");
+    expectRejected("[[preset]]\nname = \"CT bone\"\ntransfer = \"\"\n", 3, "preset[1].transfer",
+                   "must name a transfer function");
+    expectRejected("[[preset]]\nname = \"CT bone\"\nT = 1\n[[preset]]\nname = \"CT bone\"\n", 5,
+                   "preset[2].name", "given twice");
+    expectRejected("[[preset]]\nname = \"CT bone\"\nHU = 1\n", 3, "preset[1].HU", "unknown key");
+    expectRejected("preset = [1]\n", 1, "preset[1]", "expected a table");
+}
+
+TEST_F(ConfigTest, DescribeIsOneLine) {
+    EXPECT_EQ(config::describe({"a.toml", 3, 7, "display.rotation", "is 45; must be 0"}),
+              "a.toml:3:7: display.rotation: is 45; must be 0");
+    EXPECT_EQ(config::describe({"a.toml", 0, 0, "", "no such file"}), "a.toml: no such file");
+    EXPECT_EQ(config::describe({"a.toml", 1, 1, "", "bad"}), "a.toml:1:1: bad");
+
+    const fs::path path = write("newline.toml", "[bindings.keys]\n\"a\\nb\" = \"run\"\n");
+    const config::LoadedConfig loaded = load({path});
+    ASSERT_EQ(loaded.problems.size(), 1U);
+    const std::string line = config::describe(loaded.problems.front());
+    EXPECT_EQ(line.find('\n'), std::string::npos) << line;
+    EXPECT_NE(line.find("a\\x0ab"), std::string::npos) << line;
+}
+
+TEST_F(ConfigTest, TheBuiltInBindingsAreCheckedToo) {
+    const BindingCheck noUndo = [](std::string_view action) {
+        return action != "undo" && kCheck(action);
+    };
+    const config::LoadedConfig loaded = config::loadConfig({}, noUndo);
+    ASSERT_EQ(loaded.problems.size(), 3U) << describeAll(loaded.problems);
+    EXPECT_EQ(loaded.problems[0].file, "built-in defaults");
+    EXPECT_EQ(loaded.problems[0].key, "bindings.keys.\"ctrl+z\"");
+    EXPECT_FALSE(loaded.config.bindings.keys.contains("z"));
+    EXPECT_FALSE(loaded.config.bindings.buttons.contains("button3"));
+    EXPECT_TRUE(loaded.config.bindings.keys.contains("space"));
+}
+
+TEST_F(ConfigTest, NoBindingCheckIsAProgrammingError) {
+    EXPECT_THROW(config::loadConfig({}, BindingCheck{}), std::invalid_argument);
+}
+
+TEST_F(ConfigTest, PlatformNames) {
+    for (const auto platform :
+         {config::DisplayPlatform::Auto, config::DisplayPlatform::Kms,
+          config::DisplayPlatform::Window, config::DisplayPlatform::Offscreen}) {
+        EXPECT_EQ(config::parsePlatform(config::platformName(platform)), platform);
+    }
+    EXPECT_FALSE(config::parsePlatform("KMS"));
+}
+
+} // namespace
+} // namespace steerseg::test
