@@ -7,6 +7,7 @@
 #include "platform/kms/output_selection.hpp"
 
 #include <GLES3/gl31.h>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -82,7 +83,7 @@ class KmsDisplay final : public Display {
 
     void present() override {
         if (pending_ != nullptr) {
-            waitForFlip(kFlipTimeoutMs); // the last frame's flip timed out; one more chance
+            waitForFlip(0); // the last frame's flip timed out: take its event if it came since
         }
         if (!egl_->swap()) {
             std::fprintf(stderr, "kms: eglSwapBuffers failed (EGL error 0x%x); frame dropped\n",
@@ -95,7 +96,8 @@ class KmsDisplay final : public Display {
             return;
         }
         if (pending_ != nullptr) {
-            gbm_->release(next); // the screen still waits for the previous frame
+            // The screen still waits for an earlier frame: drop this one rather than block.
+            gbm_->release(next);
             return;
         }
         int error = 0;
@@ -130,7 +132,8 @@ class KmsDisplay final : public Display {
         pending_ = nullptr;
     }
 
-    // Handles DRM events until the pending flip lands or `timeoutMs` passes; logs a timeout.
+    // Handles DRM events until the pending flip lands or `timeoutMs` passes (0: only what has
+    // arrived); logs the first timeout of a stall.
     void waitForFlip(int timeoutMs) {
         drmEventContext events{};
         events.version = 2;
@@ -142,17 +145,23 @@ class KmsDisplay final : public Display {
                                   deadline - std::chrono::steady_clock::now())
                                   .count();
             pollfd fd{device_->fd(), POLLIN, 0};
-            const int ready = left > 0 ? ::poll(&fd, 1, static_cast<int>(left)) : 0;
+            const int ready = ::poll(&fd, 1, left > 0 ? static_cast<int>(left) : 0);
+            if (ready < 0 && errno == EINTR) {
+                continue;
+            }
             if (ready <= 0) {
-                if (ready < 0 && errno == EINTR) {
-                    continue;
+                if (timeoutMs > 0 && !stallLogged_) {
+                    std::fprintf(stderr,
+                                 "kms: page flip on CRTC %u not done after %d ms; dropping frames "
+                                 "until it is\n",
+                                 modeset_->crtc(), timeoutMs);
+                    stallLogged_ = true;
                 }
-                std::fprintf(stderr, "kms: page flip on CRTC %u not done after %d ms; going on\n",
-                             modeset_->crtc(), timeoutMs);
                 return;
             }
             drmHandleEvent(device_->fd(), &events);
         }
+        stallLogged_ = false;
     }
 
     std::unique_ptr<kms::DrmDevice> device_;
@@ -161,6 +170,7 @@ class KmsDisplay final : public Display {
     std::unique_ptr<kms::Modeset> modeset_;
     gbm_bo* front_ = nullptr;   // on the screen
     gbm_bo* pending_ = nullptr; // queued to flip
+    bool stallLogged_ = false;
     DisplayInfo info_;
 };
 

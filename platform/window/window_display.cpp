@@ -182,6 +182,10 @@ class WindowDisplay final : public Display {
         if (videoInitialised_) {
             SDL_QuitSubSystem(SDL_INIT_VIDEO);
             videoInitialised_ = false;
+            // Only SDL_Quit closes SDL's D-Bus connection; nothing else in steerseg uses SDL.
+            if (SDL_WasInit(SDL_INIT_EVERYTHING) == 0) {
+                SDL_Quit();
+            }
         }
     }
 

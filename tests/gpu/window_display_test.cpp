@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <gtest/gtest.h>
+#include <iostream>
 #include <memory>
 #include <string>
 #include <thread>
@@ -113,6 +114,7 @@ TEST_F(WindowDisplayTest, HasAnEs31ContextAndItsSize) {
     EXPECT_GT(display_->info().dpi, 0.0);
     EXPECT_NE(display_->info().description.find("window 320x200"), std::string::npos)
         << display_->info().description;
+    std::cout << display_->info().description << "\n";
 }
 
 TEST_F(WindowDisplayTest, ClearedFrameReachesTheXScreen) {
@@ -121,6 +123,26 @@ TEST_F(WindowDisplayTest, ClearedFrameReachesTheXScreen) {
     // A second colour proves the screen follows the frames, not a colour left from the first.
     const Rgb orange{230, 102, 26};
     ASSERT_TRUE(showUntilVisible(orange));
+    // The whole window on the X screen is the frame: orange with a white top row, the same
+    // rows that readFramebuffer returns from the back buffer before present.
+    drawFrame(*display_, 230.0F / 255.0F, 102.0F / 255.0F, 26.0F / 255.0F);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 199, 320, 1);
+    glClearColor(1.0F, 1.0F, 1.0F, 1.0F);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+    const std::vector<std::uint8_t> drawn = platform::readFramebuffer(0, 320, 200);
+    display_->present();
+    std::vector<std::uint8_t> shown;
+    const auto deadline = Clock::now() + kTimeout;
+    while (shown != drawn && Clock::now() < deadline) {
+        shown = x_.capture(xwindow_, 320, 200);
+    }
+    ASSERT_EQ(shown.size(), drawn.size());
+    EXPECT_TRUE(shown == drawn) << "the X screen differs from the frame read back";
+    EXPECT_EQ(shown[0], 255);
+    EXPECT_EQ(shown[320U * 4U + 2U], 26);
+
     // The back buffer read before present holds what was drawn, top row first.
     drawFrame(*display_, 0.0F, 0.0F, 1.0F);
     glEnable(GL_SCISSOR_TEST);

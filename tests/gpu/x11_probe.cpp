@@ -4,6 +4,8 @@
 #include <SDL_syswm.h>
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
+#include <chrono>
+#include <thread>
 
 namespace steerseg::test {
 
@@ -37,7 +39,16 @@ unsigned long currentSdlXWindow() {
     return wm.info.x11.window;
 }
 
-X11Probe::X11Probe() : display_(XOpenDisplay(nullptr)) {}
+X11Probe::X11Probe() {
+    // An X server resets when its last client leaves and refuses connections meanwhile;
+    // xvfb-run -s -noreset avoids that, and a few tries cover a server started without it.
+    for (int attempt = 0; attempt < 20 && display_ == nullptr; ++attempt) {
+        display_ = XOpenDisplay(nullptr);
+        if (display_ == nullptr) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+    }
+}
 
 X11Probe::~X11Probe() {
     if (display_ != nullptr) {
@@ -55,6 +66,27 @@ std::array<int, 3> X11Probe::pixel(unsigned long window, int x, int y) const {
                                  channel(value, image->blue_mask)};
     XDestroyImage(image);
     return rgb;
+}
+
+std::vector<std::uint8_t> X11Probe::capture(unsigned long window, int width, int height) const {
+    XImage* image = XGetImage(xdisplay(display_), window, 0, 0, static_cast<unsigned>(width),
+                              static_cast<unsigned>(height), AllPlanes, ZPixmap);
+    if (image == nullptr) {
+        return {};
+    }
+    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width) * height * 4);
+    std::size_t at = 0;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const unsigned long value = XGetPixel(image, x, y);
+            rgba[at++] = static_cast<std::uint8_t>(channel(value, image->red_mask));
+            rgba[at++] = static_cast<std::uint8_t>(channel(value, image->green_mask));
+            rgba[at++] = static_cast<std::uint8_t>(channel(value, image->blue_mask));
+            rgba[at++] = 255;
+        }
+    }
+    XDestroyImage(image);
+    return rgba;
 }
 
 bool X11Probe::requestClose(unsigned long window) const {
