@@ -16,6 +16,7 @@ const ImVec4 kBannerOk(0.16F, 0.36F, 0.58F, 1.0F);
 const ImVec4 kBannerRun(0.14F, 0.50F, 0.22F, 1.0F);
 const ImVec4 kBannerError(0.70F, 0.14F, 0.12F, 1.0F);
 const ImVec4 kErrorText(1.0F, 0.45F, 0.40F, 1.0F);
+const ImVec4 kNav(0.18F, 0.45F, 0.26F, 1.0F); // the workflow's next and previous step
 
 class Drawer {
   public:
@@ -40,6 +41,9 @@ class Drawer {
                       IM_COL32_WHITE, m.banner.c_str());
         ImGui::PopFont();
         ImGui::Dummy(ImVec2(w, h));
+        if (!m.scanName.empty()) {
+            ImGui::TextDisabled("%s", m.scanName.c_str());
+        }
         ImGui::TextWrapped("%s", m.hint.c_str());
         if (!m.message.empty()) {
             if (m.error) {
@@ -69,6 +73,10 @@ class Drawer {
         if (items.empty() || !ImGui::BeginTable("##readouts", 4)) {
             return;
         }
+        ImGui::TableSetupColumn("##l1", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("##v1", ImGuiTableColumnFlags_WidthStretch);
+        ImGui::TableSetupColumn("##l2", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("##v2", ImGuiTableColumnFlags_WidthStretch);
         for (std::size_t i = 0; i < items.size(); ++i) {
             if (i % 2 == 0) {
                 ImGui::TableNextRow();
@@ -133,7 +141,7 @@ class Drawer {
     }
 
     // Buttons in rows of up to `perRow`, each at least a touch target wide.
-    void grid(const std::vector<PanelButton>& buttons, int perRow) {
+    void grid(const std::vector<PanelButton>& buttons, int perRow, const ImVec4* colour = nullptr) {
         const float sp = ImGui::GetStyle().ItemSpacing.x;
         const float avail = ImGui::GetContentRegionAvail().x;
         const int fit = std::max(1, static_cast<int>((avail + sp) / (touch_ + sp)));
@@ -144,7 +152,13 @@ class Drawer {
             if (i % static_cast<std::size_t>(n) != 0) {
                 ImGui::SameLine();
             }
+            if (colour != nullptr) {
+                ImGui::PushStyleColor(ImGuiCol_Button, *colour);
+            }
             button(buttons[i], ImVec2(w, touch_));
+            if (colour != nullptr) {
+                ImGui::PopStyleColor();
+            }
         }
     }
 
@@ -215,13 +229,13 @@ std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status&
     const PanelModel model = buildPanelModel(status, scans);
     ImGui::SetNextWindowPos(ImVec2(static_cast<float>(rect.x), static_cast<float>(rect.y)));
     ImGui::SetNextWindowSize(ImVec2(static_cast<float>(rect.w), static_cast<float>(rect.h)));
-    constexpr ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize |
-                                       ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
-                                       ImGuiWindowFlags_NoSavedSettings |
-                                       ImGuiWindowFlags_NoBringToFrontOnFocus;
+    constexpr ImGuiWindowFlags flags =
+        ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
+        ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+        ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollbar;
     if (ImGui::Begin("##steerseg_panel", nullptr, flags)) {
-        // ImGui 1.86 scrolls with the wheel only: a finger dragging the panel's background
-        // scrolls it too.
+        // No scrollbar, so no widget moves when one appears; the wheel scrolls, and (ImGui
+        // 1.86 knows no touch scrolling) so does a finger dragging the panel's background.
         if (ImGui::IsWindowHovered() && !ImGui::IsAnyItemActive() &&
             ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
             ImGui::SetScrollY(ImGui::GetScrollY() - ImGui::GetIO().MouseDelta.y);
@@ -232,7 +246,7 @@ std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status&
             d.progress(*model.progress);
         }
         if (!model.nav.empty()) {
-            d.grid(model.nav, 3);
+            d.grid(model.nav, static_cast<int>(model.nav.size()), &kNav);
         }
         d.readouts(model.readouts);
         if (!model.params.empty()) {

@@ -103,15 +103,13 @@ const char* axisName(SliceAxis a) {
 
 void addReadouts(const workflow::Status& st, PanelModel& m) {
     const std::string units = st.scan.units.empty() ? "" : " " + st.scan.units;
-    m.readouts.push_back({"Scan", st.scan.name});
     m.readouts.push_back({"T", fixed(st.params.T, 1) + units});
     m.readouts.push_back({"eps", fixed(st.params.eps, 1) + units});
     m.readouts.push_back({"alpha", fixed(st.params.alpha, 2)});
-    m.readouts.push_back({"Iterations", std::to_string(st.iterations)});
-    m.readouts.push_back({"Evolved time", fixed(st.evolvedTime, 1)});
-    m.readouts.push_back({"Volume", fixed(st.volumeMl, 2) + " ml"});
-    m.readouts.push_back({"Converged", st.converged ? "yes" : "no"});
-    m.readouts.push_back({"State", stateLabel(st.state)});
+    m.readouts.push_back({"iter", std::to_string(st.iterations)});
+    m.readouts.push_back({"time", fixed(st.evolvedTime, 1)});
+    m.readouts.push_back({"ml", fixed(st.volumeMl, 2)});
+    m.readouts.push_back({"done", st.converged ? "yes" : "no"});
 }
 
 } // namespace
@@ -198,6 +196,7 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
         m.progress = st.loadProgress;
     }
     if (scanLoaded(s) && s != State::Error) {
+        m.scanName = st.scan.name;
         addReadouts(st, m);
     }
 
@@ -224,7 +223,9 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
             m.params.push_back(row);
         }
         for (const std::string& preset : st.presets) {
-            m.presets.push_back({preset, workflow::ApplyPreset{preset}, preset == st.preset});
+            // The suffix keeps a preset named like a button ("Undo") a widget of its own.
+            m.presets.push_back(
+                {preset + "##preset", workflow::ApplyPreset{preset}, preset == st.preset});
         }
     }
 

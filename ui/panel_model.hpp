@@ -44,8 +44,9 @@ struct Readout {
 };
 
 struct PanelModel {
-    std::string banner; // the state, in the operator's words
-    std::string hint;   // what to do next
+    std::string banner; // the state, in the operator's words (the large state readout)
+    std::string scanName;
+    std::string hint; // what to do next
     std::string message;
     bool error = false;
     std::optional<double> progress; // Loading: 0..1, < 0 when unknown

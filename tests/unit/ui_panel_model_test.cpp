@@ -146,10 +146,11 @@ TEST(UiPanelModel, ParametersReadoutsAndToggles) {
     };
     EXPECT_EQ(readout("T"), "40.0 HU");
     EXPECT_EQ(readout("alpha"), "0.90");
-    EXPECT_EQ(readout("Iterations"), "272");
-    EXPECT_EQ(readout("Volume"), "7.13 ml");
-    EXPECT_EQ(readout("Converged"), "yes");
-    EXPECT_EQ(readout("State"), "Paused");
+    EXPECT_EQ(readout("iter"), "272");
+    EXPECT_EQ(readout("ml"), "7.13");
+    EXPECT_EQ(readout("done"), "yes");
+    EXPECT_EQ(m.banner, "Paused");
+    EXPECT_EQ(m.scanName, "sample");
     const auto erase = std::find_if(m.tools.begin(), m.tools.end(), [](const ui::PanelButton& b) {
         return std::holds_alternative<workflow::SetEraseMode>(b.action);
     });
