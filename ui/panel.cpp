@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <imgui.h>
+#include <imgui_internal.h> // GetActiveID, the window's MoveId: touch scrolling
 
 namespace steerseg::ui {
 
@@ -236,11 +237,19 @@ std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status&
     if (ImGui::Begin("##steerseg_panel", nullptr, flags)) {
         // No scrollbar, so no widget moves when one appears; the wheel scrolls, and (ImGui
         // 1.86 knows no touch scrolling) so does a finger dragging the panel's background.
-        if (ImGui::IsWindowHovered() && !ImGui::IsAnyItemActive() &&
+        // A press on the background makes the window's move id active (even with NoMove).
+        if (ImGui::GetActiveID() == ImGui::GetCurrentWindow()->MoveId &&
             ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
             ImGui::SetScrollY(ImGui::GetScrollY() - ImGui::GetIO().MouseDelta.y);
         }
         Drawer d(layer, rects_, actions);
+        // A wide panel (below the views on a portrait screen) puts the state and readouts
+        // beside the controls instead of scrolling them away.
+        const bool twoColumns =
+            rect.w > rect.h && rect.w >= 8 * layer.touchPx() && ImGui::BeginTable("##columns", 2);
+        if (twoColumns) {
+            ImGui::TableNextColumn();
+        }
         d.banner(model, status.state);
         if (model.progress) {
             d.progress(*model.progress);
@@ -249,15 +258,18 @@ std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status&
             d.grid(model.nav, static_cast<int>(model.nav.size()), &kNav);
         }
         d.readouts(model.readouts);
+        if (!model.tools.empty()) {
+            d.heading("Actions");
+            d.grid(model.tools, 3);
+        }
+        if (twoColumns) {
+            ImGui::TableNextColumn();
+        }
         if (!model.params.empty()) {
             d.heading("Parameters (tap a name for the knob)");
             for (const ParamRow& row : model.params) {
                 d.param(row);
             }
-        }
-        if (!model.tools.empty()) {
-            d.heading("Actions");
-            d.grid(model.tools, 3);
         }
         if (!model.presets.empty()) {
             d.heading("Presets");
@@ -274,6 +286,9 @@ std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status&
         if (!model.scans.empty()) {
             d.heading("Scans");
             d.grid(model.scans, 1);
+        }
+        if (twoColumns) {
+            ImGui::EndTable();
         }
     }
     ImGui::End();

@@ -6,12 +6,14 @@
 #include "ui/layout.hpp"
 #include "ui/overlays.hpp"
 #include "ui/panel.hpp"
+#include "ui/touch_ui.hpp"
 
 #include <array>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <gtest/gtest.h>
+#include <tuple>
 #include <vector>
 
 namespace steerseg::test {
@@ -304,6 +306,144 @@ TEST_F(UiPanel, FallsBackToTheBuiltInFontAndDrawsCaptions) {
     EXPECT_GT(count(px, corner(layout_.view3d)).white, 10) << "the 3D view's caption";
     EXPECT_GT(count(px, corner(layout_.slice1)).white, 10) << "the contour view's caption";
     EXPECT_EQ(count(px, corner(layout_.slice2)).changed, 0) << "no speed view given, no caption";
+}
+
+// The whole touch UI: a tap on a slice seeds at the voxel under the finger, a tap on the panel
+// is the panel's alone, and a finger held on a slice erases once its long press is due.
+TEST_F(UiPanel, TouchUiRoutesTapsToViewsAndPanel) {
+    Screen screen;
+    ui::TouchUiOptions options;
+    options.scans = kScans;
+    ui::TouchUi touch(options);
+    workflow::Status st = status(State::Seeding);
+    ui::ScreenState s;
+    s.layout = layout_;
+    Geometry g;
+    g.dims = st.scan.dims;
+    for (auto [kind, rect, view] :
+         {std::tuple{render::ViewKind::Axial, layout_.slice1, &s.slice1},
+          std::tuple{render::ViewKind::Coronal, layout_.slice2, &s.slice2}}) {
+        render::ViewParams p;
+        p.kind = kind;
+        p.size = {rect.w / 2, rect.h / 2};
+        *view = ui::SliceView{render::sliceFrame(g, p), p.size, rect};
+    }
+    double t = 0.0;
+    std::vector<Action> out;
+    const auto frames = [&](int n) {
+        for (int i = 0; i < n; ++i) {
+            t += 1.0 / 30.0;
+            for (const Action& a : touch.drawFrame({kW, kH}, t, s, st)) {
+                out.push_back(a);
+            }
+        }
+    };
+    const auto at = [&](platform::InputEvent::Kind kind, glm::dvec2 p) {
+        platform::InputEvent e = pointer(kind, p);
+        e.time = t;
+        touch.feed(e, s, st, out);
+    };
+    frames(2);
+    ASSERT_TRUE(out.empty());
+
+    const glm::dvec2 onSlice(layout_.slice1.x + 0.5 * layout_.slice1.w,
+                             layout_.slice1.y + 0.5 * layout_.slice1.h);
+    at(platform::InputEvent::Kind::PointerDown, onSlice);
+    at(platform::InputEvent::Kind::PointerUp, onSlice);
+    frames(2);
+    ASSERT_EQ(out.size(), 1U);
+    const auto* seed = std::get_if<workflow::AddSeed>(&out[0]);
+    ASSERT_NE(seed, nullptr);
+    EXPECT_NEAR(glm::length(seed->voxel - *ui::voxelAtScreen(*s.slice1, onSlice)), 0.0, 1e-9);
+    out.clear();
+
+    const std::optional<ui::Rect> run = touch.panel().widgetRect("Run");
+    ASSERT_TRUE(run);
+    const glm::dvec2 onRun(run->x + 0.5 * run->w, run->y + 0.5 * run->h);
+    at(platform::InputEvent::Kind::PointerDown, onRun);
+    at(platform::InputEvent::Kind::PointerUp, onRun);
+    frames(3);
+    ASSERT_EQ(out.size(), 1U);
+    EXPECT_TRUE(std::holds_alternative<workflow::Run>(out[0]));
+    out.clear();
+
+    st.state = State::Evolving;
+    const glm::dvec2 onSpeed(layout_.slice2.x + 0.5 * layout_.slice2.w,
+                             layout_.slice2.y + 0.5 * layout_.slice2.h);
+    at(platform::InputEvent::Kind::PointerDown, onSpeed);
+    frames(30); // a second: the long press is due while the finger is still down
+    ASSERT_EQ(out.size(), 1U);
+    EXPECT_TRUE(std::holds_alternative<workflow::Erase>(out[0]));
+    at(platform::InputEvent::Kind::PointerUp, onSpeed);
+    frames(2);
+    EXPECT_EQ(out.size(), 1U) << "nothing more when the finger lifts";
+}
+
+// On a portrait screen the panel is a wide strip below the views: the whole Paused panel
+// (the state with the most controls) fits without scrolling.
+TEST_F(UiPanel, PortraitPanelFitsItsControls) {
+    Screen screen;
+    ui::ImGuiLayer layer;
+    layout_ = ui::computeLayout(800, 1280, 96.0);
+    // The offscreen target is 1280 x 800: draw the 800-wide portrait panel into its top left.
+    layout_.panel.y = 0;
+    workflow::Status st = status(State::Paused);
+    frame(layer, st);
+    frame(layer, st);
+    const ui::Rect panel = layout_.panel;
+    for (const char* label :
+         {"Run", "+##radius", "Review##proceed", "Sagittal##view2", "CT bone##preset"}) {
+        const auto r = panel_.widgetRect(label);
+        ASSERT_TRUE(r) << label;
+        EXPECT_GE(r->x, panel.x) << label;
+        EXPECT_LE(r->x + r->w, panel.x + panel.w) << label;
+        EXPECT_GE(r->y, panel.y) << label;
+        EXPECT_LE(r->y + r->h, panel.y + panel.h) << label << " is below the panel";
+    }
+    if (const char* dir = std::getenv("STEERSEG_UI_SNAPSHOTS")) {
+        Screen::clear();
+        frame(layer, st);
+        io::writeImage(std::filesystem::path(dir) / "panel_portrait.png",
+                       RgbaImage{kW, kH, screen.read()});
+    }
+}
+
+// At a high DPI the landscape panel is taller than the screen: a finger dragging its
+// background scrolls it (ImGui 1.86 scrolls only with the wheel), and a tap still works after.
+TEST_F(UiPanel, FingerDragScrollsATallPanel) {
+    Screen screen;
+    ui::ImGuiLayerOptions options;
+    options.dpi = 200.0;
+    ui::ImGuiLayer layer(options);
+    layout_ = ui::computeLayout(kW, kH, options.dpi);
+    const workflow::Status st = status(State::Evolving);
+    frame(layer, st);
+    frame(layer, st);
+    const auto before = panel_.widgetRect("Sagittal##view2");
+    ASSERT_TRUE(before);
+    ASSERT_GT(before->y + before->h, kH) << "the test needs a panel taller than the screen";
+    // The hint's text is no widget: start there and drag up 1200 px in steps (ImGui stops the
+    // scroll at the content's end).
+    const auto seed = panel_.widgetRect("Review##proceed");
+    ASSERT_TRUE(seed);
+    glm::dvec2 at(layout_.panel.x + 0.5 * layout_.panel.w, seed->y - 8.0);
+    layer.feed(pointer(platform::InputEvent::Kind::PointerDown, at));
+    frame(layer, st);
+    for (int i = 0; i < 40; ++i) {
+        at.y -= 30.0;
+        layer.feed(pointer(platform::InputEvent::Kind::PointerMove, at));
+        EXPECT_TRUE(frame(layer, st).empty());
+    }
+    layer.feed(pointer(platform::InputEvent::Kind::PointerUp, at));
+    EXPECT_TRUE(frame(layer, st).empty());
+    frame(layer, st);
+    const auto after = panel_.widgetRect("Sagittal##view2");
+    ASSERT_TRUE(after);
+    EXPECT_LT(after->y, before->y - 100) << "scrolled up";
+    EXPECT_LE(after->y + after->h, kH) << "the last row is on the screen now";
+    const std::vector<Action> tapped = tap(layer, st, "Sagittal##view2");
+    ASSERT_EQ(tapped.size(), 1U);
+    EXPECT_EQ(std::get<workflow::ShowSlices>(tapped[0]).second, workflow::SliceAxis::Sagittal);
 }
 
 } // namespace steerseg::test
