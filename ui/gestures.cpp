@@ -82,7 +82,7 @@ std::vector<Gesture> GestureRecognizer::feed(const platform::InputEvent& e) {
             g.id = id_;
             g.start = p;
             g.position = p;
-            g.wheel = e.wheel;
+            g.wheel = static_cast<double>(e.wheel);
             g.time = e.time;
             out.push_back(g);
         }

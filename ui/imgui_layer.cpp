@@ -110,7 +110,8 @@ void ImGuiLayer::loadFonts(const std::string& path) {
         largeFont_ = io.Fonts->AddFontFromMemoryTTF(
             data, size, static_cast<float>(std::round(fontPx_ * kLargeFontScale)), &config,
             kGlyphRanges);
-        if (base != nullptr && largeFont_ != nullptr) {
+        // Built here, not on the first frame, so a font stb_truetype refuses falls back too.
+        if (base != nullptr && largeFont_ != nullptr && io.Fonts->Build()) {
             io.FontDefault = base;
             return;
         }

@@ -24,6 +24,9 @@ class Panel {
     // Where a widget was drawn last frame, by its label as the model names it ("Run",
     // "Seed##proceed", "+##T" for a parameter's plus button): for tests and scripted taps.
     [[nodiscard]] std::optional<Rect> widgetRect(std::string_view label) const;
+    [[nodiscard]] const std::map<std::string, Rect, std::less<>>& widgetRects() const {
+        return rects_;
+    }
 
   private:
     std::map<std::string, Rect, std::less<>> rects_;

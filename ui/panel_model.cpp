@@ -78,11 +78,11 @@ workflow::ParamRange rangeFor(const workflow::Status& st, Param p) {
 double valueOf(const workflow::Status& st, Param p) {
     switch (p) {
     case Param::Target:
-        return st.params.T;
+        return static_cast<double>(st.params.T);
     case Param::Epsilon:
-        return st.params.eps;
+        return static_cast<double>(st.params.eps);
     case Param::Alpha:
-        return st.params.alpha;
+        return static_cast<double>(st.params.alpha);
     case Param::Radius:
         return st.radius;
     }
@@ -103,9 +103,9 @@ const char* axisName(SliceAxis a) {
 
 void addReadouts(const workflow::Status& st, PanelModel& m) {
     const std::string units = st.scan.units.empty() ? "" : " " + st.scan.units;
-    m.readouts.push_back({"T", fixed(st.params.T, 1) + units});
-    m.readouts.push_back({"eps", fixed(st.params.eps, 1) + units});
-    m.readouts.push_back({"alpha", fixed(st.params.alpha, 2)});
+    m.readouts.push_back({"T", fixed(static_cast<double>(st.params.T), 1) + units});
+    m.readouts.push_back({"eps", fixed(static_cast<double>(st.params.eps), 1) + units});
+    m.readouts.push_back({"alpha", fixed(static_cast<double>(st.params.alpha), 2)});
     m.readouts.push_back({"iter", std::to_string(st.iterations)});
     m.readouts.push_back({"time", fixed(st.evolvedTime, 1)});
     m.readouts.push_back({"ml", fixed(st.volumeMl, 2)});

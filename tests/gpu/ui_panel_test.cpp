@@ -187,12 +187,11 @@ TEST_F(UiPanel, DrawsInsideThePanelForEachState) {
         EXPECT_GT(in.white, 200) << "the banner's text";
         const Counts out = count(px, layout_.view3d);
         EXPECT_EQ(out.changed, 0) << "nothing drawn over the 3D view";
-        // Every button at least the touch target.
-        for (const char* label : {"Run", "Pause", "Undo", "Dismiss", "Seed##proceed"}) {
-            if (const auto r = panel_.widgetRect(label)) {
-                EXPECT_GE(r->h + 1, static_cast<int>(layer.touchPx())) << label;
-                EXPECT_GE(r->w + 1, static_cast<int>(layer.touchPx())) << label;
-            }
+        // Every button and slider at least the touch target.
+        EXPECT_EQ(panel_.widgetRects().empty(), state == State::Loading);
+        for (const auto& [label, r] : panel_.widgetRects()) {
+            EXPECT_GE(r.h + 1, static_cast<int>(layer.touchPx())) << label;
+            EXPECT_GE(r.w + 1, static_cast<int>(layer.touchPx())) << label;
         }
     }
 }
@@ -288,6 +287,8 @@ TEST_F(UiPanel, FallsBackToTheBuiltInFontAndDrawsCaptions) {
     options.fontPath = "/nonexistent/steerseg-font.ttf";
     ui::ImGuiLayer layer(options);
     EXPECT_TRUE(layer.fallbackFont());
+    options.fontPath = std::string(STEERSEG_UI_TEST_SOURCE); // a file, but not a font
+    EXPECT_TRUE(ui::ImGuiLayer(options).fallbackFont());
     const workflow::Status st = status(State::Inspect);
     ui::ScreenState s;
     s.layout = layout_;
