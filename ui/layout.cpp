@@ -31,8 +31,9 @@ Layout computeLayout(int width, int height, double dpi) {
     }
     const double touch = touchTargetPx(kMinTouchMm, dpi);
     if (width >= height) {
-        // The panel holds a slider between two buttons and a label: four targets at least.
-        const int panelW = std::min(width, std::max(px(4.0 * touch), px(0.26 * width)));
+        // The panel's widest row is a name, -, a slider and +: four targets, their gaps and
+        // the window's padding.
+        const int panelW = std::min(width, std::max(px(5.5 * touch), px(0.26 * width)));
         const int viewsW = width - panelW;
         // Slices as near square as the column allows (half the height), the 3D view the rest.
         const int sliceW = std::min(height / 2, px(0.4 * viewsW));

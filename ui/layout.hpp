@@ -32,8 +32,8 @@ enum class Region { None, View3d, Slice1, Slice2, Panel };
 double touchTargetPx(double mm, double dpi);
 
 // Landscape (width >= height): the 3D view large on the left, the two slices stacked in a
-// column, the panel on the right, at least four touch targets wide. Portrait: the 3D view on
-// top, the two slices side by side, the panel below. Sizes <= 0 give empty rects.
+// column, the panel on the right, at least 5.5 touch targets wide (a parameter's row). Portrait:
+// the 3D view on top, the two slices side by side, the panel below. Sizes <= 0 give empty rects.
 Layout computeLayout(int width, int height, double dpi);
 
 Region regionAt(const Layout& layout, double x, double y);

@@ -95,8 +95,12 @@ class Drawer {
     // [name] [-] [slider] [+]: the name selects the parameter for the knob.
     void param(const ParamRow& row) {
         const std::string id = paramId(row.param);
-        const float sp = ImGui::GetStyle().ItemSpacing.x;
-        const float nameW = std::max(touch_, 1.6F * touch_);
+        // Tighter gaps than elsewhere: four targets share the row.
+        const float sp = std::min(ImGui::GetStyle().ItemSpacing.x, 0.12F * touch_);
+        ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(sp, ImGui::GetStyle().ItemSpacing.y));
+        // A narrow panel (high DPI) gives the name what the other three targets leave.
+        const float rest = ImGui::GetContentRegionAvail().x - 3.0F * (touch_ + sp);
+        const float nameW = std::max(touch_, std::min(1.6F * touch_, rest));
         button({row.label + "##select" + id, workflow::SelectParam{row.param}, row.selected},
                ImVec2(nameW, touch_), "select##" + id);
         ImGui::SameLine();
@@ -117,6 +121,7 @@ class Drawer {
         record(slider);
         ImGui::SameLine();
         button({"+##" + id, workflow::NudgeParam{row.param, 1.0}}, ImVec2(touch_, touch_));
+        ImGui::PopStyleVar();
     }
 
     void window(const WindowRow& w) {

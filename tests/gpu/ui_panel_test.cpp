@@ -423,6 +423,11 @@ TEST_F(UiPanel, FingerDragScrollsATallPanel) {
     const auto before = panel_.widgetRect("Sagittal##view2");
     ASSERT_TRUE(before);
     ASSERT_GT(before->y + before->h, kH) << "the test needs a panel taller than the screen";
+    for (const auto& [label, r] : panel_.widgetRects()) {
+        EXPECT_GE(r.x, layout_.panel.x) << label;
+        EXPECT_LE(r.x + r.w, layout_.panel.x + layout_.panel.w) << label;
+        EXPECT_GE(r.w + 1, static_cast<int>(layer.touchPx())) << label;
+    }
     // The hint's text is no widget: start there and drag up 1200 px in steps (ImGui stops the
     // scroll at the content's end).
     const auto seed = panel_.widgetRect("Review##proceed");

@@ -53,7 +53,7 @@ void expectLandscape(int w, int h, double dpi) {
     EXPECT_EQ(l.slice2.x, l.slice1.x);
     EXPECT_EQ(l.slice2.y, l.slice1.y + l.slice1.h);
     EXPECT_EQ(l.panel.x + l.panel.w, w);
-    EXPECT_GE(l.panel.w, 4.0 * ui::touchTargetPx(9.0, dpi) - 1.0);
+    EXPECT_GE(l.panel.w, 5.5 * ui::touchTargetPx(9.0, dpi) - 1.0);
     EXPECT_GT(l.slice1.w, 0);
 }
 
