@@ -12,7 +12,7 @@ packages=(
   glslang-tools libglm-dev
   libopenimageio-dev libgdcm-dev libnifti2-dev zlib1g-dev
   libgpiod-dev libhidapi-dev libinput-dev libsystemd-dev
-  libtomlplusplus-dev nlohmann-json3-dev
+  libtomlplusplus-dev nlohmann-json3-dev libimgui-dev fonts-dejavu-core
   libgtest-dev libgmock-dev libbenchmark-dev
 )
 if [[ "${1:-}" == "--bench" ]]; then

@@ -1,0 +1,455 @@
+#include "gpu/gl_handle.hpp"
+#include "io/image_file.hpp"
+#include "render/slice_frame.hpp"
+#include "support/gpu_fixture.hpp"
+#include "ui/imgui_layer.hpp"
+#include "ui/layout.hpp"
+#include "ui/overlays.hpp"
+#include "ui/panel.hpp"
+#include "ui/touch_ui.hpp"
+
+#include <array>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <tuple>
+#include <vector>
+
+namespace steerseg::test {
+
+using workflow::Action;
+using workflow::State;
+
+namespace {
+
+constexpr int kW = 1280;
+constexpr int kH = 800;
+constexpr std::array<std::uint8_t, 4> kBackground{255, 0, 255, 255};
+
+// A 1280x800 RGBA8 colour target, bound for drawing while it lives.
+class Screen {
+  public:
+    Screen() : texture_(gpu::createTexture()) {
+        glBindTexture(GL_TEXTURE_2D, texture_.id());
+        glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, kW, kH);
+        GLuint fb = 0;
+        glGenFramebuffers(1, &fb);
+        framebuffer_ = gpu::Framebuffer(fb);
+        glBindFramebuffer(GL_FRAMEBUFFER, fb);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_.id(),
+                               0);
+        EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER),
+                  static_cast<GLenum>(GL_FRAMEBUFFER_COMPLETE));
+        glViewport(0, 0, kW, kH);
+    }
+    ~Screen() { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
+    Screen(const Screen&) = delete;
+    Screen& operator=(const Screen&) = delete;
+
+    static void clear() {
+        glClearColor(1.0F, 0.0F, 1.0F, 1.0F);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
+    // Rows top first (GL's are bottom first).
+    [[nodiscard]] std::vector<std::uint8_t> read() const {
+        std::vector<std::uint8_t> gl(static_cast<std::size_t>(kW) * kH * 4);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, kW, kH, GL_RGBA, GL_UNSIGNED_BYTE, gl.data());
+        std::vector<std::uint8_t> top(gl.size());
+        const std::size_t row = static_cast<std::size_t>(kW) * 4;
+        for (int y = 0; y < kH; ++y) {
+            std::copy_n(gl.begin() + static_cast<std::ptrdiff_t>(row * (kH - 1 - y)), row,
+                        top.begin() + static_cast<std::ptrdiff_t>(row * y));
+        }
+        return top;
+    }
+
+  private:
+    gpu::Texture texture_;
+    gpu::Framebuffer framebuffer_;
+};
+
+// Pixels of `r` that are not the background, and those that are near white (text).
+struct Counts {
+    long changed = 0;
+    long white = 0;
+    long total = 0;
+};
+Counts count(const std::vector<std::uint8_t>& px, const ui::Rect& r) {
+    Counts c;
+    for (int y = r.y; y < r.y + r.h; ++y) {
+        for (int x = r.x; x < r.x + r.w; ++x) {
+            const std::uint8_t* p = &px[(static_cast<std::size_t>(y) * kW + x) * 4];
+            ++c.total;
+            if (p[0] != kBackground[0] || p[1] != kBackground[1] || p[2] != kBackground[2]) {
+                ++c.changed;
+            }
+            if (p[0] > 200 && p[1] > 200 && p[2] > 200) {
+                ++c.white;
+            }
+        }
+    }
+    return c;
+}
+
+workflow::Status status(State state) {
+    workflow::Status st;
+    st.state = state;
+    st.scan.name = "sample";
+    st.scan.units = "HU";
+    st.scan.dims = {64, 64, 48};
+    st.scan.minValue = -1000.0;
+    st.scan.maxValue = 1000.0;
+    st.params.T = 40.0F;
+    st.params.eps = 30.0F;
+    st.presets = {"CT soft tissue", "CT bone"};
+    st.canUndo = true;
+    st.message = state == State::Error ? "scan.nii: not a NIfTI file" : "";
+    st.loadProgress = 0.3;
+    return st;
+}
+
+const std::vector<std::string> kScans{"builtin:sample", "/data/CT_sarcoma.nii.gz"};
+
+class UiPanel : public GpuTest {
+  protected:
+    // One frame of the panel (and the captions); returns its actions.
+    std::vector<Action> frame(ui::ImGuiLayer& layer, const workflow::Status& st,
+                              const ui::ScreenState* screen = nullptr) {
+        time_ += 1.0 / 30.0;
+        layer.beginFrame({kW, kH}, time_);
+        std::vector<Action> out = panel_.draw(layer, st, layout_.panel, kScans);
+        if (screen != nullptr) {
+            ui::drawViewCaptions(layer, *screen, st);
+        }
+        layer.endFrame();
+        return out;
+    }
+
+    static platform::InputEvent pointer(platform::InputEvent::Kind kind, glm::dvec2 at) {
+        platform::InputEvent e;
+        e.kind = kind;
+        e.x = static_cast<float>(at.x);
+        e.y = static_cast<float>(at.y);
+        return e;
+    }
+
+    // Taps the middle of a widget: down and up fed at once, as a touchscreen delivers a quick
+    // tap within one frame; returns every action of the frames that follow.
+    std::vector<Action> tap(ui::ImGuiLayer& layer, const workflow::Status& st,
+                            const std::string& label) {
+        frame(layer, st);
+        const std::optional<ui::Rect> r = panel_.widgetRect(label);
+        EXPECT_TRUE(r) << label;
+        if (!r) {
+            return {};
+        }
+        const glm::dvec2 at(r->x + 0.5 * r->w, r->y + 0.5 * r->h);
+        layer.feed(pointer(platform::InputEvent::Kind::PointerDown, at));
+        layer.feed(pointer(platform::InputEvent::Kind::PointerUp, at));
+        std::vector<Action> all;
+        for (int i = 0; i < 3; ++i) {
+            for (const Action& a : frame(layer, st)) {
+                all.push_back(a);
+            }
+        }
+        return all;
+    }
+
+    ui::Layout layout_ = ui::computeLayout(kW, kH, 96.0);
+    ui::Panel panel_;
+    double time_ = 0.0;
+};
+
+} // namespace
+
+TEST_F(UiPanel, DrawsInsideThePanelForEachState) {
+    Screen screen;
+    ui::ImGuiLayer layer;
+    EXPECT_FALSE(layer.fallbackFont()) << "DejaVuSans (fonts-dejavu-core) should be installed";
+    for (State state : {State::NoScan, State::Loading, State::Inspect, State::Seeding,
+                        State::Evolving, State::Review, State::Done, State::Error}) {
+        SCOPED_TRACE(static_cast<int>(state));
+        const workflow::Status st = status(state);
+        frame(layer, st); // ImGui sizes its windows on the first frame
+        Screen::clear();
+        EXPECT_TRUE(frame(layer, st).empty()) << "no touch, no action";
+        const std::vector<std::uint8_t> px = screen.read();
+        // STEERSEG_UI_SNAPSHOTS=<folder>: the frames as PNG, to look at the panel.
+        if (const char* dir = std::getenv("STEERSEG_UI_SNAPSHOTS")) {
+            io::writeImage(std::filesystem::path(dir) / ("panel_" + ui::stateLabel(state) + ".png"),
+                           RgbaImage{kW, kH, px});
+        }
+        const Counts in = count(px, layout_.panel);
+        EXPECT_GT(in.changed, in.total * 9 / 10) << "the panel's background covers its rect";
+        EXPECT_GT(in.white, 200) << "the banner's text";
+        const Counts out = count(px, layout_.view3d);
+        EXPECT_EQ(out.changed, 0) << "nothing drawn over the 3D view";
+        // Every button and slider at least the touch target.
+        EXPECT_EQ(panel_.widgetRects().empty(), state == State::Loading);
+        for (const auto& [label, r] : panel_.widgetRects()) {
+            EXPECT_GE(r.h + 1, static_cast<int>(layer.touchPx())) << label;
+            EXPECT_GE(r.w + 1, static_cast<int>(layer.touchPx())) << label;
+        }
+    }
+}
+
+TEST_F(UiPanel, TapOnRunInSeedingEmitsRun) {
+    Screen screen;
+    ui::ImGuiLayer layer;
+    const std::vector<Action> out = tap(layer, status(State::Seeding), "Run");
+    ASSERT_EQ(out.size(), 1U);
+    EXPECT_TRUE(std::holds_alternative<workflow::Run>(out[0]));
+}
+
+TEST_F(UiPanel, TapsOnProceedPlusAndALoadButton) {
+    Screen screen;
+    ui::ImGuiLayer layer;
+    const std::vector<Action> seed = tap(layer, status(State::Inspect), "Seed##proceed");
+    ASSERT_EQ(seed.size(), 1U);
+    EXPECT_TRUE(std::holds_alternative<workflow::Proceed>(seed[0]));
+
+    const std::vector<Action> plus = tap(layer, status(State::Paused), "+##eps");
+    ASSERT_EQ(plus.size(), 1U);
+    const auto* nudge = std::get_if<workflow::NudgeParam>(&plus[0]);
+    ASSERT_NE(nudge, nullptr);
+    EXPECT_EQ(nudge->param, workflow::Param::Epsilon);
+    EXPECT_EQ(nudge->steps, 1.0);
+
+    const std::vector<Action> load = tap(layer, status(State::NoScan), "Load Sample##scan0");
+    ASSERT_EQ(load.size(), 1U);
+    EXPECT_EQ(std::get<workflow::LoadScan>(load[0]).path, "builtin:sample");
+}
+
+TEST_F(UiPanel, WantsThePointerOverThePanelOnly) {
+    Screen screen;
+    ui::ImGuiLayer layer;
+    const workflow::Status st = status(State::Seeding);
+    layer.feed(pointer(platform::InputEvent::Kind::PointerMove,
+                       {layout_.panel.x + 20.0, layout_.panel.y + 300.0}));
+    frame(layer, st);
+    frame(layer, st);
+    EXPECT_TRUE(layer.wantsPointer());
+    layer.feed(pointer(platform::InputEvent::Kind::PointerMove, {100.0, 100.0}));
+    frame(layer, st);
+    EXPECT_FALSE(layer.wantsPointer());
+    // A touch on a view emits nothing from the panel.
+    layer.feed(pointer(platform::InputEvent::Kind::PointerDown, {100.0, 100.0}));
+    layer.feed(pointer(platform::InputEvent::Kind::PointerUp, {100.0, 100.0}));
+    EXPECT_TRUE(frame(layer, st).empty());
+    EXPECT_TRUE(frame(layer, st).empty());
+}
+
+TEST_F(UiPanel, RestoresTheGlStateItChanges) {
+    Screen screen;
+    ui::ImGuiLayer layer;
+    gpu::Texture foreign = gpu::createTexture();
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, foreign.id());
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, foreign.id());
+    glDisable(GL_BLEND);
+    glEnable(GL_DEPTH_TEST);
+    glViewport(10, 20, 300, 200);
+    glDisable(GL_SCISSOR_TEST);
+    GLint fbBefore = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbBefore);
+    frame(layer, status(State::Evolving));
+    GLint texture = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture);
+    EXPECT_EQ(static_cast<GLuint>(texture), foreign.id());
+    GLint active = 0;
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
+    EXPECT_EQ(active, GL_TEXTURE0);
+    EXPECT_FALSE(glIsEnabled(GL_BLEND));
+    EXPECT_TRUE(glIsEnabled(GL_DEPTH_TEST));
+    EXPECT_FALSE(glIsEnabled(GL_SCISSOR_TEST));
+    std::array<GLint, 4> viewport{};
+    glGetIntegerv(GL_VIEWPORT, viewport.data());
+    EXPECT_EQ(viewport, (std::array<GLint, 4>{10, 20, 300, 200}));
+    GLint fbAfter = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbAfter);
+    EXPECT_EQ(fbAfter, fbBefore);
+    GLint program = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+    EXPECT_EQ(program, 0);
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glViewport(0, 0, kW, kH);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+TEST_F(UiPanel, FallsBackToTheBuiltInFontAndDrawsCaptions) {
+    Screen screen;
+    ui::ImGuiLayerOptions options;
+    options.fontPath = "/nonexistent/steerseg-font.ttf";
+    ui::ImGuiLayer layer(options);
+    EXPECT_TRUE(layer.fallbackFont());
+    options.fontPath = std::string(STEERSEG_UI_TEST_SOURCE); // a file, but not a font
+    EXPECT_TRUE(ui::ImGuiLayer(options).fallbackFont());
+    const workflow::Status st = status(State::Inspect);
+    ui::ScreenState s;
+    s.layout = layout_;
+    Geometry g;
+    g.dims = st.scan.dims;
+    render::ViewParams p;
+    p.kind = render::ViewKind::Axial;
+    p.size = {layout_.slice1.w, layout_.slice1.h};
+    s.slice1 = ui::SliceView{render::sliceFrame(g, p), p.size, layout_.slice1};
+    frame(layer, st, &s);
+    Screen::clear();
+    frame(layer, st, &s);
+    const std::vector<std::uint8_t> px = screen.read();
+    EXPECT_GT(count(px, layout_.panel).changed, layout_.panel.w * layout_.panel.h / 2);
+    const auto corner = [](const ui::Rect& r) { return ui::Rect{r.x, r.y, 120, 40}; };
+    EXPECT_GT(count(px, corner(layout_.view3d)).white, 10) << "the 3D view's caption";
+    EXPECT_GT(count(px, corner(layout_.slice1)).white, 10) << "the contour view's caption";
+    EXPECT_EQ(count(px, corner(layout_.slice2)).changed, 0) << "no speed view given, no caption";
+}
+
+// The whole touch UI: a tap on a slice seeds at the voxel under the finger, a tap on the panel
+// is the panel's alone, and a finger held on a slice erases once its long press is due.
+TEST_F(UiPanel, TouchUiRoutesTapsToViewsAndPanel) {
+    Screen screen;
+    ui::TouchUiOptions options;
+    options.scans = kScans;
+    ui::TouchUi touch(options);
+    workflow::Status st = status(State::Seeding);
+    ui::ScreenState s;
+    s.layout = layout_;
+    Geometry g;
+    g.dims = st.scan.dims;
+    for (auto [kind, rect, view] :
+         {std::tuple{render::ViewKind::Axial, layout_.slice1, &s.slice1},
+          std::tuple{render::ViewKind::Coronal, layout_.slice2, &s.slice2}}) {
+        render::ViewParams p;
+        p.kind = kind;
+        p.size = {rect.w / 2, rect.h / 2};
+        *view = ui::SliceView{render::sliceFrame(g, p), p.size, rect};
+    }
+    double t = 0.0;
+    std::vector<Action> out;
+    const auto frames = [&](int n) {
+        for (int i = 0; i < n; ++i) {
+            t += 1.0 / 30.0;
+            for (const Action& a : touch.drawFrame({kW, kH}, t, s, st)) {
+                out.push_back(a);
+            }
+        }
+    };
+    const auto at = [&](platform::InputEvent::Kind kind, glm::dvec2 p) {
+        platform::InputEvent e = pointer(kind, p);
+        e.time = t;
+        touch.feed(e, s, st, out);
+    };
+    frames(2);
+    ASSERT_TRUE(out.empty());
+
+    const glm::dvec2 onSlice(layout_.slice1.x + 0.5 * layout_.slice1.w,
+                             layout_.slice1.y + 0.5 * layout_.slice1.h);
+    at(platform::InputEvent::Kind::PointerDown, onSlice);
+    at(platform::InputEvent::Kind::PointerUp, onSlice);
+    frames(2);
+    ASSERT_EQ(out.size(), 1U);
+    const auto* seed = std::get_if<workflow::AddSeed>(&out[0]);
+    ASSERT_NE(seed, nullptr);
+    EXPECT_NEAR(glm::length(seed->voxel - *ui::voxelAtScreen(*s.slice1, onSlice)), 0.0, 1e-9);
+    out.clear();
+
+    const std::optional<ui::Rect> run = touch.panel().widgetRect("Run");
+    ASSERT_TRUE(run);
+    const glm::dvec2 onRun(run->x + 0.5 * run->w, run->y + 0.5 * run->h);
+    at(platform::InputEvent::Kind::PointerDown, onRun);
+    at(platform::InputEvent::Kind::PointerUp, onRun);
+    frames(3);
+    ASSERT_EQ(out.size(), 1U);
+    EXPECT_TRUE(std::holds_alternative<workflow::Run>(out[0]));
+    out.clear();
+
+    st.state = State::Evolving;
+    const glm::dvec2 onSpeed(layout_.slice2.x + 0.5 * layout_.slice2.w,
+                             layout_.slice2.y + 0.5 * layout_.slice2.h);
+    at(platform::InputEvent::Kind::PointerDown, onSpeed);
+    frames(30); // a second: the long press is due while the finger is still down
+    ASSERT_EQ(out.size(), 1U);
+    EXPECT_TRUE(std::holds_alternative<workflow::Erase>(out[0]));
+    at(platform::InputEvent::Kind::PointerUp, onSpeed);
+    frames(2);
+    EXPECT_EQ(out.size(), 1U) << "nothing more when the finger lifts";
+}
+
+// On a portrait screen the panel is a wide strip below the views: the whole Paused panel
+// (the state with the most controls) fits without scrolling.
+TEST_F(UiPanel, PortraitPanelFitsItsControls) {
+    Screen screen;
+    ui::ImGuiLayer layer;
+    layout_ = ui::computeLayout(800, 1280, 96.0);
+    // The offscreen target is 1280 x 800: draw the 800-wide portrait panel into its top left.
+    layout_.panel.y = 0;
+    workflow::Status st = status(State::Paused);
+    frame(layer, st);
+    frame(layer, st);
+    const ui::Rect panel = layout_.panel;
+    for (const char* label :
+         {"Run", "+##radius", "Review##proceed", "Sagittal##view2", "CT bone##preset"}) {
+        const auto r = panel_.widgetRect(label);
+        ASSERT_TRUE(r) << label;
+        EXPECT_GE(r->x, panel.x) << label;
+        EXPECT_LE(r->x + r->w, panel.x + panel.w) << label;
+        EXPECT_GE(r->y, panel.y) << label;
+        EXPECT_LE(r->y + r->h, panel.y + panel.h) << label << " is below the panel";
+    }
+    if (const char* dir = std::getenv("STEERSEG_UI_SNAPSHOTS")) {
+        Screen::clear();
+        frame(layer, st);
+        io::writeImage(std::filesystem::path(dir) / "panel_portrait.png",
+                       RgbaImage{kW, kH, screen.read()});
+    }
+}
+
+// At a high DPI the landscape panel is taller than the screen: a finger dragging its
+// background scrolls it (ImGui 1.86 scrolls only with the wheel), and a tap still works after.
+TEST_F(UiPanel, FingerDragScrollsATallPanel) {
+    Screen screen;
+    ui::ImGuiLayerOptions options;
+    options.dpi = 200.0;
+    ui::ImGuiLayer layer(options);
+    layout_ = ui::computeLayout(kW, kH, options.dpi);
+    const workflow::Status st = status(State::Evolving);
+    frame(layer, st);
+    frame(layer, st);
+    const auto before = panel_.widgetRect("Sagittal##view2");
+    ASSERT_TRUE(before);
+    ASSERT_GT(before->y + before->h, kH) << "the test needs a panel taller than the screen";
+    for (const auto& [label, r] : panel_.widgetRects()) {
+        EXPECT_GE(r.x, layout_.panel.x) << label;
+        EXPECT_LE(r.x + r.w, layout_.panel.x + layout_.panel.w) << label;
+        EXPECT_GE(r.w + 1, static_cast<int>(layer.touchPx())) << label;
+    }
+    // The hint's text is no widget: start there and drag up 1200 px in steps (ImGui stops the
+    // scroll at the content's end).
+    const auto seed = panel_.widgetRect("Review##proceed");
+    ASSERT_TRUE(seed);
+    glm::dvec2 at(layout_.panel.x + 0.5 * layout_.panel.w, seed->y - 8.0);
+    layer.feed(pointer(platform::InputEvent::Kind::PointerDown, at));
+    frame(layer, st);
+    for (int i = 0; i < 40; ++i) {
+        at.y -= 30.0;
+        layer.feed(pointer(platform::InputEvent::Kind::PointerMove, at));
+        EXPECT_TRUE(frame(layer, st).empty());
+    }
+    layer.feed(pointer(platform::InputEvent::Kind::PointerUp, at));
+    EXPECT_TRUE(frame(layer, st).empty());
+    frame(layer, st);
+    const auto after = panel_.widgetRect("Sagittal##view2");
+    ASSERT_TRUE(after);
+    EXPECT_LT(after->y, before->y - 100) << "scrolled up";
+    EXPECT_LE(after->y + after->h, kH) << "the last row is on the screen now";
+    const std::vector<Action> tapped = tap(layer, st, "Sagittal##view2");
+    ASSERT_EQ(tapped.size(), 1U);
+    EXPECT_EQ(std::get<workflow::ShowSlices>(tapped[0]).second, workflow::SliceAxis::Sagittal);
+}
+
+} // namespace steerseg::test

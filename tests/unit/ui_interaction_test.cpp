@@ -1,0 +1,208 @@
+#include "render/slice_frame.hpp"
+#include "ui/interaction.hpp"
+
+#include <cmath>
+#include <gtest/gtest.h>
+
+namespace steerseg::test {
+
+using workflow::Action;
+using workflow::State;
+
+namespace {
+
+Geometry geometry() {
+    Geometry g;
+    g.dims = {64, 48, 40};
+    g.spacing = {1.0, 1.0, 2.0};
+    return g;
+}
+
+ui::SliceView view(render::ViewKind kind, const ui::Rect& rect) {
+    render::ViewParams p;
+    p.kind = kind;
+    p.size = {rect.w / 2, rect.h / 2};
+    return {render::sliceFrame(geometry(), p), p.size, rect};
+}
+
+ui::ScreenState screen() {
+    ui::ScreenState s;
+    s.layout = ui::computeLayout(1280, 800, 96.0);
+    s.slice1 = view(render::ViewKind::Axial, s.layout.slice1);
+    s.slice2 = view(render::ViewKind::Coronal, s.layout.slice2);
+    return s;
+}
+
+workflow::Status status(State state) {
+    workflow::Status st;
+    st.state = state;
+    st.scan.dims = geometry().dims;
+    st.view.first = workflow::SliceAxis::Axial;
+    st.view.second = workflow::SliceAxis::Coronal;
+    return st;
+}
+
+ui::Gesture gesture(ui::Gesture::Kind kind, glm::dvec2 at, int id = 1) {
+    ui::Gesture g;
+    g.kind = kind;
+    g.id = id;
+    g.start = at;
+    g.position = at;
+    return g;
+}
+
+glm::dvec2 centreOf(const ui::Rect& r) {
+    return {r.x + 0.5 * r.w, r.y + 0.5 * r.h};
+}
+
+int pagedBy(const std::vector<Action>& actions, workflow::SliceAxis axis) {
+    int total = 0;
+    for (const Action& a : actions) {
+        const auto* p = std::get_if<workflow::PageSlice>(&a);
+        EXPECT_NE(p, nullptr);
+        if (p != nullptr) {
+            EXPECT_EQ(p->axis, axis);
+            total += p->delta;
+        }
+    }
+    return total;
+}
+
+} // namespace
+
+TEST(UiInteraction, TapInInspectProbesTheVoxelUnderTheFinger) {
+    ui::InteractionConfig config;
+    config.probeRadiusMm = 7.5;
+    ui::Interaction in(config);
+    const ui::ScreenState s = screen();
+    const glm::dvec2 at = centreOf(s.layout.slice1) + glm::dvec2(13.0, -7.0);
+    const auto out = in.onGesture(gesture(ui::Gesture::Kind::Tap, at), s, status(State::Inspect));
+    ASSERT_EQ(out.size(), 1U);
+    const auto* probe = std::get_if<workflow::Probe>(&out[0]);
+    ASSERT_NE(probe, nullptr);
+    EXPECT_EQ(probe->radiusMm, 7.5);
+    EXPECT_NEAR(glm::length(probe->voxel - *ui::voxelAtScreen(*s.slice1, at)), 0.0, 1e-12);
+    // Axial: k is the slice axis and the tap stays on the shown slice.
+    EXPECT_EQ(probe->voxel.z, s.slice1->frame.slice);
+    // A long press in Inspect is not a probe.
+    EXPECT_TRUE(
+        in.onGesture(gesture(ui::Gesture::Kind::LongPress, at), s, status(State::Inspect)).empty());
+}
+
+TEST(UiInteraction, TapSeedsOrErasesWhileEditing) {
+    ui::Interaction in;
+    const ui::ScreenState s = screen();
+    const glm::dvec2 at = centreOf(s.layout.slice2);
+    for (State state : {State::Seeding, State::Evolving, State::Paused}) {
+        const auto seed = in.onGesture(gesture(ui::Gesture::Kind::Tap, at), s, status(state));
+        ASSERT_EQ(seed.size(), 1U);
+        const auto* add = std::get_if<workflow::AddSeed>(&seed[0]);
+        ASSERT_NE(add, nullptr);
+        EXPECT_LE(add->radius, 0.0) << "the brush radius";
+        EXPECT_NEAR(glm::length(add->voxel - *ui::voxelAtScreen(*s.slice2, at)), 0.0, 1e-12);
+
+        workflow::Status erasing = status(state);
+        erasing.eraseMode = true;
+        const auto erase = in.onGesture(gesture(ui::Gesture::Kind::Tap, at), s, erasing);
+        ASSERT_EQ(erase.size(), 1U);
+        EXPECT_TRUE(std::holds_alternative<workflow::Erase>(erase[0]));
+
+        const auto held = in.onGesture(gesture(ui::Gesture::Kind::LongPress, at), s, status(state));
+        ASSERT_EQ(held.size(), 1U);
+        EXPECT_TRUE(std::holds_alternative<workflow::Erase>(held[0]));
+    }
+    for (State state : {State::NoScan, State::Loading, State::Review, State::Exporting, State::Done,
+                        State::Error}) {
+        EXPECT_TRUE(in.onGesture(gesture(ui::Gesture::Kind::Tap, at), s, status(state)).empty())
+            << static_cast<int>(state);
+    }
+}
+
+TEST(UiInteraction, TapBesideTheScanOrOnThePanelDoesNothing) {
+    ui::Interaction in;
+    const ui::ScreenState s = screen();
+    // The axial slice is 64 x 48 mm in a taller rect: the top rows are letterbox.
+    const glm::dvec2 top(centreOf(s.layout.slice1).x, s.layout.slice1.y + 2.0);
+    EXPECT_TRUE(
+        in.onGesture(gesture(ui::Gesture::Kind::Tap, top), s, status(State::Seeding)).empty());
+    EXPECT_TRUE(in.onGesture(gesture(ui::Gesture::Kind::Tap, centreOf(s.layout.panel)), s,
+                             status(State::Seeding))
+                    .empty());
+    EXPECT_TRUE(in.onGesture(gesture(ui::Gesture::Kind::Tap, centreOf(s.layout.view3d)), s,
+                             status(State::Seeding))
+                    .empty());
+}
+
+TEST(UiInteraction, VerticalDragOnASlicePages) {
+    ui::InteractionConfig config;
+    config.pxPerSlice = 10.0;
+    ui::Interaction in(config);
+    const ui::ScreenState s = screen();
+    ui::Gesture g = gesture(ui::Gesture::Kind::Drag, centreOf(s.layout.slice1), 7);
+    std::vector<Action> all;
+    for (int i = 0; i < 7; ++i) {
+        g.delta = {1.0, -5.0}; // up, 35 px in all
+        for (const Action& a : in.onGesture(g, s, status(State::Evolving))) {
+            all.push_back(a);
+        }
+    }
+    EXPECT_EQ(pagedBy(all, workflow::SliceAxis::Axial), 3);
+    // A new drag starts from no remainder; down pages back, on the second view's axis.
+    ui::Gesture down = gesture(ui::Gesture::Kind::Drag, centreOf(s.layout.slice2), 8);
+    down.delta = {0.0, 25.0};
+    EXPECT_EQ(pagedBy(in.onGesture(down, s, status(State::Inspect)), workflow::SliceAxis::Coronal),
+              -2);
+}
+
+TEST(UiInteraction, WheelOnASlicePagesAndCarriesFractions) {
+    ui::Interaction in;
+    const ui::ScreenState s = screen();
+    ui::Gesture w = gesture(ui::Gesture::Kind::Wheel, centreOf(s.layout.slice1));
+    w.wheel = 2.0;
+    EXPECT_EQ(pagedBy(in.onGesture(w, s, status(State::Paused)), workflow::SliceAxis::Axial), 2);
+    w.wheel = 0.5;
+    EXPECT_TRUE(in.onGesture(w, s, status(State::Paused)).empty());
+    EXPECT_EQ(pagedBy(in.onGesture(w, s, status(State::Paused)), workflow::SliceAxis::Axial), 1);
+}
+
+TEST(UiInteraction, DragRotatesAndPinchOrWheelZoomsThe3dView) {
+    ui::InteractionConfig config;
+    config.degreesPerPx = 0.5;
+    config.zoomPerDetent = 1.25;
+    ui::Interaction in(config);
+    const ui::ScreenState s = screen();
+    ui::Gesture drag = gesture(ui::Gesture::Kind::Drag, centreOf(s.layout.view3d));
+    drag.delta = {10.0, -4.0};
+    const auto rotate = in.onGesture(drag, s, status(State::Review));
+    ASSERT_EQ(rotate.size(), 1U);
+    const auto* r = std::get_if<workflow::RotateView>(&rotate[0]);
+    ASSERT_NE(r, nullptr);
+    EXPECT_DOUBLE_EQ(r->yaw, 5.0);
+    EXPECT_DOUBLE_EQ(r->pitch, -2.0);
+
+    ui::Gesture pinch = gesture(ui::Gesture::Kind::Pinch, centreOf(s.layout.view3d));
+    pinch.scale = 1.5;
+    const auto zoom = in.onGesture(pinch, s, status(State::Inspect));
+    ASSERT_EQ(zoom.size(), 1U);
+    EXPECT_DOUBLE_EQ(std::get<workflow::ZoomView>(zoom[0]).factor, 1.5);
+
+    ui::Gesture wheel = gesture(ui::Gesture::Kind::Wheel, centreOf(s.layout.view3d));
+    wheel.wheel = -2.0;
+    const auto out = in.onGesture(wheel, s, status(State::Evolving));
+    ASSERT_EQ(out.size(), 1U);
+    EXPECT_NEAR(std::get<workflow::ZoomView>(out[0]).factor, 1.0 / (1.25 * 1.25), 1e-12);
+
+    EXPECT_TRUE(in.onGesture(drag, s, status(State::NoScan)).empty());
+    pinch.scale = std::nan("");
+    EXPECT_TRUE(in.onGesture(pinch, s, status(State::Inspect)).empty());
+}
+
+TEST(UiInteraction, ConfigFromDpi) {
+    const ui::InteractionConfig c = ui::interactionConfig(254.0, 4.0);
+    EXPECT_NEAR(c.pxPerSlice, 15.0, 1e-9);
+    EXPECT_EQ(c.probeRadiusMm, 4.0);
+    EXPECT_EQ(ui::interactionConfig(96.0, -1.0).probeRadiusMm,
+              ui::InteractionConfig{}.probeRadiusMm);
+}
+
+} // namespace steerseg::test

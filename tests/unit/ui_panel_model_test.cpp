@@ -1,0 +1,219 @@
+#include "ui/panel_model.hpp"
+#include "ui/view_caption.hpp"
+
+#include <algorithm>
+#include <gtest/gtest.h>
+#include <set>
+
+namespace steerseg::test {
+
+using workflow::Action;
+using workflow::State;
+
+namespace {
+
+// The variant index of each action type, by name for the messages.
+template <typename T> std::size_t indexOf() {
+    return Action(T{}).index();
+}
+
+std::set<std::size_t> kinds(const std::vector<Action>& actions) {
+    std::set<std::size_t> out;
+    for (const Action& a : actions) {
+        out.insert(a.index());
+    }
+    return out;
+}
+
+workflow::Status status(State state) {
+    workflow::Status st;
+    st.state = state;
+    st.scan.name = "sample";
+    st.scan.units = "HU";
+    st.scan.dims = {64, 64, 64};
+    st.scan.minValue = -1000.0;
+    st.scan.maxValue = 2000.0;
+    st.presets = {"CT soft tissue", "CT bone"};
+    st.canUndo = true;
+    st.canRedo = true;
+    st.hasLevelSet = true;
+    st.seeds = 2;
+    return st;
+}
+
+const std::vector<std::string> kScans{"builtin:sample", "/data/ct/CT_sarcoma.nii.gz",
+                                      "/data/dicom/head/"};
+
+} // namespace
+
+// For each state, every action the workflow offers there can be reached by touching the
+// panel (taps on the views add Probe, AddSeed, Erase, PageSlice, RotateView and ZoomView:
+// ui_interaction_test).
+TEST(UiPanelModel, EveryMeaningfulActionIsReachableByTouch) {
+    const std::size_t load = indexOf<workflow::LoadScan>();
+    const std::size_t preset = indexOf<workflow::ApplyPreset>();
+    const std::size_t set = indexOf<workflow::SetParam>();
+    const std::size_t nudge = indexOf<workflow::NudgeParam>();
+    const std::size_t select = indexOf<workflow::SelectParam>();
+    const std::size_t window = indexOf<workflow::SetWindow>();
+    const std::size_t eraseMode = indexOf<workflow::SetEraseMode>();
+    const std::size_t run = indexOf<workflow::Run>();
+    const std::size_t pause = indexOf<workflow::Pause>();
+    const std::size_t exportMask = indexOf<workflow::Export>();
+    const std::size_t undo = indexOf<workflow::Undo>();
+    const std::size_t redo = indexOf<workflow::Redo>();
+    const std::size_t restart = indexOf<workflow::Restart>();
+    const std::size_t proceed = indexOf<workflow::Proceed>();
+    const std::size_t back = indexOf<workflow::Back>();
+    const std::size_t dismiss = indexOf<workflow::Dismiss>();
+    const std::size_t show = indexOf<workflow::ShowSlices>();
+    const std::set<std::size_t> steering{preset, set,  nudge,   select, eraseMode,
+                                         undo,   redo, restart, show};
+    const auto with = [](std::set<std::size_t> s, std::initializer_list<std::size_t> more) {
+        s.insert(more);
+        return s;
+    };
+    const std::vector<std::pair<State, std::set<std::size_t>>> expected{
+        {State::NoScan, {load}},
+        {State::Loading, {}},
+        {State::Inspect, {load, preset, set, nudge, select, window, undo, redo, show, proceed}},
+        {State::Seeding, with(steering, {run, back})},
+        {State::Evolving, with(steering, {pause, proceed})},
+        {State::Paused, with(steering, {run, proceed})},
+        {State::Review, {show, back, proceed}},
+        {State::Exporting, {}},
+        {State::Done, {load, exportMask, back, show}},
+        {State::Error, {dismiss}},
+    };
+    for (const auto& [state, want] : expected) {
+        const ui::PanelModel m = ui::buildPanelModel(status(state), kScans);
+        const std::set<std::size_t> got = kinds(ui::reachableActions(m));
+        for (std::size_t k : want) {
+            EXPECT_TRUE(got.count(k)) << ui::stateLabel(state) << " lacks action #" << k;
+        }
+        // Nothing is offered where it means nothing (a panel that offered everything
+        // everywhere would pass the check above).
+        for (std::size_t k : got) {
+            EXPECT_TRUE(want.count(k)) << ui::stateLabel(state) << " offers action #" << k;
+        }
+    }
+}
+
+TEST(UiPanelModel, ProceedIsLabelledForTheState) {
+    EXPECT_EQ(ui::proceedLabel(State::Inspect), "Seed");
+    EXPECT_EQ(ui::proceedLabel(State::Seeding), "Run");
+    EXPECT_EQ(ui::proceedLabel(State::Evolving), "Review");
+    EXPECT_EQ(ui::proceedLabel(State::Paused), "Review");
+    EXPECT_EQ(ui::proceedLabel(State::Review), "Export");
+    EXPECT_EQ(ui::proceedLabel(State::NoScan), "");
+    const ui::PanelModel seeding = ui::buildPanelModel(status(State::Seeding), kScans);
+    const auto run = std::find_if(seeding.nav.begin(), seeding.nav.end(),
+                                  [](const ui::PanelButton& b) { return b.label == "Run"; });
+    ASSERT_NE(run, seeding.nav.end());
+    EXPECT_TRUE(std::holds_alternative<workflow::Run>(run->action));
+    const ui::PanelModel review = ui::buildPanelModel(status(State::Review), kScans);
+    EXPECT_EQ(review.nav.back().label, "Export##proceed");
+}
+
+TEST(UiPanelModel, ParametersReadoutsAndToggles) {
+    workflow::Status st = status(State::Paused);
+    st.selected = workflow::Param::Epsilon;
+    st.params.T = 40.0F;
+    st.params.eps = 25.0F;
+    st.params.alpha = 0.9F;
+    st.radius = 4.0;
+    st.iterations = 272;
+    st.volumeMl = 7.126;
+    st.converged = true;
+    st.eraseMode = true;
+    st.ranges[static_cast<std::size_t>(workflow::Param::Target)] = {-200.0, 300.0, 1.0};
+    const ui::PanelModel m = ui::buildPanelModel(st, kScans);
+    ASSERT_EQ(m.params.size(), 4U);
+    EXPECT_EQ(m.params[0].range.min, -200.0);
+    EXPECT_EQ(m.params[0].value, 40.0);
+    EXPECT_LT(m.params[1].range.min, m.params[1].range.max) << "a range even where none was given";
+    EXPECT_FALSE(m.params[0].selected);
+    EXPECT_TRUE(m.params[1].selected);
+    EXPECT_EQ(m.params[3].label, "brush");
+    EXPECT_EQ(m.params[3].value, 4.0);
+    const auto readout = [&](const std::string& label) {
+        for (const ui::Readout& r : m.readouts) {
+            if (r.label == label) {
+                return r.value;
+            }
+        }
+        return std::string("(none)");
+    };
+    EXPECT_EQ(readout("T"), "40.0 HU");
+    EXPECT_EQ(readout("alpha"), "0.90");
+    EXPECT_EQ(readout("iter"), "272");
+    EXPECT_EQ(readout("ml"), "7.13");
+    EXPECT_EQ(readout("done"), "yes");
+    EXPECT_EQ(m.banner, "Paused");
+    EXPECT_EQ(m.scanName, "sample");
+    const auto erase = std::find_if(m.tools.begin(), m.tools.end(), [](const ui::PanelButton& b) {
+        return std::holds_alternative<workflow::SetEraseMode>(b.action);
+    });
+    ASSERT_NE(erase, m.tools.end());
+    EXPECT_TRUE(erase->active);
+    EXPECT_FALSE(std::get<workflow::SetEraseMode>(erase->action).erase) << "a tap turns it off";
+}
+
+TEST(UiPanelModel, UndoGreyedWithNothingToUndo) {
+    workflow::Status st = status(State::Seeding);
+    st.canUndo = false;
+    const ui::PanelModel m = ui::buildPanelModel(st, kScans);
+    const std::set<std::size_t> got = kinds(ui::reachableActions(m));
+    EXPECT_FALSE(got.count(indexOf<workflow::Undo>()));
+    EXPECT_TRUE(got.count(indexOf<workflow::Redo>()));
+}
+
+TEST(UiPanelModel, ScansAndViews) {
+    const ui::PanelModel m = ui::buildPanelModel(status(State::NoScan), kScans);
+    ASSERT_EQ(m.scans.size(), 3U);
+    EXPECT_EQ(m.scans[0].label, "Load Sample##scan0");
+    EXPECT_EQ(std::get<workflow::LoadScan>(m.scans[1].action).path, kScans[1]);
+    EXPECT_EQ(ui::scanLabel("/data/ct/CT_sarcoma.nii.gz"), "CT_sarcoma.nii.gz");
+    EXPECT_EQ(ui::scanLabel("/data/dicom/head/"), "head");
+    EXPECT_EQ(ui::scanLabel(""), "");
+
+    workflow::Status st = status(State::Inspect);
+    st.view.first = workflow::SliceAxis::Axial;
+    st.view.second = workflow::SliceAxis::Coronal;
+    const ui::PanelModel inspect = ui::buildPanelModel(st, kScans);
+    ASSERT_EQ(inspect.views.size(), 6U);
+    EXPECT_TRUE(inspect.views[0].active);
+    const auto sagittalFirst = std::get<workflow::ShowSlices>(inspect.views[2].action);
+    EXPECT_EQ(sagittalFirst.first, workflow::SliceAxis::Sagittal);
+    EXPECT_EQ(sagittalFirst.second, workflow::SliceAxis::Coronal);
+    EXPECT_TRUE(inspect.views[4].active);
+    ASSERT_TRUE(inspect.window);
+    EXPECT_EQ(inspect.window->width, 3000.0) << "unset window: the whole range";
+
+    workflow::Status loading = status(State::Loading);
+    loading.loadProgress = 0.4;
+    const ui::PanelModel lm = ui::buildPanelModel(loading, kScans);
+    ASSERT_TRUE(lm.progress);
+    EXPECT_EQ(*lm.progress, 0.4);
+
+    workflow::Status error = status(State::Error);
+    error.message = "CT.nii: not a NIfTI file";
+    const ui::PanelModel em = ui::buildPanelModel(error, kScans);
+    EXPECT_TRUE(em.error);
+    EXPECT_EQ(em.message, error.message);
+}
+
+TEST(UiViewCaption, NamesTheViewAndTheSlice) {
+    render::SliceFrame f;
+    f.sliceAxis = 2;
+    f.slice = 40;
+    EXPECT_EQ(ui::view3dCaption(), "3D");
+    EXPECT_EQ(ui::contourCaption(workflow::SliceAxis::Axial, f, {64, 64, 80}),
+              "Axial  slice 41/80");
+    f.sliceAxis = 1;
+    f.slice = 11;
+    EXPECT_EQ(ui::speedCaption(workflow::SliceAxis::Coronal, f, {64, 80, 80}),
+              "Coronal \u2014 speed  12/80");
+}
+
+} // namespace steerseg::test

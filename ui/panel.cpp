@@ -1,0 +1,311 @@
+#include "ui/panel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <imgui.h>
+#include <imgui_internal.h> // GetActiveID, the window's MoveId: touch scrolling
+
+namespace steerseg::ui {
+
+namespace {
+
+using workflow::Action;
+
+const ImVec4 kActive(0.85F, 0.62F, 0.10F, 1.0F); // the selected parameter, toggles on
+const ImVec4 kBannerOk(0.16F, 0.36F, 0.58F, 1.0F);
+const ImVec4 kBannerRun(0.14F, 0.50F, 0.22F, 1.0F);
+const ImVec4 kBannerError(0.70F, 0.14F, 0.12F, 1.0F);
+const ImVec4 kErrorText(1.0F, 0.45F, 0.40F, 1.0F);
+const ImVec4 kNav(0.18F, 0.45F, 0.26F, 1.0F); // the workflow's next and previous step
+
+class Drawer {
+  public:
+    Drawer(const ImGuiLayer& layer, std::map<std::string, Rect, std::less<>>& rects,
+           std::vector<Action>& actions)
+        : layer_(layer), rects_(rects), actions_(actions),
+          touch_(static_cast<float>(layer.touchPx())) {}
+
+    void banner(const PanelModel& m, workflow::State state) {
+        const ImVec4 colour = m.error                              ? kBannerError
+                              : state == workflow::State::Evolving ? kBannerRun
+                                                                   : kBannerOk;
+        ImDrawList* list = ImGui::GetWindowDrawList();
+        const ImVec2 at = ImGui::GetCursorScreenPos();
+        const float w = ImGui::GetContentRegionAvail().x;
+        const float h = std::max(touch_, largeSize() * 1.5F);
+        list->AddRectFilled(at, ImVec2(at.x + w, at.y + h), ImGui::GetColorU32(colour),
+                            ImGui::GetStyle().FrameRounding);
+        ImGui::PushFont(layer_.largeFont());
+        const ImVec2 text = ImGui::CalcTextSize(m.banner.c_str());
+        list->AddText(ImVec2(at.x + 0.5F * (w - text.x), at.y + 0.5F * (h - text.y)),
+                      IM_COL32_WHITE, m.banner.c_str());
+        ImGui::PopFont();
+        ImGui::Dummy(ImVec2(w, h));
+        if (!m.scanName.empty()) {
+            ImGui::TextDisabled("%s", m.scanName.c_str());
+        }
+        ImGui::TextWrapped("%s", m.hint.c_str());
+        if (!m.message.empty()) {
+            if (m.error) {
+                ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
+            }
+            ImGui::TextWrapped("%s", m.message.c_str());
+            if (m.error) {
+                ImGui::PopStyleColor();
+            }
+        }
+    }
+
+    void progress(double fraction) {
+        const bool known = fraction >= 0.0 && std::isfinite(fraction);
+        const double shown = known ? std::min(fraction, 1.0) : 0.0;
+        char overlay[32];
+        if (known) {
+            std::snprintf(overlay, sizeof overlay, "%.0f %%", 100.0 * shown);
+        } else {
+            std::snprintf(overlay, sizeof overlay, "reading...");
+        }
+        ImGui::ProgressBar(static_cast<float>(shown), ImVec2(-FLT_MIN, touch_), overlay);
+    }
+
+    // Two label/value pairs a row, the values large.
+    void readouts(const std::vector<Readout>& items) {
+        if (items.empty() || !ImGui::BeginTable("##readouts", 4)) {
+            return;
+        }
+        ImGui::TableSetupColumn("##l1", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("##v1", ImGuiTableColumnFlags_WidthStretch);
+        ImGui::TableSetupColumn("##l2", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("##v2", ImGuiTableColumnFlags_WidthStretch);
+        for (std::size_t i = 0; i < items.size(); ++i) {
+            if (i % 2 == 0) {
+                ImGui::TableNextRow();
+            }
+            ImGui::TableNextColumn();
+            ImGui::TextDisabled("%s", items[i].label.c_str());
+            ImGui::TableNextColumn();
+            ImGui::PushFont(layer_.largeFont());
+            ImGui::TextUnformatted(items[i].value.c_str());
+            ImGui::PopFont();
+        }
+        ImGui::EndTable();
+    }
+
+    // [name] [-] [slider] [+]: the name selects the parameter for the knob.
+    void param(const ParamRow& row) {
+        const std::string id = paramId(row.param);
+        // Tighter gaps than elsewhere: four targets share the row.
+        const float sp = std::min(ImGui::GetStyle().ItemSpacing.x, 0.12F * touch_);
+        ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(sp, ImGui::GetStyle().ItemSpacing.y));
+        // A narrow panel (high DPI) gives the name what the other three targets leave.
+        const float rest = ImGui::GetContentRegionAvail().x - 3.0F * (touch_ + sp);
+        const float nameW = std::max(touch_, std::min(1.6F * touch_, rest));
+        button({row.label + "##select" + id, workflow::SelectParam{row.param}, row.selected},
+               ImVec2(nameW, touch_), "select##" + id);
+        ImGui::SameLine();
+        button({"-##" + id, workflow::NudgeParam{row.param, -1.0}}, ImVec2(touch_, touch_));
+        ImGui::SameLine();
+        double value = std::clamp(row.value, row.range.min, row.range.max);
+        ImGui::SetNextItemWidth(std::max(touch_, ImGui::GetContentRegionAvail().x - touch_ - sp));
+        const float padY = std::max(0.0F, 0.5F * (touch_ - ImGui::GetFontSize()));
+        ImGui::PushStyleVar(ImGuiStyleVar_FramePadding,
+                            ImVec2(ImGui::GetStyle().FramePadding.x, padY));
+        const std::string slider = "##slider" + id;
+        const char* format = row.param == workflow::Param::Alpha ? "%.2f" : "%.1f";
+        if (ImGui::SliderScalar(slider.c_str(), ImGuiDataType_Double, &value, &row.range.min,
+                                &row.range.max, format)) {
+            actions_.emplace_back(workflow::SetParam{row.param, value});
+        }
+        ImGui::PopStyleVar();
+        record(slider);
+        ImGui::SameLine();
+        button({"+##" + id, workflow::NudgeParam{row.param, 1.0}}, ImVec2(touch_, touch_));
+        ImGui::PopStyleVar();
+    }
+
+    void window(const WindowRow& w) {
+        const float padY = std::max(0.0F, 0.5F * (touch_ - ImGui::GetFontSize()));
+        ImGui::PushStyleVar(ImGuiStyleVar_FramePadding,
+                            ImVec2(ImGui::GetStyle().FramePadding.x, padY));
+        double level = w.level;
+        double width = w.width;
+        const double widthMin = 1.0;
+        const double widthMax = std::max(w.max - w.min, 2.0);
+        ImGui::SetNextItemWidth(-FLT_MIN);
+        const bool a = ImGui::SliderScalar("##level", ImGuiDataType_Double, &level, &w.min, &w.max,
+                                           "level %.0f");
+        record("##level");
+        ImGui::SetNextItemWidth(-FLT_MIN);
+        const bool b = ImGui::SliderScalar("##width", ImGuiDataType_Double, &width, &widthMin,
+                                           &widthMax, "width %.0f");
+        record("##width");
+        ImGui::PopStyleVar();
+        if (a || b) {
+            actions_.emplace_back(workflow::SetWindow{level, width});
+        }
+    }
+
+    // Buttons in rows of up to `perRow`, each at least a touch target wide.
+    void grid(const std::vector<PanelButton>& buttons, int perRow, const ImVec4* colour = nullptr) {
+        const float sp = ImGui::GetStyle().ItemSpacing.x;
+        const float avail = ImGui::GetContentRegionAvail().x;
+        const int fit = std::max(1, static_cast<int>((avail + sp) / (touch_ + sp)));
+        const int n = std::max(1, std::min(perRow, fit));
+        const float w =
+            std::max(touch_, (avail - sp * static_cast<float>(n - 1)) / static_cast<float>(n));
+        for (std::size_t i = 0; i < buttons.size(); ++i) {
+            if (i % static_cast<std::size_t>(n) != 0) {
+                ImGui::SameLine();
+            }
+            if (colour != nullptr) {
+                ImGui::PushStyleColor(ImGuiCol_Button, *colour);
+            }
+            button(buttons[i], ImVec2(w, touch_));
+            if (colour != nullptr) {
+                ImGui::PopStyleColor();
+            }
+        }
+    }
+
+    void heading(const char* text) {
+        ImGui::Spacing();
+        ImGui::TextDisabled("%s", text);
+    }
+
+  private:
+    static std::string paramId(workflow::Param p) {
+        switch (p) {
+        case workflow::Param::Target:
+            return "T";
+        case workflow::Param::Epsilon:
+            return "eps";
+        case workflow::Param::Alpha:
+            return "alpha";
+        case workflow::Param::Radius:
+            return "radius";
+        }
+        return "?";
+    }
+
+    float largeSize() const {
+        return layer_.largeFont() != nullptr ? layer_.largeFont()->FontSize : ImGui::GetFontSize();
+    }
+
+    void record(const std::string& label) {
+        const ImVec2 lo = ImGui::GetItemRectMin();
+        const ImVec2 hi = ImGui::GetItemRectMax();
+        rects_[label] = Rect{static_cast<int>(lo.x), static_cast<int>(lo.y),
+                             static_cast<int>(hi.x - lo.x), static_cast<int>(hi.y - lo.y)};
+    }
+
+    bool button(const PanelButton& b, const ImVec2& size, const std::string& key = {}) {
+        ImGui::BeginDisabled(!b.enabled);
+        if (b.active) {
+            ImGui::PushStyleColor(ImGuiCol_Button, kActive);
+            ImGui::PushStyleColor(ImGuiCol_ButtonHovered, kActive);
+        }
+        const bool pressed = ImGui::Button(b.label.c_str(), size);
+        if (b.active) {
+            ImGui::PopStyleColor(2);
+        }
+        ImGui::EndDisabled();
+        record(key.empty() ? b.label : key);
+        if (pressed && b.enabled) {
+            actions_.push_back(b.action);
+        }
+        return pressed;
+    }
+
+    const ImGuiLayer& layer_;
+    std::map<std::string, Rect, std::less<>>& rects_;
+    std::vector<Action>& actions_;
+    float touch_;
+};
+
+} // namespace
+
+std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status& status,
+                                const Rect& rect, const std::vector<std::string>& scans) {
+    std::vector<Action> actions;
+    rects_.clear();
+    if (rect.empty()) {
+        return actions;
+    }
+    const PanelModel model = buildPanelModel(status, scans);
+    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(rect.x), static_cast<float>(rect.y)));
+    ImGui::SetNextWindowSize(ImVec2(static_cast<float>(rect.w), static_cast<float>(rect.h)));
+    constexpr ImGuiWindowFlags flags =
+        ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
+        ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+        ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollbar;
+    if (ImGui::Begin("##steerseg_panel", nullptr, flags)) {
+        // No scrollbar, so no widget moves when one appears; the wheel scrolls, and (ImGui
+        // 1.86 knows no touch scrolling) so does a finger dragging the panel's background.
+        // A press on the background makes the window's move id active (even with NoMove).
+        if (ImGui::GetActiveID() == ImGui::GetCurrentWindow()->MoveId &&
+            ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+            ImGui::SetScrollY(ImGui::GetScrollY() - ImGui::GetIO().MouseDelta.y);
+        }
+        Drawer d(layer, rects_, actions);
+        // A wide panel (below the views on a portrait screen) puts the state and readouts
+        // beside the controls instead of scrolling them away.
+        const bool twoColumns =
+            rect.w > rect.h && rect.w >= 8 * layer.touchPx() && ImGui::BeginTable("##columns", 2);
+        if (twoColumns) {
+            ImGui::TableNextColumn();
+        }
+        d.banner(model, status.state);
+        if (model.progress) {
+            d.progress(*model.progress);
+        }
+        if (!model.nav.empty()) {
+            d.grid(model.nav, static_cast<int>(model.nav.size()), &kNav);
+        }
+        d.readouts(model.readouts);
+        if (!model.tools.empty()) {
+            d.heading("Actions");
+            d.grid(model.tools, 3);
+        }
+        if (twoColumns) {
+            ImGui::TableNextColumn();
+        }
+        if (!model.params.empty()) {
+            d.heading("Parameters (tap a name for the knob)");
+            for (const ParamRow& row : model.params) {
+                d.param(row);
+            }
+        }
+        if (!model.presets.empty()) {
+            d.heading("Presets");
+            d.grid(model.presets, 2);
+        }
+        if (model.window) {
+            d.heading("Window");
+            d.window(*model.window);
+        }
+        if (!model.views.empty()) {
+            d.heading("Contour view / speed view");
+            d.grid(model.views, 3);
+        }
+        if (!model.scans.empty()) {
+            d.heading("Scans");
+            d.grid(model.scans, 1);
+        }
+        if (twoColumns) {
+            ImGui::EndTable();
+        }
+    }
+    ImGui::End();
+    return actions;
+}
+
+std::optional<Rect> Panel::widgetRect(std::string_view label) const {
+    const auto it = rects_.find(label);
+    if (it == rects_.end()) {
+        return std::nullopt;
+    }
+    return it->second;
+}
+
+} // namespace steerseg::ui

@@ -1,0 +1,312 @@
+#include "ui/panel_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+namespace steerseg::ui {
+
+namespace {
+
+using workflow::Action;
+using workflow::Param;
+using workflow::SliceAxis;
+using workflow::State;
+
+std::string fixed(double value, int decimals) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    return text;
+}
+
+bool editing(State s) {
+    return s == State::Seeding || s == State::Evolving || s == State::Paused;
+}
+
+bool scanLoaded(State s) {
+    return s != State::NoScan && s != State::Loading;
+}
+
+std::string hintFor(State s) {
+    switch (s) {
+    case State::NoScan:
+        return "Choose a scan to load.";
+    case State::Loading:
+        return "Reading the scan...";
+    case State::Inspect:
+        return "Tap a slice to probe the tissue, or pick a preset.";
+    case State::Seeding:
+        return "Tap a slice to place a seed; hold to erase.";
+    case State::Evolving:
+        return "Growing. Steer with the parameters; tap to add, hold to erase.";
+    case State::Paused:
+        return "Paused. Steer, then run again or review.";
+    case State::Review:
+        return "Check the result, then export.";
+    case State::Exporting:
+        return "Writing the mask...";
+    case State::Done:
+        return "Exported. Load the next scan.";
+    case State::Error:
+        return "Something went wrong; dismiss to go on.";
+    }
+    return {};
+}
+
+workflow::ParamRange rangeFor(const workflow::Status& st, Param p) {
+    workflow::ParamRange r = st.ranges[static_cast<std::size_t>(p)];
+    if (r.max > r.min && std::isfinite(r.min) && std::isfinite(r.max)) {
+        return r;
+    }
+    // The workflow gave no range yet: one that at least spans the scan.
+    const double lo = st.scan.minValue;
+    const double hi = std::max(st.scan.maxValue, lo + 1.0);
+    switch (p) {
+    case Param::Target:
+        return {lo, hi, (hi - lo) / 200.0};
+    case Param::Epsilon:
+        return {0.0, hi - lo, (hi - lo) / 400.0};
+    case Param::Alpha:
+        return {0.0, 1.0, 0.01};
+    case Param::Radius:
+        return {1.0, 30.0, 0.5};
+    }
+    return r;
+}
+
+double valueOf(const workflow::Status& st, Param p) {
+    switch (p) {
+    case Param::Target:
+        return static_cast<double>(st.params.T);
+    case Param::Epsilon:
+        return static_cast<double>(st.params.eps);
+    case Param::Alpha:
+        return static_cast<double>(st.params.alpha);
+    case Param::Radius:
+        return st.radius;
+    }
+    return 0.0;
+}
+
+const char* axisName(SliceAxis a) {
+    switch (a) {
+    case SliceAxis::Axial:
+        return "Axial";
+    case SliceAxis::Coronal:
+        return "Coronal";
+    case SliceAxis::Sagittal:
+        return "Sagittal";
+    }
+    return "?";
+}
+
+void addReadouts(const workflow::Status& st, PanelModel& m) {
+    const std::string units = st.scan.units.empty() ? "" : " " + st.scan.units;
+    m.readouts.push_back({"T", fixed(static_cast<double>(st.params.T), 1) + units});
+    m.readouts.push_back({"eps", fixed(static_cast<double>(st.params.eps), 1) + units});
+    m.readouts.push_back({"alpha", fixed(static_cast<double>(st.params.alpha), 2)});
+    m.readouts.push_back({"iter", std::to_string(st.iterations)});
+    m.readouts.push_back({"time", fixed(st.evolvedTime, 1)});
+    m.readouts.push_back({"ml", fixed(st.volumeMl, 2)});
+    m.readouts.push_back({"done", st.converged ? "yes" : "no"});
+}
+
+} // namespace
+
+std::string stateLabel(State s) {
+    switch (s) {
+    case State::NoScan:
+        return "No scan";
+    case State::Loading:
+        return "Loading";
+    case State::Inspect:
+        return "Inspect";
+    case State::Seeding:
+        return "Seeding";
+    case State::Evolving:
+        return "Evolving";
+    case State::Paused:
+        return "Paused";
+    case State::Review:
+        return "Review";
+    case State::Exporting:
+        return "Exporting";
+    case State::Done:
+        return "Done";
+    case State::Error:
+        return "Error";
+    }
+    return "?";
+}
+
+std::string paramLabel(Param p) {
+    switch (p) {
+    case Param::Target:
+        return "T";
+    case Param::Epsilon:
+        return "eps";
+    case Param::Alpha:
+        return "alpha";
+    case Param::Radius:
+        return "brush";
+    }
+    return "?";
+}
+
+std::string proceedLabel(State s) {
+    switch (s) {
+    case State::Inspect:
+        return "Seed";
+    case State::Seeding:
+        return "Run";
+    case State::Evolving:
+    case State::Paused:
+        return "Review";
+    case State::Review:
+        return "Export";
+    default:
+        return {};
+    }
+}
+
+std::string scanLabel(const std::string& path) {
+    if (path == "builtin:sample") {
+        return "Sample";
+    }
+    std::filesystem::path p(path);
+    if (!p.has_filename()) {
+        p = p.parent_path(); // a folder given with its trailing slash
+    }
+    const std::string name = p.filename().string();
+    return name.empty() ? path : name;
+}
+
+PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::string>& scans) {
+    PanelModel m;
+    const State s = st.state;
+    m.banner = stateLabel(s);
+    m.hint = hintFor(s);
+    m.message = st.message;
+    m.error = s == State::Error;
+    if (s == State::Done && !st.exportedPath.empty() && m.message.empty()) {
+        m.message = "Saved to " + st.exportedPath;
+    }
+    if (s == State::Loading) {
+        m.progress = st.loadProgress;
+    }
+    if (scanLoaded(s) && s != State::Error) {
+        m.scanName = st.scan.name;
+        addReadouts(st, m);
+    }
+
+    if (s == State::NoScan || s == State::Inspect || s == State::Done) {
+        for (std::size_t i = 0; i < scans.size(); ++i) {
+            // The index keeps two scans of the same file name apart as widgets.
+            m.scans.push_back({"Load " + scanLabel(scans[i]) + "##scan" + std::to_string(i),
+                               workflow::LoadScan{scans[i]}});
+        }
+    }
+
+    if (s == State::Inspect || editing(s)) {
+        std::vector<Param> shown{Param::Target, Param::Epsilon, Param::Alpha};
+        if (editing(s)) {
+            shown.push_back(Param::Radius);
+        }
+        for (Param p : shown) {
+            ParamRow row;
+            row.param = p;
+            row.label = paramLabel(p);
+            row.value = valueOf(st, p);
+            row.range = rangeFor(st, p);
+            row.selected = st.selected == p;
+            m.params.push_back(row);
+        }
+        for (const std::string& preset : st.presets) {
+            // The suffix keeps a preset named like a button ("Undo") a widget of its own.
+            m.presets.push_back(
+                {preset + "##preset", workflow::ApplyPreset{preset}, preset == st.preset});
+        }
+    }
+
+    if (s == State::Inspect) {
+        WindowRow w;
+        w.min = st.scan.minValue;
+        w.max = std::max(st.scan.maxValue, st.scan.minValue + 1.0);
+        w.width = st.view.windowWidth > 0.0 ? st.view.windowWidth : w.max - w.min;
+        w.level = st.view.windowWidth > 0.0 ? st.view.windowLevel : 0.5 * (w.min + w.max);
+        m.window = w;
+    }
+
+    if (editing(s)) {
+        // In Seeding the forward button runs (below); one Run button, not two.
+        if (s == State::Evolving) {
+            m.tools.push_back({"Pause", workflow::Pause{}});
+        } else if (s == State::Paused) {
+            m.tools.push_back({"Run", workflow::Run{}});
+        }
+        m.tools.push_back({st.eraseMode ? "Erase: on" : "Erase: off",
+                           workflow::SetEraseMode{!st.eraseMode}, st.eraseMode});
+    }
+    if (s == State::Inspect || editing(s)) {
+        m.tools.push_back({"Undo", workflow::Undo{}, false, st.canUndo});
+        m.tools.push_back({"Redo", workflow::Redo{}, false, st.canRedo});
+    }
+    if (editing(s)) {
+        m.tools.push_back({"Restart", workflow::Restart{}, false, st.hasLevelSet || st.seeds > 0});
+    }
+    if (s == State::Done) {
+        m.tools.push_back({"Export again", workflow::Export{}});
+    }
+
+    if (scanLoaded(s) && s != State::Exporting && s != State::Error) {
+        for (int view = 0; view < 2; ++view) {
+            for (SliceAxis a : {SliceAxis::Axial, SliceAxis::Coronal, SliceAxis::Sagittal}) {
+                workflow::ShowSlices show{st.view.first, st.view.second};
+                (view == 0 ? show.first : show.second) = a;
+                const bool current = (view == 0 ? st.view.first : st.view.second) == a;
+                m.views.push_back({std::string(axisName(a)) + "##view" + std::to_string(view + 1),
+                                   show, current});
+            }
+        }
+    }
+
+    if (s == State::Error) {
+        m.nav.push_back({"Dismiss", workflow::Dismiss{}});
+    }
+    if (s == State::Seeding) {
+        m.nav.push_back({"Back", workflow::Back{}});
+    } else if (s == State::Review || s == State::Done) {
+        m.nav.push_back({s == State::Review ? "Back: steer" : "Back: review", workflow::Back{}});
+    }
+    if (s == State::Seeding) {
+        m.nav.push_back({"Run", workflow::Run{}});
+    } else if (const std::string label = proceedLabel(s); !label.empty()) {
+        m.nav.push_back({label + "##proceed", workflow::Proceed{}});
+    }
+    return m;
+}
+
+std::vector<Action> reachableActions(const PanelModel& m) {
+    std::vector<Action> out;
+    for (const auto* list : {&m.scans, &m.presets, &m.tools, &m.views, &m.nav}) {
+        for (const PanelButton& b : *list) {
+            if (b.enabled) {
+                out.push_back(b.action);
+            }
+        }
+    }
+    for (const ParamRow& row : m.params) {
+        out.emplace_back(workflow::SelectParam{row.param});
+        out.emplace_back(workflow::NudgeParam{row.param, -1.0});
+        out.emplace_back(workflow::NudgeParam{row.param, 1.0});
+        out.emplace_back(workflow::SetParam{row.param, row.range.min});
+        out.emplace_back(workflow::SetParam{row.param, row.range.max});
+    }
+    if (m.window) {
+        out.emplace_back(workflow::SetWindow{m.window->level, m.window->width});
+    }
+    return out;
+}
+
+} // namespace steerseg::ui

@@ -1,0 +1,79 @@
+#pragma once
+
+// What the panel offers in the current state, as plain data: the banner, the readouts, the
+// parameter rows and every button with the action it emits. panel.cpp draws it with ImGui;
+// tests read it to check that every action the workflow offers in a state is reachable by
+// touch alone.
+#include "workflow/action.hpp"
+#include "workflow/status.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace steerseg::ui {
+
+struct PanelButton {
+    std::string label; // unique within the panel (it is the widget's id)
+    workflow::Action action;
+    bool active = false; // drawn highlighted (a toggle that is on, the selected preset)
+    bool enabled = true; // drawn greyed out and inert (Undo with nothing to undo)
+};
+
+// A steerable parameter: tapping its name selects it for the knob (SelectParam), -/+ nudge it
+// by one fine step (NudgeParam), the slider sets it (SetParam).
+struct ParamRow {
+    workflow::Param param = workflow::Param::Target;
+    std::string label; // "T", "eps", "alpha", "brush"
+    double value = 0.0;
+    workflow::ParamRange range;
+    bool selected = false;
+};
+
+// Window/level sliders (Inspect): SetWindow.
+struct WindowRow {
+    double level = 0.0;
+    double width = 1.0;
+    double min = 0.0; // the scan's value range, for the sliders' ends
+    double max = 1.0;
+};
+
+struct Readout {
+    std::string label;
+    std::string value;
+};
+
+struct PanelModel {
+    std::string banner; // the state, in the operator's words (the large state readout)
+    std::string scanName;
+    std::string hint; // what to do next
+    std::string message;
+    bool error = false;
+    std::optional<double> progress; // Loading: 0..1, < 0 when unknown
+    std::vector<Readout> readouts;
+    std::vector<ParamRow> params;
+    std::optional<WindowRow> window;
+    std::vector<PanelButton> scans;   // LoadScan, one per scan
+    std::vector<PanelButton> presets; // ApplyPreset
+    std::vector<PanelButton> tools;   // Run/Pause, erase mode, Undo, Redo, Restart, Export ...
+    std::vector<PanelButton> views;   // ShowSlices
+    std::vector<PanelButton> nav;     // Back, Proceed (labelled for the state), Dismiss
+};
+
+// `scans`: what the Load list offers ("builtin:sample" and the paths the kiosk passes in).
+PanelModel buildPanelModel(const workflow::Status& status, const std::vector<std::string>& scans);
+
+// Every action a touch on the panel can emit (enabled buttons, and for each parameter row
+// SelectParam, NudgeParam -1/+1 and SetParam at its ends; SetWindow for the window row).
+std::vector<workflow::Action> reachableActions(const PanelModel& model);
+
+// The operator's words for a state ("Seeding") and a parameter ("T", "brush"), and the label of the
+// Proceed button in a state ("Seed", "Run", "Review", "Export"; empty where Proceed means
+// nothing).
+std::string stateLabel(workflow::State state);
+std::string paramLabel(workflow::Param param);
+std::string proceedLabel(workflow::State state);
+// A scan's name for its button: the file or folder name, "Sample" for builtin:sample.
+std::string scanLabel(const std::string& path);
+
+} // namespace steerseg::ui

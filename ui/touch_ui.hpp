@@ -1,0 +1,54 @@
+#pragma once
+
+// The kiosk's whole touch UI in one object: pointer events go both to ImGui (the panel) and to
+// the gesture recognizer (the views); each frame draws the panel and the captions and returns
+// the actions of both. The kiosk's frame loop:
+//   for (event : events) ui.feed(rotation.toLogical(event), screen, status, actions);
+//   <render the views into screen's rects>
+//   append(actions, ui.drawFrame(logicalSize, now, screen, status));
+#include "ui/gestures.hpp"
+#include "ui/imgui_layer.hpp"
+#include "ui/interaction.hpp"
+#include "ui/panel.hpp"
+#include "ui/screen_state.hpp"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace steerseg::ui {
+
+struct TouchUiOptions {
+    double dpi = 96.0;
+    double probeRadiusMm = 5.0;
+    double longPressMs = 600.0;
+    std::string fontPath;           // "" = DejaVuSans
+    std::vector<std::string> scans; // the Load list: "builtin:sample" and paths
+};
+
+class TouchUi {
+  public:
+    // Needs a current GLES 3 context (see ImGuiLayer).
+    explicit TouchUi(const TouchUiOptions& options);
+
+    // One event in logical pixels: the view gestures it completes append their actions.
+    void feed(const platform::InputEvent& event, const ScreenState& screen,
+              const workflow::Status& status, std::vector<workflow::Action>& out);
+    // Long presses due by `time`, the panel and the captions, drawn into the bound framebuffer.
+    std::vector<workflow::Action> drawFrame(const glm::ivec2& screenSize, double time,
+                                            const ScreenState& screen,
+                                            const workflow::Status& status);
+
+    void setScans(std::vector<std::string> scans) { scans_ = std::move(scans); }
+    [[nodiscard]] const ImGuiLayer& layer() const { return layer_; }
+    [[nodiscard]] const Panel& panel() const { return panel_; }
+
+  private:
+    ImGuiLayer layer_;
+    GestureRecognizer gestures_;
+    Interaction interaction_;
+    Panel panel_;
+    std::vector<std::string> scans_;
+};
+
+} // namespace steerseg::ui
