@@ -70,9 +70,9 @@ void ScreenCompositor::begin(const glm::vec3& background) {
 }
 
 void ScreenCompositor::drawPicture(unsigned int texture, const glm::ivec2& pictureSize,
-                                   const ScreenRect& rect) {
-    if (texture == 0 || pictureSize.x <= 0 || pictureSize.y <= 0 || rect.width <= 0 ||
-        rect.height <= 0) {
+                                   const ui::Rect& rect) {
+    if (texture == 0 || pictureSize.x <= 0 || pictureSize.y <= 0 || rect.w <= 0 ||
+        rect.h <= 0) {
         return;
     }
     gpu::GlStateGuard guard;
@@ -84,9 +84,9 @@ void ScreenCompositor::drawPicture(unsigned int texture, const glm::ivec2& pictu
     glDisable(GL_SCISSOR_TEST);
     // Row 0 of the picture is its top; GL counts rows from the bottom: the blit flips.
     const int top = size_.y - rect.y;
-    const int bottom = size_.y - rect.y - rect.height;
-    const bool exact = pictureSize.x == rect.width && pictureSize.y == rect.height;
-    glBlitFramebuffer(0, 0, pictureSize.x, pictureSize.y, rect.x, top, rect.x + rect.width, bottom,
+    const int bottom = size_.y - rect.y - rect.h;
+    const bool exact = pictureSize.x == rect.w && pictureSize.y == rect.h;
+    glBlitFramebuffer(0, 0, pictureSize.x, pictureSize.y, rect.x, top, rect.x + rect.w, bottom,
                       GL_COLOR_BUFFER_BIT, exact ? GL_NEAREST : GL_LINEAR);
     glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
     gpu::checkGl("drawing a view onto the screen");

@@ -6,18 +6,11 @@
 // draws the same PNGs on every backend and rotation.
 #include "core/rgba_image.hpp"
 #include "gpu/gl_handle.hpp"
+#include "ui/layout.hpp"
 
 #include <glm/glm.hpp>
 
 namespace steerseg::kiosk {
-
-// x, y (top left), width, height in logical screen pixels.
-struct ScreenRect {
-    int x = 0;
-    int y = 0;
-    int width = 0;
-    int height = 0;
-};
 
 // The logical size of a display of `physical` pixels mounted at `rotationDeg` (0, 90, 180, 270).
 glm::ivec2 logicalSize(const glm::ivec2& physical, int rotationDeg);
@@ -31,7 +24,7 @@ class ScreenCompositor {
     void begin(const glm::vec3& background);
     [[nodiscard]] unsigned int framebuffer() const { return framebuffer_.id(); }
     // A picture (row 0 at the top, as the renderer writes it) scaled into `rect`.
-    void drawPicture(unsigned int texture, const glm::ivec2& pictureSize, const ScreenRect& rect);
+    void drawPicture(unsigned int texture, const glm::ivec2& pictureSize, const ui::Rect& rect);
     // The logical screen onto the display's framebuffer, turned as mounted.
     void present(unsigned int displayFramebuffer, const glm::ivec2& displaySize);
     // The logical screen as it is now (row 0 at the top).

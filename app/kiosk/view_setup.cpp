@@ -66,7 +66,6 @@ render::ViewParams sliceViewParams(const session::Session& session,
     p.content = speed ? render::SliceContent::Speed : render::SliceContent::Scan;
     p.speed = {status.params.T, status.params.eps};
     p.contour = status.hasLevelSet;
-    p.target = speed ? kTargetSecondSlice : kTargetFirstSlice;
     return p;
 }
 

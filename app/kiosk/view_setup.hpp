@@ -9,17 +9,13 @@
 
 namespace steerseg::kiosk {
 
-// The renderer's pictures the kiosk keeps (ViewParams::target).
-inline constexpr int kTargetVolumePreview = 0;
-inline constexpr int kTargetFirstSlice = 1;
-inline constexpr int kTargetSecondSlice = 2;
-inline constexpr int kTargetVolumeFull = 3;
 
 render::ViewKind viewKindOf(workflow::SliceAxis axis);
 
 render::ViewParams volumeViewParams(const session::Session& session,
                                     const workflow::Status& status, const glm::ivec2& size);
 // `speed`: the second slice view, which shows the data term eps - |I - T| under the contour.
+// The caller picks the picture (ViewParams::target) and the region.
 render::ViewParams sliceViewParams(const session::Session& session,
                                    const workflow::Status& status, workflow::SliceAxis axis,
                                    bool speed, const glm::ivec2& size);

@@ -61,6 +61,6 @@ struct ViewParams {
     glm::ivec4 region{0, 0, -1, -1};
 };
 
-inline constexpr int kRenderTargets = 4;
+inline constexpr int kRenderTargets = 6;
 
 } // namespace steerseg::render

@@ -157,6 +157,10 @@ RgbaImage Session::picture() const {
     return gpu_->renderer.readback();
 }
 
+void Session::finishGpuWork() const {
+    glFinish();
+}
+
 unsigned int Session::pictureTexture(int index) const {
     return gpu_->renderer.target(index).texture();
 }

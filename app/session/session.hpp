@@ -81,6 +81,8 @@ class Session {
                                                  const glm::ivec2& size) const;
     // Draws one view of the scan and the level set (if any); slice views return their frame.
     std::optional<render::SliceFrame> render(const render::ViewParams& params);
+    // Waits for the GPU's queued work (a caller timing its draws against a frame budget).
+    void finishGpuWork() const;
     // The last view drawn.
     [[nodiscard]] RgbaImage picture() const;
     // Picture `index` (ViewParams::target) as a GL texture name and its size, for a screen that

@@ -128,7 +128,7 @@ TEST_F(KioskScreen, PlacesPicturesTopDownAndTurnsTheScreenAsMounted) {
     };
     kiosk::ScreenCompositor screen({40, 30}, 0);
     screen.begin({0.0F, 0.0F, 0.0F});
-    screen.drawPicture(picture, {2, 2}, {10, 5, 20, 20});
+    screen.drawPicture(picture, {2, 2}, ui::Rect{10, 5, 20, 20});
     const RgbaImage logical = screen.capture();
     EXPECT_EQ(colourAt(logical, 12, 7), glm::ivec3(255, 0, 0));   // top left: red
     EXPECT_EQ(colourAt(logical, 27, 7), glm::ivec3(0, 255, 0));   // top right: green
@@ -141,7 +141,7 @@ TEST_F(KioskScreen, PlacesPicturesTopDownAndTurnsTheScreenAsMounted) {
     kiosk::ScreenCompositor turned({40, 30}, 90);
     EXPECT_EQ(turned.size(), glm::ivec2(30, 40));
     turned.begin({0.0F, 0.0F, 0.0F});
-    turned.drawPicture(picture, {2, 2}, {0, 0, 30, 40});
+    turned.drawPicture(picture, {2, 2}, ui::Rect{0, 0, 30, 40});
     gpu::Texture display = gpu::createTexture();
     glBindTexture(GL_TEXTURE_2D, display.id());
     glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, 40, 30);

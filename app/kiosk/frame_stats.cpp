@@ -1,0 +1,72 @@
+#include "kiosk/frame_stats.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace steerseg::kiosk {
+
+Percentiles percentiles(std::vector<double> samples) {
+    Percentiles p;
+    p.count = samples.size();
+    if (samples.empty()) {
+        return p;
+    }
+    std::sort(samples.begin(), samples.end());
+    const auto at = [&](double q) {
+        const auto index = static_cast<std::size_t>(std::ceil(q * static_cast<double>(samples.size()))) - 1;
+        return samples[std::min(index, samples.size() - 1)];
+    };
+    p.p50 = at(0.50);
+    p.p90 = at(0.90);
+    p.p99 = at(0.99);
+    p.max = samples.back();
+    return p;
+}
+
+namespace {
+
+nlohmann::json toJson(const Percentiles& p) {
+    return {{"count", p.count},
+            {"p50_ms", p.p50 * 1e3},
+            {"p90_ms", p.p90 * 1e3},
+            {"p99_ms", p.p99 * 1e3},
+            {"max_ms", p.max * 1e3}};
+}
+
+std::string line(const char* what, const Percentiles& p) {
+    std::ostringstream o;
+    o.precision(3);
+    o << what << " p50 " << p.p50 * 1e3 << " ms, p90 " << p.p90 * 1e3 << " ms, p99 "
+      << p.p99 * 1e3 << " ms, max " << p.max * 1e3 << " ms (" << p.count << ")";
+    return o.str();
+}
+
+} // namespace
+
+void FrameStats::write(const std::filesystem::path& path, const std::string& description) const {
+    nlohmann::json j;
+    j["display"] = description;
+    j["frames_evolving"] = toJson(percentiles(evolvingFrames_));
+    j["frames_idle"] = toJson(percentiles(idleFrames_));
+    j["latency"] = toJson(percentiles(latencies_));
+    j["iterations"] = iterations_;
+    j["pixels_per_second"] = drawSeconds_ > 0.0 ? pixels_ / drawSeconds_ : 0.0;
+    std::ofstream out(path);
+    out << j.dump(2) << '\n';
+    if (!out) {
+        throw std::runtime_error(path.string() + ": cannot write the frame statistics");
+    }
+}
+
+std::string FrameStats::summary() const {
+    return line("frames while evolving:", percentiles(evolvingFrames_)) + "\n" +
+           line("frames otherwise:", percentiles(idleFrames_)) + "\n" +
+           line("input to screen:", percentiles(latencies_));
+}
+
+} // namespace steerseg::kiosk

@@ -1,0 +1,56 @@
+#pragma once
+
+// The kiosk's three views, drawn each frame within their share of the frame's time and placed
+// on the logical screen. Each view redraws only when what it shows changed (camera, slice,
+// window, parameters, the level set), as a preview sized to fit the frame, then refines to full
+// resolution in tiles while still (ViewRefiner). Each view keeps two of the renderer's
+// pictures: the preview stays on screen until the full picture is complete.
+#include "kiosk/screen_compositor.hpp"
+#include "kiosk/view_refiner.hpp"
+#include "render/render_params.hpp"
+#include "render/slice_frame.hpp"
+#include "session/session.hpp"
+#include "ui/screen_state.hpp"
+#include "workflow/status.hpp"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace steerseg::kiosk {
+
+class ViewPainter {
+  public:
+    explicit ViewPainter(double interactiveScale);
+
+    // Draws what is due within `seconds`, then every view's latest picture into its rect.
+    // Returns where the slice views are and which slice frames their pictures show.
+    ui::ScreenState paint(session::Session& session, const workflow::Status& status,
+                          std::uint64_t levelSetVersion, const ui::Layout& layout,
+                          double seconds, ScreenCompositor& screen);
+    // Every view shows its full-resolution picture of the current state.
+    [[nodiscard]] bool settled() const;
+    // A new scan: nothing drawn is valid any more.
+    void reset();
+    // Pixels drawn since the last call, and the seconds spent (the benchmark's rates).
+    std::pair<double, double> takeDrawn();
+
+  private:
+    struct View {
+        ViewRefiner refiner;
+        std::string signature;
+        int previewTarget = 0;
+        int fullTarget = 0;
+        int shownTarget = -1; // -1: nothing drawn since the last reset
+        std::optional<render::SliceFrame> shownFrame;
+    };
+    void paintView(View& view, session::Session& session, render::ViewParams params,
+                   const std::string& signature, double seconds);
+
+    std::array<View, 3> views_;
+    double drawnPixels_ = 0.0;
+    double drawnSeconds_ = 0.0;
+};
+
+} // namespace steerseg::kiosk
