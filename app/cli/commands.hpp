@@ -26,6 +26,7 @@ const char* exitStatusHelp();
 // Each command takes the words after its name and returns kExitOk.
 int runGpuInfo(std::span<const std::string> args);
 int runInfo(std::span<const std::string> args);
+int runKiosk(std::span<const std::string> args);
 int runRender(std::span<const std::string> args);
 int runSegment(std::span<const std::string> args);
 

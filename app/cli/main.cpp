@@ -4,6 +4,8 @@
 #include "cli/commands.hpp"
 #include "gpu/gl_error.hpp"
 #include "io/scan_reader.hpp"
+#include "kiosk/script.hpp"
+#include "platform/display.hpp"
 #include "platform/gpu_context.hpp"
 
 #include <cstdio>
@@ -38,6 +40,11 @@ constexpr Command kCommands[] = {
      "(--iterations N | --time t | --converge [--max-iterations N]) [--dense] --output MASK "
      "[--report REPORT.json]: level-set segmentation on the GPU",
      steerseg::cli::runSegment},
+    {"kiosk",
+     "kiosk [--platform auto|kms|window|offscreen] [--config FILE] [--scan PATH] [--script "
+     "SESSION] [--frames DIR] [--size WxH] [--stats FILE] [--max-seconds S]: the fullscreen "
+     "appliance (touch, keys and scripted sessions; docs/scripts.md)",
+     steerseg::cli::runKiosk},
 };
 
 void printUsage(std::FILE* out) {
@@ -61,7 +68,11 @@ ExitStatus exitStatusOf(const std::exception& e) {
     if (dynamic_cast<const io::WriteError*>(&e) != nullptr) {
         return kExitWrite;
     }
+    if (dynamic_cast<const kiosk::ScriptError*>(&e) != nullptr) {
+        return kExitUsage;
+    }
     if (dynamic_cast<const platform::GpuContextError*>(&e) != nullptr ||
+        dynamic_cast<const platform::DisplayError*>(&e) != nullptr ||
         dynamic_cast<const gpu::GlError*>(&e) != nullptr) {
         return kExitGpu;
     }
@@ -70,9 +81,12 @@ ExitStatus exitStatusOf(const std::exception& e) {
 
 const char* exitStatusHelp() {
     return "  0  done\n"
-           "  1  the scan (or --mask) cannot be read, or another failure\n"
-           "  2  a bad or missing option, or a --seed/--erase that does not fit the scan\n"
-           "  3  no GPU context, the GPU reported an error, or the scan does not fit the GPU\n"
+           "  1  the scan (or --mask) cannot be read, a kiosk script's step failed, or another "
+           "failure\n"
+           "  2  a bad or missing option or session script, or a --seed/--erase that does not fit "
+           "the scan\n"
+           "  3  no GPU context or display, the GPU reported an error, or the scan does not fit "
+           "the GPU\n"
            "  4  an output file cannot be written\n"
            "Every failure prints one line on stderr naming the file or option and the problem.\n";
 }

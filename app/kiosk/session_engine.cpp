@@ -127,6 +127,7 @@ workflow::LoadPoll SessionEngine::pollLoad() {
     info_.units = session_->format() == "dicom" && scan.stats().min < -500.0 ? "HU" : "";
     volumeMl_.reset();
     changed();
+    ++attached_;
     poll.kind = workflow::LoadPoll::Ready;
     poll.progress = 1.0;
     return poll;

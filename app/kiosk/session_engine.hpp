@@ -45,6 +45,8 @@ class SessionEngine final : public workflow::Engine {
     [[nodiscard]] session::Session* session() { return session_.get(); }
     // Counts every change of the level set (edits, steps, restores): the views redraw on it.
     [[nodiscard]] std::uint64_t levelSetVersion() const { return version_; }
+    // Counts the scans attached so far: what was drawn of an earlier one is stale.
+    [[nodiscard]] std::uint64_t scansAttached() const { return attached_; }
 
   private:
     session::Session& requireSession() const;
@@ -61,6 +63,7 @@ class SessionEngine final : public workflow::Engine {
     std::map<workflow::SnapshotId, MaskRuns> snapshots_; // empty runs: no level set
     workflow::SnapshotId nextSnapshot_ = 1;
     std::uint64_t version_ = 0;
+    std::uint64_t attached_ = 0;
     // The volume is counted on a mask read back from the GPU: at most a few times a second
     // while the front moves, and at once after an edit.
     mutable std::optional<double> volumeMl_;

@@ -145,9 +145,36 @@ def config():
     out("config", "not_utf8.toml", b'[audit]\npath = "caf\xe9"\n')
 
 
+def script():
+    # The example sessions, and a few lines of every kind of step and of error.
+    scenarios = os.path.join(HERE, "..", "scenarios")
+    for name in sorted(os.listdir(scenarios)):
+        if name.endswith(".session"):
+            with open(os.path.join(scenarios, name), "rb") as f:
+                out("script", name, f.read())
+    out("script", "device.session",
+        "at 0.5 touch down 0 640 400\nafter 0.05 touch move 0 650 410\ntouch up 0 650 410\n"
+        "tap 10 20\nkey ctrl+shift+z\nkey_down space\nkey_up space\nwheel 1 2 -3\n")
+    out("script", "actions.session",
+        "load \"$DATA/a b.nii\"\nprobe 1 2 3 4\npreset \"CT bone\"\nset eps 3\nnudge selected 2\n"
+        "select alpha\ncycle -1\nseed 1 2 3\nerase 1 2 3 2\nerase_mode on\nwindow 40 400\n"
+        "run\nwait iterations 5 timeout 9\npause\nrotate 1 2\nzoom 2\npage axial -1\n"
+        "slice coronal 3\nshow sagittal axial\nundo\nredo\nrestart\nproceed\nback\nfinish\n"
+        "resume\ndismiss\nexport\nexport $OUT/m.nii.gz\nframe ${OUT}/f.png\nquit\n")
+    out("script", "checks.session",
+        "wait loaded\nwait converged timeout 3\nwait state review\nwait seconds 2\n"
+        "expect state done\nexpect volume_ml >= 1.5\nexpect converged\n"
+        "expect message contains \"a # b\"\nexpect exported contains x\n"
+        "dice $EXPORTED $DATA/r.nii.gz label 3 >= 0.8\n")
+    out("script", "errors.session",
+        "jump\nat -1 run\nat 5 run\nat 4 run\nseed 1 2 nan\nset eps 1e400\nload \"open\n"
+        "key hyper\nload $HOME\nexpect x ~ 1\nat 2\n")
+
+
 if __name__ == "__main__":
     nifti()
     nrrd()
     metaimage()
     mgz()
     config()
+    script()

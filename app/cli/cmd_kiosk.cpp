@@ -1,0 +1,71 @@
+#include "cli/args.hpp"
+#include "cli/commands.hpp"
+#include "kiosk/kiosk_app.hpp"
+
+#include <iostream>
+#include <unistd.h>
+
+namespace steerseg::cli {
+
+namespace {
+
+void parseSize(const std::string& text, kiosk::KioskOptions& o) {
+    const auto x = text.find('x');
+    if (x == std::string::npos) {
+        throw UsageError("--size: expected WIDTHxHEIGHT, got '" + text + "'");
+    }
+    const long long w = parseInteger(text.substr(0, x), "--size width");
+    const long long h = parseInteger(text.substr(x + 1), "--size height");
+    if (w < 64 || h < 64 || w > 16384 || h > 16384) {
+        throw UsageError("--size: each side must be 64..16384 pixels, got '" + text + "'");
+    }
+    o.width = static_cast<int>(w);
+    o.height = static_cast<int>(h);
+}
+
+} // namespace
+
+int runKiosk(std::span<const std::string> words) {
+    const Args args(words, {"platform", "config", "script", "scan", "frames", "size", "max-seconds", "stats"},
+                    {"allow-root"});
+    // An appliance program that a mistake could run as root (cage does the same): it needs the
+    // video and input groups, not root.
+    if (::geteuid() == 0 && !args.flag("allow-root")) {
+        throw UsageError("refusing to run as root: run the kiosk as its own user in the video "
+                         "and input groups (--allow-root overrides, for containers)");
+    }
+    kiosk::KioskOptions o;
+    o.platform = args.value("platform").value_or("");
+    if (!o.platform.empty() && o.platform != "auto" && o.platform != "kms" &&
+        o.platform != "window" && o.platform != "offscreen") {
+        throw UsageError("--platform: expected auto, kms, window or offscreen, got '" + o.platform + "'");
+    }
+    if (o.platform == "auto") {
+        o.platform.clear();
+    }
+    if (const auto c = args.value("config")) {
+        o.config = *c;
+    }
+    if (const auto s = args.value("script")) {
+        o.script = *s;
+    }
+    o.scan = args.value("scan").value_or("");
+    if (const auto f = args.value("frames")) {
+        o.frames = *f;
+    }
+    if (const auto s = args.value("size")) {
+        parseSize(*s, o);
+    }
+    if (const auto m = args.number("max-seconds")) {
+        if (!(*m > 0.0)) {
+            throw UsageError("--max-seconds: must be positive");
+        }
+        o.maxSeconds = *m;
+    }
+    if (const auto s = args.value("stats")) {
+        o.stats = *s;
+    }
+    return kiosk::runKiosk(o, std::cout, std::cerr);
+}
+
+} // namespace steerseg::cli

@@ -1,0 +1,622 @@
+// Scripted sessions: the parser (every step, every kind of bad line) and the player (timing,
+// waits on the status, checks, timeouts), against a recording sink and hand-made statuses.
+#include "core/volume.hpp"
+#include "io/mask_writer.hpp"
+#include "kiosk/mask_dice.hpp"
+#include "kiosk/script.hpp"
+#include "kiosk/script_player.hpp"
+#include "support/test_data.hpp"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <stdexcept>
+
+namespace steerseg::test {
+namespace {
+
+using kiosk::parseScript;
+using kiosk::Script;
+using kiosk::ScriptError;
+using kiosk::ScriptPlayer;
+using workflow::State;
+using Kind = platform::InputEvent::Kind;
+
+std::string parseError(const std::string& text, const std::string& name = "s.session") {
+    try {
+        parseScript(text, name);
+    } catch (const ScriptError& e) {
+        return e.what();
+    }
+    return "(parsed)";
+}
+
+template <typename T> const T& only(const Script& script) {
+    EXPECT_EQ(script.steps.size(), 1U);
+    return std::get<T>(script.steps.at(0).kind);
+}
+
+template <typename A> A action(const std::string& line) {
+    const Script s = parseScript(line, "s");
+    return std::get<A>(only<kiosk::ActionStep>(s).action);
+}
+
+TEST(ScriptParse, DeviceEvents) {
+    const Script s = parseScript("touch down 1 640 400\n"
+                                 "touch move 1 650.5 410\n"
+                                 "touch up 1 650 410\n"
+                                 "tap 10 20\n"
+                                 "key ctrl+shift+z\n"
+                                 "key_down space\n"
+                                 "key_up f12\n"
+                                 "wheel 100 200 -3\n",
+                                 "s");
+    ASSERT_EQ(s.steps.size(), 8U);
+    const auto& down = std::get<kiosk::InputStep>(s.steps[0].kind).events;
+    ASSERT_EQ(down.size(), 1U);
+    EXPECT_EQ(down[0].kind, Kind::PointerDown);
+    EXPECT_EQ(down[0].pointer, 1);
+    EXPECT_FLOAT_EQ(down[0].x, 640.0F);
+    EXPECT_FLOAT_EQ(down[0].y, 400.0F);
+    EXPECT_EQ(std::get<kiosk::InputStep>(s.steps[1].kind).events[0].kind, Kind::PointerMove);
+    EXPECT_FLOAT_EQ(std::get<kiosk::InputStep>(s.steps[1].kind).events[0].x, 650.5F);
+    EXPECT_EQ(std::get<kiosk::InputStep>(s.steps[2].kind).events[0].kind, Kind::PointerUp);
+    const auto& tap = std::get<kiosk::InputStep>(s.steps[3].kind).events;
+    ASSERT_EQ(tap.size(), 2U);
+    EXPECT_EQ(tap[0].kind, Kind::PointerDown);
+    EXPECT_EQ(tap[1].kind, Kind::PointerUp);
+    const auto& key = std::get<kiosk::InputStep>(s.steps[4].kind).events;
+    ASSERT_EQ(key.size(), 2U);
+    EXPECT_EQ(key[0].kind, Kind::KeyDown);
+    EXPECT_EQ(key[1].kind, Kind::KeyUp);
+    EXPECT_EQ(key[0].key, "z");
+    EXPECT_TRUE(key[0].ctrl);
+    EXPECT_TRUE(key[0].shift);
+    EXPECT_EQ(std::get<kiosk::InputStep>(s.steps[5].kind).events[0].key, "space");
+    EXPECT_EQ(std::get<kiosk::InputStep>(s.steps[6].kind).events[0].kind, Kind::KeyUp);
+    const auto& wheel = std::get<kiosk::InputStep>(s.steps[7].kind).events[0];
+    EXPECT_EQ(wheel.kind, Kind::Wheel);
+    EXPECT_FLOAT_EQ(wheel.wheel, -3.0F);
+}
+
+TEST(ScriptParse, OperatorActions) {
+    EXPECT_EQ(action<workflow::LoadScan>("load builtin:sample").path, "builtin:sample");
+    EXPECT_EQ(action<workflow::LoadScan>("load \"a b/c.nii\"").path, "a b/c.nii");
+    EXPECT_EQ(action<workflow::LoadScan>("load $SCAN").path, "$SCAN");
+    const auto probe = action<workflow::Probe>("probe 80 56 52 6");
+    EXPECT_EQ(probe.voxel, glm::dvec3(80, 56, 52));
+    EXPECT_DOUBLE_EQ(probe.radiusMm, 6.0);
+    EXPECT_DOUBLE_EQ(action<workflow::Probe>("probe 1 2 3").radiusMm, workflow::Probe{}.radiusMm);
+    const auto seed = action<workflow::AddSeed>("seed 1.5 2 3 4");
+    EXPECT_EQ(seed.voxel, glm::dvec3(1.5, 2, 3));
+    EXPECT_DOUBLE_EQ(seed.radius, 4.0);
+    EXPECT_DOUBLE_EQ(action<workflow::AddSeed>("seed 1 2 3").radius, 0.0); // the brush
+    EXPECT_DOUBLE_EQ(action<workflow::Erase>("erase 4 5 6 2").radius, 2.0);
+    EXPECT_TRUE(action<workflow::SetEraseMode>("erase_mode on").erase);
+    EXPECT_FALSE(action<workflow::SetEraseMode>("erase_mode off").erase);
+    const auto set = action<workflow::SetParam>("set eps 35.5");
+    EXPECT_EQ(set.param, workflow::Param::Epsilon);
+    EXPECT_DOUBLE_EQ(set.value, 35.5);
+    EXPECT_EQ(action<workflow::SetParam>("set T -10").param, workflow::Param::Target);
+    EXPECT_EQ(action<workflow::SetParam>("set alpha 0.9").param, workflow::Param::Alpha);
+    EXPECT_EQ(action<workflow::SetParam>("set radius 4").param, workflow::Param::Radius);
+    EXPECT_DOUBLE_EQ(action<workflow::NudgeParam>("nudge alpha -2").steps, -2.0);
+    EXPECT_DOUBLE_EQ(action<workflow::NudgeSelected>("nudge selected 3").steps, 3.0);
+    EXPECT_EQ(action<workflow::SelectParam>("select eps").param, workflow::Param::Epsilon);
+    EXPECT_EQ(action<workflow::CycleParam>("cycle").delta, 1);
+    EXPECT_EQ(action<workflow::CycleParam>("cycle -1").delta, -1);
+    EXPECT_EQ(action<workflow::ApplyPreset>("preset \"CT soft tissue\"").name, "CT soft tissue");
+    const auto window = action<workflow::SetWindow>("window 40 400");
+    EXPECT_DOUBLE_EQ(window.level, 40.0);
+    EXPECT_DOUBLE_EQ(window.width, 400.0);
+    action<workflow::Run>("run");
+    action<workflow::Pause>("pause");
+    action<workflow::ToggleRun>("toggle");
+    action<workflow::Finish>("finish");
+    action<workflow::Resume>("resume");
+    action<workflow::Undo>("undo");
+    action<workflow::Redo>("redo");
+    action<workflow::Restart>("restart");
+    action<workflow::Proceed>("proceed");
+    action<workflow::Back>("back");
+    action<workflow::Dismiss>("dismiss");
+    action<workflow::Quit>("quit");
+    const auto rotate = action<workflow::RotateView>("rotate 30 -10");
+    EXPECT_DOUBLE_EQ(rotate.yaw, 30.0);
+    EXPECT_DOUBLE_EQ(rotate.pitch, -10.0);
+    EXPECT_DOUBLE_EQ(action<workflow::ZoomView>("zoom 1.5").factor, 1.5);
+    const auto page = action<workflow::PageSlice>("page sagittal -4");
+    EXPECT_EQ(page.axis, workflow::SliceAxis::Sagittal);
+    EXPECT_EQ(page.delta, -4);
+    const auto slice = action<workflow::SetSlice>("slice coronal 60");
+    EXPECT_EQ(slice.axis, workflow::SliceAxis::Coronal);
+    EXPECT_EQ(slice.index, 60);
+    const auto show = action<workflow::ShowSlices>("show sagittal axial");
+    EXPECT_EQ(show.first, workflow::SliceAxis::Sagittal);
+    EXPECT_EQ(show.second, workflow::SliceAxis::Axial);
+    EXPECT_EQ(action<workflow::Export>("export").path, "");
+    EXPECT_EQ(action<workflow::Export>("export out/mask.nii.gz").path, "out/mask.nii.gz");
+}
+
+TEST(ScriptParse, WaitsChecksFramesDice) {
+    const Script s = parseScript("wait converged timeout 30\n"
+                                 "wait loaded\n"
+                                 "wait state paused\n"
+                                 "wait iterations 200\n"
+                                 "wait seconds 1.5\n"
+                                 "expect state review\n"
+                                 "expect volume_ml > 1.5\n"
+                                 "expect iterations >= 100\n"
+                                 "expect message contains \"converged after\"\n"
+                                 "expect exported contains .nii.gz\n"
+                                 "expect converged\n"
+                                 "expect loaded\n"
+                                 "frame shots/a.png\n"
+                                 "dice $EXPORTED $DATA/ref.nii.gz label 3 >= 0.8\n",
+                                 "s");
+    ASSERT_EQ(s.steps.size(), 14U);
+    using C = kiosk::Condition;
+    const auto wait = [&](int n) { return std::get<kiosk::WaitStep>(s.steps[n].kind); };
+    const auto expect = [&](int n) { return std::get<kiosk::ExpectStep>(s.steps[n].kind); };
+    EXPECT_EQ(wait(0).condition.kind, C::Converged);
+    EXPECT_DOUBLE_EQ(wait(0).timeoutSeconds, 30.0);
+    EXPECT_EQ(wait(1).condition.kind, C::Loaded);
+    EXPECT_DOUBLE_EQ(wait(1).timeoutSeconds, kiosk::kDefaultWaitTimeout);
+    EXPECT_EQ(wait(2).condition.state, State::Paused);
+    EXPECT_EQ(wait(3).condition.count, 200);
+    EXPECT_DOUBLE_EQ(wait(4).condition.value, 1.5);
+    EXPECT_EQ(expect(5).condition.state, State::Review);
+    EXPECT_EQ(expect(6).condition.field, "volume_ml");
+    EXPECT_EQ(expect(6).condition.op, C::Op::Greater);
+    EXPECT_EQ(expect(7).condition.op, C::Op::GreaterEqual);
+    EXPECT_EQ(expect(8).condition.kind, C::MessageHas);
+    EXPECT_EQ(expect(8).condition.text, "converged after");
+    EXPECT_EQ(expect(9).condition.kind, C::ExportedHas);
+    EXPECT_EQ(expect(10).condition.kind, C::Converged);
+    EXPECT_EQ(expect(11).condition.kind, C::Loaded);
+    EXPECT_EQ(std::get<kiosk::FrameStep>(s.steps[12].kind).path, "shots/a.png");
+    const auto& dice = std::get<kiosk::DiceStep>(s.steps[13].kind);
+    EXPECT_EQ(dice.mask, "$EXPORTED");
+    EXPECT_EQ(dice.label, 3);
+    EXPECT_DOUBLE_EQ(dice.value, 0.8);
+}
+
+TEST(ScriptParse, TimingCommentsAndLines) {
+    const Script s = parseScript("# a session\n"
+                                 "\n"
+                                 "   run   # go\r\n"
+                                 "at 1.25 pause\n"
+                                 "after 0.5 load \"x # not a comment.nii\"\n"
+                                 "at 1.25 run\n",
+                                 "s");
+    ASSERT_EQ(s.steps.size(), 4U);
+    EXPECT_EQ(s.steps[0].line, 3);
+    EXPECT_EQ(s.steps[0].text, "run");
+    EXPECT_EQ(s.steps[0].timing.kind, kiosk::Timing::Next);
+    EXPECT_EQ(s.steps[1].timing.kind, kiosk::Timing::At);
+    EXPECT_DOUBLE_EQ(s.steps[1].timing.seconds, 1.25);
+    EXPECT_EQ(s.steps[2].timing.kind, kiosk::Timing::After);
+    EXPECT_EQ(
+        std::get<workflow::LoadScan>(std::get<kiosk::ActionStep>(s.steps[2].kind).action).path,
+        "x # not a comment.nii");
+    EXPECT_EQ(s.steps[3].line, 6);
+}
+
+TEST(ScriptParse, EveryBadLineIsNamedOnce) {
+    const std::string errors = parseError("run\n"
+                                          "jump 1 2\n"
+                                          "at -1 run\n"
+                                          "at 5 run\n"
+                                          "at 4 run\n"
+                                          "seed 1 2 nan\n"
+                                          "seed 1 2 1e400\n"
+                                          "set eps inf\n"
+                                          "set gamma 3\n"
+                                          "touch press 0 1 1\n"
+                                          "key hyper\n"
+                                          "wait forever\n"
+                                          "expect volume_ml ~ 3\n"
+                                          "load $HOME/x\n"
+                                          "load \"open\n"
+                                          "run now\n"
+                                          "frame a.jpg\n"
+                                          "at 9\n"
+                                          "seed 1e9 0 0\n"
+                                          "wait iterations 0\n");
+    const std::vector<std::string> expected = {
+        "s.session:2: unknown step 'jump'",
+        "s.session:3: the time after 'at' '-1' is outside",
+        "s.session:5: at 4 goes back in time (an earlier step is at 5)",
+        "s.session:6: the voxel's k must be a finite number, not 'nan'",
+        "s.session:7: the voxel's k '1e400' is out of range",
+        "s.session:8: the value must be a finite number, not 'inf'",
+        "s.session:9: unknown parameter 'gamma'",
+        "s.session:10: touch 'press': give down, move or up",
+        "s.session:11: unknown key 'hyper'",
+        "s.session:12: wait 'forever': not a condition",
+        "s.session:13: '~' is not a comparison",
+        "s.session:14: unknown variable $HOME",
+        "s.session:15: a quote is not closed",
+        "s.session:16: unexpected 'now' (usage: run)",
+        "s.session:17: frame 'a.jpg': the file name must end in .png",
+        "s.session:18: 'at 9' names no step after the time",
+        "s.session:19: the voxel's i '1e9' is outside",
+        "s.session:20: the iterations '0' is outside [1, 100000000]",
+    };
+    for (const std::string& e : expected) {
+        EXPECT_NE(errors.find(e), std::string::npos) << "missing: " << e << "\nin:\n" << errors;
+    }
+    // One line per bad line, nothing for the good ones.
+    EXPECT_EQ(std::count(errors.begin(), errors.end(), '\n') + 1,
+              static_cast<long>(expected.size()))
+        << errors;
+}
+
+TEST(ScriptParse, WholeFileProblems) {
+    EXPECT_EQ(parseError("# only a comment\n\n"), "s.session: the script has no steps");
+    EXPECT_EQ(parseError(std::string("run\0pause", 9)),
+              "s.session: not a text file (a NUL byte at offset 3)");
+    EXPECT_NE(parseError("run\n\x01\x02\n").find("s.session:2: a control character (0x01)"),
+              std::string::npos);
+    EXPECT_NE(parseError("run " + std::string(5000, 'x')).find("s.session:1: the line is 5004"),
+              std::string::npos);
+    EXPECT_NE(parseError(std::string(kiosk::kMaxScriptBytes + 1, '#')).find("at most"),
+              std::string::npos);
+    // A flood of bad lines is cut, not echoed whole.
+    std::string flood;
+    for (int n = 0; n < 1000; ++n) {
+        flood += "bad\n";
+    }
+    const std::string errors = parseError(flood);
+    EXPECT_LE(std::count(errors.begin(), errors.end(), '\n'), 60);
+    EXPECT_NE(errors.find("more errors after line 50 not listed"), std::string::npos);
+}
+
+TEST(ScriptParse, FilesThatAreNotScripts) {
+    const auto dir = std::filesystem::temp_directory_path() / "steerseg_script_test";
+    std::filesystem::create_directories(dir);
+    try {
+        kiosk::loadScript(dir / "missing.session");
+        FAIL();
+    } catch (const ScriptError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  (dir / "missing.session").string() + ": no such script file");
+    }
+    EXPECT_THROW(kiosk::loadScript(dir), ScriptError);
+    const auto binary = dir / "binary.session";
+    {
+        std::ofstream out(binary, std::ios::binary);
+        const unsigned char png[] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A, 0, 0, 0, 13};
+        out.write(reinterpret_cast<const char*>(png), sizeof png);
+    }
+    try {
+        kiosk::loadScript(binary);
+        FAIL();
+    } catch (const ScriptError& e) {
+        EXPECT_NE(std::string(e.what()).find("not a text file"), std::string::npos) << e.what();
+    }
+    const auto good = dir / "good.session";
+    std::ofstream(good) << "load builtin:sample\nwait loaded\n";
+    EXPECT_EQ(kiosk::loadScript(good).steps.size(), 2U);
+    std::filesystem::remove_all(dir);
+}
+
+// --- the player ----------------------------------------------------------------------------
+
+struct Recorder : kiosk::ScriptSink {
+    std::vector<std::string> log;
+    double dice = 0.9;
+    void action(const workflow::Action& a) override {
+        if (const auto* load = std::get_if<workflow::LoadScan>(&a)) {
+            log.push_back("load " + load->path);
+        } else if (const auto* out = std::get_if<workflow::Export>(&a)) {
+            log.push_back("export " + out->path);
+        } else {
+            log.push_back("action " + std::to_string(a.index()));
+        }
+    }
+    void input(const platform::InputEvent& e) override {
+        log.push_back("input " + std::to_string(static_cast<int>(e.kind)) +
+                      " t=" + std::to_string(e.time));
+    }
+    void saveFrame(const std::filesystem::path& path) override {
+        if (path.string().find("fail") != std::string::npos) {
+            throw std::runtime_error("cannot write " + path.string());
+        }
+        log.push_back("frame " + path.string());
+    }
+    double maskDice(const std::filesystem::path& mask, const std::filesystem::path& reference,
+                    int label) override {
+        log.push_back("dice " + mask.string() + " " + reference.string() + " " +
+                      std::to_string(label));
+        return dice;
+    }
+};
+
+ScriptPlayer player(const std::string& text, kiosk::Variables vars = {}) {
+    return ScriptPlayer(parseScript(text, "t.session"), std::move(vars));
+}
+
+TEST(ScriptPlayer, EmitsTimedStepsWhenDue) {
+    ScriptPlayer p = player("at 1 run\n"
+                            "after 0.5 pause\n"
+                            "tap 5 5\n"
+                            "at 3 toggle\n");
+    Recorder r;
+    workflow::Status st;
+    p.poll(10.0, st, r); // the script's start
+    EXPECT_TRUE(r.log.empty());
+    p.poll(10.9, st, r);
+    EXPECT_TRUE(r.log.empty());
+    p.poll(11.0, st, r);
+    ASSERT_EQ(r.log.size(), 1U);
+    // A late frame: the pause (due 11.5) and the tap that follows at once both go out; the
+    // schedule keeps its times, so the toggle is still due at 13.
+    p.poll(11.7, st, r);
+    ASSERT_EQ(r.log.size(), 4U);
+    EXPECT_EQ(r.log[2], "input 0 t=11.700000");
+    EXPECT_EQ(r.log[3], "input 2 t=11.700000");
+    p.poll(12.99, st, r);
+    EXPECT_EQ(r.log.size(), 4U);
+    EXPECT_FALSE(p.finished());
+    p.poll(13.0, st, r);
+    EXPECT_EQ(r.log.size(), 5U);
+    EXPECT_TRUE(p.finished());
+    EXPECT_FALSE(p.failed());
+}
+
+TEST(ScriptPlayer, WaitsHoldUntilTheStatusSatisfiesThem) {
+    ScriptPlayer p = player("load builtin:sample\n"
+                            "wait loaded\n"
+                            "run\n"
+                            "wait iterations 50\n"
+                            "wait converged\n"
+                            "expect state paused\n"
+                            "finish\n");
+    Recorder r;
+    workflow::Status st;
+    p.poll(0.0, st, r);
+    EXPECT_EQ(r.log, std::vector<std::string>{"load builtin:sample"});
+    st.state = State::Loading;
+    p.poll(0.1, st, r);
+    p.poll(0.2, st, r);
+    EXPECT_EQ(r.log.size(), 1U);
+    st.state = State::Inspect;
+    p.poll(0.3, st, r); // loaded -> run goes out; the wait for iterations waits for a frame
+    ASSERT_EQ(r.log.size(), 2U);
+    st.state = State::Evolving;
+    st.iterations = 10;
+    p.poll(0.4, st, r); // the wait starts counting at 10
+    st.iterations = 59;
+    p.poll(0.5, st, r);
+    EXPECT_EQ(p.nextStep(), 3U);
+    st.iterations = 60;
+    st.converged = false;
+    p.poll(0.6, st, r);
+    EXPECT_EQ(p.nextStep(), 4U); // now waiting for convergence
+    st.iterations = 400;
+    p.poll(5.0, st, r);
+    EXPECT_EQ(p.nextStep(), 4U);
+    st.converged = true;
+    st.state = State::Paused;
+    p.poll(5.1, st, r);
+    EXPECT_TRUE(p.finished()) << p.failure();
+    EXPECT_EQ(r.log.size(), 3U);
+}
+
+TEST(ScriptPlayer, ChecksSeeTheStatusOfTheFrameAfterAnAction) {
+    ScriptPlayer p = player("seed 1 2 3 4\nexpect seeds == 1\n");
+    Recorder r;
+    workflow::Status st;
+    p.poll(0.0, st, r); // the seed goes out; the check is not judged on this stale status
+    EXPECT_FALSE(p.failed());
+    st.seeds = 1;
+    p.poll(0.02, st, r);
+    EXPECT_TRUE(p.finished()) << p.failure();
+}
+
+TEST(ScriptPlayer, FailedChecksNameTheLine) {
+    ScriptPlayer p = player("# comment\nexpect state review # the end\nrun\n");
+    Recorder r;
+    workflow::Status st;
+    st.state = State::Paused;
+    p.poll(0.0, st, r);
+    ASSERT_TRUE(p.failed());
+    EXPECT_EQ(p.failure(), "t.session:2: expect state review: state is paused");
+    p.poll(1.0, st, r); // nothing after a failure
+    EXPECT_TRUE(r.log.empty());
+
+    ScriptPlayer q = player("expect volume_ml > 1.5\n");
+    st.volumeMl = 1.25;
+    q.poll(0.0, st, r);
+    EXPECT_EQ(q.failure(), "t.session:1: expect volume_ml > 1.5: volume_ml is 1.25");
+
+    ScriptPlayer m = player("expect message contains \"done\"\n");
+    st.message = "loading";
+    m.poll(0.0, st, r);
+    EXPECT_EQ(m.failure(), "t.session:1: expect message contains \"done\": message is \"loading\"");
+}
+
+TEST(ScriptPlayer, WaitsTimeOut) {
+    ScriptPlayer p = player("wait converged timeout 2\n");
+    Recorder r;
+    workflow::Status st;
+    st.state = State::Evolving;
+    st.iterations = 77;
+    p.poll(100.0, st, r);
+    p.poll(101.9, st, r);
+    EXPECT_FALSE(p.failed());
+    p.poll(102.0, st, r);
+    ASSERT_TRUE(p.failed());
+    EXPECT_EQ(p.failure(), "t.session:1: wait converged timeout 2: timed out after 2 s (not "
+                           "converged, state is evolving, 77 iterations)");
+
+    // The default timeout, so a script that waits for something that never comes ends.
+    ScriptPlayer d = player("wait state review\n");
+    d.poll(0.0, st, r);
+    d.poll(kiosk::kDefaultWaitTimeout - 0.1, st, r);
+    EXPECT_FALSE(d.failed());
+    d.poll(kiosk::kDefaultWaitTimeout, st, r);
+    EXPECT_TRUE(d.failed());
+}
+
+TEST(ScriptPlayer, WaitsFailEarlyOnErrorsAndAStoppedSolver) {
+    Recorder r;
+    workflow::Status st;
+    ScriptPlayer load = player("load /nope.nii\nwait loaded\n");
+    load.poll(0.0, st, r);
+    st.state = State::Loading;
+    load.poll(0.1, st, r);
+    st.state = State::NoScan;
+    st.message = "/nope.nii: no such file";
+    load.poll(0.2, st, r);
+    EXPECT_EQ(load.failure(),
+              "t.session:2: wait loaded: the scan did not load: /nope.nii: no such file");
+
+    st = {};
+    st.state = State::Error;
+    st.message = "GPU lost";
+    ScriptPlayer error = player("wait converged\n");
+    error.poll(0.0, st, r);
+    EXPECT_EQ(error.failure(), "t.session:1: wait converged: the workflow is in error: GPU lost");
+    ScriptPlayer waitsForError = player("wait state error\n");
+    waitsForError.poll(0.0, st, r);
+    EXPECT_TRUE(waitsForError.finished());
+
+    st = {};
+    st.state = State::Seeding; // a status from before the run: not a stop
+    ScriptPlayer iterations = player("wait iterations 100\n");
+    iterations.poll(0.0, st, r);
+    st.state = State::Evolving;
+    st.iterations = 30;
+    iterations.poll(0.1, st, r);
+    st.state = State::Paused;
+    st.converged = true;
+    iterations.poll(0.2, st, r);
+    EXPECT_EQ(iterations.failure(), "t.session:1: wait iterations 100: the solver stopped (30 "
+                                    "iterations, state is paused) after 30 of 100 iterations");
+}
+
+TEST(ScriptPlayer, VariablesAndPaths) {
+    const std::string text = "load $SCAN\n"
+                             "export mask.nii.gz\n"
+                             "frame shots/one.png\n"
+                             "frame /abs/two.png\n"
+                             "dice $EXPORTED ${DATA}/ref.nii.gz >= 0.8\n";
+    try {
+        player(text, {});
+        FAIL();
+    } catch (const ScriptError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "t.session:1: $SCAN is not set (give --scan PATH)\n"
+                  "t.session:5: $DATA is not set (set STEERSEG_DATA_DIR to the folder of real "
+                  "scans)");
+    }
+    ScriptPlayer p = player(text, {{"SCAN", "/scans/ct.nii"}, {"DATA", "/data"}, {"OUT", "/out"}});
+    Recorder r;
+    workflow::Status st;
+    p.poll(0.0, st, r);
+    st.exportedPath = "/out/mask.nii.gz";
+    p.poll(0.1, st, r);
+    EXPECT_TRUE(p.finished()) << p.failure();
+    EXPECT_EQ(r.log, (std::vector<std::string>{"load /scans/ct.nii", "export /out/mask.nii.gz",
+                                               "frame /out/shots/one.png", "frame /abs/two.png",
+                                               "dice /out/mask.nii.gz /data/ref.nii.gz -1"}));
+}
+
+TEST(ScriptPlayer, DiceAndSinkFailures) {
+    Recorder r;
+    workflow::Status st;
+    r.dice = 0.42;
+    ScriptPlayer low = player("dice m.nii.gz r.nii.gz label 2 >= 0.8\n");
+    low.poll(0.0, st, r);
+    EXPECT_EQ(low.failure(), "t.session:1: dice m.nii.gz r.nii.gz label 2 >= 0.8: Dice is 0.4200");
+    ScriptPlayer nothing = player("dice $EXPORTED r.nii.gz >= 0.8\n");
+    nothing.poll(0.0, st, r);
+    EXPECT_EQ(nothing.failure(),
+              "t.session:1: dice $EXPORTED r.nii.gz >= 0.8: no mask to compare (nothing was "
+              "exported yet)");
+    ScriptPlayer frame = player("frame fail.png\n");
+    frame.poll(0.0, st, r);
+    EXPECT_EQ(frame.failure(), "t.session:1: frame fail.png: cannot write fail.png");
+}
+
+TEST(ScriptPlayer, ClockGoingBackFails) {
+    ScriptPlayer p = player("at 5 run\n");
+    Recorder r;
+    workflow::Status st;
+    p.poll(2.0, st, r);
+    p.poll(1.0, st, r);
+    EXPECT_TRUE(p.failed());
+    EXPECT_NE(p.failure().find("the script clock went back"), std::string::npos);
+}
+
+// --- the scenarios ------------------------------------------------------------------------
+
+// Every session under tests/scenarios parses, and the real scans and labels it names exist.
+TEST(ScriptScenarios, ParseAndNameExistingData) {
+    const std::filesystem::path dir = STEERSEG_SCENARIO_DIR;
+    const auto data = dataDir();
+    int count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        if (entry.path().extension() != ".session") {
+            continue;
+        }
+        ++count;
+        SCOPED_TRACE(entry.path().string());
+        const Script script = kiosk::loadScript(entry.path());
+        const ScriptPlayer p(
+            script,
+            {{"SCAN", "/scan.nii"}, {"DATA", data ? data->string() : "/data"}, {"OUT", "/out"}});
+        if (!data) {
+            continue;
+        }
+        for (const kiosk::Step& step : p.script().steps) {
+            std::vector<std::string> paths;
+            if (const auto* a = std::get_if<kiosk::ActionStep>(&step.kind)) {
+                if (const auto* load = std::get_if<workflow::LoadScan>(&a->action)) {
+                    paths.push_back(load->path);
+                }
+            } else if (const auto* dice = std::get_if<kiosk::DiceStep>(&step.kind)) {
+                paths.push_back(dice->reference);
+            }
+            for (const std::string& path : paths) {
+                if (path.starts_with(data->string())) {
+                    EXPECT_TRUE(std::filesystem::exists(path))
+                        << "line " << step.line << ": " << path;
+                }
+            }
+        }
+    }
+    EXPECT_GE(count, 2);
+}
+
+// --- the Dice check ------------------------------------------------------------------------
+
+TEST(MaskDice, CountsOverlapAndRefusesOtherGrids) {
+    const auto dir = std::filesystem::temp_directory_path() / "steerseg_dice_test";
+    std::filesystem::create_directories(dir);
+    Geometry g;
+    g.dims = {4, 1, 1};
+    const auto write = [&](const std::string& name, std::vector<std::uint8_t> v) {
+        io::writeMask(dir / name, g, v);
+        return dir / name;
+    };
+    const auto a = write("a.nii.gz", {1, 1, 0, 0});
+    const auto b = write("b.nii.gz", {1, 0, 1, 0});
+    const auto empty = write("e.nii.gz", {0, 0, 0, 0});
+    EXPECT_DOUBLE_EQ(kiosk::maskDice(a, b, -1), 0.5);
+    EXPECT_DOUBLE_EQ(kiosk::maskDice(a, a, -1), 1.0);
+    EXPECT_DOUBLE_EQ(kiosk::maskDice(a, b, 1), 0.5);
+    EXPECT_DOUBLE_EQ(kiosk::maskDice(a, b, 2), 0.0); // no voxel has label 2
+    EXPECT_DOUBLE_EQ(kiosk::maskDice(empty, b, -1), 0.0);
+    g.dims = {2, 2, 1};
+    const auto other = write("o.nii.gz", {1, 1, 1, 1});
+    EXPECT_THROW(kiosk::maskDice(a, other, -1), std::runtime_error);
+    EXPECT_THROW(kiosk::maskDice(dir / "none.nii.gz", b, -1), std::exception);
+    std::filesystem::remove_all(dir);
+}
+
+} // namespace
+} // namespace steerseg::test
