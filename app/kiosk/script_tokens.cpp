@@ -80,11 +80,6 @@ std::string_view withoutComment(std::string_view line) {
     return line;
 }
 
-const std::string& Words::peek() const {
-    static const std::string kNone;
-    return empty() ? kNone : words_[at_];
-}
-
 std::string Words::text(const char* what) {
     if (empty()) {
         throw LineError(std::string("missing ") + what);

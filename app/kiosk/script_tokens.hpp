@@ -27,7 +27,6 @@ class Words {
         : words_(std::move(words)), at_(first) {}
 
     [[nodiscard]] bool empty() const { return at_ >= words_.size(); }
-    [[nodiscard]] const std::string& peek() const;
     std::string text(const char* what);
     // A finite number within [min, max]; `what` names it in the message.
     double number(const char* what, double min, double max);
