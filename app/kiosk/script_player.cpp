@@ -193,6 +193,9 @@ void ScriptPlayer::poll(double now, const workflow::Status& status, ScriptSink& 
             } else if (const auto* frame = std::get_if<FrameStep>(&step.kind)) {
                 sink.saveFrame(runtimePath(frame->path, status, true));
                 complete(scheduled);
+                // The frame shows the screen as the steps before it left it: the steps after
+                // it wait for the next call.
+                return;
             } else if (const auto* wait = std::get_if<WaitStep>(&step.kind)) {
                 if (!pollWait(step, *wait, now, status)) {
                     return;

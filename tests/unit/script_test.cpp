@@ -416,6 +416,20 @@ TEST(ScriptPlayer, ChecksSeeTheStatusOfTheFrameAfterAnAction) {
     EXPECT_TRUE(p.finished()) << p.failure();
 }
 
+// A frame shows the screen as the steps before it left it: the next step waits for the
+// following frame, or a `finish` after it would already show in the picture.
+TEST(ScriptPlayer, AFrameEndsTheCallSoLaterStepsMissThePicture) {
+    ScriptPlayer p = player("run\nframe a.png\nfinish\n");
+    Recorder r;
+    workflow::Status st;
+    p.poll(0.0, st, r);
+    ASSERT_EQ(r.log.size(), 2U);
+    EXPECT_EQ(r.log.back(), "frame a.png");
+    p.poll(0.02, st, r);
+    EXPECT_EQ(r.log.size(), 3U);
+    EXPECT_TRUE(p.finished());
+}
+
 TEST(ScriptPlayer, FailedChecksNameTheLine) {
     ScriptPlayer p = player("# comment\nexpect state review # the end\nrun\n");
     Recorder r;
@@ -518,7 +532,9 @@ TEST(ScriptPlayer, VariablesAndPaths) {
     workflow::Status st;
     p.poll(0.0, st, r);
     st.exportedPath = "/out/mask.nii.gz";
-    p.poll(0.1, st, r);
+    for (double t = 0.1; t < 0.5 && !p.finished(); t += 0.1) { // each frame ends a call
+        p.poll(t, st, r);
+    }
     EXPECT_TRUE(p.finished()) << p.failure();
     EXPECT_EQ(r.log, (std::vector<std::string>{"load /scans/ct.nii", "export /out/mask.nii.gz",
                                                "frame /out/shots/one.png", "frame /abs/two.png",
