@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# The main job: builds steerseg (release) and runs it on its built-in sample scan: prints the GPU
-# and the scan, segments the phantom's lesion from one seed until the surface converges, writes
-# the mask and a report, and renders a few frames of the result. Installs what it needs first.
-# Output goes to ./out/ (override with STEERSEG_OUT). Offscreen: the kiosk window and KMS
-# backends come with the kiosk shell.
+# The main job: builds steerseg (release) and runs the kiosk on its built-in sample scan.
+#   - Where there is a display ($DISPLAY or $WAYLAND_DISPLAY): the kiosk in a window with the
+#     sample loaded, for an operator to probe, seed, steer and export by touch, mouse and keys.
+#   - Elsewhere: offscreen, replaying the demo session (tests/scenarios/demo.session): load,
+#     probe the lesion, seed, evolve until converged, review, export. The mask, frames of the
+#     full screen and the audit log go to ./out/ (override with STEERSEG_OUT).
+# STEERSEG_PLATFORM=offscreen|window|kms forces a display backend. Installs what it needs first.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -13,24 +15,30 @@ cmake --build --preset release -j "$(nproc)"
 bin=build/release/steerseg
 out=${STEERSEG_OUT:-out}
 mkdir -p "$out"
+out=$(cd "$out" && pwd)
+
+platform=${STEERSEG_PLATFORM:-}
+if [[ -z "$platform" ]]; then
+  if [[ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]]; then platform=window; else platform=offscreen; fi
+fi
+# The kiosk refuses to run as root (an appliance runs it as its own user); a fresh build
+# machine or container is often root.
+root=()
+if [[ $(id -u) -eq 0 ]]; then root=(--allow-root); fi
+cat >"$out/kiosk.toml" <<TOML
+[audit]
+path = "$out/audit.jsonl"
+[export]
+folder = "$out"
+TOML
 
 "$bin" gpu-info >"$out/gpu-info.json"
 echo "GPU: $(grep '"renderer"' "$out/gpu-info.json")"
-"$bin" info builtin:sample >"$out/sample-info.json"
-
-# The lesion of the phantom (app/core/sample_phantom.hpp): one seed inside it, T and eps around
-# its intensity, mostly data term.
-segmentation=(--seed 80,56,52,5 --T 800 --eps 100 --alpha 0.8)
-"$bin" segment --input builtin:sample "${segmentation[@]}" --converge --max-iterations 2000 \
-  --output "$out/lesion-mask.nii.gz" --report "$out/segment-report.json"
-
-mask=(--input builtin:sample --mask "$out/lesion-mask.nii.gz")
-"$bin" render "${mask[@]}" --size 384x384 --view 3d --surface translucent --output "$out/frame-3d.png"
-"$bin" render "${mask[@]}" --size 384x384 --view 3d --clip 0,-1,0,-56 --output "$out/frame-3d-clip.png"
-"$bin" render "${mask[@]}" --size 512x512 --view axial --slice 52 --output "$out/frame-axial.png"
-"$bin" render "${mask[@]}" --size 512x512 --view coronal --slice 56 --output "$out/frame-coronal.png"
-"$bin" render --input builtin:sample --view sagittal --slice 80 --speed --T 800 --eps 100 \
-  --size 512x512 --output "$out/frame-sagittal-speed.png"
-
-echo "steerseg: mask, report and frames in $out/"
-ls -l "$out"
+if [[ "$platform" == "offscreen" ]]; then
+  "$bin" kiosk --platform offscreen --config "$out/kiosk.toml" "${root[@]}" \
+    --script tests/scenarios/demo.session --frames "$out" --size 1280x800 --stats "$out/frame-stats.json"
+  echo "steerseg: the demo session's mask, frames, audit log and frame statistics are in $out/"
+  ls -l "$out"
+else
+  "$bin" kiosk --platform "$platform" --config "$out/kiosk.toml" "${root[@]}" --scan builtin:sample
+fi

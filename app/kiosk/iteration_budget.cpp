@@ -13,11 +13,17 @@ IterationBudget::IterationBudget(double seconds, int minIterations, int maxItera
     }
 }
 
-int IterationBudget::next() const {
+int IterationBudget::next() {
+    // Credit saved over idle frames is capped: a run resumed after a pause must not spend a
+    // burst of frames on the solver.
+    credit_ = std::min(credit_ + seconds_, 2.0 * std::max(seconds_, perIteration_ * min_));
     if (perIteration_ <= 0.0) {
         return min_; // first frame: measure before committing the frame to a guess
     }
-    const double fit = std::floor(seconds_ / perIteration_);
+    if (credit_ < perIteration_ * min_) {
+        return 0;
+    }
+    const double fit = std::floor(credit_ / perIteration_);
     return static_cast<int>(std::clamp(fit, static_cast<double>(min_), static_cast<double>(max_)));
 }
 
@@ -28,6 +34,9 @@ void IterationBudget::record(int iterations, double seconds) {
     const double sample = seconds / iterations;
     constexpr double kWeight = 0.3;
     perIteration_ = perIteration_ <= 0.0 ? sample : (1.0 - kWeight) * perIteration_ + kWeight * sample;
+    // One very slow call (the driver compiling, the machine busy) repays a few frames' worth,
+    // not a stall.
+    credit_ = std::max(credit_ - seconds, -4.0 * std::max(seconds_, perIteration_));
 }
 
 } // namespace steerseg::kiosk

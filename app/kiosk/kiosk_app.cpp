@@ -178,6 +178,7 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
     std::uint64_t shownScan = 0;
     std::vector<std::filesystem::path> pendingFrames;
     const double frameBudget = cfg.frame.budgetMs * 1e-3;
+    double panelSeconds = 0.0; // the panel, composition and present: an average over frames
     const Clock::time_point start = Clock::now();
     int exitCode = 0;
 
@@ -230,12 +231,13 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
         const bool evolving = flow.state() == workflow::State::Evolving;
         double solverSeconds = 0.0;
         if (evolving) {
-            const int n = budget.next();
-            const Clock::time_point t = Clock::now();
-            const solver::StepResult r = flow.evolve(n);
-            solverSeconds = secondsSince(t);
-            budget.record(r.iterations, solverSeconds);
-            stats.iterations(r.iterations);
+            if (const int n = budget.next(); n > 0) {
+                const Clock::time_point t = Clock::now();
+                const solver::StepResult r = flow.evolve(n);
+                solverSeconds = secondsSince(t);
+                budget.record(r.iterations, solverSeconds);
+                stats.iterations(r.iterations);
+            }
         }
 
         screen.begin({0.08F, 0.08F, 0.09F});
@@ -245,14 +247,15 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
                 painter.reset();
                 shownScan = engine.scansAttached();
             }
-            // The views get what the solver left of the frame; a script waiting for a frame
-            // gets the whole frame for it.
-            const double left = std::max(frameBudget - solverSeconds, frameBudget * 0.25);
+            // The views get what the solver and the panel leave of the frame.
+            const double left =
+                std::max(frameBudget - solverSeconds - panelSeconds, frameBudget * 0.25);
             screenState = painter.paint(*session, flow.status(), engine.levelSetVersion(),
                                         screenState.layout, left, screen);
             const auto [pixels, seconds] = painter.takeDrawn();
             stats.drawn(pixels, seconds);
         }
+        const Clock::time_point panelStart = Clock::now();
         glBindFramebuffer(GL_FRAMEBUFFER, screen.framebuffer());
         std::vector<workflow::Action> panel =
             touch.drawFrame(screen.size(), now, screenState, flow.status());
@@ -260,6 +263,8 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
             actions.push_back(std::move(a));
         }
         screen.present(display->framebuffer(), physical);
+        glFinish(); // the panel's and the present's cost, for the next frame's split
+        panelSeconds = 0.8 * panelSeconds + 0.2 * secondsSince(panelStart);
         display->present();
         const double frameSeconds = secondsSince(frameStart);
         stats.frame(frameSeconds, evolving);

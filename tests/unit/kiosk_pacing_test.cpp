@@ -10,6 +10,7 @@
 #include <vector>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace steerseg::test {
 namespace {
@@ -17,27 +18,54 @@ namespace {
 using kiosk::IterationBudget;
 using kiosk::ViewRefiner;
 
-TEST(IterationBudget, StartsAtTheMinimumThenFitsTheMeasuredCost) {
+// Runs `frames` frames of a solver whose iterations cost `cost` seconds each; returns the
+// iterations per frame and how many frames ran none.
+std::pair<double, int> simulate(IterationBudget& budget, double cost, int frames) {
+    long long total = 0;
+    int skipped = 0;
+    for (int f = 0; f < frames; ++f) {
+        const int n = budget.next();
+        skipped += n == 0 ? 1 : 0;
+        total += n;
+        budget.record(n, n * cost);
+    }
+    return {static_cast<double>(total) / frames, skipped};
+}
+
+TEST(IterationBudget, StartsAtTheMinimumThenGivesTheSolverItsShare) {
     IterationBudget budget(0.010, 2, 500);
     EXPECT_EQ(budget.next(), 2);
-    budget.record(2, 0.002); // 1 ms per iteration
-    EXPECT_EQ(budget.next(), 10);
-    for (int n = 0; n < 30; ++n) {
-        budget.record(10, 0.001); // the front shrank: 0.1 ms
-    }
-    EXPECT_NEAR(budget.next(), 100, 2);
+    budget.record(2, 0.002); // 1 ms per iteration: 10 fit a frame's 10 ms
+    const auto [perFrame, skipped] = simulate(budget, 0.001, 100);
+    EXPECT_NEAR(perFrame, 10.0, 1.0);
+    EXPECT_EQ(skipped, 0);
+    // The front shrank: 0.1 ms per iteration, about 100 a frame.
+    EXPECT_NEAR(simulate(budget, 0.0001, 100).first, 100.0, 10.0);
+}
+
+TEST(IterationBudget, ASlowSolverRunsEveryFewFramesAndKeepsItsShare) {
+    IterationBudget budget(0.010, 1, 64);
+    EXPECT_EQ(budget.next(), 1);
+    budget.record(1, 0.030); // one iteration costs three frames' share
+    const auto [perFrame, skipped] = simulate(budget, 0.030, 300);
+    EXPECT_NEAR(perFrame, 1.0 / 3.0, 0.05); // 10 ms of solver per frame on average
+    EXPECT_NEAR(skipped, 200, 15);
 }
 
 TEST(IterationBudget, ClampsAndIgnoresNonsense) {
     IterationBudget budget(0.010, 1, 50);
+    EXPECT_EQ(budget.next(), 1);
     budget.record(1, 1e-9);
     EXPECT_EQ(budget.next(), 50);
     budget.record(0, 5.0);
     budget.record(3, std::numeric_limits<double>::quiet_NaN());
     budget.record(3, -1.0);
     EXPECT_EQ(budget.next(), 50);
-    budget.record(1, 10.0); // one very slow frame weighs 30%, not all
-    EXPECT_GE(budget.next(), 1);
+    budget.record(1, 10.0); // one very slow call: a few frames go by, then it runs again
+    int frames = 0;
+    while (budget.next() == 0) {
+        ASSERT_LT(++frames, 10000);
+    }
     EXPECT_THROW(IterationBudget(0.0, 1, 2), std::invalid_argument);
     EXPECT_THROW(IterationBudget(0.01, 3, 2), std::invalid_argument);
 }
