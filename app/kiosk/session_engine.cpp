@@ -2,6 +2,8 @@
 
 #include "gpu/gl.hpp"
 #include "io/scan_reader.hpp"
+#include "kiosk/view_setup.hpp"
+#include "render/slice_frame.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -125,6 +127,12 @@ workflow::LoadPoll SessionEngine::pollLoad() {
     info_.minValue = scan.stats().min;
     info_.maxValue = scan.stats().max;
     info_.units = session_->format() == "dicom" && scan.stats().min < -500.0 ? "HU" : "";
+    // Which index axis each orientation pages along depends on how the scan is stored.
+    for (const workflow::SliceAxis axis :
+         {workflow::SliceAxis::Axial, workflow::SliceAxis::Coronal, workflow::SliceAxis::Sagittal}) {
+        info_.sliceCount[static_cast<int>(axis)] =
+            scan.dims()[render::sliceAxisFor(scan.geometry(), viewKindOf(axis))];
+    }
     volumeMl_.reset();
     changed();
     ++attached_;
