@@ -126,4 +126,19 @@ std::vector<double> parseNumberList(const std::string& text, std::size_t count,
     return out;
 }
 
+std::pair<int, int> parseSize(const std::string& text, const std::string& what, int minSide,
+                              int maxSide) {
+    const auto x = text.find('x');
+    if (x == std::string::npos) {
+        throw UsageError(what + ": expected WIDTHxHEIGHT, got '" + text + "'");
+    }
+    const long long w = parseInteger(text.substr(0, x), what + " width");
+    const long long h = parseInteger(text.substr(x + 1), what + " height");
+    if (w < minSide || h < minSide || w > maxSide || h > maxSide) {
+        throw UsageError(what + ": width and height must be " + std::to_string(minSide) + ".." +
+                         std::to_string(maxSide) + ", got '" + text + "'");
+    }
+    return {static_cast<int>(w), static_cast<int>(h)};
+}
+
 } // namespace steerseg::cli

@@ -5,6 +5,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace steerseg::cli {
@@ -42,6 +43,10 @@ class Args {
 double parseNumber(const std::string& text, const std::string& what);
 long long parseInteger(const std::string& text, const std::string& what);
 // "a,b,c" -> numbers; `count` of them exactly.
+// "WIDTHxHEIGHT" with each side in [minSide, maxSide]; UsageError naming `what` otherwise.
+std::pair<int, int> parseSize(const std::string& text, const std::string& what, int minSide,
+                              int maxSide);
+
 std::vector<double> parseNumberList(const std::string& text, std::size_t count,
                                     const std::string& what);
 

@@ -3,27 +3,10 @@
 #include "kiosk/kiosk_app.hpp"
 
 #include <iostream>
+#include <tuple>
 #include <unistd.h>
 
 namespace steerseg::cli {
-
-namespace {
-
-void parseSize(const std::string& text, kiosk::KioskOptions& o) {
-    const auto x = text.find('x');
-    if (x == std::string::npos) {
-        throw UsageError("--size: expected WIDTHxHEIGHT, got '" + text + "'");
-    }
-    const long long w = parseInteger(text.substr(0, x), "--size width");
-    const long long h = parseInteger(text.substr(x + 1), "--size height");
-    if (w < 64 || h < 64 || w > 16384 || h > 16384) {
-        throw UsageError("--size: each side must be 64..16384 pixels, got '" + text + "'");
-    }
-    o.width = static_cast<int>(w);
-    o.height = static_cast<int>(h);
-}
-
-} // namespace
 
 int runKiosk(std::span<const std::string> words) {
     const Args args(words, {"platform", "config", "script", "scan", "frames", "size", "max-seconds", "stats"},
@@ -54,7 +37,8 @@ int runKiosk(std::span<const std::string> words) {
         o.frames = *f;
     }
     if (const auto s = args.value("size")) {
-        parseSize(*s, o);
+        // The panel needs room for its touch targets; the GPU's framebuffers top out at 16384.
+        std::tie(o.width, o.height) = parseSize(*s, "--size", 64, 16384);
     }
     if (const auto m = args.number("max-seconds")) {
         if (!(*m > 0.0)) {

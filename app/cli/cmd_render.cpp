@@ -42,19 +42,6 @@ template <typename F> auto usage(F&& parse) -> decltype(parse()) {
     }
 }
 
-glm::ivec2 parseSize(const std::string& text) {
-    const auto x = text.find('x');
-    if (x == std::string::npos) {
-        throw UsageError("--size: expected WxH, got '" + text + "'");
-    }
-    const long long w = parseInteger(text.substr(0, x), "--size width");
-    const long long h = parseInteger(text.substr(x + 1), "--size height");
-    if (w < 1 || h < 1 || w > 8192 || h > 8192) {
-        throw UsageError("--size: width and height must be 1..8192");
-    }
-    return {static_cast<int>(w), static_cast<int>(h)};
-}
-
 render::ClipPlane parseClip(const std::string& text) {
     const std::vector<double> v = parseNumberList(text, 4, "--clip");
     const glm::dvec3 n(v[0], v[1], v[2]);
@@ -175,7 +162,8 @@ int runRender(std::span<const std::string> words) {
     const std::string output = args.required("output");
     render::ViewParams p;
     p.kind = usage([&] { return render::parseViewKind(args.value("view").value_or("3d")); });
-    p.size = parseSize(args.value("size").value_or("512x512"));
+    const auto [w, h] = parseSize(args.value("size").value_or("512x512"), "--size", 1, 8192);
+    p.size = {w, h};
     const bool segment = wantsSegmentation(args);
     if (args.value("mask") && segment) {
         throw UsageError("--mask and the segmentation options exclude each other");
