@@ -38,19 +38,7 @@ ScreenCompositor::ScreenCompositor(const glm::ivec2& physicalSize, int rotationD
         throw std::invalid_argument("screen size must be positive");
     }
     gpu::GlStateGuard guard;
-    colour_ = gpu::createTexture();
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, colour_.id());
-    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, size_.x, size_.y);
-    // Nearest: unturned or turned by quarter turns, each display pixel shows one logical pixel.
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    framebuffer_ = gpu::Framebuffer(newFramebuffer());
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_.id(), 0);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-        throw gpu::GlError("the logical screen's framebuffer is incomplete");
-    }
+    screen_.ensureSize(size_);
     source_ = gpu::Framebuffer(newFramebuffer());
     if (quarterTurns_ != 0) {
         present_ = gpu::buildGraphicsProgram("kiosk/present.vert", "kiosk/present.frag");
@@ -62,7 +50,7 @@ ScreenCompositor::ScreenCompositor(const glm::ivec2& physicalSize, int rotationD
 }
 
 void ScreenCompositor::begin(const glm::vec3& background) {
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, screen_.framebuffer());
     glViewport(0, 0, size_.x, size_.y);
     glDisable(GL_SCISSOR_TEST);
     glClearColor(background.r, background.g, background.b, 1.0F);
@@ -80,7 +68,7 @@ void ScreenCompositor::drawPicture(unsigned int texture, const glm::ivec2& pictu
     glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, source_.id());
     glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, screen_.framebuffer());
     glDisable(GL_SCISSOR_TEST);
     // Row 0 of the picture is its top; GL counts rows from the bottom: the blit flips.
     const int top = size_.y - rect.y;
@@ -95,7 +83,7 @@ void ScreenCompositor::drawPicture(unsigned int texture, const glm::ivec2& pictu
 void ScreenCompositor::present(unsigned int displayFramebuffer, const glm::ivec2& displaySize) {
     gpu::GlStateGuard guard;
     if (quarterTurns_ == 0) {
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, screen_.framebuffer());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, displayFramebuffer);
         glDisable(GL_SCISSOR_TEST);
         glBlitFramebuffer(0, 0, size_.x, size_.y, 0, 0, displaySize.x, displaySize.y,
@@ -111,7 +99,7 @@ void ScreenCompositor::present(unsigned int displayFramebuffer, const glm::ivec2
         glUseProgram(present_.id());
         glUniform1i(glGetUniformLocation(present_.id(), "quarterTurns"), quarterTurns_);
         glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_2D, colour_.id());
+        glBindTexture(GL_TEXTURE_2D, screen_.texture());
         glBindVertexArray(vertexArray_.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindVertexArray(0);
@@ -120,20 +108,12 @@ void ScreenCompositor::present(unsigned int displayFramebuffer, const glm::ivec2
 }
 
 RgbaImage ScreenCompositor::capture() const {
-    gpu::GlStateGuard guard;
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    RgbaImage bottomUp{size_.x, size_.y, {}};
-    bottomUp.pixels.resize(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y) * 4);
-    glReadPixels(0, 0, size_.x, size_.y, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.pixels.data());
-    gpu::checkGl("reading the screen back");
+    const RgbaImage bottomUp = screen_.readback();
     RgbaImage image{size_.x, size_.y, std::vector<std::uint8_t>(bottomUp.pixels.size())};
-    const auto row = static_cast<std::size_t>(size_.x) * 4;
+    const auto row = static_cast<std::ptrdiff_t>(size_.x) * 4;
     for (int y = 0; y < size_.y; ++y) {
-        std::copy_n(bottomUp.pixels.begin() +
-                        static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(size_.y - 1 - y)),
-                    row, image.pixels.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y)));
+        std::copy_n(bottomUp.pixels.begin() + row * (size_.y - 1 - y), row,
+                    image.pixels.begin() + row * y);
     }
     // A screen has no transparency: the 3D view's picture carries its own coverage in alpha.
     for (std::size_t n = 3; n < image.pixels.size(); n += 4) {

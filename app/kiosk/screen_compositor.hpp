@@ -6,6 +6,7 @@
 // draws the same PNGs on every backend and rotation.
 #include "core/rgba_image.hpp"
 #include "gpu/gl_handle.hpp"
+#include "render/render_target.hpp"
 #include "ui/layout.hpp"
 
 #include <glm/glm.hpp>
@@ -22,7 +23,7 @@ class ScreenCompositor {
     [[nodiscard]] glm::ivec2 size() const { return size_; }
     // The logical screen's framebuffer, bound and cleared to the background.
     void begin(const glm::vec3& background);
-    [[nodiscard]] unsigned int framebuffer() const { return framebuffer_.id(); }
+    [[nodiscard]] unsigned int framebuffer() const { return screen_.framebuffer(); }
     // A picture (row 0 at the top, as the renderer writes it) scaled into `rect`.
     void drawPicture(unsigned int texture, const glm::ivec2& pictureSize, const ui::Rect& rect);
     // The logical screen onto the display's framebuffer, turned as mounted.
@@ -33,9 +34,8 @@ class ScreenCompositor {
   private:
     glm::ivec2 size_;
     int quarterTurns_;
-    gpu::Texture colour_;
-    gpu::Framebuffer framebuffer_;
-    gpu::Framebuffer source_; // a picture attached for blitting
+    render::RenderTarget screen_; // GL rows: the bottom of the screen first
+    gpu::Framebuffer source_;     // a picture attached for blitting
     gpu::Program present_;
     gpu::VertexArray vertexArray_;
 };

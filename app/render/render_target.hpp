@@ -13,8 +13,11 @@ class RenderTarget {
   public:
     void ensureSize(const glm::ivec2& size);
     [[nodiscard]] GLuint texture() const { return texture_.id(); }
+    // Its framebuffer, for a caller that draws into the picture with GL (the kiosk's screen).
+    [[nodiscard]] GLuint framebuffer() const { return framebuffer_.id(); }
     [[nodiscard]] glm::ivec2 size() const { return size_; }
-    // Waits for the GPU and copies the picture out (row 0 = top).
+    // Waits for the GPU and copies the picture out: GL's row 0 first, which is the top of a
+    // picture the compute shaders wrote.
     [[nodiscard]] RgbaImage readback() const;
 
   private:
