@@ -1,5 +1,7 @@
 #include "io/byte_source.hpp"
 
+#include "io/read_progress.hpp"
+
 #include "io/scan_reader.hpp"
 
 #include <algorithm>
@@ -38,6 +40,7 @@ std::size_t FileSource::read(std::span<std::byte> out) {
         throw ScanError(path_, "read error after " + std::to_string(position_ + got) + " bytes");
     }
     position_ += got;
+    noteBytesRead(got);
     return got;
 }
 

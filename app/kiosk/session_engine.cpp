@@ -1,6 +1,7 @@
 #include "kiosk/session_engine.hpp"
 
 #include "gpu/gl.hpp"
+#include "io/read_progress.hpp"
 #include "io/scan_reader.hpp"
 #include "kiosk/view_setup.hpp"
 #include "render/slice_frame.hpp"
@@ -15,6 +16,8 @@ struct SessionEngine::PendingLoad {
     std::future<void> done;
     io::LoadedScan result;
     std::string error;
+    std::uint64_t fileBytes = 0; // 0: unknown (a folder, the sample)
+    std::atomic<std::uint64_t> bytesRead{0};
 };
 
 namespace {
@@ -75,7 +78,12 @@ void SessionEngine::beginLoad(const std::string& path) {
     PendingLoad* raw = load.get();
     // The worker writes only into its own PendingLoad, which lives (in pending_ or abandoned_)
     // until the worker has been joined.
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(path, ec)) {
+        load->fileBytes = std::filesystem::file_size(path, ec);
+    }
     load->done = std::async(std::launch::async, [raw] {
+        io::countReadsInto(&raw->bytesRead);
         try {
             raw->result = io::readScan(raw->path);
         } catch (const std::exception& e) {
@@ -83,6 +91,7 @@ void SessionEngine::beginLoad(const std::string& path) {
         } catch (...) {
             raw->error = raw->path + ": unknown error while reading";
         }
+        io::countReadsInto(nullptr);
     });
     pending_ = std::move(load);
 }
@@ -96,6 +105,11 @@ workflow::LoadPoll SessionEngine::pollLoad() {
         return poll;
     }
     if (pending_->done.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
+        if (pending_->fileBytes > 0) {
+            // The file's bytes read so far; the upload to the GPU that follows is quick.
+            poll.progress = std::min(0.99, static_cast<double>(pending_->bytesRead.load()) /
+                                               static_cast<double>(pending_->fileBytes));
+        }
         return poll;
     }
     pending_->done.get();
