@@ -55,8 +55,10 @@ class ContextScope {
 
 ImGuiLayer::ImGuiLayer(const ImGuiLayerOptions& options) {
     IMGUI_CHECKVERSION();
-    touchPx_ = touchTargetPx(9.0, options.dpi);
-    fontPx_ = std::clamp(std::round(touchPx_ * 0.5), 13.0, 96.0);
+    touchPx_ = touchTargetPx(options.touchMm, options.dpi);
+    const double scale =
+        std::isfinite(options.fontScale) ? std::clamp(options.fontScale, 0.5, 4.0) : 1.0;
+    fontPx_ = std::clamp(std::round(touchPx_ * 0.5 * scale), 13.0, 192.0);
     context_ = ImGui::CreateContext();
     ImGui::SetCurrentContext(context_);
     ImGuiIO& io = ImGui::GetIO();

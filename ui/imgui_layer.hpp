@@ -18,7 +18,9 @@ namespace steerseg::ui {
 
 struct ImGuiLayerOptions {
     double dpi = 96.0;
-    std::string fontPath; // "" = DejaVuSans of fonts-dejavu-core
+    double touchMm = 9.0;   // the smallest touch target (config ui.touch_target_mm, >= 9)
+    double fontScale = 1.0; // text relative to the size the touch target implies
+    std::string fontPath;   // "" = DejaVuSans of fonts-dejavu-core
 };
 
 class ImGuiLayer {

@@ -24,12 +24,12 @@ double touchTargetPx(double mm, double dpi) {
     return size * dpi / 25.4;
 }
 
-Layout computeLayout(int width, int height, double dpi) {
+Layout computeLayout(int width, int height, double dpi, double touchMm) {
     Layout l;
     if (width <= 0 || height <= 0) {
         return l;
     }
-    const double touch = touchTargetPx(kMinTouchMm, dpi);
+    const double touch = touchTargetPx(touchMm, dpi);
     if (width >= height) {
         // The panel's widest row is a name, -, a slider and +: four targets, their gaps and
         // the window's padding.

@@ -34,7 +34,8 @@ double touchTargetPx(double mm, double dpi);
 // Landscape (width >= height): the 3D view large on the left, the two slices stacked in a
 // column, the panel on the right, at least 5.5 touch targets wide (a parameter's row). Portrait:
 // the 3D view on top, the two slices side by side, the panel below. Sizes <= 0 give empty rects.
-Layout computeLayout(int width, int height, double dpi);
+// `touchMm`: the touch target (config ui.touch_target_mm, at least 9 mm).
+Layout computeLayout(int width, int height, double dpi, double touchMm = 9.0);
 
 Region regionAt(const Layout& layout, double x, double y);
 

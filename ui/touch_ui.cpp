@@ -9,6 +9,8 @@ namespace {
 ImGuiLayerOptions layerOptions(const TouchUiOptions& o) {
     ImGuiLayerOptions l;
     l.dpi = o.dpi;
+    l.touchMm = o.touchMm;
+    l.fontScale = o.fontScale;
     l.fontPath = o.fontPath;
     return l;
 }

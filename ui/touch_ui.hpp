@@ -20,6 +20,8 @@ namespace steerseg::ui {
 
 struct TouchUiOptions {
     double dpi = 96.0;
+    double touchMm = 9.0;   // config ui.touch_target_mm
+    double fontScale = 1.0; // config ui.font_scale
     double probeRadiusMm = 5.0;
     double longPressMs = 600.0;
     std::string fontPath;           // "" = DejaVuSans

@@ -1,10 +1,9 @@
 #include "kiosk/frame_stats.hpp"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
@@ -18,7 +17,8 @@ Percentiles percentiles(std::vector<double> samples) {
     }
     std::sort(samples.begin(), samples.end());
     const auto at = [&](double q) {
-        const auto index = static_cast<std::size_t>(std::ceil(q * static_cast<double>(samples.size()))) - 1;
+        const auto index =
+            static_cast<std::size_t>(std::ceil(q * static_cast<double>(samples.size()))) - 1;
         return samples[std::min(index, samples.size() - 1)];
     };
     p.p50 = at(0.50);
@@ -41,8 +41,8 @@ nlohmann::json toJson(const Percentiles& p) {
 std::string line(const char* what, const Percentiles& p) {
     std::ostringstream o;
     o.precision(3);
-    o << what << " p50 " << p.p50 * 1e3 << " ms, p90 " << p.p90 * 1e3 << " ms, p99 "
-      << p.p99 * 1e3 << " ms, max " << p.max * 1e3 << " ms (" << p.count << ")";
+    o << what << " p50 " << p.p50 * 1e3 << " ms, p90 " << p.p90 * 1e3 << " ms, p99 " << p.p99 * 1e3
+      << " ms, max " << p.max * 1e3 << " ms (" << p.count << ")";
     return o.str();
 }
 

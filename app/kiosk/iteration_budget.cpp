@@ -33,7 +33,8 @@ void IterationBudget::record(int iterations, double seconds) {
     }
     const double sample = seconds / iterations;
     constexpr double kWeight = 0.3;
-    perIteration_ = perIteration_ <= 0.0 ? sample : (1.0 - kWeight) * perIteration_ + kWeight * sample;
+    perIteration_ =
+        perIteration_ <= 0.0 ? sample : (1.0 - kWeight) * perIteration_ + kWeight * sample;
     // One very slow call (the driver compiling, the machine busy) repays a few frames' worth,
     // not a stall.
     credit_ = std::max(credit_ - seconds, -4.0 * std::max(seconds_, perIteration_));

@@ -18,7 +18,8 @@ class KeyBindings {
   public:
     explicit KeyBindings(config::BindingTable keys);
     // The action a key-down event is bound to; nothing for other events or unbound keys.
-    [[nodiscard]] std::optional<workflow::Action> actionFor(const platform::InputEvent& event) const;
+    [[nodiscard]] std::optional<workflow::Action>
+    actionFor(const platform::InputEvent& event) const;
 
   private:
     config::BindingTable keys_;

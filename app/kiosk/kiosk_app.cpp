@@ -70,7 +70,8 @@ config::LoadedConfig readConfig(const KioskOptions& options, std::ostream& err) 
     const config::BindingCheck check = [](std::string_view action) {
         return workflow::bindingAction(action, 1.0).has_value();
     };
-    config::LoadedConfig loaded = config::loadConfig(config::kioskConfigSources(options.config), check);
+    config::LoadedConfig loaded =
+        config::loadConfig(config::kioskConfigSources(options.config), check);
     for (const config::ConfigProblem& p : loaded.problems) {
         err << "steerseg kiosk: config: " << config::describe(p) << '\n';
     }
@@ -120,7 +121,8 @@ std::unique_ptr<ScriptPlayer> makePlayer(const KioskOptions& options) {
     if (const char* data = std::getenv("STEERSEG_DATA_DIR"); data != nullptr && *data != '\0') {
         vars["DATA"] = data;
     }
-    vars["OUT"] = options.frames ? options.frames->string() : std::filesystem::current_path().string();
+    vars["OUT"] =
+        options.frames ? options.frames->string() : std::filesystem::current_path().string();
     return std::make_unique<ScriptPlayer>(loadScript(*options.script), std::move(vars));
 }
 
@@ -129,13 +131,15 @@ std::unique_ptr<ScriptPlayer> makePlayer(const KioskOptions& options) {
 int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) {
     const config::LoadedConfig loaded = readConfig(options, err);
     const config::KioskConfig& cfg = loaded.config;
-    std::unique_ptr<ScriptPlayer> player = makePlayer(options); // bad scripts fail before a window opens
+    std::unique_ptr<ScriptPlayer> player =
+        makePlayer(options); // bad scripts fail before a window opens
     if (options.frames) {
         std::filesystem::create_directories(*options.frames);
     }
 
-    const std::string configured =
-        options.platform.empty() ? std::string(config::platformName(cfg.display.platform)) : options.platform;
+    const std::string configured = options.platform.empty()
+                                       ? std::string(config::platformName(cfg.display.platform))
+                                       : options.platform;
     const std::string platformName =
         platform::defaultPlatform(configured, platform::DisplayEnvironment::current());
     platform::DisplayOptions displayOpts = displayOptions(cfg.display);
@@ -160,7 +164,11 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
     if (!options.scan.empty()) {
         scans.push_back(options.scan);
     }
-    ui::TouchUi touch({dpi, cfg.probe.radiusMm, static_cast<double>(cfg.ui.longPressMs), "", scans});
+    ui::TouchUi touch({dpi, cfg.ui.touchTargetMm, cfg.ui.fontScale, cfg.probe.radiusMm,
+                       static_cast<double>(cfg.ui.longPressMs), "", scans});
+    const auto layoutOf = [&](const glm::ivec2& size) {
+        return ui::computeLayout(size.x, size.y, dpi, cfg.ui.touchTargetMm);
+    };
     const KeyBindings keys(cfg.bindings.keys);
     IterationBudget budget(cfg.frame.budgetMs * 1e-3 * cfg.frame.solverShare,
                            cfg.frame.minIterations, cfg.frame.maxIterations);
@@ -174,7 +182,7 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
     }
     KioskScriptSink sink;
     std::vector<platform::InputEvent> events;
-    ui::ScreenState screenState{ui::computeLayout(screen.size().x, screen.size().y, dpi), {}, {}};
+    ui::ScreenState screenState{layoutOf(screen.size()), {}, {}};
     std::uint64_t shownScan = 0;
     std::vector<std::filesystem::path> pendingFrames;
     const double frameBudget = cfg.frame.budgetMs * 1e-3;
@@ -221,7 +229,8 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
         for (const workflow::Action& a : actions) {
             const workflow::Workflow::Outcome o = flow.handle(a);
             if (!o.accepted) {
-                err << "steerseg kiosk: " << workflow::actionName(a) << " refused: " << o.reason << '\n';
+                err << "steerseg kiosk: " << workflow::actionName(a) << " refused: " << o.reason
+                    << '\n';
             }
         }
         hadInput = hadInput || !actions.empty();
@@ -241,7 +250,7 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
         }
 
         screen.begin({0.08F, 0.08F, 0.09F});
-        screenState = {ui::computeLayout(screen.size().x, screen.size().y, dpi), {}, {}};
+        screenState = {layoutOf(screen.size()), {}, {}};
         if (session::Session* session = engine.session()) {
             if (engine.scansAttached() != shownScan) {
                 painter.reset();

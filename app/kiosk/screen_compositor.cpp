@@ -59,8 +59,7 @@ void ScreenCompositor::begin(const glm::vec3& background) {
 
 void ScreenCompositor::drawPicture(unsigned int texture, const glm::ivec2& pictureSize,
                                    const ui::Rect& rect) {
-    if (texture == 0 || pictureSize.x <= 0 || pictureSize.y <= 0 || rect.w <= 0 ||
-        rect.h <= 0) {
+    if (texture == 0 || pictureSize.x <= 0 || pictureSize.y <= 0 || rect.w <= 0 || rect.h <= 0) {
         return;
     }
     gpu::GlStateGuard guard;
@@ -87,8 +86,7 @@ void ScreenCompositor::present(unsigned int displayFramebuffer, const glm::ivec2
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, displayFramebuffer);
         glDisable(GL_SCISSOR_TEST);
         glBlitFramebuffer(0, 0, size_.x, size_.y, 0, 0, displaySize.x, displaySize.y,
-                          GL_COLOR_BUFFER_BIT,
-                          displaySize == size_ ? GL_NEAREST : GL_LINEAR);
+                          GL_COLOR_BUFFER_BIT, displaySize == size_ ? GL_NEAREST : GL_LINEAR);
     } else {
         glBindFramebuffer(GL_FRAMEBUFFER, displayFramebuffer);
         glViewport(0, 0, displaySize.x, displaySize.y);

@@ -104,9 +104,8 @@ void ViewPainter::paintView(View& view, session::Session& session, render::ViewP
     const double spent =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     view.refiner.drawn(plan, spent);
-    const glm::ivec2 area = plan.kind == ViewRefiner::Plan::Tile
-                                ? glm::ivec2(plan.region.z, plan.region.w)
-                                : plan.size;
+    const glm::ivec2 area =
+        plan.kind == ViewRefiner::Plan::Tile ? glm::ivec2(plan.region.z, plan.region.w) : plan.size;
     drawnPixels_ += static_cast<double>(area.x) * area.y;
     drawnSeconds_ += spent;
     // A preview shows at once; the full picture once its last tile is drawn.
@@ -147,7 +146,8 @@ ui::ScreenState ViewPainter::paint(session::Session& session, const workflow::St
         const glm::ivec2 size = session.pictureSize(v.shownTarget);
         screen.drawPicture(session.pictureTexture(v.shownTarget), size, rects[n]);
         if (n != kVolume && v.shownFrame) {
-            (n == kFirst ? state.slice1 : state.slice2) = ui::SliceView{*v.shownFrame, size, rects[n]};
+            (n == kFirst ? state.slice1 : state.slice2) =
+                ui::SliceView{*v.shownFrame, size, rects[n]};
         }
     }
     return state;

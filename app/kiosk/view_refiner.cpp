@@ -18,7 +18,8 @@ int groupsIn(double pixels) {
 } // namespace
 
 ViewRefiner::ViewRefiner(double maxPreviewScale, double minPreviewPixels)
-    : maxScale_(std::clamp(maxPreviewScale, 1e-3, 1.0)), minPixels_(std::max(minPreviewPixels, 1.0)) {}
+    : maxScale_(std::clamp(maxPreviewScale, 1e-3, 1.0)),
+      minPixels_(std::max(minPreviewPixels, 1.0)) {}
 
 void ViewRefiner::changed() {
     dirty_ = true;
@@ -75,8 +76,7 @@ void ViewRefiner::drawn(const Plan& plan, double seconds) {
     const double pixels = static_cast<double>(drawnSize.x) * drawnSize.y;
     if (pixels > 0.0 && std::isfinite(seconds) && seconds >= 0.0) {
         const double sample = seconds / pixels;
-        secondsPerPixel_ =
-            secondsPerPixel_ <= 0.0 ? sample : 0.7 * secondsPerPixel_ + 0.3 * sample;
+        secondsPerPixel_ = secondsPerPixel_ <= 0.0 ? sample : 0.7 * secondsPerPixel_ + 0.3 * sample;
     }
     if (plan.kind == Plan::Preview) {
         dirty_ = false;

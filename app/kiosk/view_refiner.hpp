@@ -15,7 +15,7 @@ class ViewRefiner {
   public:
     struct Plan {
         enum Kind { Nothing, Preview, Tile } kind = Nothing;
-        glm::ivec2 size{0};             // the picture to draw
+        glm::ivec2 size{0};              // the picture to draw
         glm::ivec4 region{0, 0, -1, -1}; // Tile: x, y, width, height (render::ViewParams::region)
     };
 

@@ -28,8 +28,8 @@ render::ViewKind viewKindOf(workflow::SliceAxis axis) {
     return render::ViewKind::Axial;
 }
 
-render::ViewParams volumeViewParams(const session::Session& session,
-                                    const workflow::Status& status, const glm::ivec2& size) {
+render::ViewParams volumeViewParams(const session::Session& session, const workflow::Status& status,
+                                    const glm::ivec2& size) {
     render::ViewParams p = session.defaultView(render::ViewKind::Volume3d, size);
     const workflow::ViewState& view = status.view;
     p.camera.orbit(view.yawDeg, view.pitchDeg);
@@ -50,9 +50,8 @@ render::ViewParams volumeViewParams(const session::Session& session,
     return p;
 }
 
-render::ViewParams sliceViewParams(const session::Session& session,
-                                   const workflow::Status& status, workflow::SliceAxis axis,
-                                   bool speed, const glm::ivec2& size) {
+render::ViewParams sliceViewParams(const session::Session& session, const workflow::Status& status,
+                                   workflow::SliceAxis axis, bool speed, const glm::ivec2& size) {
     render::ViewParams p = session.defaultView(viewKindOf(axis), size);
     const int index = status.view.slice[static_cast<int>(axis)];
     if (index >= 0) {
