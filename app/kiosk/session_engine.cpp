@@ -215,11 +215,18 @@ solver::SolverStats SessionEngine::stats() const {
 }
 
 double SessionEngine::volumeMl() const {
+    if (volumeMl_ && std::chrono::steady_clock::now() - volumeAt_ < kVolumeRefresh) {
+        return *volumeMl_;
+    }
+    return exactVolumeMl();
+}
+
+double SessionEngine::exactVolumeMl() const {
     if (!session_ || !session_->hasLevelSet()) {
         return 0.0;
     }
     const auto now = std::chrono::steady_clock::now();
-    if (volumeMl_ && now - volumeAt_ < kVolumeRefresh) {
+    if (volumeMl_ && volumeVersion_ == version_) {
         return *volumeMl_;
     }
     const std::vector<std::uint8_t> mask = session_->mask();
@@ -227,6 +234,7 @@ double SessionEngine::volumeMl() const {
         std::count_if(mask.begin(), mask.end(), [](std::uint8_t v) { return v != 0; }));
     const glm::dvec3 s = session_->scan().geometry().spacing;
     volumeMl_ = inside * s.x * s.y * s.z / 1000.0;
+    volumeVersion_ = version_;
     volumeAt_ = now;
     return *volumeMl_;
 }

@@ -36,6 +36,7 @@ class SessionEngine final : public workflow::Engine {
     solver::StepResult step(int iterations) override;
     [[nodiscard]] solver::SolverStats stats() const override;
     [[nodiscard]] double volumeMl() const override;
+    [[nodiscard]] double exactVolumeMl() const override;
     workflow::SnapshotId snapshot() override;
     void restore(workflow::SnapshotId id) override;
     void drop(workflow::SnapshotId id) override;
@@ -67,6 +68,7 @@ class SessionEngine final : public workflow::Engine {
     // The volume is counted on a mask read back from the GPU: at most a few times a second
     // while the front moves, and at once after an edit.
     mutable std::optional<double> volumeMl_;
+    mutable std::uint64_t volumeVersion_ = 0; // the level set's version it was counted on
     mutable std::chrono::steady_clock::time_point volumeAt_{};
 };
 

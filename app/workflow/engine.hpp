@@ -62,8 +62,11 @@ class Engine {
     virtual void setParams(const solver::LevelSetParams& params) = 0;
     virtual solver::StepResult step(int iterations) = 0;
     [[nodiscard]] virtual solver::SolverStats stats() const = 0;
-    // Segmented volume in millilitres (counted on the GPU side's mask).
+    // Segmented volume in millilitres (counted on the GPU side's mask). While the solver runs
+    // it may be up to a fraction of a second old (counting reads the level set back);
+    // exactVolumeMl() is the volume now, for a run that stopped and for the record.
     [[nodiscard]] virtual double volumeMl() const = 0;
+    [[nodiscard]] virtual double exactVolumeMl() const { return volumeMl(); }
 
     // Level-set copies for undo; restore keeps the snapshot, drop frees it.
     virtual SnapshotId snapshot() = 0;

@@ -197,6 +197,14 @@ solver::StepResult Workflow::evolve(int iterations) {
 void Workflow::enter(State next, std::string message) {
     const State from = status_.state;
     status_.state = next;
+    if (from == State::Evolving && next != State::Evolving && scanLoaded_) {
+        // The readouts during the run may lag a little; the stopped surface's are exact.
+        try {
+            status_.volumeMl = engine_.exactVolumeMl();
+        } catch (const std::exception&) {
+            // The engine's failure surfaces on the next call that needs it; the readout stays.
+        }
+    }
     if (!message.empty()) {
         status_.message = message;
     }

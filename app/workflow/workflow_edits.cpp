@@ -21,7 +21,8 @@ void Workflow::refreshEngineStatus() {
     const solver::SolverStats s = engine_.stats();
     status_.iterations = s.iterations;
     status_.evolvedTime = static_cast<double>(s.evolvedTime);
-    status_.volumeMl = engine_.volumeMl();
+    status_.volumeMl =
+        status_.state == State::Evolving ? engine_.volumeMl() : engine_.exactVolumeMl();
 }
 
 void Workflow::refreshUndoFlags() {
