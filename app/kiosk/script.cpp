@@ -369,10 +369,32 @@ double timeoutWords(Words& w) {
     return kDefaultWaitTimeout;
 }
 
+bool isStatusField(const std::string& word) {
+    const auto& fields = statusFields();
+    return std::find(fields.begin(), fields.end(), word) != fields.end();
+}
+
+std::string knownFields() {
+    std::string known;
+    for (const std::string_view f : statusFields()) {
+        known += (known.empty() ? "" : ", ") + std::string(f);
+    }
+    return known;
+}
+
+// FIELD OP VALUE after the field's name, as `expect` and `wait until` share it.
+void fieldComparison(Words& w, const std::string& field, Condition& c) {
+    c.kind = Condition::Compare;
+    c.field = field;
+    c.op = opWord(w);
+    c.value = w.number("the value", -kMaxValue, kMaxValue);
+}
+
 StepKind wait(Words& w) {
-    const char* usage = "wait converged|loaded|state NAME|iterations N|seconds S [timeout S]";
+    const char* usage =
+        "wait converged|loaded|state NAME|iterations N|until FIELD OP VALUE|seconds S [timeout S]";
     const std::string what = w.text("what to wait for (converged, loaded, state, iterations, "
-                                    "seconds)");
+                                    "until, seconds)");
     WaitStep step;
     if (what == "converged") {
         step.condition.kind = Condition::Converged;
@@ -384,6 +406,14 @@ StepKind wait(Words& w) {
     } else if (what == "iterations") {
         step.condition.kind = Condition::Iterations;
         step.condition.count = w.integer("the iterations", 1, 100000000);
+    } else if (what == "until") {
+        // A field reaching a value, whatever changes it: input from outside the script (a
+        // device, an X server's injected events) as well as the script's own steps.
+        const std::string field = w.text("the field to wait for");
+        if (!isStatusField(field)) {
+            throw LineError("wait until '" + field + "': not a field (" + knownFields() + ")");
+        }
+        fieldComparison(w, field, step.condition);
     } else if (what == "seconds") {
         step.condition.kind = Condition::Seconds;
         step.condition.value = w.number("the seconds", 0.0, kMaxSeconds);
@@ -417,21 +447,13 @@ StepKind expect(Words& w) {
         }
         c.text = w.text("the text");
     } else {
-        const auto& fields = statusFields();
-        if (std::find(fields.begin(), fields.end(), what) == fields.end()) {
-            std::string known;
-            for (const std::string_view f : fields) {
-                known += (known.empty() ? "" : ", ") + std::string(f);
-            }
+        if (!isStatusField(what)) {
             throw LineError("expect '" + what +
                             "': not a check (state, loaded, converged, "
                             "message, exported, or a field: " +
-                            known + ")");
+                            knownFields() + ")");
         }
-        c.kind = Condition::Compare;
-        c.field = what;
-        c.op = opWord(w);
-        c.value = w.number("the value", -kMaxValue, kMaxValue);
+        fieldComparison(w, what, c);
     }
     w.finish(usage);
     return step;

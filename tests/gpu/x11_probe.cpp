@@ -56,6 +56,10 @@ X11Probe::~X11Probe() {
     }
 }
 
+unsigned long X11Probe::rootWindow() const {
+    return display_ == nullptr ? 0UL : XDefaultRootWindow(xdisplay(display_));
+}
+
 std::array<int, 3> X11Probe::pixel(unsigned long window, int x, int y) const {
     XImage* image = XGetImage(xdisplay(display_), window, x, y, 1, 1, AllPlanes, ZPixmap);
     if (image == nullptr) {

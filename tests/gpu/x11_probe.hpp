@@ -19,6 +19,8 @@ class X11Probe {
     X11Probe& operator=(const X11Probe&) = delete;
 
     [[nodiscard]] bool connected() const { return display_ != nullptr; }
+    // The default screen's root window: capture(rootWindow(), ...) is a screenshot of the screen.
+    [[nodiscard]] unsigned long rootWindow() const;
     // RGB of the pixel the X server shows at (x, y) of `window`; {-1, -1, -1} if unreadable.
     [[nodiscard]] std::array<int, 3> pixel(unsigned long window, int x, int y) const;
     // What the X server shows of `window`'s [0, width) x [0, height): RGBA8 rows top-down, alpha

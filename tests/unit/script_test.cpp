@@ -182,6 +182,34 @@ TEST(ScriptParse, WaitsChecksFramesDice) {
     EXPECT_DOUBLE_EQ(dice.value, 0.8);
 }
 
+TEST(ScriptParse, WaitUntilAField) {
+    const Script s = parseScript("wait until seeds >= 2 timeout 20\n"
+                                 "wait until volume_ml < 1.5\n",
+                                 "s");
+    ASSERT_EQ(s.steps.size(), 2U);
+    using C = kiosk::Condition;
+    const auto& seeds = std::get<kiosk::WaitStep>(s.steps[0].kind);
+    EXPECT_EQ(seeds.condition.kind, C::Compare);
+    EXPECT_EQ(seeds.condition.field, "seeds");
+    EXPECT_EQ(seeds.condition.op, C::Op::GreaterEqual);
+    EXPECT_DOUBLE_EQ(seeds.condition.value, 2.0);
+    EXPECT_DOUBLE_EQ(seeds.timeoutSeconds, 20.0);
+    const auto& volume = std::get<kiosk::WaitStep>(s.steps[1].kind);
+    EXPECT_EQ(volume.condition.op, C::Op::Less);
+    EXPECT_DOUBLE_EQ(volume.timeoutSeconds, kiosk::kDefaultWaitTimeout);
+
+    EXPECT_NE(parseError("wait until colour == 3\n")
+                  .find("s.session:1: wait until 'colour': not a "
+                        "field (volume_ml, iterations"),
+              std::string::npos)
+        << parseError("wait until colour == 3\n");
+    EXPECT_NE(parseError("wait until seeds ~ 3\n").find("s.session:1: '~' is not a comparison"),
+              std::string::npos);
+    EXPECT_NE(parseError("wait until seeds >= 2 soon\n").find("s.session:1: unexpected 'soon'"),
+              std::string::npos)
+        << parseError("wait until seeds >= 2 soon\n");
+}
+
 TEST(ScriptParse, TimingCommentsAndLines) {
     const Script s = parseScript("# a session\n"
                                  "\n"
@@ -403,6 +431,31 @@ TEST(ScriptPlayer, WaitsHoldUntilTheStatusSatisfiesThem) {
     p.poll(5.1, st, r);
     EXPECT_TRUE(p.finished()) << p.failure();
     EXPECT_EQ(r.log.size(), 3U);
+}
+
+// `wait until` holds later steps until the status shows the field's value, whatever set it
+// (input from outside the script), and times out with the value it saw.
+TEST(ScriptPlayer, WaitUntilAFieldHoldsUntilItHolds) {
+    ScriptPlayer p = player("wait until seeds >= 2 timeout 5\nrun\n");
+    Recorder r;
+    workflow::Status st;
+    st.seeds = 1;
+    p.poll(0.0, st, r);
+    p.poll(4.9, st, r);
+    EXPECT_TRUE(r.log.empty());
+    EXPECT_FALSE(p.failed());
+    st.seeds = 2;
+    p.poll(4.95, st, r);
+    EXPECT_EQ(r.log.size(), 1U); // the run
+    EXPECT_TRUE(p.finished()) << p.failure();
+
+    ScriptPlayer late = player("wait until seeds >= 2 timeout 5\n");
+    st.seeds = 1;
+    late.poll(10.0, st, r);
+    late.poll(15.0, st, r);
+    ASSERT_TRUE(late.failed());
+    EXPECT_EQ(late.failure(),
+              "t.session:1: wait until seeds >= 2 timeout 5: timed out after 5 s (seeds is 1)");
 }
 
 TEST(ScriptPlayer, ChecksSeeTheStatusOfTheFrameAfterAnAction) {
