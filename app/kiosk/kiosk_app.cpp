@@ -179,6 +179,7 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
     std::vector<std::filesystem::path> pendingFrames;
     const double frameBudget = cfg.frame.budgetMs * 1e-3;
     const Clock::time_point start = Clock::now();
+    double inputSince = -1.0; // the poll that brought the oldest input not yet on screen; -1: none
     int exitCode = 0;
 
     while (!g_stop) {
@@ -206,6 +207,9 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
             sink.frames.clear();
         }
         bool hadInput = !events.empty();
+        if (hadInput && inputSince < 0.0) {
+            inputSince = now;
+        }
         for (const platform::InputEvent& raw : events) {
             if (raw.kind == platform::InputEvent::Kind::Quit) {
                 g_stop = true;
@@ -235,7 +239,7 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
             const solver::StepResult r = flow.evolve(n);
             solverSeconds = secondsSince(t);
             budget.record(r.iterations, solverSeconds);
-            stats.iterations(r.iterations);
+            stats.iterations(r.iterations, solverSeconds);
         }
 
         screen.begin({0.08F, 0.08F, 0.09F});
@@ -262,9 +266,15 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
         screen.present(display->framebuffer(), physical);
         display->present();
         const double frameSeconds = secondsSince(frameStart);
-        stats.frame(frameSeconds, evolving);
-        if (hadInput) {
-            stats.latency(frameSeconds);
+        if (engine.session() != nullptr) { // frames showing a scan: not the wait for a load
+            stats.frame(frameSeconds, evolving);
+        }
+        // Input to screen: from the poll that brought an event to the present of the frame that
+        // drew all it led to. A panel button acts, and is drawn, a frame later: its actions
+        // are still queued here. A script's operator-level actions are no device's input.
+        if (inputSince >= 0.0 && actions.empty()) {
+            stats.latency(secondsSince(start) - inputSince);
+            inputSince = -1.0;
         }
 
         if (!pendingFrames.empty() && (painter.settled() || evolving || !engine.session())) {
