@@ -1,21 +1,24 @@
 #!/usr/bin/env bash
 # The GPU figures in one command: solver iterations/s at 256^3 and 512^3 over a range of active
 # fractions, renderer frame times at 1920x1080 with the solver stepping, time to ITK's evolved
-# time on the real cases, and the README's pictures for comparison with llvmpipe's. Writes
-# bench-gpu.md (the tables) and bench-gpu.json (the same figures) to the output folder.
+# time on the real cases, the README's pictures for comparison with llvmpipe's, and the kiosk's
+# frame loop at 1280x800 and 1920x1080 (tools/bench-kiosk.sh). Writes bench-gpu.md (the tables)
+# and bench-gpu.json (the same figures) to the output folder.
 #
 #   tools/bench-gpu.sh [--small] [--skip PART[,PART...]] [--out DIR] [--bin DIR]
 #   tools/bench-gpu.sh --pack DIR
 #
-# PARTs: solver, render, segment, pictures. --small uses sizes a software rasteriser finishes
-# in a minute or two (CI runs it, so the script cannot rot between GPU sessions). Without --bin
-# it installs what it needs (apt) and builds the benchmarks in build/bench-gpu.
+# PARTs: solver, render, segment, pictures, kiosk. --small uses sizes a software rasteriser
+# finishes in a minute or two (CI runs it, so the script cannot rot between GPU sessions).
+# Without --bin it installs what it needs (apt) and builds the benchmarks in build/bench-gpu.
 #
 # The lent GPU machine has no package registry: on a development machine, --pack DIR builds the
 # benchmarks without OpenImageIO and GDCM (STEERSEG_BENCH_IO=OFF: built-in sample and NIfTI
 # only, pictures as PPM), and puts them, the two libraries they need (nifticlib) and the real
 # cases' scans (from STEERSEG_DATA_DIR) in DIR; there, `DIR/bench-gpu.sh --bin DIR` runs them.
-# It says so when the renderer is a software one: those figures are not GPU figures.
+# The kiosk (steerseg, which needs OpenImageIO's some 280 libraries) is not packed: --bin runs
+# that part only where DIR holds a steerseg. It says so when the renderer is a software one:
+# those figures are not GPU figures.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 
@@ -31,7 +34,7 @@ while (($#)); do
     --out) out=${2:?--out needs a folder}; shift ;;
     --bin) bin=${2:?--bin needs a folder}; shift ;;
     --pack) pack=${2:?--pack needs a folder}; shift ;;
-    -h|--help) sed -n '2,19p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
     *) echo "bench-gpu: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
@@ -46,10 +49,10 @@ cases=(
   "lung|lung-ct-ibsi/nifti/image.nii.gz|lung-ct-ibsi/nifti/mask.nii.gz|94,89,29,3|-46.9|231.1|0.2|2.08|57.6"
 )
 
-build_benches() { # build-dir io(ON|OFF)
+build_benches() { # build-dir io(ON|OFF) [more targets]
   cmake -S "$root" -B "$1" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSTEERSEG_BUILD_TESTS=OFF \
     -DSTEERSEG_BENCH_IO="$2" >/dev/null
-  cmake --build "$1" -j "$(nproc)" --target solver_bench render_frame_bench segment_bench >&2
+  cmake --build "$1" -j "$(nproc)" --target solver_bench render_frame_bench segment_bench "${@:3}" >&2
 }
 
 if [[ -n $pack ]]; then
@@ -78,12 +81,23 @@ fi
 
 if [[ -z $bin ]]; then
   "$root/tools/install-deps.sh"
-  build_benches "$root/build/bench-gpu" ON
+  kiosk_bin=$root/build/bench-gpu/steerseg
+  # CI's small run checks the plumbing, not the figures: the default build's kiosk, which CI
+  # has just built, saves compiling the whole app again in Release.
+  if ((small)) && [[ -x $root/build/default/steerseg ]]; then
+    kiosk_bin=$root/build/default/steerseg
+  fi
+  if wants kiosk && [[ $kiosk_bin == "$root/build/bench-gpu/steerseg" ]]; then
+    build_benches "$root/build/bench-gpu" ON steerseg
+  else
+    build_benches "$root/build/bench-gpu" ON
+  fi
   bin=$root/build/bench-gpu/bench
   scandir=$data
   scan_of() { echo "$scandir/$2"; }
 else
   bin=$(cd "$bin" && pwd)
+  kiosk_bin=$bin/steerseg
   export LD_LIBRARY_PATH="$bin/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
   scan_of() { echo "$bin/data/$1$3"; } # packed names: sarcoma.nii.gz, sarcoma_mask.nii.gz
 fi
@@ -99,7 +113,7 @@ run() { # part command...: runs one benchmark, keeping its output in the log and
   echo "bench-gpu: $part: $*" >&2
   "$@" 2>&1 | tee -a "$log" >>"$out/$part.txt"
 }
-rm -f "$out"/{solver,render,segment,pictures}.txt
+rm -f "$out"/{solver,render,segment,pictures,kiosk}.txt "$out/kiosk/bench-kiosk.json"
 
 renderer=$("$bin/solver_bench" --size 16 --iterations 1 --dense-size 0 2>&1 | sed -n 's/^renderer: \(.*\), volume .*/\1/p')
 software=0
@@ -143,6 +157,18 @@ if wants segment; then
 fi
 if wants pictures; then
   run pictures "$bin/render_frame_bench" --docs "$out/pictures"
+fi
+
+if wants kiosk; then
+  if [[ -x $kiosk_bin && -x $root/tools/bench-kiosk.sh ]]; then
+    kiosk_args=(--bin "$kiosk_bin" --out "$out/kiosk")
+    if ((small)); then
+      kiosk_args+=(--small)
+    fi
+    run kiosk "$root/tools/bench-kiosk.sh" "${kiosk_args[@]}"
+  else
+    echo "bench-gpu: kiosk skipped: no $kiosk_bin (the pack has no kiosk)" >&2
+  fi
 fi
 
 # One Markdown report and one JSON file from the benchmarks' own output.
@@ -196,9 +222,12 @@ for line in text("segment").splitlines():
                                   if case["itk_seconds"] > 0 and case["median_seconds"] > 0 else None)
         case["same_mask_every_run"] = len({r["inside"] for r in case["runs"]}) == 1
 lesion = re.search(r"lesion: (\d+) iterations, evolved time ([\d.]+), (\d+) voxels inside", text("pictures"))
+kiosk_json = out / "kiosk" / "bench-kiosk.json"
+kiosk = json.loads(kiosk_json.read_text()) if kiosk_json.exists() else None
 report = {"renderer": renderer, "software_renderer": software, "small": small, "seconds": seconds,
           "solver": tables(text("solver")), "render": frames, "segment": cases,
-          "sample_lesion": {"iterations": int(lesion[1]), "inside": int(lesion[3])} if lesion else None}
+          "sample_lesion": {"iterations": int(lesion[1]), "inside": int(lesion[3])} if lesion else None,
+          "kiosk": kiosk}
 (out / "bench-gpu.json").write_text(json.dumps(report, indent=2) + "\n")
 
 md = [f"# GPU benchmarks: {renderer}", ""]
@@ -223,6 +252,8 @@ if cases:
     md.append("")
 if lesion:
     md += [f"Sample lesion: {lesion[1]} iterations, {lesion[3]} voxels inside; pictures in pictures/ (compare with llvmpipe's: `idiff`).", ""]
+if kiosk:
+    md += (out / "kiosk" / "bench-kiosk.md").read_text().splitlines() + [""]
 (out / "bench-gpu.md").write_text("\n".join(md))
 EOF
 cat "$md"

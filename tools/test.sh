@@ -124,14 +124,15 @@ tools/bench-gpu.sh --small --out build/bench-gpu-small >build/bench-gpu-small.lo
 python3 - build/bench-gpu-small/bench-gpu.json <<'EOF'
 import json, os, sys
 r = json.load(open(sys.argv[1]))
-missing = [k for k in ("solver", "render") if not r[k]]
+missing = [k for k in ("solver", "render", "kiosk") if not r.get(k)]
 if missing or r["sample_lesion"] is None:
     sys.exit(f"bench-gpu.json lacks {missing or 'the sample lesion'}")
 ran = [c for c in r["segment"] if c.get("median_seconds") is not None]
 if len(ran) < 2 and os.environ.get("STEERSEG_REQUIRE_DATA") == "1":
     sys.exit("bench-gpu.json: the real cases did not run (STEERSEG_DATA_DIR)")
 print(f"bench-gpu --small: {len(r['solver'])} solver tables, {len(r['render'])} frame rows, "
-      f"{len(r['segment'])} real cases, {r['seconds']} s on {r['renderer']}")
+      f"{len(r['segment'])} real cases, kiosk latency p50 {r['kiosk']['sizes'][0]['latency']['p50_ms']} ms, "
+      f"{r['seconds']} s on {r['renderer']}")
 EOF
 summary+=("bench-gpu --small")
 echo "test.sh: passed (${summary[*]})"

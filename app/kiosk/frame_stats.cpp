@@ -16,6 +16,9 @@ Percentiles percentiles(std::vector<double> samples) {
         return p;
     }
     std::sort(samples.begin(), samples.end());
+    for (const double x : samples) {
+        p.total += x;
+    }
     const auto at = [&](double q) {
         const auto index =
             static_cast<std::size_t>(std::ceil(q * static_cast<double>(samples.size()))) - 1;
@@ -31,11 +34,8 @@ Percentiles percentiles(std::vector<double> samples) {
 namespace {
 
 nlohmann::json toJson(const Percentiles& p) {
-    return {{"count", p.count},
-            {"p50_ms", p.p50 * 1e3},
-            {"p90_ms", p.p90 * 1e3},
-            {"p99_ms", p.p99 * 1e3},
-            {"max_ms", p.max * 1e3}};
+    return {{"count", p.count},      {"p50_ms", p.p50 * 1e3}, {"p90_ms", p.p90 * 1e3},
+            {"p99_ms", p.p99 * 1e3}, {"max_ms", p.max * 1e3}, {"total_s", p.total}};
 }
 
 std::string line(const char* what, const Percentiles& p) {
@@ -51,10 +51,15 @@ std::string line(const char* what, const Percentiles& p) {
 void FrameStats::write(const std::filesystem::path& path, const std::string& description) const {
     nlohmann::json j;
     j["display"] = description;
-    j["frames_evolving"] = toJson(percentiles(evolvingFrames_));
+    const Percentiles evolving = percentiles(evolvingFrames_);
+    j["frames_evolving"] = toJson(evolving);
     j["frames_idle"] = toJson(percentiles(idleFrames_));
     j["latency"] = toJson(percentiles(latencies_));
     j["iterations"] = iterations_;
+    j["iterations_per_second"] =
+        evolving.total > 0.0 ? static_cast<double>(iterations_) / evolving.total : 0.0;
+    j["solver_seconds"] = solverSeconds_;
+    j["draw_seconds"] = drawSeconds_;
     j["pixels_per_second"] = drawSeconds_ > 0.0 ? pixels_ / drawSeconds_ : 0.0;
     std::ofstream out(path);
     out << j.dump(2) << '\n';

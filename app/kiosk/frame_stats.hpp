@@ -12,6 +12,7 @@ struct Percentiles {
     double p90 = 0.0;
     double p99 = 0.0;
     double max = 0.0;
+    double total = 0.0; // the samples' sum: rates over the time spent
     std::size_t count = 0;
 };
 Percentiles percentiles(std::vector<double> samples);
@@ -22,13 +23,19 @@ class FrameStats {
         (evolving ? evolvingFrames_ : idleFrames_).push_back(seconds);
     }
     void latency(double seconds) { latencies_.push_back(seconds); }
-    void iterations(int n) { iterations_ += n; }
+    // n solver iterations that took `seconds` (the solver's part of an evolving frame).
+    void iterations(int n, double seconds) {
+        iterations_ += n;
+        solverSeconds_ += seconds;
+    }
     void drawn(double pixels, double seconds) {
         pixels_ += pixels;
         drawSeconds_ += seconds;
     }
-    // {"frames_evolving": {"p50_ms": ...}, "frames_idle": ..., "latency": ..., "iterations": N,
-    //  "pixels_per_second": ...}; throws std::runtime_error naming the path on a write error.
+    // {"frames_evolving": {"p50_ms": ..., "total_s": ...}, "frames_idle": ..., "latency": ...,
+    //  "iterations": N, "iterations_per_second": (per second evolving), "solver_seconds": ...,
+    //  "draw_seconds": ..., "pixels_per_second": ...}; throws std::runtime_error naming the path
+    //  on a write error.
     void write(const std::filesystem::path& path, const std::string& description) const;
     [[nodiscard]] std::string summary() const;
 
@@ -37,6 +44,7 @@ class FrameStats {
     std::vector<double> idleFrames_;
     std::vector<double> latencies_;
     long long iterations_ = 0;
+    double solverSeconds_ = 0.0;
     double pixels_ = 0.0;
     double drawSeconds_ = 0.0;
 };

@@ -188,6 +188,7 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
     const double frameBudget = cfg.frame.budgetMs * 1e-3;
     double panelSeconds = 0.0; // the panel, composition and present: an average over frames
     const Clock::time_point start = Clock::now();
+    double inputSince = -1.0; // the poll that brought the oldest input not yet on screen; -1: none
     int exitCode = 0;
 
     while (!g_stop) {
@@ -215,6 +216,9 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
             sink.frames.clear();
         }
         bool hadInput = !events.empty();
+        if (hadInput && inputSince < 0.0) {
+            inputSince = now;
+        }
         for (const platform::InputEvent& raw : events) {
             if (raw.kind == platform::InputEvent::Kind::Quit) {
                 g_stop = true;
@@ -245,7 +249,7 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
                 const solver::StepResult r = flow.evolve(n);
                 solverSeconds = secondsSince(t);
                 budget.record(r.iterations, solverSeconds);
-                stats.iterations(r.iterations);
+                stats.iterations(r.iterations, solverSeconds);
             }
         }
 
@@ -276,9 +280,15 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
         panelSeconds = 0.8 * panelSeconds + 0.2 * secondsSince(panelStart);
         display->present();
         const double frameSeconds = secondsSince(frameStart);
-        stats.frame(frameSeconds, evolving);
-        if (hadInput) {
-            stats.latency(frameSeconds);
+        if (engine.session() != nullptr) { // frames showing a scan: not the wait for a load
+            stats.frame(frameSeconds, evolving);
+        }
+        // Input to screen: from the poll that brought an event to the present of the frame that
+        // drew all it led to. A panel button acts, and is drawn, a frame later: its actions
+        // are still queued here. A script's operator-level actions are no device's input.
+        if (inputSince >= 0.0 && actions.empty()) {
+            stats.latency(secondsSince(start) - inputSince);
+            inputSince = -1.0;
         }
 
         if (!pendingFrames.empty() && (painter.settled() || evolving || !engine.session())) {
@@ -304,8 +314,8 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
             break;
         }
         // Nothing moving and no display pacing the loop: do not spin a core.
-        if (info.refreshHz <= 0.0 && !evolving && painter.settled() && !hadInput &&
-            pendingFrames.empty()) {
+        if (info.refreshHz <= 0.0 && !evolving && (painter.settled() || !engine.session()) &&
+            !hadInput && pendingFrames.empty()) {
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
         }
     }
