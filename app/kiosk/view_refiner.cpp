@@ -10,6 +10,7 @@ namespace {
 // Tiles are whole 8x8 work groups of the renderer's compute shaders: a thinner tile costs a
 // whole group's time anyway.
 constexpr int kGroup = 8;
+constexpr double kTellingPixels = 4096.0;
 
 int groupsIn(double pixels) {
     return static_cast<int>(std::floor(pixels / kGroup)) * kGroup;
@@ -74,9 +75,14 @@ void ViewRefiner::drawn(const Plan& plan, double seconds) {
     const glm::ivec2 drawnSize =
         plan.kind == Plan::Tile ? glm::ivec2(plan.region.z, plan.region.w) : plan.size;
     const double pixels = static_cast<double>(drawnSize.x) * drawnSize.y;
-    if (pixels > 0.0 && std::isfinite(seconds) && seconds >= 0.0) {
+    // A tiny draw is mostly the dispatch's fixed cost: it says little about the next, larger
+    // one, once there is an estimate. The estimate rises at once with a slow draw and falls
+    // slowly, so the next tile errs on the side of the frame's budget.
+    const bool telling = pixels >= kTellingPixels || secondsPerPixel_ <= 0.0;
+    if (pixels > 0.0 && telling && std::isfinite(seconds) && seconds >= 0.0) {
         const double sample = seconds / pixels;
-        secondsPerPixel_ = secondsPerPixel_ <= 0.0 ? sample : 0.7 * secondsPerPixel_ + 0.3 * sample;
+        secondsPerPixel_ =
+            sample > secondsPerPixel_ ? sample : 0.9 * secondsPerPixel_ + 0.1 * sample;
     }
     if (plan.kind == Plan::Preview) {
         dirty_ = false;
