@@ -6,17 +6,23 @@
 
 namespace steerseg::kiosk {
 
-IterationBudget::IterationBudget(double seconds, int minIterations, int maxIterations)
-    : seconds_(seconds), min_(minIterations), max_(maxIterations) {
-    if (!(seconds > 0.0) || minIterations < 1 || maxIterations < minIterations) {
-        throw std::invalid_argument("iteration budget: need seconds > 0 and 1 <= min <= max");
+IterationBudget::IterationBudget(double share, double frameSeconds, int minIterations,
+                                 int maxIterations)
+    : share_(share), seconds_(share * frameSeconds), min_(minIterations), max_(maxIterations) {
+    if (!(share > 0.0 && share < 1.0) || !(frameSeconds > 0.0) || minIterations < 1 ||
+        maxIterations < minIterations) {
+        throw std::invalid_argument(
+            "iteration budget: need 0 < share < 1, a frame > 0 s and 1 <= min <= max");
     }
 }
 
-int IterationBudget::next() {
+int IterationBudget::next(double lastFrameSeconds) {
+    const double frame = std::isfinite(lastFrameSeconds) && lastFrameSeconds > 0.0
+                             ? lastFrameSeconds
+                             : seconds_ / share_;
     // Credit saved over idle frames is capped: a run resumed after a pause must not spend a
     // burst of frames on the solver.
-    credit_ = std::min(credit_ + seconds_, 2.0 * std::max(seconds_, perIteration_ * min_));
+    credit_ = std::min(credit_ + share_ * frame, 2.0 * std::max(seconds_, perIteration_ * min_));
     if (perIteration_ <= 0.0) {
         return min_; // first frame: measure before committing the frame to a guess
     }

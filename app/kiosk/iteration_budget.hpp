@@ -6,20 +6,24 @@ namespace steerseg::kiosk {
 // The cost of an iteration grows and shrinks with the front (the active set), so it is learned
 // as it goes: an exponential average of the measured seconds per iteration, which follows a
 // growing front within a few frames and ignores one slow frame. Each frame earns the solver its
-// share; iterations spend it. When one iteration costs more than a frame's share (a large scan
-// on a software rasteriser), the solver runs every few frames and the frames between stay
-// quick for the operator's input, instead of every frame running late.
+// share of the time the last frame took; iterations spend it. When one iteration costs more
+// than that (a large scan on a software rasteriser), the solver runs every few frames and the
+// frames between stay quick for the operator's input, instead of every frame running late.
 class IterationBudget {
   public:
-    IterationBudget(double seconds, int minIterations, int maxIterations);
+    // share: the part of the time the solver may take (config frame.solver_share);
+    // frameSeconds: the frame budget, what a frame is assumed to take before one is measured.
+    IterationBudget(double share, double frameSeconds, int minIterations, int maxIterations);
 
-    // This frame's iterations; 0 = let this frame go by (the solver has used its share).
-    [[nodiscard]] int next();
+    // This frame's iterations given how long the last frame took; 0 = let this frame go by
+    // (the solver has had its share).
+    [[nodiscard]] int next(double lastFrameSeconds);
     void record(int iterations, double seconds);
     [[nodiscard]] double secondsPerIteration() const { return perIteration_; }
 
   private:
-    double seconds_;
+    double share_;
+    double seconds_; // the frame budget's share: the credit's scale
     int min_;
     int max_;
     double perIteration_ = 0.0; // 0: nothing measured yet

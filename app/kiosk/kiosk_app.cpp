@@ -170,8 +170,9 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
         return ui::computeLayout(size.x, size.y, dpi, cfg.ui.touchTargetMm);
     };
     const KeyBindings keys(cfg.bindings.keys);
-    IterationBudget budget(cfg.frame.budgetMs * 1e-3 * cfg.frame.solverShare,
+    IterationBudget budget(cfg.frame.solverShare, cfg.frame.budgetMs * 1e-3,
                            cfg.frame.minIterations, cfg.frame.maxIterations);
+    double lastFrameSeconds = 0.0;
     ViewPainter painter(cfg.frame.interactiveScale);
     FrameStats stats;
     StopSignals signals;
@@ -244,7 +245,7 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
         const bool evolving = flow.state() == workflow::State::Evolving;
         double solverSeconds = 0.0;
         if (evolving) {
-            if (const int n = budget.next(); n > 0) {
+            if (const int n = budget.next(lastFrameSeconds); n > 0) {
                 const Clock::time_point t = Clock::now();
                 const solver::StepResult r = flow.evolve(n);
                 solverSeconds = secondsSince(t);
@@ -280,6 +281,7 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
         panelSeconds = 0.8 * panelSeconds + 0.2 * secondsSince(panelStart);
         display->present();
         const double frameSeconds = secondsSince(frameStart);
+        lastFrameSeconds = frameSeconds;
         if (engine.session() != nullptr) { // frames showing a scan: not the wait for a load
             stats.frame(frameSeconds, evolving);
         }

@@ -3,14 +3,13 @@
 #include "kiosk/iteration_budget.hpp"
 #include "kiosk/view_refiner.hpp"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
-#include <vector>
+#include <gtest/gtest.h>
 #include <limits>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 namespace steerseg::test {
 namespace {
@@ -18,56 +17,71 @@ namespace {
 using kiosk::IterationBudget;
 using kiosk::ViewRefiner;
 
-// Runs `frames` frames of a solver whose iterations cost `cost` seconds each; returns the
-// iterations per frame and how many frames ran none.
-std::pair<double, int> simulate(IterationBudget& budget, double cost, int frames) {
+// Runs `frames` frames of a solver whose iterations cost `cost` seconds each, in frames that
+// take `other` seconds besides the solver; returns the iterations per frame, how many frames
+// ran none, and the solver's part of the time.
+struct Simulated {
+    double perFrame = 0.0;
+    int skipped = 0;
+    double solverShare = 0.0;
+};
+Simulated simulate(IterationBudget& budget, double cost, double other, int frames) {
     long long total = 0;
     int skipped = 0;
+    double solver = 0.0;
+    double all = 0.0;
+    double last = 0.0;
     for (int f = 0; f < frames; ++f) {
-        const int n = budget.next();
+        const int n = budget.next(last);
         skipped += n == 0 ? 1 : 0;
         total += n;
         budget.record(n, n * cost);
+        last = other + n * cost;
+        solver += n * cost;
+        all += last;
     }
-    return {static_cast<double>(total) / frames, skipped};
+    return {static_cast<double>(total) / frames, skipped, solver / all};
 }
 
 TEST(IterationBudget, StartsAtTheMinimumThenGivesTheSolverItsShare) {
-    IterationBudget budget(0.010, 2, 500);
-    EXPECT_EQ(budget.next(), 2);
-    budget.record(2, 0.002); // 1 ms per iteration: 10 fit a frame's 10 ms
-    const auto [perFrame, skipped] = simulate(budget, 0.001, 100);
-    EXPECT_NEAR(perFrame, 10.0, 1.0);
-    EXPECT_EQ(skipped, 0);
+    IterationBudget budget(0.5, 0.020, 2, 500);
+    EXPECT_EQ(budget.next(0.0), 2);
+    budget.record(2, 0.002); // 1 ms per iteration, the rest of a frame 10 ms: about 10 a frame
+    const Simulated fast = simulate(budget, 0.001, 0.010, 200);
+    EXPECT_NEAR(fast.perFrame, 10.0, 1.5);
+    EXPECT_EQ(fast.skipped, 0);
+    EXPECT_NEAR(fast.solverShare, 0.5, 0.05);
     // The front shrank: 0.1 ms per iteration, about 100 a frame.
-    EXPECT_NEAR(simulate(budget, 0.0001, 100).first, 100.0, 10.0);
+    EXPECT_NEAR(simulate(budget, 0.0001, 0.010, 200).perFrame, 100.0, 15.0);
 }
 
 TEST(IterationBudget, ASlowSolverRunsEveryFewFramesAndKeepsItsShare) {
-    IterationBudget budget(0.010, 1, 64);
-    EXPECT_EQ(budget.next(), 1);
-    budget.record(1, 0.030); // one iteration costs three frames' share
-    const auto [perFrame, skipped] = simulate(budget, 0.030, 300);
-    EXPECT_NEAR(perFrame, 1.0 / 3.0, 0.05); // 10 ms of solver per frame on average
-    EXPECT_NEAR(skipped, 200, 15);
+    IterationBudget budget(0.5, 0.033, 1, 64);
+    EXPECT_EQ(budget.next(0.0), 1);
+    budget.record(1, 0.090); // one iteration costs several frames' share
+    const Simulated slow = simulate(budget, 0.090, 0.030, 300);
+    EXPECT_NEAR(slow.solverShare, 0.5, 0.05);
+    EXPECT_GT(slow.skipped, 150); // most frames are quick ones, without the solver
 }
 
 TEST(IterationBudget, ClampsAndIgnoresNonsense) {
-    IterationBudget budget(0.010, 1, 50);
-    EXPECT_EQ(budget.next(), 1);
+    IterationBudget budget(0.5, 0.020, 1, 50);
+    EXPECT_EQ(budget.next(0.0), 1);
     budget.record(1, 1e-9);
-    EXPECT_EQ(budget.next(), 50);
+    EXPECT_EQ(budget.next(0.020), 50);
     budget.record(0, 5.0);
     budget.record(3, std::numeric_limits<double>::quiet_NaN());
     budget.record(3, -1.0);
-    EXPECT_EQ(budget.next(), 50);
+    EXPECT_EQ(budget.next(std::numeric_limits<double>::infinity()), 50);
     budget.record(1, 10.0); // one very slow call: a few frames go by, then it runs again
     int frames = 0;
-    while (budget.next() == 0) {
+    while (budget.next(0.020) == 0) {
         ASSERT_LT(++frames, 10000);
     }
-    EXPECT_THROW(IterationBudget(0.0, 1, 2), std::invalid_argument);
-    EXPECT_THROW(IterationBudget(0.01, 3, 2), std::invalid_argument);
+    EXPECT_THROW(IterationBudget(0.0, 0.02, 1, 2), std::invalid_argument);
+    EXPECT_THROW(IterationBudget(1.0, 0.02, 1, 2), std::invalid_argument);
+    EXPECT_THROW(IterationBudget(0.5, 0.0, 1, 2), std::invalid_argument);
+    EXPECT_THROW(IterationBudget(0.5, 0.02, 3, 2), std::invalid_argument);
 }
 
 // A model of a software rasteriser: 20 microseconds per pixel.
