@@ -79,8 +79,11 @@ TEST_F(ContextTest, RunsComputeShaderAndReadsResultBack) {
 TEST_F(ContextTest, ShaderLibraryHasTheProductsShadersOnly) {
     EXPECT_TRUE(gpu::findShaderSource("solver/update_phi.comp").has_value());
     EXPECT_TRUE(gpu::findShaderSource("render/raycast.comp").has_value());
+    EXPECT_TRUE(gpu::findShaderSource("kiosk/present.frag").has_value());
     for (const std::string_view name : gpu::shaderNames()) {
-        EXPECT_TRUE(name.rfind("solver/", 0) == 0 || name.rfind("render/", 0) == 0) << name;
+        EXPECT_TRUE(name.rfind("solver/", 0) == 0 || name.rfind("render/", 0) == 0 ||
+                    name.rfind("kiosk/", 0) == 0)
+            << name;
     }
     EXPECT_THROW(gpu::buildComputeProgram("no/such.comp"), gpu::GlError);
 }
