@@ -147,15 +147,44 @@ class Extractor {
         std::array<Sample, 8> corner{};
         for (int k = -1; k < dims_.z; ++k) {
             for (int j = -1; j < dims_.y; ++j) {
+                // The four rows of voxels along i that this row of cubes spans (y, z offsets as
+                // in the corner numbering), null where they lie in the padding. Most cubes are
+                // all inside or all outside; their signs are read once per voxel, sliding along
+                // i, and only the cubes the surface crosses fetch their corners.
+                std::array<const float*, 4> rows{};
+                for (std::size_t r = 0; r < 4; ++r) {
+                    const int y = j + static_cast<int>(r & 1);
+                    const int z = k + static_cast<int>(r >> 1);
+                    rows[r] = y >= 0 && z >= 0 && y < dims_.y && z < dims_.z
+                                  ? phi_.data() + linearIndex(dims_, 0, y, z)
+                                  : nullptr;
+                }
+                if (rows[0] == nullptr && rows[1] == nullptr && rows[2] == nullptr &&
+                    rows[3] == nullptr) {
+                    continue;
+                }
+                // Bit 2r set when row r is inside at column i: cube corner 2r (x = 0); shifted
+                // by one it is corner 2r + 1 (x = 1).
+                const auto column = [&](int i) {
+                    int bits = 0;
+                    if (i >= 0 && i < dims_.x) {
+                        for (std::size_t r = 0; r < 4; ++r) {
+                            bits |= rows[r] != nullptr && rows[r][i] < 0.0f ? 1 << (2 * r) : 0;
+                        }
+                    }
+                    return bits;
+                };
+                int left = column(-1);
                 for (int i = -1; i < dims_.x; ++i) {
-                    int insideBits = 0;
+                    const int right = column(i + 1);
+                    const int insideBits = left | (right << 1);
+                    left = right;
+                    if (insideBits == 0 || insideBits == 0xff) {
+                        continue;
+                    }
                     for (int c = 0; c < 8; ++c) {
                         corner[static_cast<std::size_t>(c)] =
                             sample(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1));
-                        insideBits |= corner[static_cast<std::size_t>(c)].inside ? 1 << c : 0;
-                    }
-                    if (insideBits == 0 || insideBits == 0xff) {
-                        continue;
                     }
                     const glm::ivec3 base(i, j, k);
                     for (std::size_t t = 0; t < kTets.size(); ++t) {
