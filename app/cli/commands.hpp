@@ -24,6 +24,7 @@ ExitStatus exitStatusOf(const std::exception& e);
 const char* exitStatusHelp();
 
 // Each command takes the words after its name and returns kExitOk.
+int runExport(std::span<const std::string> args);
 int runGpuInfo(std::span<const std::string> args);
 int runInfo(std::span<const std::string> args);
 int runKiosk(std::span<const std::string> args);

@@ -40,6 +40,11 @@ constexpr Command kCommands[] = {
      "(--iterations N | --time t | --converge [--max-iterations N]) [--dense] --output MASK "
      "[--report REPORT.json]: level-set segmentation on the GPU",
      steerseg::cli::runSegment},
+    {"export",
+     "export --input SCAN --mask MASK --output OUT.stl|.ply|.nii.gz|.nii|.nrrd [--format F]: a "
+     "mask "
+     "on the scan's grid, again as a mask or as a closed surface mesh in LPS millimetres (no GPU)",
+     steerseg::cli::runExport},
     {"kiosk",
      "kiosk [--platform auto|kms|window|offscreen] [--config FILE] [--scan PATH] [--script "
      "SESSION] [--frames DIR] [--size WxH] [--stats FILE] [--max-seconds S]: the fullscreen "
