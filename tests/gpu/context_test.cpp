@@ -80,7 +80,10 @@ TEST_F(ContextTest, ShaderLibraryHasTheProductsShadersOnly) {
     EXPECT_TRUE(gpu::findShaderSource("solver/update_phi.comp").has_value());
     EXPECT_TRUE(gpu::findShaderSource("render/raycast.comp").has_value());
     for (const std::string_view name : gpu::shaderNames()) {
-        EXPECT_TRUE(name.rfind("solver/", 0) == 0 || name.rfind("render/", 0) == 0) << name;
+        // The kiosk's screen compositor (app/kiosk/screen_compositor.cpp) has its own pair.
+        EXPECT_TRUE(name.rfind("solver/", 0) == 0 || name.rfind("render/", 0) == 0 ||
+                    name.rfind("kiosk/", 0) == 0)
+            << name;
     }
     EXPECT_THROW(gpu::buildComputeProgram("no/such.comp"), gpu::GlError);
 }
