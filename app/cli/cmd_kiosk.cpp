@@ -1,16 +1,59 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "io/scan_reader.hpp"
 #include "kiosk/kiosk_app.hpp"
 
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <tuple>
 #include <unistd.h>
 
 namespace steerseg::cli {
 
+namespace {
+
+// The outputs are checked before the display opens: a session must not run for minutes and then
+// fail at its first frame or its last line on a folder it could never write (exit status 4).
+void requireWritableFolder(const std::filesystem::path& dir, const char* option) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) {
+        throw io::WriteError(dir, std::string("cannot create the ") + option + " folder (" +
+                                      ec.message() + ")");
+    }
+    if (::access(dir.c_str(), W_OK | X_OK) != 0) {
+        throw io::WriteError(dir, std::string("cannot write in the ") + option + " folder (" +
+                                      std::strerror(errno) + ")");
+    }
+}
+
+// Opened for appending, which creates it where it is missing (and removed again then): access()
+// would pass root on any folder, /proc included.
+void requireWritableFile(const std::filesystem::path& file, const char* option) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(file, ec)) {
+        throw io::WriteError(file, std::string(option) + " names a folder, not a file");
+    }
+    const bool existed = std::filesystem::exists(file, ec);
+    errno = 0;
+    if (!std::ofstream(file, std::ios::app)) {
+        throw io::WriteError(file, std::string("cannot write the ") + option + " file (" +
+                                       std::strerror(errno != 0 ? errno : EIO) + ")");
+    }
+    if (!existed) {
+        std::filesystem::remove(file, ec);
+    }
+}
+
+} // namespace
+
 int runKiosk(std::span<const std::string> words) {
-    const Args args(words, {"platform", "config", "script", "scan", "frames", "size", "max-seconds", "stats"},
-                    {"allow-root"});
+    const Args args(
+        words, {"platform", "config", "script", "scan", "frames", "size", "max-seconds", "stats"},
+        {"allow-root"});
     // An appliance program that a mistake could run as root (cage does the same): it needs the
     // video and input groups, not root.
     if (::geteuid() == 0 && !args.flag("allow-root")) {
@@ -21,7 +64,8 @@ int runKiosk(std::span<const std::string> words) {
     o.platform = args.value("platform").value_or("");
     if (!o.platform.empty() && o.platform != "auto" && o.platform != "kms" &&
         o.platform != "window" && o.platform != "offscreen") {
-        throw UsageError("--platform: expected auto, kms, window or offscreen, got '" + o.platform + "'");
+        throw UsageError("--platform: expected auto, kms, window or offscreen, got '" + o.platform +
+                         "'");
     }
     if (o.platform == "auto") {
         o.platform.clear();
@@ -48,6 +92,12 @@ int runKiosk(std::span<const std::string> words) {
     }
     if (const auto s = args.value("stats")) {
         o.stats = *s;
+    }
+    if (o.frames) {
+        requireWritableFolder(*o.frames, "--frames");
+    }
+    if (o.stats) {
+        requireWritableFile(*o.stats, "--stats");
     }
     return kiosk::runKiosk(o, std::cout, std::cerr);
 }

@@ -25,6 +25,7 @@ constexpr double kMaxSeconds = 1e6;    // a script clock time or a timeout
 constexpr double kMaxCoordinate = 1e5; // voxel indices and screen pixels
 constexpr double kMaxValue = 1e9;      // parameters, window, field bounds
 constexpr int kMaxErrors = 50;
+constexpr int kMaxControlLines = 3; // more lines with control characters: a binary file
 
 constexpr std::array<std::string_view, 10> kStateNames = {
     "no_scan", "loading", "inspect",   "seeding", "evolving",
@@ -571,6 +572,39 @@ std::optional<Step> parseLine(std::string_view line, int number, double& lastAt)
     return step;
 }
 
+// A control character other than a tab, or a carriage return ending a line.
+bool isControl(char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return (u < 0x20 && c != '\t' && c != '\n' && c != '\r') || u == 0x7F;
+}
+
+// Lines of `text` holding a control character, and where the first one is: a stray character in
+// a text file is one line's problem, a file full of them is not a script at all.
+struct ControlLines {
+    int lines = 0;
+    int firstLine = 0;
+    char first = 0;
+};
+
+ControlLines controlLines(std::string_view text) {
+    ControlLines found;
+    int line = 1;
+    bool counted = false;
+    for (const char c : text) {
+        if (c == '\n') {
+            ++line;
+            counted = false;
+        } else if (isControl(c) && !counted) {
+            counted = true;
+            if (found.lines++ == 0) {
+                found.firstLine = line;
+                found.first = c;
+            }
+        }
+    }
+    return found;
+}
+
 } // namespace
 
 Script parseScript(std::string_view text, const std::string& name) {
@@ -581,6 +615,14 @@ Script parseScript(std::string_view text, const std::string& name) {
     if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
         throw ScriptError(name + ": not a text file (a NUL byte at offset " + std::to_string(nul) +
                           ")");
+    }
+    if (const ControlLines control = controlLines(text); control.lines > kMaxControlLines) {
+        char code[8];
+        std::snprintf(code, sizeof code, "0x%02X",
+                      static_cast<unsigned>(static_cast<unsigned char>(control.first)));
+        throw ScriptError(name + ": not a text file (control characters on " +
+                          std::to_string(control.lines) + " lines, the first " + code +
+                          " on line " + std::to_string(control.firstLine) + ")");
     }
     Script script;
     script.name = name;

@@ -73,6 +73,11 @@ void SessionEngine::beginLoad(const std::string& path) {
     if (pending_) {
         abandoned_.push_back(std::move(pending_));
     }
+    // Those that finished meanwhile go now, with the scans they read: an operator tapping Load
+    // again and again on a slow scan must not pile them up until the kiosk exits.
+    std::erase_if(abandoned_, [](const std::unique_ptr<PendingLoad>& load) {
+        return load->done.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+    });
     auto load = std::make_unique<PendingLoad>();
     load->path = path;
     PendingLoad* raw = load.get();

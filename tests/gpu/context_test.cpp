@@ -81,6 +81,7 @@ TEST_F(ContextTest, ShaderLibraryHasTheProductsShadersOnly) {
     EXPECT_TRUE(gpu::findShaderSource("render/raycast.comp").has_value());
     EXPECT_TRUE(gpu::findShaderSource("kiosk/present.frag").has_value());
     for (const std::string_view name : gpu::shaderNames()) {
+        // The kiosk's screen compositor (app/kiosk/screen_compositor.cpp) has its own pair.
         EXPECT_TRUE(name.rfind("solver/", 0) == 0 || name.rfind("render/", 0) == 0 ||
                     name.rfind("kiosk/", 0) == 0)
             << name;

@@ -287,6 +287,14 @@ TEST(ScriptParse, WholeFileProblems) {
               "s.session: not a text file (a NUL byte at offset 3)");
     EXPECT_NE(parseError("run\n\x01\x02\n").find("s.session:2: a control character (0x01)"),
               std::string::npos);
+    // A binary file without a NUL byte is one line too, not one per line.
+    std::string binary;
+    for (int n = 0; n < 200; ++n) {
+        binary += static_cast<char>(1 + n % 31);
+    }
+    EXPECT_EQ(
+        parseError("run\n" + binary),
+        "s.session: not a text file (control characters on 8 lines, the first 0x01 on line 2)");
     EXPECT_NE(parseError("run " + std::string(5000, 'x')).find("s.session:1: the line is 5004"),
               std::string::npos);
     EXPECT_NE(parseError(std::string(kiosk::kMaxScriptBytes + 1, '#')).find("at most"),
