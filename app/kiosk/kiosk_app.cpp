@@ -25,7 +25,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
-#include <deque>
+#include <optional>
 #include <ostream>
 #include <thread>
 
@@ -126,17 +126,275 @@ std::unique_ptr<ScriptPlayer> makePlayer(const KioskOptions& options) {
     return std::make_unique<ScriptPlayer>(loadScript(*options.script), std::move(vars));
 }
 
+// The running kiosk: everything one frame touches, and the frame as named passes.
+class Kiosk {
+  public:
+    Kiosk(const KioskOptions& options, const config::KioskConfig& cfg,
+          std::unique_ptr<ScriptPlayer> player, std::unique_ptr<platform::Display> display,
+          std::ostream& err)
+        : options_(options), cfg_(cfg), err_(err), player_(std::move(player)),
+          display_(std::move(display)), info_(display_->info()),
+          dpi_(cfg.display.dpi > 0.0 ? cfg.display.dpi : info_.dpi),
+          physical_(info_.width, info_.height),
+          rotation_(cfg.display.rotation, physical_.x, physical_.y),
+          screen_(physical_, cfg.display.rotation), audit_(cfg.audit.path),
+          flow_(engine_, workflowSettings(cfg), &audit_),
+          touch_({dpi_, cfg.ui.touchTargetMm, cfg.ui.fontScale, cfg.probe.radiusMm,
+                  static_cast<double>(cfg.ui.longPressMs), "", scanList(options)}),
+          keys_(cfg.bindings.keys), budget_(cfg.frame.solverShare, cfg.frame.budgetMs * 1e-3,
+                                            cfg.frame.minIterations, cfg.frame.maxIterations),
+          painter_(cfg.frame.interactiveScale), frameBudget_(cfg.frame.budgetMs * 1e-3),
+          start_(Clock::now()) {
+        screenState_.layout = layout();
+        if (!options.scan.empty() && !player_) {
+            actions_.emplace_back(workflow::LoadScan{options.scan});
+        }
+    }
+
+    // One frame; false when the kiosk should stop.
+    bool step() {
+        const Clock::time_point frameStart = Clock::now();
+        now_ = secondsSince(start_);
+        const bool hadInput = pollInput();
+        applyActions();
+        stepSolver();
+        drawScreen();
+        present(frameStart);
+        saveFrames();
+        if (stopReason()) {
+            return false;
+        }
+        idle(hadInput);
+        return true;
+    }
+
+    [[nodiscard]] int exitCode() const { return exitCode_; }
+
+    void finish(std::ostream& out) {
+        if (const auto error = audit_.takeError()) {
+            err_ << "steerseg kiosk: audit log: " << *error << '\n';
+        }
+        out << stats_.summary() << '\n';
+        if (options_.stats) {
+            stats_.write(*options_.stats, info_.description);
+        }
+    }
+
+  private:
+    static std::vector<std::string> scanList(const KioskOptions& options) {
+        std::vector<std::string> scans{io::kBuiltinSample};
+        if (!options.scan.empty()) {
+            scans.push_back(options.scan);
+        }
+        return scans;
+    }
+
+    [[nodiscard]] ui::Layout layout() const {
+        return ui::computeLayout(screen_.size().x, screen_.size().y, dpi_, cfg_.ui.touchTargetMm);
+    }
+
+    // The display's events and the script's due steps, turned into actions. A script waits
+    // while a frame it asked for is still being refined, so the file shows the complete
+    // picture of the moment the script meant. Returns whether any input came.
+    bool pollInput() {
+        events_.clear();
+        display_->pollEvents(events_);
+        if (player_ && pendingFrames_.empty()) {
+            player_->poll(now_, flow_.status(), sink_);
+            for (auto& a : sink_.actions) {
+                actions_.push_back(std::move(a));
+            }
+            // A script's device-level events stand for the display's: physical pixels.
+            for (auto& e : sink_.events) {
+                events_.push_back(std::move(e));
+            }
+            for (auto& f : sink_.frames) {
+                pendingFrames_.push_back(std::move(f));
+            }
+            sink_.actions.clear();
+            sink_.events.clear();
+            sink_.frames.clear();
+        }
+        if (!events_.empty() && inputSince_ < 0.0) {
+            inputSince_ = now_;
+        }
+        for (const platform::InputEvent& raw : events_) {
+            if (raw.kind == platform::InputEvent::Kind::Quit) {
+                g_stop = true;
+                break;
+            }
+            if (const auto bound = keys_.actionFor(raw)) {
+                actions_.push_back(*bound);
+                continue;
+            }
+            touch_.feed(rotation_.toLogical(raw), screenState_, flow_.status(), actions_);
+        }
+        return !events_.empty() || !actions_.empty();
+    }
+
+    void applyActions() {
+        for (const workflow::Action& a : actions_) {
+            const workflow::Workflow::Outcome o = flow_.handle(a);
+            if (!o.accepted) {
+                err_ << "steerseg kiosk: " << workflow::actionName(a) << " refused: " << o.reason
+                     << '\n';
+            }
+        }
+        actions_.clear();
+        flow_.update();
+    }
+
+    void stepSolver() {
+        solverSeconds_ = 0.0;
+        evolving_ = flow_.state() == workflow::State::Evolving;
+        if (!evolving_) {
+            return;
+        }
+        if (const int n = budget_.next(lastFrameSeconds_); n > 0) {
+            const Clock::time_point t = Clock::now();
+            const solver::StepResult r = flow_.evolve(n);
+            solverSeconds_ = secondsSince(t);
+            budget_.record(r.iterations, solverSeconds_);
+            stats_.iterations(r.iterations, solverSeconds_);
+        }
+    }
+
+    // The views into the logical screen, then the panel on top; the panel's buttons act on the
+    // next frame.
+    void drawScreen() {
+        screen_.begin({0.08F, 0.08F, 0.09F});
+        screenState_ = {layout(), {}, {}};
+        if (session::Session* session = engine_.session()) {
+            if (engine_.scansAttached() != shownScan_) {
+                painter_.reset();
+                shownScan_ = engine_.scansAttached();
+            }
+            // The views get what the solver and the panel leave of the frame.
+            const double left =
+                std::max(frameBudget_ - solverSeconds_ - panelSeconds_, frameBudget_ * 0.25);
+            screenState_ = painter_.paint(*session, flow_.status(), engine_.levelSetVersion(),
+                                          screenState_.layout, left, screen_);
+            const auto [pixels, seconds] = painter_.takeDrawn();
+            stats_.drawn(pixels, seconds);
+        }
+        panelStart_ = Clock::now();
+        glBindFramebuffer(GL_FRAMEBUFFER, screen_.framebuffer());
+        for (auto& a : touch_.drawFrame(screen_.size(), now_, screenState_, flow_.status())) {
+            actions_.push_back(std::move(a));
+        }
+    }
+
+    void present(Clock::time_point frameStart) {
+        screen_.present(display_->framebuffer(), physical_);
+        glFinish(); // the panel's and the present's cost, for the next frame's split
+        panelSeconds_ = 0.8 * panelSeconds_ + 0.2 * secondsSince(panelStart_);
+        display_->present();
+        lastFrameSeconds_ = secondsSince(frameStart);
+        if (engine_.session() != nullptr) { // frames showing a scan: not the wait for a load
+            stats_.frame(lastFrameSeconds_, evolving_);
+        }
+        // Input to screen: from the poll that brought an event to the present of the frame that
+        // drew all it led to. A panel button acts, and is drawn, a frame later: its actions
+        // are still queued here. A script's operator-level actions are no device's input.
+        if (inputSince_ >= 0.0 && actions_.empty()) {
+            stats_.latency(secondsSince(start_) - inputSince_);
+            inputSince_ = -1.0;
+        }
+    }
+
+    // Once every view is complete (or can't be while the surface moves), the logical screen.
+    void saveFrames() {
+        if (pendingFrames_.empty() ||
+            !(painter_.settled() || evolving_ || engine_.session() == nullptr)) {
+            return;
+        }
+        const RgbaImage picture = screen_.capture();
+        for (const auto& path : pendingFrames_) {
+            io::writeImage(path, picture);
+        }
+        pendingFrames_.clear();
+    }
+
+    std::optional<std::string> stopReason() {
+        if (g_stop) {
+            return "signal or quit";
+        }
+        if (flow_.quitRequested()) {
+            return "quit";
+        }
+        if (player_ && (player_->finished() || player_->failed()) && pendingFrames_.empty()) {
+            if (player_->failed()) {
+                err_ << "steerseg kiosk: " << player_->failure() << '\n';
+                exitCode_ = 1;
+            }
+            return "script ended";
+        }
+        if (options_.maxSeconds > 0.0 && secondsSince(start_) > options_.maxSeconds) {
+            err_ << "steerseg kiosk: stopped after " << options_.maxSeconds
+                 << " s (--max-seconds)\n";
+            exitCode_ = 1;
+            return "time limit";
+        }
+        return std::nullopt;
+    }
+
+    // Nothing moving and no display pacing the loop: do not spin a core.
+    void idle(bool hadInput) {
+        if (info_.refreshHz <= 0.0 && !evolving_ &&
+            (painter_.settled() || engine_.session() == nullptr) && !hadInput &&
+            pendingFrames_.empty()) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+    }
+
+    const KioskOptions& options_;
+    const config::KioskConfig& cfg_;
+    std::ostream& err_;
+    std::unique_ptr<ScriptPlayer> player_;
+    // The display owns the GL context: declared before everything that holds GL objects, so it
+    // goes after them.
+    std::unique_ptr<platform::Display> display_;
+    const platform::DisplayInfo& info_;
+    double dpi_;
+    glm::ivec2 physical_;
+    ui::ScreenRotation rotation_;
+    ScreenCompositor screen_;
+    SessionEngine engine_;
+    workflow::AuditLog audit_;
+    workflow::Workflow flow_;
+    ui::TouchUi touch_;
+    KeyBindings keys_;
+    IterationBudget budget_;
+    ViewPainter painter_;
+    FrameStats stats_;
+    KioskScriptSink sink_;
+    double frameBudget_;
+    Clock::time_point start_;
+
+    std::vector<workflow::Action> actions_;
+    std::vector<platform::InputEvent> events_;
+    std::vector<std::filesystem::path> pendingFrames_;
+    ui::ScreenState screenState_;
+    std::uint64_t shownScan_ = 0;
+    double now_ = 0.0;
+    bool evolving_ = false;
+    double solverSeconds_ = 0.0;
+    double panelSeconds_ = 0.0; // the panel, composition and present: an average over frames
+    Clock::time_point panelStart_{};
+    double lastFrameSeconds_ = 0.0;
+    double inputSince_ = -1.0; // the poll that brought the oldest input not yet on screen
+    int exitCode_ = 0;
+};
+
 } // namespace
 
 int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) {
     const config::LoadedConfig loaded = readConfig(options, err);
     const config::KioskConfig& cfg = loaded.config;
-    std::unique_ptr<ScriptPlayer> player =
-        makePlayer(options); // bad scripts fail before a window opens
+    std::unique_ptr<ScriptPlayer> player = makePlayer(options); // before a window opens
     if (options.frames) {
         std::filesystem::create_directories(*options.frames);
     }
-
     const std::string configured = options.platform.empty()
                                        ? std::string(config::platformName(cfg.display.platform))
                                        : options.platform;
@@ -147,188 +405,14 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
         displayOpts.width = options.width;
         displayOpts.height = options.height;
     }
-    // The display owns the GL context: it is declared first so everything that holds GL objects
-    // goes before it.
     std::unique_ptr<platform::Display> display = openDisplay(platformName, displayOpts);
-    const platform::DisplayInfo& info = display->info();
-    out << "steerseg kiosk: " << info.description << '\n';
-    const double dpi = cfg.display.dpi > 0.0 ? cfg.display.dpi : info.dpi;
-    const glm::ivec2 physical(info.width, info.height);
-    const ui::ScreenRotation rotation(cfg.display.rotation, physical.x, physical.y);
-    ScreenCompositor screen(physical, cfg.display.rotation);
-
-    SessionEngine engine;
-    workflow::AuditLog audit(cfg.audit.path);
-    workflow::Workflow flow(engine, workflowSettings(cfg), &audit);
-    std::vector<std::string> scans{io::kBuiltinSample};
-    if (!options.scan.empty()) {
-        scans.push_back(options.scan);
-    }
-    ui::TouchUi touch({dpi, cfg.ui.touchTargetMm, cfg.ui.fontScale, cfg.probe.radiusMm,
-                       static_cast<double>(cfg.ui.longPressMs), "", scans});
-    const auto layoutOf = [&](const glm::ivec2& size) {
-        return ui::computeLayout(size.x, size.y, dpi, cfg.ui.touchTargetMm);
-    };
-    const KeyBindings keys(cfg.bindings.keys);
-    IterationBudget budget(cfg.frame.solverShare, cfg.frame.budgetMs * 1e-3,
-                           cfg.frame.minIterations, cfg.frame.maxIterations);
-    double lastFrameSeconds = 0.0;
-    ViewPainter painter(cfg.frame.interactiveScale);
-    FrameStats stats;
+    out << "steerseg kiosk: " << display->info().description << '\n';
     StopSignals signals;
-
-    std::vector<workflow::Action> actions;
-    if (!options.scan.empty() && !player) {
-        actions.emplace_back(workflow::LoadScan{options.scan});
+    Kiosk kiosk(options, cfg, std::move(player), std::move(display), err);
+    while (kiosk.step()) {
     }
-    KioskScriptSink sink;
-    std::vector<platform::InputEvent> events;
-    ui::ScreenState screenState{layoutOf(screen.size()), {}, {}};
-    std::uint64_t shownScan = 0;
-    std::vector<std::filesystem::path> pendingFrames;
-    const double frameBudget = cfg.frame.budgetMs * 1e-3;
-    double panelSeconds = 0.0; // the panel, composition and present: an average over frames
-    const Clock::time_point start = Clock::now();
-    double inputSince = -1.0; // the poll that brought the oldest input not yet on screen; -1: none
-    int exitCode = 0;
-
-    while (!g_stop) {
-        const Clock::time_point frameStart = Clock::now();
-        const double now = secondsSince(start);
-        events.clear();
-        display->pollEvents(events);
-
-        // A script waits while a frame it asked for is still being refined, so the file shows
-        // the complete picture of the moment the script meant.
-        if (player && pendingFrames.empty()) {
-            player->poll(now, flow.status(), sink);
-            for (auto& a : sink.actions) {
-                actions.push_back(std::move(a));
-            }
-            // A script's device-level events stand for the display's: physical pixels.
-            for (auto& e : sink.events) {
-                events.push_back(std::move(e));
-            }
-            for (auto& f : sink.frames) {
-                pendingFrames.push_back(std::move(f));
-            }
-            sink.actions.clear();
-            sink.events.clear();
-            sink.frames.clear();
-        }
-        bool hadInput = !events.empty();
-        if (hadInput && inputSince < 0.0) {
-            inputSince = now;
-        }
-        for (const platform::InputEvent& raw : events) {
-            if (raw.kind == platform::InputEvent::Kind::Quit) {
-                g_stop = true;
-                break;
-            }
-            if (const auto bound = keys.actionFor(raw)) {
-                actions.push_back(*bound);
-                continue;
-            }
-            touch.feed(rotation.toLogical(raw), screenState, flow.status(), actions);
-        }
-        for (const workflow::Action& a : actions) {
-            const workflow::Workflow::Outcome o = flow.handle(a);
-            if (!o.accepted) {
-                err << "steerseg kiosk: " << workflow::actionName(a) << " refused: " << o.reason
-                    << '\n';
-            }
-        }
-        hadInput = hadInput || !actions.empty();
-        actions.clear();
-        flow.update();
-
-        const bool evolving = flow.state() == workflow::State::Evolving;
-        double solverSeconds = 0.0;
-        if (evolving) {
-            if (const int n = budget.next(lastFrameSeconds); n > 0) {
-                const Clock::time_point t = Clock::now();
-                const solver::StepResult r = flow.evolve(n);
-                solverSeconds = secondsSince(t);
-                budget.record(r.iterations, solverSeconds);
-                stats.iterations(r.iterations, solverSeconds);
-            }
-        }
-
-        screen.begin({0.08F, 0.08F, 0.09F});
-        screenState = {layoutOf(screen.size()), {}, {}};
-        if (session::Session* session = engine.session()) {
-            if (engine.scansAttached() != shownScan) {
-                painter.reset();
-                shownScan = engine.scansAttached();
-            }
-            // The views get what the solver and the panel leave of the frame.
-            const double left =
-                std::max(frameBudget - solverSeconds - panelSeconds, frameBudget * 0.25);
-            screenState = painter.paint(*session, flow.status(), engine.levelSetVersion(),
-                                        screenState.layout, left, screen);
-            const auto [pixels, seconds] = painter.takeDrawn();
-            stats.drawn(pixels, seconds);
-        }
-        const Clock::time_point panelStart = Clock::now();
-        glBindFramebuffer(GL_FRAMEBUFFER, screen.framebuffer());
-        std::vector<workflow::Action> panel =
-            touch.drawFrame(screen.size(), now, screenState, flow.status());
-        for (auto& a : panel) {
-            actions.push_back(std::move(a));
-        }
-        screen.present(display->framebuffer(), physical);
-        glFinish(); // the panel's and the present's cost, for the next frame's split
-        panelSeconds = 0.8 * panelSeconds + 0.2 * secondsSince(panelStart);
-        display->present();
-        const double frameSeconds = secondsSince(frameStart);
-        lastFrameSeconds = frameSeconds;
-        if (engine.session() != nullptr) { // frames showing a scan: not the wait for a load
-            stats.frame(frameSeconds, evolving);
-        }
-        // Input to screen: from the poll that brought an event to the present of the frame that
-        // drew all it led to. A panel button acts, and is drawn, a frame later: its actions
-        // are still queued here. A script's operator-level actions are no device's input.
-        if (inputSince >= 0.0 && actions.empty()) {
-            stats.latency(secondsSince(start) - inputSince);
-            inputSince = -1.0;
-        }
-
-        if (!pendingFrames.empty() && (painter.settled() || evolving || !engine.session())) {
-            const RgbaImage picture = screen.capture();
-            for (const auto& path : pendingFrames) {
-                io::writeImage(path, picture);
-            }
-            pendingFrames.clear();
-        }
-        if (flow.quitRequested()) {
-            break;
-        }
-        if (player && (player->finished() || player->failed()) && pendingFrames.empty()) {
-            if (player->failed()) {
-                err << "steerseg kiosk: " << player->failure() << '\n';
-                exitCode = 1;
-            }
-            break;
-        }
-        if (options.maxSeconds > 0.0 && secondsSince(start) > options.maxSeconds) {
-            err << "steerseg kiosk: stopped after " << options.maxSeconds << " s (--max-seconds)\n";
-            exitCode = 1;
-            break;
-        }
-        // Nothing moving and no display pacing the loop: do not spin a core.
-        if (info.refreshHz <= 0.0 && !evolving && (painter.settled() || !engine.session()) &&
-            !hadInput && pendingFrames.empty()) {
-            std::this_thread::sleep_for(std::chrono::milliseconds(5));
-        }
-    }
-    if (const auto error = audit.takeError()) {
-        err << "steerseg kiosk: audit log: " << *error << '\n';
-    }
-    out << stats.summary() << '\n';
-    if (options.stats) {
-        stats.write(*options.stats, info.description);
-    }
-    return exitCode;
+    kiosk.finish(out);
+    return kiosk.exitCode();
 }
 
 } // namespace steerseg::kiosk
