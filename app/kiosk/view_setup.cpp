@@ -28,8 +28,8 @@ render::ViewKind viewKindOf(workflow::SliceAxis axis) {
     return render::ViewKind::Axial;
 }
 
-render::ViewParams volumeViewParams(const session::Session& session,
-                                    const workflow::Status& status, const glm::ivec2& size) {
+render::ViewParams volumeViewParams(const session::Session& session, const workflow::Status& status,
+                                    const glm::ivec2& size) {
     render::ViewParams p = session.defaultView(render::ViewKind::Volume3d, size);
     const workflow::ViewState& view = status.view;
     p.camera.orbit(view.yawDeg, view.pitchDeg);
@@ -46,13 +46,12 @@ render::ViewParams volumeViewParams(const session::Session& session,
     }
     applyWindow(p, view);
     p.surface = status.hasLevelSet ? render::SurfaceMode::Opaque : render::SurfaceMode::Hidden;
-    p.speed = {status.params.T, status.params.eps};
+    p.speed = {static_cast<double>(status.params.T), static_cast<double>(status.params.eps)};
     return p;
 }
 
-render::ViewParams sliceViewParams(const session::Session& session,
-                                   const workflow::Status& status, workflow::SliceAxis axis,
-                                   bool speed, const glm::ivec2& size) {
+render::ViewParams sliceViewParams(const session::Session& session, const workflow::Status& status,
+                                   workflow::SliceAxis axis, bool speed, const glm::ivec2& size) {
     render::ViewParams p = session.defaultView(viewKindOf(axis), size);
     const int index = status.view.slice[static_cast<int>(axis)];
     if (index >= 0) {
@@ -64,7 +63,7 @@ render::ViewParams sliceViewParams(const session::Session& session,
     }
     applyWindow(p, status.view);
     p.content = speed ? render::SliceContent::Speed : render::SliceContent::Scan;
-    p.speed = {status.params.T, status.params.eps};
+    p.speed = {static_cast<double>(status.params.T), static_cast<double>(status.params.eps)};
     p.contour = status.hasLevelSet;
     return p;
 }
