@@ -46,7 +46,7 @@ render::ViewParams volumeViewParams(const session::Session& session, const workf
     }
     applyWindow(p, view);
     p.surface = status.hasLevelSet ? render::SurfaceMode::Opaque : render::SurfaceMode::Hidden;
-    p.speed = {status.params.T, status.params.eps};
+    p.speed = {static_cast<double>(status.params.T), static_cast<double>(status.params.eps)};
     return p;
 }
 
@@ -63,7 +63,7 @@ render::ViewParams sliceViewParams(const session::Session& session, const workfl
     }
     applyWindow(p, status.view);
     p.content = speed ? render::SliceContent::Speed : render::SliceContent::Scan;
-    p.speed = {status.params.T, status.params.eps};
+    p.speed = {static_cast<double>(status.params.T), static_cast<double>(status.params.eps)};
     p.contour = status.hasLevelSet;
     return p;
 }
