@@ -242,6 +242,13 @@ class Kiosk {
         }
         actions_.clear();
         flow_.update();
+        // What the panel's message line says goes to the log too: a headless run has no panel.
+        if (const std::string& message = flow_.status().message; message != lastMessage_) {
+            lastMessage_ = message;
+            if (!message.empty()) {
+                err_ << "steerseg kiosk: " << message << '\n';
+            }
+        }
     }
 
     void stepSolver() {
@@ -376,6 +383,7 @@ class Kiosk {
     std::vector<std::filesystem::path> pendingFrames_;
     ui::ScreenState screenState_;
     std::uint64_t shownScan_ = 0;
+    std::string lastMessage_;
     double now_ = 0.0;
     bool evolving_ = false;
     double solverSeconds_ = 0.0;
