@@ -13,6 +13,7 @@ workflow::Settings workflowSettings(const config::KioskConfig& config) {
     s.probeRadiusMm = config.probe.radiusMm;
     s.defaultRadius = config.brush.radius;
     s.exportFolder = config.exports.folder;
+    s.exportFormats = config.exports.formats;
     return s;
 }
 

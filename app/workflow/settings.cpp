@@ -35,6 +35,12 @@ void validateSettings(const Settings& s) {
                 ")");
     require(s.maxUndo >= 1 && s.maxUndo <= 10000,
             "undo depth must be within [1, 10000] (got " + std::to_string(s.maxUndo) + ")");
+    require(!s.exportFormats.empty(), "at least one export format is needed");
+    for (const std::string& format : s.exportFormats) {
+        require(!format.empty() && format.find_first_of("/\\") == std::string::npos &&
+                    format.front() != '.',
+                "export format '" + format + "' is not a file extension");
+    }
     std::set<std::string> names;
     for (const TissuePreset& p : s.presets) {
         require(!p.name.empty(), "a tissue preset has no name");

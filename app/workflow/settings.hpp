@@ -32,9 +32,13 @@ struct Settings {
     double probeEpsFactor = 2.0;
     double probeRadiusMm = 5.0; // a Probe action's radius when it gives none (<= 0)
     double defaultRadius = 3.0; // the brush after a load, voxels (clamped to the scan's range)
-    std::filesystem::path exportFolder = "."; // default exports: <folder>/<scan>_<UTC time>.nii.gz
-    int maxUndo = 32;                         // undo entries kept; older ones are dropped
-    WallClock clock; // export names' time stamps; empty: the system clock (tests fix it)
+    // Default exports: <folder>/<scan>_<UTC time>.<format>.
+    std::filesystem::path exportFolder = ".";
+    // A default export writes one file per format, in this order ("nii.gz", "nii", "nrrd": the
+    // extensions the engine's writer knows); the first is the one the status reports.
+    std::vector<std::string> exportFormats{"nii.gz"};
+    int maxUndo = 32; // undo entries kept; older ones are dropped
+    WallClock clock;  // export names' time stamps; empty: the system clock (tests fix it)
 };
 
 // Throws std::invalid_argument with one line naming the first bad value: non-finite numbers,

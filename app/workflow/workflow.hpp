@@ -123,7 +123,8 @@ class Workflow {
 
     // Export (workflow_export.cpp).
     Outcome exportTo(const std::string& path);
-    [[nodiscard]] std::filesystem::path defaultExportPath() const;
+    // <folder>/<scan>_<UTC time>, without an extension: the name no format's file has yet.
+    [[nodiscard]] std::filesystem::path defaultExportBase() const;
 
     Engine& engine_;
     Settings settings_;

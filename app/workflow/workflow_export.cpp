@@ -28,17 +28,29 @@ std::string fileStem(const std::string& name) {
     return out.empty() ? std::string("scan") : out;
 }
 
+std::filesystem::path withFormat(const std::filesystem::path& base, const std::string& format) {
+    return base.string() + "." + format;
+}
+
 } // namespace
 
-std::filesystem::path Workflow::defaultExportPath() const {
-    const std::string base = fileStem(status_.scan.name) + "_" + compactUtc(settings_.clock());
-    std::filesystem::path path = settings_.exportFolder / (base + ".nii.gz");
-    // Two exports within a second must not overwrite each other.
-    std::error_code ec;
-    for (int n = 2; std::filesystem::exists(path, ec) && n < 1000; ++n) {
-        path = settings_.exportFolder / (base + "-" + std::to_string(n) + ".nii.gz");
+std::filesystem::path Workflow::defaultExportBase() const {
+    const std::string stem = fileStem(status_.scan.name) + "_" + compactUtc(settings_.clock());
+    std::filesystem::path base = settings_.exportFolder / stem;
+    // Two exports within a second must not overwrite each other, in any format.
+    const auto taken = [&](const std::filesystem::path& b) {
+        std::error_code ec;
+        for (const std::string& format : settings_.exportFormats) {
+            if (std::filesystem::exists(withFormat(b, format), ec)) {
+                return true;
+            }
+        }
+        return false;
+    };
+    for (int n = 2; taken(base) && n < 1000; ++n) {
+        base = settings_.exportFolder / (stem + "-" + std::to_string(n));
     }
-    return path;
+    return base;
 }
 
 Workflow::Outcome Workflow::exportTo(const std::string& requested) {
@@ -52,11 +64,15 @@ Workflow::Outcome Workflow::exportTo(const std::string& requested) {
                 throw std::runtime_error("export folder " + settings_.exportFolder.string() + ": " +
                                          ec.message());
             }
-            path = defaultExportPath();
+            const std::filesystem::path base = defaultExportBase();
+            for (const std::string& format : settings_.exportFormats) {
+                engine_.exportMask(withFormat(base, format));
+            }
+            path = withFormat(base, settings_.exportFormats.front());
         } else {
             path = requested;
+            engine_.exportMask(path);
         }
-        engine_.exportMask(path);
     } catch (const std::exception& e) {
         std::string message = e.what();
         message = message.substr(0, message.find_first_of("\r\n"));

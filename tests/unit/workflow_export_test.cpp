@@ -43,6 +43,29 @@ TEST(WorkflowExport, DefaultNameFromScanAndTimeInACreatedFolder) {
               (s.exportFolder / "fake_20261123-130140-2.nii.gz").string());
 }
 
+TEST(WorkflowExport, ADefaultExportWritesEveryConfiguredFormat) {
+    Settings s = testSettings();
+    s.exportFolder = freshDir("workflow-export-formats");
+    s.exportFormats = {"nrrd", "nii.gz"};
+    Rig rig(s);
+    rig.engine.writeExports = true;
+    rig.driveTo(State::Review);
+    ASSERT_TRUE(rig.act(Export{}).accepted);
+    ASSERT_EQ(rig.engine.exports.size(), 2U);
+    EXPECT_EQ(rig.engine.exports[0], s.exportFolder / "fake_20261123-130140.nrrd");
+    EXPECT_EQ(rig.engine.exports[1], s.exportFolder / "fake_20261123-130140.nii.gz");
+    EXPECT_EQ(rig.status().exportedPath, rig.engine.exports[0].string());
+    // The next name is free in every format, not just the first.
+    ASSERT_TRUE(rig.act(Back{}).accepted);
+    ASSERT_TRUE(rig.act(Export{}).accepted);
+    EXPECT_EQ(rig.engine.exports[2], s.exportFolder / "fake_20261123-130140-2.nrrd");
+    Settings bad = testSettings();
+    bad.exportFormats = {};
+    EXPECT_THROW(validateSettings(bad), std::invalid_argument);
+    bad.exportFormats = {"../x"};
+    EXPECT_THROW(validateSettings(bad), std::invalid_argument);
+}
+
 TEST(WorkflowExport, ScanNamesAreMadeFileSafe) {
     ScanInfo scan = FakeEngine::defaultScan();
     scan.name = "../Chest CT/séries";
