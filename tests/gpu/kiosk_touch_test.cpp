@@ -75,8 +75,9 @@ TEST_P(KioskTouch, ATapSeedsTheVoxelUnderTheFinger) {
            << "show " << c.axisName << (c.axis == workflow::SliceAxis::Coronal ? " axial\n" : " coronal\n")
            << "slice " << c.axisName << " " << params.slice << "\n"
            << "proceed\nwait state seeding\n"
-           // The slice view refines to full size within a few frames; the tap waits for it.
-           << "wait seconds 1.5\n"
+           // A frame is written once every view is complete at full resolution, and the script
+           // waits for it: the tap then lands on the full picture, however slow the machine.
+           << "frame " << (dir / "before-tap.png").string() << "\n"
            << "tap " << finger.x << " " << finger.y << "\n"
            << "wait seconds 1\nexpect seeds == 1\n";
     std::ofstream(dir / "touch.session") << script.str();
