@@ -20,10 +20,10 @@ class DisplayError : public std::runtime_error {
 struct DisplayOptions {
     int width = 1280; // offscreen: the virtual screen; window: the initial size
     int height = 800;
-    bool fullscreen = false;   // window backend
-    std::string drmDevice;     // kms: "" = the first card with a connected connector
-    std::string connector;     // kms: "HDMI-A-1", "" = the first connected one
-    std::string mode;          // kms: "1920x1080" or "1920x1080@60", "" = the preferred mode
+    bool fullscreen = false; // window backend
+    std::string drmDevice;   // kms: "" = the first card with a connected connector
+    std::string connector;   // kms: "HDMI-A-1", "" = the first connected one
+    std::string mode;        // kms: "1920x1080" or "1920x1080@60", "" = the preferred mode
     std::string title = "steerseg";
 };
 

@@ -1,7 +1,6 @@
 #include "io/byte_source.hpp"
 
 #include "io/read_progress.hpp"
-
 #include "io/scan_reader.hpp"
 
 #include <algorithm>

@@ -58,14 +58,14 @@ void bindCommon(GLuint program, const RenderInputs& in, const ViewParams& params
 void dispatchRegion(GLuint program, const ViewParams& params) {
     const glm::ivec4 r = params.region;
     const glm::ivec2 first = glm::clamp(glm::ivec2(r.x, r.y), glm::ivec2(0), params.size);
-    const glm::ivec2 count = r.z < 0 ? params.size - first
-                                     : glm::min(glm::ivec2(r.z, r.w), params.size - first);
+    const glm::ivec2 count =
+        r.z < 0 ? params.size - first : glm::min(glm::ivec2(r.z, r.w), params.size - first);
     if (count.x <= 0 || count.y <= 0) {
         return;
     }
     glUniform2i(uniform(program, "firstPixel"), first.x, first.y);
-    glDispatchCompute(static_cast<GLuint>((count.x + 7) / 8), static_cast<GLuint>((count.y + 7) / 8),
-                      1);
+    glDispatchCompute(static_cast<GLuint>((count.x + 7) / 8),
+                      static_cast<GLuint>((count.y + 7) / 8), 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                     GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }

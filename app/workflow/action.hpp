@@ -4,7 +4,6 @@
 // move it. Devices, gestures, bindings and scripts all end here; nothing in this folder knows
 // where an action came from. No GL, no OS: the workflow runs in unit tests without a GPU.
 #include <glm/glm.hpp>
-
 #include <optional>
 #include <string>
 #include <string_view>
@@ -122,8 +121,8 @@ struct Quit {};
 
 using Action =
     std::variant<LoadScan, Probe, ApplyPreset, SetParam, NudgeParam, NudgeSelected, SelectParam,
-                 CycleParam, SetWindow, AddSeed, Erase, SetEraseMode, Run, Pause, ToggleRun,
-                 Finish, Resume, Export, Undo, Redo, Restart, Proceed, Back, Dismiss, RotateView, ZoomView,
+                 CycleParam, SetWindow, AddSeed, Erase, SetEraseMode, Run, Pause, ToggleRun, Finish,
+                 Resume, Export, Undo, Redo, Restart, Proceed, Back, Dismiss, RotateView, ZoomView,
                  PageSlice, SetSlice, ShowSlices, Quit>;
 
 // "load_scan", "probe", ... (snake_case of the type): the audit log's and scripts' names.

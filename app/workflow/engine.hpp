@@ -20,7 +20,7 @@ struct ScanInfo {
     // Slices per SliceAxis (axial, coronal, sagittal), which depends on the scan's orientation
     // (render::sliceAxisFor); 0: taken from dims as (k, j, i).
     glm::ivec3 sliceCount{0};
-    double minValue = 0.0;   // real units, the whole scan
+    double minValue = 0.0; // real units, the whole scan
     double maxValue = 0.0;
     std::string units; // "HU", "" ...
 };

@@ -21,8 +21,8 @@ struct ViewState {
     double yawDeg = 0.0; // 3D camera about the scan's centre; 0,0 = anterior view
     double pitchDeg = 0.0;
     double zoom = 1.0;
-    glm::ivec3 slice{-1}; // per SliceAxis (axial, coronal, sagittal); -1 = middle
-    SliceAxis first = SliceAxis::Axial; // the slice view with the yellow contour
+    glm::ivec3 slice{-1};                  // per SliceAxis (axial, coronal, sagittal); -1 = middle
+    SliceAxis first = SliceAxis::Axial;    // the slice view with the yellow contour
     SliceAxis second = SliceAxis::Coronal; // the slice view with the speed
     double windowLevel = 0.0;
     double windowWidth = 0.0; // 0 = not set yet: the kiosk's default for the scan

@@ -50,7 +50,8 @@ TEST_F(KioskEngine, LoadsSeedsStepsUndoesAndExports) {
     const double seeded = engine.volumeMl();
     EXPECT_GT(seeded, 0.0);
     const workflow::SnapshotId oneSeed = engine.snapshot();
-    engine.setParams({static_cast<float>(probe.mean), static_cast<float>(3.0 * probe.stddev + 1.0), 1.0F});
+    engine.setParams(
+        {static_cast<float>(probe.mean), static_cast<float>(3.0 * probe.stddev + 1.0), 1.0F});
     const std::uint64_t before = engine.levelSetVersion();
     const solver::StepResult r = engine.step(20);
     EXPECT_EQ(r.iterations, 20);
@@ -130,10 +131,10 @@ TEST_F(KioskScreen, PlacesPicturesTopDownAndTurnsTheScreenAsMounted) {
     screen.begin({0.0F, 0.0F, 0.0F});
     screen.drawPicture(picture, {2, 2}, ui::Rect{10, 5, 20, 20});
     const RgbaImage logical = screen.capture();
-    EXPECT_EQ(colourAt(logical, 12, 7), glm::ivec3(255, 0, 0));   // top left: red
-    EXPECT_EQ(colourAt(logical, 27, 7), glm::ivec3(0, 255, 0));   // top right: green
-    EXPECT_EQ(colourAt(logical, 12, 22), glm::ivec3(0, 0, 255));  // bottom left: blue
-    EXPECT_EQ(colourAt(logical, 5, 5), glm::ivec3(0, 0, 0));      // outside the rect
+    EXPECT_EQ(colourAt(logical, 12, 7), glm::ivec3(255, 0, 0));  // top left: red
+    EXPECT_EQ(colourAt(logical, 27, 7), glm::ivec3(0, 255, 0));  // top right: green
+    EXPECT_EQ(colourAt(logical, 12, 22), glm::ivec3(0, 0, 255)); // bottom left: blue
+    EXPECT_EQ(colourAt(logical, 5, 5), glm::ivec3(0, 0, 0));     // outside the rect
     EXPECT_EQ(logical.at(5, 5)[3], 255);
 
     // Mounted a quarter turn clockwise: the logical screen is 30x40, and its top-left corner

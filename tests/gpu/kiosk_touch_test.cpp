@@ -10,11 +10,10 @@
 #include "ui/screen_rotation.hpp"
 #include "ui/slice_mapping.hpp"
 
-#include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
-
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 namespace steerseg::test {
@@ -46,8 +45,9 @@ TEST_P(KioskTouch, ATapSeedsTheVoxelUnderTheFinger) {
     const Case c = GetParam();
     const glm::ivec2 physical(640, 400);
     const double dpi = 96.0;
-    const auto dir = std::filesystem::temp_directory_path() /
-                     ("steerseg_kiosk_touch_" + std::string(c.axisName) + std::to_string(c.rotation));
+    const auto dir =
+        std::filesystem::temp_directory_path() /
+        ("steerseg_kiosk_touch_" + std::string(c.axisName) + std::to_string(c.rotation));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
 
@@ -67,13 +67,14 @@ TEST_P(KioskTouch, ATapSeedsTheVoxelUnderTheFinger) {
     const glm::dvec2 onScreen = ui::screenOfVoxel(view, target);
     const glm::dvec2 finger = rotation.toPhysical(onScreen);
 
-    std::ofstream(dir / "kiosk.toml") << "[display]\nrotation = " << c.rotation << "\ndpi = " << dpi
-                                      << "\n[audit]\npath = \"" << (dir / "audit.jsonl").string()
-                                      << "\"\n[export]\nfolder = \"" << dir.string() << "\"\n";
+    std::ofstream(dir / "kiosk.toml")
+        << "[display]\nrotation = " << c.rotation << "\ndpi = " << dpi << "\n[audit]\npath = \""
+        << (dir / "audit.jsonl").string() << "\"\n[export]\nfolder = \"" << dir.string() << "\"\n";
     std::ostringstream script;
     script << "load builtin:sample\nwait loaded\n"
-           << "show " << c.axisName << (c.axis == workflow::SliceAxis::Coronal ? " axial\n" : " coronal\n")
-           << "slice " << c.axisName << " " << params.slice << "\n"
+           << "show " << c.axisName
+           << (c.axis == workflow::SliceAxis::Coronal ? " axial\n" : " coronal\n") << "slice "
+           << c.axisName << " " << params.slice << "\n"
            << "proceed\nwait state seeding\n"
            // A frame is written once every view is complete at full resolution, and the script
            // waits for it: the tap then lands on the full picture, however slow the machine.
@@ -102,17 +103,17 @@ TEST_P(KioskTouch, ATapSeedsTheVoxelUnderTheFinger) {
     std::filesystem::remove_all(dir);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    OrientationsAndMountings, KioskTouch,
-    ::testing::Values(Case{workflow::SliceAxis::Axial, "axial", 0},
-                      Case{workflow::SliceAxis::Coronal, "coronal", 0},
-                      Case{workflow::SliceAxis::Sagittal, "sagittal", 0},
-                      Case{workflow::SliceAxis::Axial, "axial", 90},
-                      Case{workflow::SliceAxis::Coronal, "coronal", 270},
-                      Case{workflow::SliceAxis::Sagittal, "sagittal", 180}),
-    [](const ::testing::TestParamInfo<Case>& param) {
-        return std::string(param.param.axisName) + std::to_string(param.param.rotation);
-    });
+INSTANTIATE_TEST_SUITE_P(OrientationsAndMountings, KioskTouch,
+                         ::testing::Values(Case{workflow::SliceAxis::Axial, "axial", 0},
+                                           Case{workflow::SliceAxis::Coronal, "coronal", 0},
+                                           Case{workflow::SliceAxis::Sagittal, "sagittal", 0},
+                                           Case{workflow::SliceAxis::Axial, "axial", 90},
+                                           Case{workflow::SliceAxis::Coronal, "coronal", 270},
+                                           Case{workflow::SliceAxis::Sagittal, "sagittal", 180}),
+                         [](const ::testing::TestParamInfo<Case>& param) {
+                             return std::string(param.param.axisName) +
+                                    std::to_string(param.param.rotation);
+                         });
 
 } // namespace
 } // namespace steerseg::test

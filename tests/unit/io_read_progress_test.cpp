@@ -4,9 +4,8 @@
 #include "io/read_progress.hpp"
 #include "io/scan_reader.hpp"
 
-#include <gtest/gtest.h>
-
 #include <filesystem>
+#include <gtest/gtest.h>
 #include <thread>
 
 namespace steerseg::test {

@@ -1,7 +1,6 @@
 #include "core/mask_runs.hpp"
 
 #include <gtest/gtest.h>
-
 #include <random>
 #include <stdexcept>
 
