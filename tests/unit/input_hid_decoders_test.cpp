@@ -153,6 +153,17 @@ TEST(InputRadial, SurfaceDialTurnsAndPresses) {
               (Strings{"dial: report before a usable report descriptor (ignored)"}));
 }
 
+TEST(InputRadial, MicrosoftSampleLayoutDecodesItsOddOffsetDial) {
+    auto d = radial();
+    std::vector<platform::input::ControlEvent> out;
+    d->feed(hidDescriptor(0.0, hexBytes(kMicrosoftSampleRadialHex)), out);
+    d->feed(hidReport(0.1, {0x01, 0xF7, 0xFF, 0, 0, 0, 0, 0, 0}), out); // press, dial -5
+    d->feed(hidReport(0.2, {0x01, 0x06, 0x00, 0, 0, 0, 0, 0, 0}), out); // release, dial +3
+    EXPECT_EQ(describe(out), (Strings{"dial_turn step -5", "dial_press press", "dial_turn step 3",
+                                      "dial_press release"}));
+    EXPECT_TRUE(d->takeProblems().empty());
+}
+
 TEST(InputRadial, UnknownIdsWrongLengthsAndUnplugMidPress) {
     auto d = radial();
     std::vector<platform::input::ControlEvent> out;

@@ -87,6 +87,28 @@ TEST(InputReportDescriptor, SurfaceDialFieldsAndReportLength) {
     EXPECT_EQ(y->bitOffset, 40U);
 }
 
+TEST(InputReportDescriptor, MicrosoftSampleRadialHasA15BitSignedDialAtBitOne) {
+    const ReportDescriptor d = parseOk(kMicrosoftSampleRadialHex);
+    EXPECT_EQ(d.inputReportBytes(1), 9U); // id, 1 + 15 + 16 + 16 + 16 bits
+    const HidField* dial = find(d, 0x01, 0x37);
+    ASSERT_TRUE(dial);
+    EXPECT_EQ(dial->bitOffset, 1U);
+    EXPECT_EQ(dial->bitSize, 15U);
+    EXPECT_TRUE(dial->isSigned);
+    EXPECT_TRUE(dial->relative);
+    EXPECT_EQ(dial->logicalMin, -3600);
+    EXPECT_EQ(dial->logicalMax, 3600);
+    const HidField* x = find(d, 0x01, 0x30);
+    ASSERT_TRUE(x);
+    EXPECT_EQ(x->bitOffset, 16U);
+    EXPECT_FALSE(x->isSigned);
+    EXPECT_EQ(x->logicalMax, 32767);
+    // Button down, dial -5: bits 1..15 hold 0x7FFB, so the first word is 0xFFF7.
+    const std::vector<std::uint8_t> data{0xF7, 0xFF, 0, 0, 0, 0, 0, 0};
+    EXPECT_EQ(extractField(data, dial->bitOffset, dial->bitSize, dial->isSigned), -5);
+    EXPECT_EQ(extractField(data, 0, 1, false), 1);
+}
+
 TEST(InputReportDescriptor, ReportIdsPushPopRangesAndSignedOddOffsets) {
     const ReportDescriptor d = parseOk(kHandMade);
     EXPECT_TRUE(d.usesReportIds);

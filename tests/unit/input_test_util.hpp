@@ -33,6 +33,15 @@ B1 42 75 10 26 D0 07 09 25 B1 42 09 25 91 42 85
 25 05 36 04 10 46 04 10 09 05 B1 02 35 00 45 00
 C0 C0 C0 C0 C0)";
 
+// Microsoft's sample radial controller descriptor ("Windows radial controller sample report
+// descriptors", Windows hardware design docs): a 1-bit button, then a 15-bit signed Dial at
+// bit 1, X, Y and a constant Width; report id 1.
+inline constexpr const char* kMicrosoftSampleRadialHex = R"(
+05 01 09 0e a1 01 85 01 05 0d 09 21 a1 00 05 09 09 01 95 01 75 01 15 00 25 01 81 02
+05 01 09 37 95 01 75 0f 55 0f 65 14 36 f0 f1 46 10 0e 16 f0 f1 26 10 0e 81 06
+09 30 75 10 55 0d 65 13 35 00 46 c0 5d 15 00 26 ff 7f 81 02 09 31 46 b0 36 81 02
+05 0d 09 48 36 b8 0b 46 b8 0b 16 b8 0b 26 b8 0b 81 03 c0 c0)";
+
 inline std::vector<std::uint8_t> hexBytes(std::string_view text) {
     std::vector<std::uint8_t> bytes;
     int high = -1;

@@ -29,41 +29,48 @@ bool readable(const hid::HidField& f) {
     return !f.constant && f.variable && f.bitSize >= 1 && f.bitSize <= 32;
 }
 
-// The turn and press fields of the first multi-axis controller that has a turn field.
-std::optional<Layout> findLayout(hid::ReportDescriptor descriptor, std::string& problem) {
-    for (std::size_t c = 0; c < descriptor.collections.size(); ++c) {
-        const hid::HidCollection& col = descriptor.collections[c];
-        if (col.usagePage != kGenericDesktop || col.usage != kMultiAxisController) {
-            continue;
+// The multi-axis controller collection enclosing `f`, or -1. Parents precede their children,
+// so the walk is at most the nesting depth the parser allows.
+int controllerOf(const hid::ReportDescriptor& d, const hid::HidField& f) {
+    for (int c = f.collection; c >= 0; c = d.collections[static_cast<std::size_t>(c)].parent) {
+        const hid::HidCollection& col = d.collections[static_cast<std::size_t>(c)];
+        if (col.usagePage == kGenericDesktop && col.usage == kMultiAxisController) {
+            return c;
         }
-        const int ci = static_cast<int>(c);
-        const hid::HidField* turn = nullptr;
-        for (const std::uint16_t wanted : {kDial, kWheel}) {
-            for (const hid::HidField& f : descriptor.inputs) {
-                if (!turn && readable(f) && f.relative && f.usagePage == kGenericDesktop &&
-                    f.usage == wanted && descriptor.within(f, ci)) {
-                    turn = &f;
-                }
-            }
-        }
-        if (!turn) {
-            continue;
-        }
-        const hid::HidField* press = nullptr;
-        for (const hid::HidField& f : descriptor.inputs) {
-            // The primary button (usage 1) where there are several.
-            if (readable(f) && f.usagePage == kButtonPage && descriptor.within(f, ci) &&
-                (!press || (f.usage == 1 && press->usage != 1))) {
-                press = &f;
-            }
-        }
-        Layout layout{{}, *turn, press ? std::optional(*press) : std::nullopt};
-        layout.descriptor = std::move(descriptor);
-        return layout;
     }
-    problem = "report descriptor has no relative Dial or Wheel in a System Multi-Axis "
-              "Controller collection";
-    return std::nullopt;
+    return -1;
+}
+
+// The first relative Dial inside a multi-axis controller (else the first such Wheel) and that
+// controller's button. Linear in the fields, so a hostile descriptor stays cheap.
+std::optional<Layout> findLayout(hid::ReportDescriptor descriptor, std::string& problem) {
+    const hid::HidField* turn = nullptr;
+    int controller = -1;
+    for (const std::uint16_t wanted : {kDial, kWheel}) {
+        for (const hid::HidField& f : descriptor.inputs) {
+            if (!turn && readable(f) && f.relative && f.usagePage == kGenericDesktop &&
+                f.usage == wanted) {
+                controller = controllerOf(descriptor, f);
+                turn = controller >= 0 ? &f : nullptr;
+            }
+        }
+    }
+    if (!turn) {
+        problem = "report descriptor has no relative Dial or Wheel in a System Multi-Axis "
+                  "Controller collection";
+        return std::nullopt;
+    }
+    const hid::HidField* press = nullptr;
+    for (const hid::HidField& f : descriptor.inputs) {
+        // The primary button (usage 1) where there are several.
+        if (readable(f) && f.usagePage == kButtonPage &&
+            (!press || (f.usage == 1 && press->usage != 1)) && descriptor.within(f, controller)) {
+            press = &f;
+        }
+    }
+    Layout layout{{}, *turn, press ? std::optional(*press) : std::nullopt};
+    layout.descriptor = std::move(descriptor);
+    return layout;
 }
 
 class RadialDecoder final : public Decoder {
