@@ -13,10 +13,13 @@ using platform::input::makeDecoder;
 using platform::input::RawRecord;
 using Strings = std::vector<std::string>;
 
-std::unique_ptr<platform::input::Decoder> shuttle() {
+// The ShuttlePRO v2 (0b33:0030) unless another product id is given.
+std::unique_ptr<platform::input::Decoder> shuttle(std::uint16_t productId = 0x0030) {
     DeviceSpec spec;
     spec.kind = DeviceSpec::Kind::Shuttle;
     spec.name = "shuttle";
+    spec.vendorId = 0x0b33;
+    spec.productId = productId;
     return makeDecoder(spec);
 }
 
@@ -58,15 +61,24 @@ TEST(InputShuttle, RingPositionsAndReturnToCentre) {
                        "shuttle_ring pos -1.000", "shuttle_ring pos 0.000"}));
 }
 
-TEST(InputShuttle, ButtonsAreNamedByBitForBothModels) {
+TEST(InputShuttle, ProButtonsAreNamedByBit) {
     auto d = shuttle();
-    // ShuttleXpress: its buttons are bits 4..8; ShuttlePRO v2: bits 0..14.
     const auto events = feedAll(*d, {report(0.0, 0, 0, 0x0010), report(0.1, 0, 0, 0x0100),
                                      report(0.2, 0, 0, 0x4001), report(0.3, 0, 0, 0x0000)});
     EXPECT_EQ(describe(events),
               (Strings{"shuttle_button5 press", "shuttle_button9 press", "shuttle_button5 release",
                        "shuttle_button1 press", "shuttle_button15 press", "shuttle_button9 release",
                        "shuttle_button1 release", "shuttle_button15 release"}));
+}
+
+TEST(InputShuttle, XpressButtonsAreNumberedOneToFiveFromBitFour) {
+    auto d = shuttle(0x0020);
+    const auto events = feedAll(*d, {report(0.0, 0, 0, 0x0010), report(0.1, 0, 0, 0x0100),
+                                     report(0.2, 0, 0, 0x0000), report(0.3, 0, 0, 0x0001)});
+    EXPECT_EQ(describe(events), (Strings{"shuttle_button1 press", "shuttle_button5 press",
+                                         "shuttle_button1 release", "shuttle_button5 release"}));
+    EXPECT_EQ(d->takeProblems(),
+              (Strings{"shuttle: button bits 0x1 set, no such button (report dropped)"}));
 }
 
 TEST(InputShuttle, ShortLongAndGarbageReportsAreProblemsNotEvents) {
@@ -85,7 +97,7 @@ TEST(InputShuttle, ShortLongAndGarbageReportsAreProblemsNotEvents) {
                                  "shuttle: report of 6 bytes, expected 5",
                                  "shuttle: report of 0 bytes, expected 5",
                                  "shuttle: ring position 64 outside -7..7 (report dropped)",
-                                 "shuttle: button bit 16 set, no such button (report dropped)",
+                                 "shuttle: button bits 0x8000 set, no such button (report dropped)",
                                  "shuttle: not a HID record (ignored)"}));
     EXPECT_TRUE(d->takeProblems().empty());
     // The reference survived the garbage: 100 -> 103 is 3 steps.

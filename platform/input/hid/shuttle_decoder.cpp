@@ -1,13 +1,15 @@
 // Contour ShuttleXpress (0b33:0020) and ShuttlePRO v2 (0b33:0030). Both send the same 5-byte
 // input report without a report id: byte 0 the shuttle ring (int8, -7..7, 0 at rest), byte 1
 // the jog wheel (a uint8 counter that wraps), byte 2 unused, bytes 3-4 the buttons as a
-// little-endian bit mask. The ShuttleXpress's five buttons are bits 4..8, the PRO v2's fifteen
-// bits 0..14; a button is named by its bit (bit 0 = button1), so one decoder serves both.
+// little-endian bit mask. The PRO v2's fifteen buttons are bits 0..14 (bit 0 = button1); the
+// ShuttleXpress's five are bits 4..8, numbered button1..button5 from the left as printed on the
+// device, so a site's bindings read like the hardware. Any other product id is numbered by bit.
 #include "platform/input/decoders.hpp"
 #include "platform/input/problem_log.hpp"
 
 #include <cstdint>
 #include <optional>
+#include <string_view>
 
 namespace steerseg::platform::input {
 
@@ -16,10 +18,14 @@ namespace {
 constexpr std::size_t kReportBytes = 5;
 constexpr int kRingMax = 7;
 constexpr unsigned kButtonBits = 15;
+constexpr std::uint16_t kShuttleXpressProduct = 0x0020;
+constexpr unsigned kXpressFirstBit = 4;
+constexpr unsigned kXpressButtons = 5;
 
 class ShuttleDecoder final : public Decoder {
   public:
-    explicit ShuttleDecoder(std::string name) : name_(std::move(name)) {}
+    ShuttleDecoder(std::string name, unsigned firstBit, unsigned validMask)
+        : name_(std::move(name)), firstBit_(firstBit), validMask_(validMask) {}
 
     void feed(const RawRecord& record, std::vector<ControlEvent>& out) override {
         switch (record.kind) {
@@ -67,8 +73,9 @@ class ShuttleDecoder final : public Decoder {
                           " outside -7..7 (report dropped)");
             return;
         }
-        if ((buttons >> kButtonBits) != 0) {
-            problems_.add(name_ + ": button bit 16 set, no such button (report dropped)");
+        if ((buttons & ~validMask_) != 0) {
+            problems_.add(name_ + ": button bits 0x" + hex(buttons & ~validMask_) +
+                          " set, no such button (report dropped)");
             return;
         }
         const double t = record.time;
@@ -107,10 +114,22 @@ class ShuttleDecoder final : public Decoder {
     }
 
     [[nodiscard]] std::string button(unsigned bit) const {
-        return name_ + "_button" + std::to_string(bit + 1);
+        return name_ + "_button" + std::to_string(bit - firstBit_ + 1);
+    }
+
+    static std::string hex(unsigned value) {
+        constexpr std::string_view kDigits = "0123456789abcdef";
+        std::string text;
+        do {
+            text.insert(text.begin(), kDigits[value & 0xFU]);
+            value >>= 4U;
+        } while (value != 0);
+        return text;
     }
 
     std::string name_;
+    unsigned firstBit_;  // the bit of button1
+    unsigned validMask_; // the bits the model has buttons on
     ProblemLog problems_;
     std::optional<std::uint8_t> jog_; // the last counter value; none until the first report
     int ring_ = 0;
@@ -120,7 +139,11 @@ class ShuttleDecoder final : public Decoder {
 } // namespace
 
 std::unique_ptr<Decoder> makeShuttleDecoder(const DeviceSpec& spec) {
-    return std::make_unique<ShuttleDecoder>(spec.name);
+    if (spec.productId == kShuttleXpressProduct) {
+        return std::make_unique<ShuttleDecoder>(spec.name, kXpressFirstBit,
+                                                ((1U << kXpressButtons) - 1U) << kXpressFirstBit);
+    }
+    return std::make_unique<ShuttleDecoder>(spec.name, 0U, (1U << kButtonBits) - 1U);
 }
 
 } // namespace steerseg::platform::input
