@@ -63,9 +63,6 @@ CheckResult checkWritableFolder(const std::string& name, const std::filesystem::
     if (ec) {
         return {name, CheckLevel::Fail, where + ": cannot create (" + ec.message() + ")", {}};
     }
-    if (!std::filesystem::is_directory(folder, ec)) {
-        return {name, CheckLevel::Fail, where + ": not a folder", {}};
-    }
     // A real file, not access(2): root passes access() on any folder, a read-only mount
     // included, and only a write shows a full disk.
     const std::filesystem::path probe =

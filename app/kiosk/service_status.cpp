@@ -5,7 +5,6 @@
 namespace steerseg::kiosk {
 
 void ServiceStatus::framePresented(const workflow::Status& status) {
-    notifier_.keepAlive(platform::ServiceNotifier::Clock::now());
     std::string line(workflow::stateName(status.state));
     if (!status.message.empty()) {
         line += ": " + status.message;
@@ -14,12 +13,11 @@ void ServiceStatus::framePresented(const workflow::Status& status) {
         ready_ = true;
         shown_ = line;
         notifier_.ready(line);
-        return;
-    }
-    if (line != shown_) {
+    } else if (line != shown_) {
         shown_ = line;
         notifier_.status(line);
     }
+    notifier_.keepAlive(platform::ServiceNotifier::Clock::now());
 }
 
 void ServiceStatus::stopping() {
