@@ -91,10 +91,21 @@ for group in video render input gpio; do
     grep -Eq "^$group:x:[0-9]+:(.*,)?steerseg(,|\$)" "$root/etc/group" ||
         fail "steerseg is not in group $group"
 done
-systemd-tmpfiles --root="$root" --create 2>&1
+# Only root may hand the folders to the steerseg user: elsewhere tmpfiles creates them, fails
+# the chown (status 73, "cannot create") and they stay this user's.
+tmpfiles_status=0
+systemd-tmpfiles --root="$root" --create 2>&1 || tmpfiles_status=$?
+if [[ $(id -u) -eq 0 ]]; then
+    owner=$(awk -F: '$1 == "steerseg" { print $3 ":" $4 }' "$root/etc/passwd")
+    [[ $tmpfiles_status -eq 0 ]] || fail "systemd-tmpfiles exited $tmpfiles_status"
+else
+    owner="$(id -u):$(id -g)"
+    [[ $tmpfiles_status -eq 0 || $tmpfiles_status -eq 73 ]] ||
+        fail "systemd-tmpfiles exited $tmpfiles_status"
+fi
 for dir in /var/lib/steerseg /var/lib/steerseg/export /var/lib/steerseg/autosave; do
-    [[ $(stat -c '%a %U' "$root$dir" 2>/dev/null || true) == "750 "* ]] ||
-        fail "tmpfiles: $dir is not a 0750 folder"
+    [[ $(stat -c '%a %u:%g' "$root$dir" 2>/dev/null || true) == "750 $owner" ]] ||
+        fail "tmpfiles: $dir is not a 0750 folder of $owner"
 done
 
 step "udev helper: radial controller by report descriptor"
