@@ -30,5 +30,6 @@ int runInfo(std::span<const std::string> args);
 int runKiosk(std::span<const std::string> args);
 int runRender(std::span<const std::string> args);
 int runSegment(std::span<const std::string> args);
+int runSelfTest(std::span<const std::string> args);
 
 } // namespace steerseg::cli

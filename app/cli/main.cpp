@@ -50,6 +50,11 @@ constexpr Command kCommands[] = {
      "SESSION] [--frames DIR] [--size WxH] [--stats FILE] [--max-seconds S]: the fullscreen "
      "appliance (touch, keys and scripted sessions; docs/scripts.md)",
      steerseg::cli::runKiosk},
+    {"self-test",
+     "--self-test [--platform auto|surfaceless|device] [--config FILE]: check what the "
+     "appliance needs (GL, shaders, config, writable folders, controllers); one line per check, "
+     "status 1 when a required one fails",
+     steerseg::cli::runSelfTest},
 };
 
 void printUsage(std::FILE* out) {
@@ -103,6 +108,10 @@ int main(int argc, char** argv) {
     if (words.empty() || words[0] == "--help" || words[0] == "-h" || words[0] == "help") {
         printUsage(words.empty() ? stderr : stdout);
         return words.empty() ? steerseg::cli::kExitUsage : steerseg::cli::kExitOk;
+    }
+    // The appliance's check is a flag by tradition (`steerseg --self-test`); it is a command.
+    if (words[0] == "--self-test") {
+        words[0] = "self-test";
     }
     for (const Command& c : kCommands) {
         if (words[0] != c.name) {

@@ -9,6 +9,7 @@
 #include "kiosk/mask_dice.hpp"
 #include "kiosk/screen_compositor.hpp"
 #include "kiosk/script_player.hpp"
+#include "kiosk/service_status.hpp"
 #include "kiosk/session_engine.hpp"
 #include "kiosk/settings_from_config.hpp"
 #include "kiosk/view_painter.hpp"
@@ -160,6 +161,7 @@ class Kiosk {
         stepSolver();
         drawScreen();
         present(frameStart);
+        service_.framePresented(flow_.status());
         saveFrames();
         if (stopReason()) {
             return false;
@@ -171,6 +173,7 @@ class Kiosk {
     [[nodiscard]] int exitCode() const { return exitCode_; }
 
     void finish(std::ostream& out) {
+        service_.stopping();
         if (const auto error = audit_.takeError()) {
             err_ << "steerseg kiosk: audit log: " << *error << '\n';
         }
@@ -375,6 +378,7 @@ class Kiosk {
     ViewPainter painter_;
     FrameStats stats_;
     KioskScriptSink sink_;
+    ServiceStatus service_;
     double frameBudget_;
     Clock::time_point start_;
 
