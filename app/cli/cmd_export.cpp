@@ -2,55 +2,27 @@
 // grid, as a mask or as a surface mesh. GL-free: it needs no GPU, only the two files.
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "io/export_writer.hpp"
 #include "io/file_name.hpp"
-#include "io/mask_writer.hpp"
-#include "io/mesh_writer.hpp"
 #include "io/scan_reader.hpp"
-#include "io/surface_mesh.hpp"
 
 #include <algorithm>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 namespace steerseg::cli {
 
 namespace {
 
-constexpr const char* kFormats[] = {"stl", "ply", "nii.gz", "nii", "nrrd"};
-
-// The format's name, from --format or the output's extension.
-std::string chooseFormat(const Args& args, const std::string& output) {
-    const std::string name = io::lowerFileName(output);
-    std::string byName;
-    for (const char* f : kFormats) {
-        if (io::hasSuffix(name, std::string(".") + f)) {
-            byName = f;
-            break;
-        }
+// The format from --format or the output's extension (io::exportFormatFor); a wrong choice is
+// a usage error.
+io::ExportFormat chooseFormat(const Args& args, const std::string& output) {
+    try {
+        return io::exportFormatFor(output, args.value("format"));
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
     }
-    const auto requested = args.value("format");
-    if (!requested) {
-        if (byName.empty()) {
-            throw UsageError("--output " + output +
-                             ": cannot tell the format from the extension (.stl, .ply, .nii.gz, "
-                             ".nii, .nrrd); name it or give --format");
-        }
-        return byName;
-    }
-    std::string format = io::lowerCase(*requested);
-    if (!format.empty() && format.front() == '.') {
-        format.erase(0, 1);
-    }
-    if (std::none_of(std::begin(kFormats), std::end(kFormats),
-                     [&](const char* f) { return format == f; })) {
-        throw UsageError("--format: unknown format '" + *requested +
-                         "' (stl, ply, nii.gz, nii, nrrd)");
-    }
-    // A mask's writer knows its format by the name only; a mesh's can be told.
-    if (format != "stl" && format != "ply" && format != byName) {
-        throw UsageError("--format " + format + " needs an output ending in ." + format);
-    }
-    return format;
 }
 
 // The mask as 0/1 on the scan's grid. It must be on that grid: the same dimensions and, within
@@ -90,7 +62,7 @@ int runExport(std::span<const std::string> words) {
     const std::string input = args.required("input");
     const std::string maskPath = args.required("mask");
     const std::string output = args.required("output");
-    const std::string format = chooseFormat(args, output);
+    const io::ExportFormat format = chooseFormat(args, output);
 
     const io::LoadedScan scan = io::readScan(input);
     const Geometry& geometry = scan.volume.geometry();
@@ -102,18 +74,18 @@ int runExport(std::span<const std::string> words) {
     report["input"] = input;
     report["mask"] = maskPath;
     report["output"] = output;
-    report["format"] = format;
+    report["format"] = io::exportFormatName(format);
     report["mask_volume_mm3"] = static_cast<double>(insideVoxels) * voxelVolume;
-    if (format == "stl" || format == "ply") {
-        const io::SurfaceMesh mesh = io::extractSurface(geometry, io::maskToField(mask));
-        io::writeMesh(output, mesh, format == "stl" ? io::MeshFormat::Stl : io::MeshFormat::Ply);
-        report["triangles"] = mesh.triangles.size();
-        report["vertices"] = mesh.vertices.size();
-        report["surface_volume_mm3"] = io::enclosedVolume(mesh);
-    } else {
-        io::writeMask(output, geometry, mask);
+    const io::ExportSummary written = io::writeExport(output, format, {geometry, mask, {}, {}});
+    if (io::isSurfaceFormat(format)) {
+        report["triangles"] = written.triangles;
+        report["vertices"] = written.vertices;
+        report["surface_volume_mm3"] = written.surfaceVolumeMm3;
     }
-    report["world"] = "LPS";
+    if (!written.note.empty()) {
+        report["note"] = written.note;
+    }
+    report["world"] = format == io::ExportFormat::Tiff ? "none (voxel order)" : "LPS";
     std::printf("%s\n", report.dump(2).c_str());
     return 0;
 }
