@@ -25,6 +25,38 @@ io::ExportFormat chooseFormat(const Args& args, const std::string& output) {
     }
 }
 
+// --segment-name, --segment-color r,g,b (0..1) and --segment-label (1..255): what 3D Slicer
+// shows for a .seg.nrrd.
+io::SegmentInfo segmentFrom(const Args& args) {
+    io::SegmentInfo segment;
+    if (const auto name = args.value("segment-name")) {
+        if (name->empty() || name->find_first_of("|\r\n") != std::string::npos) {
+            throw UsageError("--segment-name: give a name without '|' or line breaks");
+        }
+        segment.name = *name;
+    }
+    if (const auto color = args.value("segment-color")) {
+        double r = -1.0, g = -1.0, b = -1.0;
+        char end = '\0';
+        if (std::sscanf(color->c_str(), "%lf,%lf,%lf%c", &r, &g, &b, &end) != 3 ||
+            !(r >= 0.0 && r <= 1.0 && g >= 0.0 && g <= 1.0 && b >= 0.0 && b <= 1.0)) {
+            throw UsageError("--segment-color: expected r,g,b each within 0..1 (got '" + *color +
+                             "')");
+        }
+        segment.color = {r, g, b};
+    }
+    if (const auto label = args.value("segment-label")) {
+        int value = 0;
+        char end = '\0';
+        if (std::sscanf(label->c_str(), "%d%c", &value, &end) != 1 || value < 1 || value > 255) {
+            throw UsageError("--segment-label: expected a whole number within 1..255 (got '" +
+                             *label + "')");
+        }
+        segment.label = value;
+    }
+    return segment;
+}
+
 // The mask as 0/1 on the scan's grid. It must be on that grid: the same dimensions and, within
 // what a file header's float precision leaves, the same placement in the patient.
 std::vector<std::uint8_t> readMaskFor(const std::string& path, const Geometry& scan) {
@@ -55,7 +87,10 @@ std::vector<std::uint8_t> readMaskFor(const std::string& path, const Geometry& s
 } // namespace
 
 int runExport(std::span<const std::string> words) {
-    const Args args(words, {"input", "mask", "output", "format"}, {});
+    const Args args(
+        words,
+        {"input", "mask", "output", "format", "segment-name", "segment-color", "segment-label"},
+        {});
     if (!args.positional().empty()) {
         throw UsageError("unexpected argument '" + args.positional().front() + "'");
     }
@@ -63,6 +98,7 @@ int runExport(std::span<const std::string> words) {
     const std::string maskPath = args.required("mask");
     const std::string output = args.required("output");
     const io::ExportFormat format = chooseFormat(args, output);
+    const io::SegmentInfo segment = segmentFrom(args);
 
     const io::LoadedScan scan = io::readScan(input);
     const Geometry& geometry = scan.volume.geometry();
@@ -76,7 +112,8 @@ int runExport(std::span<const std::string> words) {
     report["output"] = output;
     report["format"] = io::exportFormatName(format);
     report["mask_volume_mm3"] = static_cast<double>(insideVoxels) * voxelVolume;
-    const io::ExportSummary written = io::writeExport(output, format, {geometry, mask, {}, {}});
+    const io::ExportSummary written =
+        io::writeExport(output, format, {geometry, mask, {}, segment});
     if (io::isSurfaceFormat(format)) {
         report["triangles"] = written.triangles;
         report["vertices"] = written.vertices;

@@ -42,10 +42,10 @@ constexpr Command kCommands[] = {
      "(surfaces from the level set itself)",
      steerseg::cli::runSegment},
     {"export",
-     "export --input SCAN --mask MASK --output "
-     "OUT.nii.gz|.nii|.nrrd|.seg.nrrd|.dcm|.stl|.ply|.tif [--format F]: a mask on the scan's "
-     "grid, again as a mask, a 3D Slicer segmentation, a closed surface mesh in LPS millimetres "
-     "or a TIFF stack (no GPU)",
+     "export --input SCAN --mask MASK --output OUT.nii.gz|.nii|.nrrd|.seg.nrrd|.dcm|.stl|.ply|.tif "
+     "[--format F] [--segment-name N --segment-color r,g,b --segment-label L]: a mask on the "
+     "scan's grid, again as a mask, a 3D Slicer segmentation, a closed surface mesh in LPS "
+     "millimetres or a TIFF stack (no GPU)",
      steerseg::cli::runExport},
     {"kiosk",
      "kiosk [--platform auto|kms|window|offscreen] [--config FILE] [--scan PATH] [--script "

@@ -164,8 +164,10 @@ TEST(ExportFormats, TiffStackReadsBackThroughOpenImageIO) {
         ASSERT_EQ(spec.height, kDims.y);
         ASSERT_EQ(spec.nchannels, 1);
         EXPECT_EQ(spec.get_string_attribute("ResolutionUnit"), "cm");
-        EXPECT_NEAR(spec.get_float_attribute("XResolution"), 10.0 / g.spacing.x, 1e-3);
-        EXPECT_NEAR(spec.get_float_attribute("YResolution"), 10.0 / g.spacing.y, 1e-3);
+        EXPECT_NEAR(static_cast<double>(spec.get_float_attribute("XResolution")),
+                    10.0 / g.spacing.x, 1e-3);
+        EXPECT_NEAR(static_cast<double>(spec.get_float_attribute("YResolution")),
+                    10.0 / g.spacing.y, 1e-3);
         const std::string description = spec.get_string_attribute("ImageDescription");
         EXPECT_NE(description.find("slices=" + std::to_string(kDims.z) + "\n"), std::string::npos);
         EXPECT_NE(description.find("spacing=" + std::to_string(g.spacing.z / 10.0).substr(0, 4)),
