@@ -96,8 +96,14 @@ std::string causeText(int error, const std::filesystem::path& folder, std::size_
     case EACCES:
     case EPERM:
         return "the folder " + where + " is not writable (permission denied)";
-    case ENOENT:
+    case ENOENT: {
+        // /proc and the like: the folder is there but takes no new files.
+        std::error_code ec;
+        if (std::filesystem::is_directory(folder, ec)) {
+            return "the folder " + where + " does not accept new files";
+        }
         return "the folder " + where + " does not exist";
+    }
     case ENOTDIR:
         return where + " is not a folder";
     default:
@@ -120,7 +126,8 @@ std::size_t totalSize(std::initializer_list<std::span<const std::byte>> pieces) 
 // A new file beside `path` no other writer (another process, a second export within the same
 // second) can have: O_EXCL, the process id and a counter, retried on a name already taken.
 // Hidden, so a half-written file never looks like an export in a file browser.
-int createTemporary(const std::filesystem::path& path, std::filesystem::path& temp) {
+int createTemporary(const std::filesystem::path& path, std::size_t bytes,
+                    std::filesystem::path& temp) {
     static std::atomic<unsigned> counter{0};
     const std::filesystem::path folder = folderOf(path);
     for (int attempt = 0; attempt < 100; ++attempt) {
@@ -131,7 +138,7 @@ int createTemporary(const std::filesystem::path& path, std::filesystem::path& te
             return fd;
         }
         if (errno != EEXIST) {
-            fail(path, errno, 0);
+            fail(path, errno, bytes); // ENOSPC here: no room for even an empty file
         }
     }
     throw WriteError(path, "cannot find a free temporary name in " + folder.string());
@@ -179,7 +186,7 @@ void writeAllTo(int fd, const std::filesystem::path& path,
 void writeFileAtomically(const std::filesystem::path& path,
                          std::initializer_list<std::span<const std::byte>> pieces) {
     std::filesystem::path temp;
-    int fd = createTemporary(path, temp);
+    int fd = createTemporary(path, totalSize(pieces), temp);
     const auto discard = [&] {
         if (fd >= 0) {
             ::close(fd);
