@@ -187,6 +187,14 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
     const State s = st.state;
     m.banner = stateLabel(s);
     m.hint = hintFor(s);
+    // The export screen says what Export will write, as the config enables it.
+    if ((s == State::Review || s == State::Done) && !st.exportFormats.empty()) {
+        std::string formats;
+        for (const std::string& f : st.exportFormats) {
+            formats += (formats.empty() ? "." : ", .") + f;
+        }
+        m.hint += " Export writes " + formats + ".";
+    }
     m.message = st.message;
     m.error = s == State::Error;
     if (s == State::Done && !st.exportedPath.empty() && m.message.empty()) {

@@ -2,55 +2,59 @@
 // grid, as a mask or as a surface mesh. GL-free: it needs no GPU, only the two files.
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "io/export_writer.hpp"
 #include "io/file_name.hpp"
-#include "io/mask_writer.hpp"
-#include "io/mesh_writer.hpp"
 #include "io/scan_reader.hpp"
-#include "io/surface_mesh.hpp"
 
 #include <algorithm>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 namespace steerseg::cli {
 
 namespace {
 
-constexpr const char* kFormats[] = {"stl", "ply", "nii.gz", "nii", "nrrd"};
+// The format from --format or the output's extension (io::exportFormatFor); a wrong choice is
+// a usage error.
+io::ExportFormat chooseFormat(const Args& args, const std::string& output) {
+    try {
+        return io::exportFormatFor(output, args.value("format"));
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+}
 
-// The format's name, from --format or the output's extension.
-std::string chooseFormat(const Args& args, const std::string& output) {
-    const std::string name = io::lowerFileName(output);
-    std::string byName;
-    for (const char* f : kFormats) {
-        if (io::hasSuffix(name, std::string(".") + f)) {
-            byName = f;
-            break;
+// --segment-name, --segment-color r,g,b (0..1) and --segment-label (1..255): what 3D Slicer
+// shows for a .seg.nrrd.
+io::SegmentInfo segmentFrom(const Args& args) {
+    io::SegmentInfo segment;
+    if (const auto name = args.value("segment-name")) {
+        if (name->empty() || name->find_first_of("|\r\n") != std::string::npos) {
+            throw UsageError("--segment-name: give a name without '|' or line breaks");
         }
+        segment.name = *name;
     }
-    const auto requested = args.value("format");
-    if (!requested) {
-        if (byName.empty()) {
-            throw UsageError("--output " + output +
-                             ": cannot tell the format from the extension (.stl, .ply, .nii.gz, "
-                             ".nii, .nrrd); name it or give --format");
+    if (const auto color = args.value("segment-color")) {
+        double r = -1.0, g = -1.0, b = -1.0;
+        char end = '\0';
+        if (std::sscanf(color->c_str(), "%lf,%lf,%lf%c", &r, &g, &b, &end) != 3 ||
+            !(r >= 0.0 && r <= 1.0 && g >= 0.0 && g <= 1.0 && b >= 0.0 && b <= 1.0)) {
+            throw UsageError("--segment-color: expected r,g,b each within 0..1 (got '" + *color +
+                             "')");
         }
-        return byName;
+        segment.color = {r, g, b};
     }
-    std::string format = io::lowerCase(*requested);
-    if (!format.empty() && format.front() == '.') {
-        format.erase(0, 1);
+    if (const auto label = args.value("segment-label")) {
+        int value = 0;
+        char end = '\0';
+        if (std::sscanf(label->c_str(), "%d%c", &value, &end) != 1 || value < 1 || value > 255) {
+            throw UsageError("--segment-label: expected a whole number within 1..255 (got '" +
+                             *label + "')");
+        }
+        segment.label = value;
     }
-    if (std::none_of(std::begin(kFormats), std::end(kFormats),
-                     [&](const char* f) { return format == f; })) {
-        throw UsageError("--format: unknown format '" + *requested +
-                         "' (stl, ply, nii.gz, nii, nrrd)");
-    }
-    // A mask's writer knows its format by the name only; a mesh's can be told.
-    if (format != "stl" && format != "ply" && format != byName) {
-        throw UsageError("--format " + format + " needs an output ending in ." + format);
-    }
-    return format;
+    return segment;
 }
 
 // The mask as 0/1 on the scan's grid. It must be on that grid: the same dimensions and, within
@@ -83,14 +87,18 @@ std::vector<std::uint8_t> readMaskFor(const std::string& path, const Geometry& s
 } // namespace
 
 int runExport(std::span<const std::string> words) {
-    const Args args(words, {"input", "mask", "output", "format"}, {});
+    const Args args(
+        words,
+        {"input", "mask", "output", "format", "segment-name", "segment-color", "segment-label"},
+        {});
     if (!args.positional().empty()) {
         throw UsageError("unexpected argument '" + args.positional().front() + "'");
     }
     const std::string input = args.required("input");
     const std::string maskPath = args.required("mask");
     const std::string output = args.required("output");
-    const std::string format = chooseFormat(args, output);
+    const io::ExportFormat format = chooseFormat(args, output);
+    const io::SegmentInfo segment = segmentFrom(args);
 
     const io::LoadedScan scan = io::readScan(input);
     const Geometry& geometry = scan.volume.geometry();
@@ -102,18 +110,19 @@ int runExport(std::span<const std::string> words) {
     report["input"] = input;
     report["mask"] = maskPath;
     report["output"] = output;
-    report["format"] = format;
+    report["format"] = io::exportFormatName(format);
     report["mask_volume_mm3"] = static_cast<double>(insideVoxels) * voxelVolume;
-    if (format == "stl" || format == "ply") {
-        const io::SurfaceMesh mesh = io::extractSurface(geometry, io::maskToField(mask));
-        io::writeMesh(output, mesh, format == "stl" ? io::MeshFormat::Stl : io::MeshFormat::Ply);
-        report["triangles"] = mesh.triangles.size();
-        report["vertices"] = mesh.vertices.size();
-        report["surface_volume_mm3"] = io::enclosedVolume(mesh);
-    } else {
-        io::writeMask(output, geometry, mask);
+    const io::ExportSummary written =
+        io::writeExport(output, format, {geometry, mask, {}, segment});
+    if (io::isSurfaceFormat(format)) {
+        report["triangles"] = written.triangles;
+        report["vertices"] = written.vertices;
+        report["surface_volume_mm3"] = written.surfaceVolumeMm3;
     }
-    report["world"] = "LPS";
+    if (!written.note.empty()) {
+        report["note"] = written.note;
+    }
+    report["world"] = format == io::ExportFormat::Tiff ? "none (voxel order)" : "LPS";
     std::printf("%s\n", report.dump(2).c_str());
     return 0;
 }

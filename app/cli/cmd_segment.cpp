@@ -3,7 +3,7 @@
 #include "cli/commands.hpp"
 #include "cli/segmentation_options.hpp"
 #include "gpu/gpu_info.hpp"
-#include "io/mask_writer.hpp"
+#include "io/export_format.hpp"
 #include "io/scan_reader.hpp"
 #include "platform/egl/offscreen_context.hpp"
 #include "session/segment_report.hpp"
@@ -17,7 +17,7 @@ namespace steerseg::cli {
 
 int runSegment(std::span<const std::string> words) {
     std::vector<std::string> valueOptions = segmentationValueOptions();
-    valueOptions.insert(valueOptions.end(), {"input", "output", "report"});
+    valueOptions.insert(valueOptions.end(), {"input", "output", "report", "format"});
     const Args args(words, valueOptions, segmentationFlagOptions());
     if (!args.positional().empty()) {
         throw UsageError("unexpected argument '" + args.positional().front() + "'");
@@ -25,6 +25,12 @@ int runSegment(std::span<const std::string> words) {
     const std::string input = args.required("input");
     const std::string output = args.required("output");
     const SegmentationRequest request = parseSegmentation(args);
+    io::ExportFormat format{};
+    try {
+        format = io::exportFormatFor(output, args.value("format"));
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
 
     // The scan first: a bad file is reported before the GPU is brought up.
     io::LoadedScan scan = io::readScan(input);
@@ -35,7 +41,11 @@ int runSegment(std::span<const std::string> words) {
     const session::RunOutcome run = session.run(request.mode);
 
     const std::vector<std::uint8_t> mask = session.mask();
-    io::writeMask(output, session.scan().geometry(), mask);
+    // Surfaces come from the level set's zero crossing (Session::exportAs), not the mask.
+    const io::ExportSummary written = session.exportAs(output, format);
+    if (!written.note.empty()) {
+        std::fprintf(stderr, "steerseg: note: %s\n", written.note.c_str());
+    }
     const std::string text = session::segmentReport(
         session, run, mask, {input, output, gpu::queryGpuInfo().renderer, request.params});
     if (const auto report = args.value("report")) {

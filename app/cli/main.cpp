@@ -37,13 +37,15 @@ constexpr Command kCommands[] = {
     {"segment",
      "segment --input PATH --seed i,j,k,r [--seed ...] [--erase i,j,k,r ...] --T v --eps v --alpha "
      "a "
-     "(--iterations N | --time t | --converge [--max-iterations N]) [--dense] --output MASK "
-     "[--report REPORT.json]: level-set segmentation on the GPU",
+     "(--iterations N | --time t | --converge [--max-iterations N]) [--dense] --output OUT "
+     "[--format F] [--report REPORT.json]: level-set segmentation on the GPU; OUT as for export "
+     "(surfaces from the level set itself)",
      steerseg::cli::runSegment},
     {"export",
-     "export --input SCAN --mask MASK --output OUT.stl|.ply|.nii.gz|.nii|.nrrd [--format F]: a "
-     "mask "
-     "on the scan's grid, again as a mask or as a closed surface mesh in LPS millimetres (no GPU)",
+     "export --input SCAN --mask MASK --output OUT.nii.gz|.nii|.nrrd|.seg.nrrd|.dcm|.stl|.ply|.tif "
+     "[--format F] [--segment-name N --segment-color r,g,b --segment-label L]: a mask on the "
+     "scan's grid, again as a mask, a 3D Slicer segmentation, a closed surface mesh in LPS "
+     "millimetres or a TIFF stack (no GPU)",
      steerseg::cli::runExport},
     {"kiosk",
      "kiosk [--platform auto|kms|window|offscreen] [--config FILE] [--scan PATH] [--script "

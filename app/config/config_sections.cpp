@@ -164,7 +164,8 @@ void readExport(TableReader& t, ExportConfig& e) {
             [&read](std::string_view f) -> std::string {
                 const auto& known = exportFormats();
                 if (std::find(known.begin(), known.end(), f) == known.end()) {
-                    return "unknown format \"" + std::string(f) + "\"; known: nii.gz, nii, nrrd";
+                    return "unknown format \"" + std::string(f) +
+                           "\"; known: " + exportFormatList();
                 }
                 if (std::find(read.begin(), read.end(), f) != read.end()) {
                     return "\"" + std::string(f) + "\" is listed twice";
@@ -179,7 +180,7 @@ void readExport(TableReader& t, ExportConfig& e) {
         }
     }
     if (good && read.empty()) {
-        t.problem("formats", "must name at least one format (nii.gz, nii, nrrd)");
+        t.problem("formats", "must name at least one format (" + exportFormatList() + ")");
         good = false;
     }
     if (good) {

@@ -24,8 +24,17 @@ std::optional<DisplayPlatform> parsePlatform(std::string_view word) {
 }
 
 const std::vector<std::string_view>& exportFormats() {
-    static const std::vector<std::string_view> formats{"nii.gz", "nii", "nrrd"};
+    static const std::vector<std::string_view> formats{"nii.gz", "nii", "nrrd", "seg.nrrd",
+                                                       "stl",    "ply", "tif"};
     return formats;
+}
+
+std::string exportFormatList() {
+    std::string out;
+    for (const std::string_view f : exportFormats()) {
+        out += (out.empty() ? "" : ", ") + std::string(f);
+    }
+    return out;
 }
 
 // Keep equal to config/steerseg.toml, whose comments say why each value is what it is

@@ -62,8 +62,12 @@ struct ExportConfig {
     std::vector<std::string> formats{"nii.gz"}; // one mask file per format
     bool operator==(const ExportConfig&) const = default;
 };
-// The formats the mask writer knows, in the order the docs list them.
+// The export formats the kiosk may write, in the order the docs list them (io::ExportFormat's
+// names; config links no io, so the list is kept here). DICOM SEG ("dcm") joins once its
+// writer is wired.
 const std::vector<std::string_view>& exportFormats();
+// The same, comma separated, for messages.
+std::string exportFormatList();
 
 struct AuditConfig {
     std::filesystem::path path = "steerseg-export/audit.jsonl";

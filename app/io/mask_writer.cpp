@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cstdio>
 #include <cstring>
 #include <nifti2_io.h>
 #include <string>
@@ -102,12 +103,16 @@ std::string vectorText(const glm::dvec3& v) {
     return "(" + number(v.x) + "," + number(v.y) + "," + number(v.z) + ")";
 }
 
-std::string nrrdHeader(const Geometry& g) {
+// `comment` says what the voxels hold; `keyValues` ("key:=value" lines) follow the fields.
+std::string nrrdHeader(const Geometry& g, const std::string& comment,
+                       const std::string& keyValues) {
     const Affine lps = affineOf(g);
     std::string h = "NRRD0004\n"
                     "# Complete NRRD file format specification at:\n"
                     "# http://teem.sourceforge.net/nrrd/format.html\n"
-                    "# steerseg mask: 1 inside, 0 outside\n"
+                    "# " +
+                    comment +
+                    "\n"
                     "type: uint8\n"
                     "dimension: 3\n"
                     "space: left-posterior-superior\n";
@@ -118,20 +123,68 @@ std::string nrrdHeader(const Geometry& g) {
     h += "kinds: domain domain domain\n"
          "endian: little\n"
          "encoding: gzip\n";
-    h += "space origin: " + vectorText(lps.offset) + "\n\n";
-    return h;
+    h += "space origin: " + vectorText(lps.offset) + "\n";
+    return h + keyValues + "\n";
 }
 
-} // namespace
+// Slicer writes its colours with six decimals, components 0..1.
+std::string colorText(const glm::dvec3& c) {
+    std::array<char, 64> text{};
+    std::snprintf(text.data(), text.size(), "%.6f %.6f %.6f", c.r, c.g, c.b);
+    return text.data();
+}
 
-void writeMask(const std::filesystem::path& path, const Geometry& geometry,
-               std::span<const std::uint8_t> mask) {
+// The inclusive voxel index box of the inside voxels, "i0 i1 j0 j1 k0 k1"; Slicer's empty
+// extent "0 -1 0 -1 0 -1" when nothing is inside.
+std::string extentText(const glm::ivec3& dims, std::span<const std::uint8_t> mask) {
+    glm::ivec3 lo = dims;
+    glm::ivec3 hi(-1);
+    std::size_t n = 0;
+    for (int k = 0; k < dims.z; ++k) {
+        for (int j = 0; j < dims.y; ++j) {
+            for (int i = 0; i < dims.x; ++i, ++n) {
+                if (mask[n] != 0) {
+                    lo = glm::min(lo, glm::ivec3(i, j, k));
+                    hi = glm::max(hi, glm::ivec3(i, j, k));
+                }
+            }
+        }
+    }
+    if (hi.x < 0) {
+        return "0 -1 0 -1 0 -1";
+    }
+    std::string out;
+    for (int a = 0; a < 3; ++a) {
+        out += (a == 0 ? "" : " ") + std::to_string(lo[a]) + " " + std::to_string(hi[a]);
+    }
+    return out;
+}
+
+// A header value is one line, and Slicer splits lists on '|': a name or id may hold neither;
+// tags are such a list.
+std::string headerValue(const std::filesystem::path& path, const std::string& what,
+                        const std::string& value, bool list = false) {
+    if (value.find_first_of(list ? "\r\n" : "\r\n|") != std::string::npos) {
+        throw WriteError(path, "the segment's " + what + " must not hold a line break or '|'");
+    }
+    return value;
+}
+
+void checkMaskSize(const std::filesystem::path& path, const Geometry& geometry,
+                   std::span<const std::uint8_t> mask) {
     checkGeometry(path, geometry);
     if (geometry.voxelCount() == 0 || mask.size() != geometry.voxelCount()) {
         throw WriteError(path, "mask has " + std::to_string(mask.size()) + " voxels but the grid " +
                                    dimsText(geometry.dims) + " has " +
                                    std::to_string(geometry.voxelCount()));
     }
+}
+
+} // namespace
+
+void writeMask(const std::filesystem::path& path, const Geometry& geometry,
+               std::span<const std::uint8_t> mask) {
+    checkMaskSize(path, geometry, mask);
     const std::string name = lowerFileName(path);
     if (hasSuffix(name, ".nii.gz") || hasSuffix(name, ".nii")) {
         if (std::max({geometry.dims.x, geometry.dims.y, geometry.dims.z}) > 32767) {
@@ -150,13 +203,62 @@ void writeMask(const std::filesystem::path& path, const Geometry& geometry,
         return;
     }
     if (hasSuffix(name, ".nrrd")) {
-        const std::string header = nrrdHeader(geometry);
+        const std::string header = nrrdHeader(geometry, "steerseg mask: 1 inside, 0 outside", "");
         GzipWriter writer;
         appendMask(writer, mask);
         writeFileAtomically(path, {std::as_bytes(std::span(header)), writer.finish()});
         return;
     }
     throw WriteError(path, "unsupported mask format (use .nii.gz, .nii or .nrrd)");
+}
+
+void writeSegmentation(const std::filesystem::path& path, const Geometry& geometry,
+                       std::span<const std::uint8_t> mask, const SegmentInfo& segment) {
+    checkMaskSize(path, geometry, mask);
+    if (segment.label < 1 || segment.label > 255) {
+        throw WriteError(path, "the segment's label value must be within 1..255 (got " +
+                                   std::to_string(segment.label) + ")");
+    }
+    if (segment.name.empty()) {
+        throw WriteError(path, "the segment needs a name");
+    }
+    for (int c = 0; c < 3; ++c) {
+        if (!(segment.color[c] >= 0.0 && segment.color[c] <= 1.0)) {
+            throw WriteError(path, "the segment's colour components must be within 0..1");
+        }
+    }
+    const std::string name = headerValue(path, "name", segment.name);
+    const std::string id = headerValue(path, "id", segment.id.empty() ? name : segment.id);
+    const std::string tags = headerValue(path, "tags", segment.tags, true);
+    // The keys and values 3D Slicer's segmentation storage node writes for one segment in one
+    // layer (vtkMRMLSegmentationStorageNode): the master representation is this labelmap, on
+    // the reference image's own extent.
+    std::string keys;
+    keys += "Segment0_Color:=" + colorText(segment.color) + "\n";
+    keys += "Segment0_ColorAutoGenerated:=0\n";
+    keys += "Segment0_Extent:=" + extentText(geometry.dims, mask) + "\n";
+    keys += "Segment0_ID:=" + id + "\n";
+    keys += "Segment0_LabelValue:=" + std::to_string(segment.label) + "\n";
+    keys += "Segment0_Layer:=0\n";
+    keys += "Segment0_Name:=" + name + "\n";
+    keys += "Segment0_NameAutoGenerated:=0\n";
+    keys += "Segment0_Tags:=" + (tags.empty() || tags.back() == '|' ? tags : tags + "|") + "\n";
+    keys += "Segmentation_ContainedRepresentationNames:=Binary labelmap|\n";
+    keys += "Segmentation_MasterRepresentation:=Binary labelmap\n";
+    keys += "Segmentation_ReferenceImageExtentOffset:=0 0 0\n";
+    const std::string header = nrrdHeader(
+        geometry, "steerseg segmentation: the segment's label value inside, 0 outside", keys);
+    GzipWriter writer;
+    std::array<std::byte, 64 * 1024> chunk{};
+    const auto label = static_cast<std::byte>(segment.label);
+    for (std::size_t at = 0; at < mask.size(); at += chunk.size()) {
+        const std::size_t n = std::min(chunk.size(), mask.size() - at);
+        for (std::size_t k = 0; k < n; ++k) {
+            chunk[k] = mask[at + k] != 0 ? label : std::byte{0};
+        }
+        writer.append(std::span(chunk).first(n));
+    }
+    writeFileAtomically(path, {std::as_bytes(std::span(header)), writer.finish()});
 }
 
 } // namespace steerseg::io

@@ -4,7 +4,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <glm/glm.hpp>
 #include <span>
+#include <string>
 
 namespace steerseg::io {
 
@@ -14,5 +16,23 @@ namespace steerseg::io {
 // never leaves a half-written mask under the final name. Throws io::WriteError.
 void writeMask(const std::filesystem::path& path, const Geometry& geometry,
                std::span<const std::uint8_t> mask);
+
+// One segment of a 3D Slicer segmentation: what Slicer shows in its segment list.
+struct SegmentInfo {
+    std::string name = "Segment_1";
+    std::string id;                        // empty: the name
+    glm::dvec3 color{0.945, 0.839, 0.569}; // r g b within 0..1 (Slicer's first default)
+    int label = 1;                         // 1..255, the voxels' value inside
+    std::string tags = "Segmentation.Status:completed|";
+};
+
+// 3D Slicer's segmentation file (.seg.nrrd): a gzip NRRD on `geometry`'s grid exactly as
+// writeMask's .nrrd (LPS space, space directions, space origin), the voxels the segment's label
+// inside and 0 outside, and the Segment0_* and Segmentation_* keys Slicer reads (name, colour,
+// label value, layer, extent, tags; binary labelmap master representation). Throws
+// io::WriteError on a bad segment (label outside 1..255, empty name, a '|' or line break in a
+// name or id) as for writeMask.
+void writeSegmentation(const std::filesystem::path& path, const Geometry& geometry,
+                       std::span<const std::uint8_t> mask, const SegmentInfo& segment = {});
 
 } // namespace steerseg::io

@@ -2,7 +2,7 @@
 
 #include "gpu/gl.hpp"
 #include "gpu/scan_texture.hpp"
-#include "io/mask_writer.hpp"
+#include "io/export_writer.hpp"
 #include "io/scan_reader.hpp"
 #include "render/renderer.hpp"
 #include "solver/level_set_solver.hpp"
@@ -137,8 +137,27 @@ std::vector<std::uint8_t> Session::mask() const {
     return gpu_->solver.readMask();
 }
 
+std::vector<float> Session::phi() const {
+    return gpu_->solver.readPhi();
+}
+
+io::ExportSummary Session::exportAs(const std::filesystem::path& path, io::ExportFormat format,
+                                    const io::SegmentInfo& segment) const {
+    const std::vector<std::uint8_t> inside = mask();
+    std::vector<float> field;
+    if (io::isSurfaceFormat(format)) {
+        field = phi();
+    }
+    return io::writeExport(path, format, {scan_.geometry(), inside, field, segment});
+}
+
 void Session::exportMask(const std::filesystem::path& path) const {
-    io::writeMask(path, scan_.geometry(), mask());
+    const auto format = io::exportFormatOfFile(path);
+    if (!format) {
+        throw io::WriteError(path, "cannot tell the export format from the name (" +
+                                       io::exportFormatNames() + ")");
+    }
+    exportAs(path, *format);
 }
 
 render::ViewParams Session::defaultView(render::ViewKind kind, const glm::ivec2& size) const {

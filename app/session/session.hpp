@@ -6,6 +6,7 @@
 // platform/) for the session's whole life, and speak in voxel indices and real units.
 #include "core/rgba_image.hpp"
 #include "core/volume.hpp"
+#include "io/export_writer.hpp"
 #include "render/render_params.hpp"
 #include "render/slice_frame.hpp"
 #include "session/probe.hpp"
@@ -73,7 +74,13 @@ class Session {
 
     // 1 inside, i fastest; reads the level set back from the GPU.
     [[nodiscard]] std::vector<std::uint8_t> mask() const;
-    // The mask as .nii.gz / .nii / .nrrd on the scan's grid (io::writeMask).
+    // The level set, phi < 0 inside, in voxel units, i fastest; read back from the GPU.
+    [[nodiscard]] std::vector<float> phi() const;
+    // The segmentation as `format` (io::writeExport): voxel formats from the mask on the scan's
+    // grid, surfaces (STL, PLY) from the level set's zero crossing. Throws io::WriteError.
+    io::ExportSummary exportAs(const std::filesystem::path& path, io::ExportFormat format,
+                               const io::SegmentInfo& segment = {}) const;
+    // exportAs in the format the file's extension names (io::exportFormatFor).
     void exportMask(const std::filesystem::path& path) const;
 
     // Presets for this scan (MR-style transfer function, anterior camera, middle slice).

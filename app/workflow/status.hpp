@@ -48,8 +48,9 @@ struct Status {
     bool converged = false;
     bool canUndo = false;
     bool canRedo = false;
-    std::string preset;       // the last preset applied ("" = none)
-    std::string exportedPath; // Done: where the mask went
+    std::string preset;                     // the last preset applied ("" = none)
+    std::string exportedPath;               // Done: where the mask went (the first format's file)
+    std::vector<std::string> exportFormats; // what an export writes, in the config's order
     ViewState view;
     std::vector<std::string> presets; // names, in the config's order
 };

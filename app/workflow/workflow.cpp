@@ -99,6 +99,7 @@ Workflow::Workflow(Engine& engine, Settings settings, AuditLog* audit)
     for (const TissuePreset& p : settings_.presets) {
         status_.presets.push_back(p.name);
     }
+    status_.exportFormats = settings_.exportFormats;
     status_.radius = settings_.defaultRadius;
     params_.values[indexOf(Param::Radius)] = settings_.defaultRadius;
     noteAuditError();

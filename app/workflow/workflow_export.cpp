@@ -53,9 +53,24 @@ std::filesystem::path Workflow::defaultExportBase() const {
     return base;
 }
 
+namespace {
+
+// The first line of an exception's message, never empty.
+std::string firstLine(const std::exception& e) {
+    std::string message = e.what();
+    message = message.substr(0, message.find_first_of("\r\n"));
+    return message.empty() ? std::string("the export failed") : message;
+}
+
+} // namespace
+
 Workflow::Outcome Workflow::exportTo(const std::string& requested) {
     enter(State::Exporting);
     std::filesystem::path path;
+    // Every configured format is tried: one that fails (DICOM SEG for a scan not from DICOM, a
+    // mesh of an empty segmentation) does not keep the others from being written.
+    std::vector<std::string> failures;
+    std::size_t written = 0;
     try {
         if (requested.empty()) {
             std::error_code ec;
@@ -66,25 +81,38 @@ Workflow::Outcome Workflow::exportTo(const std::string& requested) {
             }
             const std::filesystem::path base = defaultExportBase();
             for (const std::string& format : settings_.exportFormats) {
-                engine_.exportMask(withFormat(base, format));
+                try {
+                    engine_.exportMask(withFormat(base, format));
+                    if (written++ == 0) {
+                        path = withFormat(base, format);
+                    }
+                } catch (const std::exception& e) {
+                    failures.push_back(firstLine(e));
+                }
             }
-            path = withFormat(base, settings_.exportFormats.front());
         } else {
             path = requested;
             engine_.exportMask(path);
+            written = 1;
         }
     } catch (const std::exception& e) {
-        std::string message = e.what();
-        message = message.substr(0, message.find_first_of("\r\n"));
-        if (message.empty()) {
-            message = "the export failed";
+        failures.push_back(firstLine(e));
+    }
+    if (!failures.empty()) {
+        std::string message = failures.front();
+        if (failures.size() > 1) {
+            message += " (and " + std::to_string(failures.size() - 1) + " more failed)";
+        }
+        if (written > 0) {
+            message += "; " + std::to_string(written) + " written, first " + path.string();
         }
         enter(State::Review, message);
         return no(message);
     }
     dirty_ = false;
     status_.exportedPath = path.string();
-    enter(State::Done, "exported to " + status_.exportedPath);
+    enter(State::Done, "exported to " + status_.exportedPath +
+                           (written > 1 ? " and " + std::to_string(written - 1) + " more" : ""));
     return ok();
 }
 

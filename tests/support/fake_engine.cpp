@@ -256,6 +256,12 @@ void FakeEngine::exportMask(const std::filesystem::path& path) {
     if (!exportError.empty()) {
         throw std::runtime_error(exportError);
     }
+    const std::string name = path.string();
+    if (!failExportsEndingIn.empty() && name.size() >= failExportsEndingIn.size() &&
+        name.compare(name.size() - failExportsEndingIn.size(), failExportsEndingIn.size(),
+                     failExportsEndingIn) == 0) {
+        throw std::runtime_error(name + ": the disk is full: 100 bytes could not be written");
+    }
     if (writeExports) {
         std::ofstream out(path);
         out << "fake mask " << inside_ << " voxels\n";

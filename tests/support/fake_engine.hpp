@@ -23,15 +23,16 @@ class FakeEngine : public workflow::Engine {
     explicit FakeEngine(workflow::ScanInfo scan = defaultScan());
 
     // --- what to do -------------------------------------------------------------------------
-    int loadPolls = 2;         // pollLoad() calls answered Running before the outcome
-    std::string loadError;     // non-empty: loads fail with it
-    std::string exportError;   // non-empty: exportMask throws it
-    std::string stepError;     // non-empty: step throws it
-    std::string editError;     // non-empty: addSeed and erase throw it
-    std::string snapshotError; // non-empty: snapshot throws it
-    double probeStddev = 10.0; // the spread every probe reports
-    int convergeAfter = 40;    // iterations without an edit or new parameters until converged
-    bool writeExports = false; // exportMask writes a small file at the path
+    int loadPolls = 2;               // pollLoad() calls answered Running before the outcome
+    std::string loadError;           // non-empty: loads fail with it
+    std::string exportError;         // non-empty: exportMask throws it
+    std::string failExportsEndingIn; // non-empty: exportMask throws for a path ending so
+    std::string stepError;           // non-empty: step throws it
+    std::string editError;           // non-empty: addSeed and erase throw it
+    std::string snapshotError;       // non-empty: snapshot throws it
+    double probeStddev = 10.0;       // the spread every probe reports
+    int convergeAfter = 40;          // iterations without an edit or new parameters until converged
+    bool writeExports = false;       // exportMask writes a small file at the path
 
     // --- what happened ----------------------------------------------------------------------
     std::vector<std::string> loads;             // beginLoad's paths

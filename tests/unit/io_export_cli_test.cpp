@@ -126,6 +126,61 @@ TEST(CliExport, MaskFormatsRoundTripOnTheScansGrid) {
     }
 }
 
+// Every other format by its extension and by --format: the Slicer segmentation and a TIFF stack
+// read back with the mask's voxels; the TIFF's missing geometry is said in the output.
+TEST(CliExport, EveryFormatByExtensionAndByFormat) {
+    const Files f = makeFiles("export-every");
+    const io::LoadedScan original = io::readScan(f.mask);
+    for (const auto& [out, extra] : std::vector<std::pair<std::string, std::string>>{
+             {"m.seg.nrrd", ""}, {"m.nii", ""}, {"m.nii.gz", " --format .NII.GZ"}}) {
+        SCOPED_TRACE(out);
+        const CliRun r = runExport(f, out, extra);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_EQ(nlohmann::json::parse(r.out).at("world"), "LPS");
+        const io::LoadedScan back = io::readScan(f.dir / out);
+        ASSERT_EQ(back.volume.dims(), f.geometry.dims);
+        EXPECT_LT(glm::distance(back.volume.geometry().origin, f.geometry.origin), 1e-3);
+        for (std::size_t n = 0; n < f.geometry.voxelCount(); ++n) {
+            ASSERT_EQ(back.volume.storedAt(n) > 0, original.volume.storedAt(n) > 0) << n;
+        }
+    }
+    for (const auto& [out, extra] : std::vector<std::pair<std::string, std::string>>{
+             {"m.tif", ""}, {"m.tiff", ""}, {"m.stack", " --format tiff"}}) {
+        SCOPED_TRACE(out);
+        const CliRun r = runExport(f, out, extra);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const auto j = nlohmann::json::parse(r.out);
+        EXPECT_EQ(j.at("format"), "tif");
+        EXPECT_NE(j.at("note").get<std::string>().find("no patient position"), std::string::npos);
+        EXPECT_EQ(j.at("world"), "none (voxel order)");
+        std::ifstream in(f.dir / out, std::ios::binary);
+        char magic[4] = {};
+        in.read(magic, 4);
+        EXPECT_EQ(std::string(magic, 4), std::string("II*\0", 4));
+    }
+    {
+        const CliRun r =
+            runExport(f, "named.seg.nrrd",
+                      " --segment-name Tumour --segment-color 1,0.5,0 --segment-label 7");
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        std::ifstream in(f.dir / "named.seg.nrrd", std::ios::binary);
+        std::string header(4096, '\0');
+        in.read(header.data(), static_cast<std::streamsize>(header.size()));
+        for (const char* line : {"\nSegment0_Name:=Tumour\n", "\nSegment0_LabelValue:=7\n",
+                                 "\nSegment0_Color:=1.000000 0.500000 0.000000\n"}) {
+            EXPECT_NE(header.find(line), std::string::npos) << line;
+        }
+        const CliRun bad = runExport(f, "bad.seg.nrrd", " --segment-label 300");
+        EXPECT_EQ(bad.exitCode, 2);
+        EXPECT_NE(bad.err.find("--segment-label: expected a whole number"), std::string::npos)
+            << bad.err;
+    }
+    const CliRun dcm = runExport(f, "m.dcm");
+    EXPECT_EQ(dcm.exitCode, 4);
+    expectOneLine(dcm, "DICOM SEG: not available in this build");
+    EXPECT_FALSE(std::filesystem::exists(f.dir / "m.dcm"));
+}
+
 TEST(CliExport, MistakesGiveOneLineAndTheirExitStatus) {
     const Files f = makeFiles("export-bad");
     {
@@ -160,9 +215,14 @@ TEST(CliExport, MistakesGiveOneLineAndTheirExitStatus) {
         EXPECT_FALSE(std::filesystem::exists(f.dir / "e.ply"));
     }
     {
+        const CliRun r = runExport(f, "s.nrrd", " --format jpeg");
+        EXPECT_EQ(r.exitCode, 2);
+        EXPECT_NE(r.err.find("--format: unknown format 'jpeg'"), std::string::npos) << r.err;
+    }
+    {
         const CliRun r = runExport(f, "no-such-folder/s.stl");
         EXPECT_EQ(r.exitCode, 4);
-        expectOneLine(r, "s.stl");
+        expectOneLine(r, "the folder " + (f.dir / "no-such-folder").string() + " does not exist");
     }
 }
 

@@ -217,14 +217,14 @@ TEST_F(KioskCli, ExportToAReadOnlyFolderStaysInReview) {
                                  "\n"
                                  "expect state review\n"
                                  "expect message contains \"" +
-                                 target.string() +
-                                 ": cannot create the file\"\n"
+                                 target.string() + ": the folder " + target.parent_path().string() +
+                                 "\"\n"
                                  "export mask.nii.gz\n"
                                  "wait state done timeout 30\n",
                              "--frames " + (dir / "out").string());
     EXPECT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_NE(r.err.find("steerseg kiosk: export refused: " + target.string() +
-                         ": cannot create the file"),
+    EXPECT_NE(r.err.find("steerseg kiosk: export refused: " + target.string() + ": the folder " +
+                         target.parent_path().string()),
               std::string::npos)
         << r.err;
     EXPECT_TRUE(std::filesystem::exists(dir / "out/mask.nii.gz"));

@@ -216,4 +216,17 @@ TEST(UiViewCaption, NamesTheViewAndTheSlice) {
               "Coronal \u2014 speed  12/80");
 }
 
+// The export step names what Export will write, as the config enables it.
+TEST(UiPanelModel, ExportStepNamesTheFormats) {
+    workflow::Status st = status(State::Review);
+    st.exportFormats = {"nii.gz", "seg.nrrd", "stl"};
+    const ui::PanelModel review = ui::buildPanelModel(st, kScans);
+    EXPECT_NE(review.hint.find("Export writes .nii.gz, .seg.nrrd, .stl."), std::string::npos)
+        << review.hint;
+    st.state = State::Done;
+    EXPECT_NE(ui::buildPanelModel(st, kScans).hint.find(".seg.nrrd"), std::string::npos);
+    st.state = State::Seeding;
+    EXPECT_EQ(ui::buildPanelModel(st, kScans).hint.find("Export writes"), std::string::npos);
+}
+
 } // namespace steerseg::test

@@ -98,6 +98,42 @@ TEST(WorkflowExport, FailureGoesBackToReviewWithTheWorkKept) {
     EXPECT_TRUE(rig.act(LoadScan{"next.nii"}).accepted);
 }
 
+// One format failing (a full disk for the surface, say) leaves the others written, the work
+// in review with the error shown, and a retry that writes every format.
+TEST(WorkflowExport, OneFailingFormatKeepsTheOthersAndTheWork) {
+    Settings s = testSettings();
+    s.exportFolder = freshDir("workflow-export-partial");
+    s.exportFormats = {"nrrd", "stl", "seg.nrrd"};
+    Rig rig(s);
+    rig.engine.writeExports = true;
+    rig.engine.failExportsEndingIn = ".stl";
+    rig.driveTo(State::Review);
+    EXPECT_EQ(rig.status().exportFormats, s.exportFormats);
+    const Workflow::Outcome out = rig.act(Export{});
+    EXPECT_FALSE(out.accepted);
+    EXPECT_EQ(rig.state(), State::Review);
+    const fs::path base = s.exportFolder / "fake_20261123-130140";
+    EXPECT_NE(out.reason.find(base.string() + ".stl: the disk is full"), std::string::npos)
+        << out.reason;
+    EXPECT_NE(out.reason.find("2 written"), std::string::npos) << out.reason;
+    EXPECT_EQ(rig.status().message, out.reason);
+    EXPECT_EQ(out.reason.find('\n'), std::string::npos);
+    EXPECT_TRUE(fs::exists(base.string() + ".nrrd"));
+    EXPECT_TRUE(fs::exists(base.string() + ".seg.nrrd"));
+    EXPECT_FALSE(fs::exists(base.string() + ".stl"));
+    EXPECT_TRUE(rig.status().hasLevelSet);
+    EXPECT_FALSE(rig.act(LoadScan{"next.nii"}).accepted); // still unexported
+    rig.engine.failExportsEndingIn.clear();
+    ASSERT_TRUE(rig.act(Export{}).accepted);
+    EXPECT_EQ(rig.state(), State::Done);
+    // The retry takes a fresh name, since the first attempt's files exist.
+    const fs::path again = s.exportFolder / "fake_20261123-130140-2";
+    EXPECT_EQ(rig.status().exportedPath, again.string() + ".nrrd");
+    EXPECT_TRUE(fs::exists(again.string() + ".stl"));
+    EXPECT_TRUE(fs::exists(again.string() + ".seg.nrrd"));
+    EXPECT_NE(rig.status().message.find("and 2 more"), std::string::npos) << rig.status().message;
+}
+
 TEST(WorkflowExport, AnUncreatableFolderIsAFailureNotACrash) {
     Settings s = testSettings();
     s.exportFolder = "/dev/null/exports";
