@@ -113,7 +113,7 @@ int runExport(std::span<const std::string> words) {
     report["format"] = io::exportFormatName(format);
     report["mask_volume_mm3"] = static_cast<double>(insideVoxels) * voxelVolume;
     const io::ExportSummary written =
-        io::writeExport(output, format, {geometry, mask, {}, segment});
+        io::writeExport(output, format, {geometry, mask, {}, segment, scan.dicom.get()});
     if (io::isSurfaceFormat(format)) {
         report["triangles"] = written.triangles;
         report["vertices"] = written.vertices;

@@ -36,7 +36,7 @@ int runSegment(std::span<const std::string> words) {
     io::LoadedScan scan = io::readScan(input);
     checkSpheresInside(request, scan.volume.dims());
     auto context = platform::createOffscreenContext();
-    session::Session session(std::move(scan.volume), std::move(scan.format), request.options);
+    session::Session session(std::move(scan), request.options);
     applySegmentation(session, request);
     const session::RunOutcome run = session.run(request.mode);
 

@@ -24,8 +24,9 @@ std::optional<DisplayPlatform> parsePlatform(std::string_view word) {
 }
 
 const std::vector<std::string_view>& exportFormats() {
+    // io::exportFormatName's names (config may not include io: a test keeps them equal).
     static const std::vector<std::string_view> formats{"nii.gz", "nii", "nrrd", "seg.nrrd",
-                                                       "stl",    "ply", "tif"};
+                                                       "dcm",    "stl", "ply",  "tif"};
     return formats;
 }
 

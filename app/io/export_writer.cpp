@@ -1,5 +1,6 @@
 #include "io/export_writer.hpp"
 
+#include "io/dicom_seg_writer.hpp"
 #include "io/mesh_writer.hpp"
 #include "io/scan_reader.hpp"
 #include "io/surface_mesh.hpp"
@@ -42,9 +43,12 @@ ExportSummary writeExport(const std::filesystem::path& path, ExportFormat format
     case ExportFormat::SegNrrd:
         writeSegmentation(path, data.geometry, data.mask, data.segment);
         return {};
-    case ExportFormat::DicomSeg:
-        // The DICOM SEG writer needs the source series; it is wired here when merged.
-        throw WriteError(path, "DICOM SEG: not available in this build");
+    case ExportFormat::DicomSeg: {
+        DicomSegOptions options;
+        options.label = data.segment.name;
+        writeDicomSeg(path, data.geometry, data.mask, data.dicom, options);
+        return {};
+    }
     case ExportFormat::Stl:
         return writeSurface(path, MeshFormat::Stl, data);
     case ExportFormat::Ply:

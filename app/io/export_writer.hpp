@@ -2,6 +2,7 @@
 
 // One segmentation out in any export format: the switch over io::ExportFormat.
 #include "core/volume.hpp"
+#include "io/dicom_source.hpp"
 #include "io/export_format.hpp"
 #include "io/mask_writer.hpp"
 
@@ -20,7 +21,10 @@ struct ExportData {
     // The level set (phi < 0 inside, i fastest). Surfaces come from its zero crossing; empty:
     // from the mask (crossings halfway between inside and outside voxel centres).
     std::span<const float> phi;
-    SegmentInfo segment; // for .seg.nrrd
+    SegmentInfo segment; // for .seg.nrrd and DICOM SEG (its name is the segment label)
+    // The DICOM series the scan was read from (LoadedScan::dicom): DICOM SEG refers to it and
+    // refuses without it.
+    const DicomSource* dicom = nullptr;
 };
 
 // What a caller reports after the write.
@@ -32,8 +36,7 @@ struct ExportSummary {
 };
 
 // Writes `data` to `path` as `format` says, durably (io::writeFileAtomically). Throws
-// io::WriteError; for DICOM SEG until its writer is wired: "DICOM SEG: not available in this
-// build".
+// io::WriteError with one line.
 ExportSummary writeExport(const std::filesystem::path& path, ExportFormat format,
                           const ExportData& data);
 

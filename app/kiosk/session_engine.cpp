@@ -129,8 +129,7 @@ workflow::LoadPoll SessionEngine::pollLoad() {
         // goes first so two scans never share the GPU's memory.
         session_.reset();
         snapshots_.clear();
-        session_ = std::make_unique<session::Session>(std::move(load->result.volume),
-                                                      std::move(load->result.format), options_);
+        session_ = std::make_unique<session::Session>(std::move(load->result), options_);
     } catch (const std::exception& e) {
         session_.reset();
         poll.kind = workflow::LoadPoll::Failed;

@@ -32,8 +32,12 @@ struct Session::Gpu {
 };
 
 Session Session::open(const std::filesystem::path& path, const solver::SolverOptions& options) {
-    io::LoadedScan loaded = io::readScan(path);
-    return Session(std::move(loaded.volume), std::move(loaded.format), options);
+    return Session(io::readScan(path), options);
+}
+
+Session::Session(io::LoadedScan scan, const solver::SolverOptions& options)
+    : Session(std::move(scan.volume), std::move(scan.format), options) {
+    dicom_ = std::move(scan.dicom);
 }
 
 Session::Session(Volume scan, std::string format, const solver::SolverOptions& options)
@@ -148,7 +152,7 @@ io::ExportSummary Session::exportAs(const std::filesystem::path& path, io::Expor
     if (io::isSurfaceFormat(format)) {
         field = phi();
     }
-    return io::writeExport(path, format, {scan_.geometry(), inside, field, segment});
+    return io::writeExport(path, format, {scan_.geometry(), inside, field, segment, dicom_.get()});
 }
 
 void Session::exportMask(const std::filesystem::path& path) const {

@@ -7,6 +7,7 @@
 #include "core/rgba_image.hpp"
 #include "core/volume.hpp"
 #include "io/export_writer.hpp"
+#include "io/scan_reader.hpp"
 #include "render/render_params.hpp"
 #include "render/slice_frame.hpp"
 #include "session/probe.hpp"
@@ -42,6 +43,8 @@ class Session {
     static Session open(const std::filesystem::path& path,
                         const solver::SolverOptions& options = {});
     Session(Volume scan, std::string format, const solver::SolverOptions& options = {});
+    // A scan as read, keeping its DICOM source (if any) for DICOM SEG export.
+    explicit Session(io::LoadedScan scan, const solver::SolverOptions& options = {});
     ~Session();
     Session(Session&&) noexcept;
     Session& operator=(Session&&) noexcept;
@@ -104,6 +107,7 @@ class Session {
     struct Gpu;
     Volume scan_;
     std::string format_;
+    std::shared_ptr<const io::DicomSource> dicom_; // null unless read from DICOM
     solver::SolverOptions options_;
     std::unique_ptr<Gpu> gpu_;
     bool hasLevelSet_ = false;

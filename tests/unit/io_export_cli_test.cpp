@@ -177,7 +177,7 @@ TEST(CliExport, EveryFormatByExtensionAndByFormat) {
     }
     const CliRun dcm = runExport(f, "m.dcm");
     EXPECT_EQ(dcm.exitCode, 4);
-    expectOneLine(dcm, "DICOM SEG: not available in this build");
+    expectOneLine(dcm, "DICOM SEG needs a scan read from a DICOM series");
     EXPECT_FALSE(std::filesystem::exists(f.dir / "m.dcm"));
 }
 

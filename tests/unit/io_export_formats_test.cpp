@@ -2,6 +2,7 @@
 // NIfTI, NRRD and .seg.nrrd through the project's readers, TIFF through OpenImageIO. On an
 // oblique, anisotropic, partly flipped grid, one asymmetric blob must land on the same voxels
 // and the same world positions as on the scan.
+#include "config/kiosk_config.hpp"
 #include "io/export_format.hpp"
 #include "io/export_writer.hpp"
 #include "io/scan_reader.hpp"
@@ -234,16 +235,18 @@ TEST(ExportFormats, SurfacesComeFromTheLevelSet) {
     }
 }
 
-TEST(ExportFormats, DicomSegIsChosenButNotYetWritten) {
+// DICOM SEG itself is tested in io_dicom_seg_test.cpp; here: the switch reaches it, and a scan
+// that did not come from DICOM is refused with nothing written.
+TEST(ExportFormats, DicomSegNeedsTheScansDicomSource) {
     const Geometry g = obliqueGeometry(kDims);
     const auto mask = blob(kDims);
     const auto dir = tempDir("export-dcm");
     EXPECT_EQ(io::exportFormatOfFile("x.DCM"), io::ExportFormat::DicomSeg);
     try {
         io::writeExport(dir / "x.dcm", io::ExportFormat::DicomSeg, {g, mask, {}, {}});
-        FAIL() << "no DICOM SEG writer is wired yet";
+        FAIL() << "a DICOM SEG without a DICOM source was written";
     } catch (const io::WriteError& e) {
-        EXPECT_NE(std::string(e.what()).find("DICOM SEG: not available in this build"),
+        EXPECT_NE(std::string(e.what()).find("DICOM SEG needs a scan read from a DICOM series"),
                   std::string::npos);
     }
     EXPECT_TRUE(std::filesystem::is_empty(dir));
@@ -276,6 +279,12 @@ TEST(ExportFormats, ChosenByExtensionOrName) {
     EXPECT_THROW((void)io::exportFormatFor("a.nrrd", "seg.nrrd"), std::invalid_argument);
     EXPECT_THROW((void)io::exportFormatFor("a.nrrd", "jpeg"), std::invalid_argument);
     EXPECT_THROW((void)io::exportFormatFor("a.obj", std::nullopt), std::invalid_argument);
+}
+
+// The config validates export.formats against its own copy of the names (config may not
+// include io); the copy must not drift from the writers.
+TEST(ExportFormats, TheConfigKnowsEveryFormatByItsName) {
+    EXPECT_EQ(config::exportFormatList(), io::exportFormatNames());
 }
 
 } // namespace
