@@ -29,6 +29,14 @@ struct ViewState {
     std::string transfer;     // transfer-function preset name ("" = the scan's default)
 };
 
+// A configured input device as the panel lists it. The kiosk fills Status::devices from its
+// input hub; the workflow itself knows no devices and leaves the list empty.
+struct DeviceLink {
+    std::string name; // the config's device name: "shuttle", "pedal"
+    std::string kind; // "shuttle", "radial", "powermate", "gpio_input", "gpio_led"
+    bool connected = false;
+};
+
 struct Status {
     State state = State::NoScan;
     std::string message; // the last error or notice for the operator ("" = none)
@@ -52,6 +60,7 @@ struct Status {
     std::string exportedPath; // Done: where the mask went
     ViewState view;
     std::vector<std::string> presets; // names, in the config's order
+    std::vector<DeviceLink> devices;  // the kiosk's, for the panel (see DeviceLink)
 };
 
 } // namespace steerseg::workflow
