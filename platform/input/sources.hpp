@@ -28,6 +28,7 @@ struct AttachedDevice {
 std::unique_ptr<RawSource> openHidSource(const DeviceSpec& spec, std::string& problem);
 std::vector<AttachedDevice> listHidDevices();
 // evdev/evdev_source.cpp: setIndicator drives the PowerMate LED through EV_MSC/MSC_PULSELED.
+// A node that can only be read opens with `problem` set as a warning (the LED stays off).
 std::unique_ptr<RawSource> openEvdevSource(const DeviceSpec& spec, std::string& problem);
 std::vector<AttachedDevice> listEvdevDevices();
 // gpio/gpio_source.cpp (libgpiod 1.6 behind gpio/gpio_chip.hpp, so a 2.x adapter can
