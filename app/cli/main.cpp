@@ -50,6 +50,11 @@ constexpr Command kCommands[] = {
      "SESSION] [--frames DIR] [--size WxH] [--stats FILE] [--max-seconds S]: the fullscreen "
      "appliance (touch, keys and scripted sessions; docs/scripts.md)",
      steerseg::cli::runKiosk},
+    {"input-monitor",
+     "input-monitor [--config FILE] [--seconds N] [--record FILE] | --replay FILE: list the "
+     "input devices and the configured ones they match, print decoded events and their bound "
+     "actions, record raw streams, or decode a recording (docs/input-devices.md)",
+     steerseg::cli::runInputMonitor},
 };
 
 void printUsage(std::FILE* out) {

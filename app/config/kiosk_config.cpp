@@ -92,14 +92,19 @@ KioskConfig defaultConfig() {
         {"powermate_press", {"toggle_run", 1.0, ""}},
         {"dial_press", {"toggle_run", 1.0, ""}},
     };
-    for (const std::string_view shuttle : {"shuttle", "shuttlepro"}) {
-        const std::string s(shuttle);
-        c.bindings.buttons[s + "_button1"] = {"cycle_param", 1.0, ""};
-        c.bindings.buttons[s + "_button2"] = {"undo", 1.0, ""};
-        c.bindings.buttons[s + "_button3"] = {"redo", 1.0, ""};
-        c.bindings.buttons[s + "_button4"] = {"proceed", 1.0, ""};
-        c.bindings.buttons[s + "_button5"] = {"export", 1.0, ""};
-    }
+    // The decoder names a shuttle's buttons by their bit: the ShuttleXpress's five, left to
+    // right, are button5..button9, the ShuttlePRO v2's top row button1..button4 and the next
+    // row's first button5.
+    const auto shuttleButtons = [&c](const std::string& device, int first) {
+        const std::vector<std::string_view> actions{"cycle_param", "undo", "redo", "proceed",
+                                                    "export"};
+        for (std::size_t i = 0; i < actions.size(); ++i) {
+            c.bindings.buttons[device + "_button" + std::to_string(first + static_cast<int>(i))] =
+                {std::string(actions[i]), 1.0, ""};
+        }
+    };
+    shuttleButtons("shuttle", 5);
+    shuttleButtons("shuttlepro", 1);
     using K = InputDeviceKind;
     // 0x01/0x0E: Generic Desktop, System Multi-Axis Controller (the Surface Dial's class).
     c.input.devices = {

@@ -129,7 +129,7 @@ void InputHub::problem(Device& d, double now, const std::string& line) {
         ++d.heldProblems;
         return;
     }
-    log_ << "input: " << line;
+    log_ << limits_.logPrefix << "input: " << line;
     if (d.heldProblems > 0) {
         log_ << " (and " << d.heldProblems << " more since the last line)";
     }
@@ -167,8 +167,8 @@ void InputHub::unplugged(Device& d, double now, const std::string& why,
     }
     if (d.connected || d.source) {
         // Not rate-limited: an unplug is news, and happens once per plug.
-        log_ << "input: " << d.spec.name << ": disconnected" << (why.empty() ? "" : ": ") << why
-             << '\n';
+        log_ << limits_.logPrefix << "input: " << d.spec.name << ": disconnected"
+             << (why.empty() ? "" : ": ") << why << '\n';
     }
     d.source.reset();
     d.connected = false;
@@ -176,13 +176,16 @@ void InputHub::unplugged(Device& d, double now, const std::string& why,
 }
 
 void InputHub::feed(Device& d, const RawRecord& record, std::vector<workflow::Action>& out) {
+    if (recordObserver_) {
+        recordObserver_(record);
+    }
     if (record.kind == RawRecord::Kind::Unplugged) {
         unplugged(d, record.time, "", out);
         return;
     }
     if (record.kind == RawRecord::Kind::Plugged) {
         if (!d.connected) {
-            log_ << "input: " << d.spec.name << ": connected\n";
+            log_ << limits_.logPrefix << "input: " << d.spec.name << ": connected\n";
         }
         d.connected = true;
         return;
@@ -219,7 +222,8 @@ void InputHub::inject(const RawRecord& record, std::vector<workflow::Action>& ou
     Device* d = find(record.device);
     if (d == nullptr) {
         if (record.time - unknownLogged_ >= limits_.logSeconds) {
-            log_ << "input: no configured device \"" << record.device << "\"; record skipped";
+            log_ << limits_.logPrefix << "input: no configured device \"" << record.device
+                 << "\"; record skipped";
             if (unknownHeld_ > 0) {
                 log_ << " (and " << unknownHeld_ << " more)";
             }
@@ -260,15 +264,23 @@ void InputHub::openDue(double now) {
             // "not found" every two seconds for a device a site does not have would fill the
             // log: a problem is logged when it first appears or changes.
             if (why != d->lastOpenProblem) {
-                log_ << "input: " << d->spec.name << ": " << why << '\n';
+                // The sources' problems start with the device's name.
+                log_ << limits_.logPrefix << "input: " << why << '\n';
                 d->lastOpenProblem = why;
             }
             continue;
         }
         d->lastOpenProblem.clear();
         d->connected = true;
-        log_ << "input: " << d->spec.name << ": " << (d->everOpened ? "reconnected" : "connected")
-             << '\n';
+        log_ << limits_.logPrefix << "input: " << d->spec.name << ": "
+             << (d->everOpened ? "reconnected" : "connected") << '\n';
+        if (d->everOpened && recordObserver_) {
+            RawRecord back;
+            back.kind = RawRecord::Kind::Plugged;
+            back.time = now;
+            back.device = d->spec.name;
+            recordObserver_(back);
+        }
         d->everOpened = true;
         d->source->setIndicator(indicator_);
     }
@@ -286,6 +298,13 @@ void InputHub::readSource(Device& d, double now, std::vector<workflow::Action>& 
         }
     }
     if (status == RawSource::ReadStatus::Gone) {
+        if (recordObserver_) {
+            RawRecord gone;
+            gone.kind = RawRecord::Kind::Unplugged;
+            gone.time = now;
+            gone.device = d.spec.name;
+            recordObserver_(gone);
+        }
         unplugged(d, now, why, out);
     } else if (status == RawSource::ReadStatus::Failed) {
         problem(d, now, d.spec.name + ": " + why);
@@ -294,6 +313,11 @@ void InputHub::readSource(Device& d, double now, std::vector<workflow::Action>& 
 
 void InputHub::poll(double now, std::vector<workflow::Action>& out) {
     if (live_) {
+        if (backend_.devicesChanged && backend_.devicesChanged(now)) {
+            for (auto& d : devices_) {
+                d->nextOpen = std::min(d->nextOpen, now);
+            }
+        }
         openDue(now);
         for (auto& d : devices_) {
             if (d->source) {

@@ -39,6 +39,7 @@ struct InputHubLimits {
                                          // dropped (a knob sends at most a few hundred)
     double retrySeconds = 2.0;           // a missing or unplugged device is opened again
     double logSeconds = 1.0;             // at most one problem line per device this often
+    std::string logPrefix;               // before each line's "input: " ("steerseg kiosk: ")
 };
 
 class InputHub {
@@ -82,6 +83,10 @@ class InputHub {
     // Whether something still moves without new input (a ring off centre, a replay).
     [[nodiscard]] bool busy() const;
     void setObserver(EventObserver observer) { observer_ = std::move(observer); }
+    // Every raw record a device delivered (its unplug and replug as Unplugged/Plugged records),
+    // for input-monitor --record.
+    using RecordObserver = std::function<void(const platform::input::RawRecord&)>;
+    void setRecordObserver(RecordObserver observer) { recordObserver_ = std::move(observer); }
 
   private:
     struct Device;
@@ -112,6 +117,7 @@ class InputHub {
     std::vector<platform::input::RawRecord> records_;   // reused each frame
     std::vector<platform::input::ControlEvent> events_; // reused each frame
     EventObserver observer_;
+    RecordObserver recordObserver_;
 };
 
 } // namespace steerseg::kiosk

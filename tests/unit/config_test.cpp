@@ -509,7 +509,7 @@ TEST_F(ConfigTest, TheBuiltInBindingsAreCheckedToo) {
         return action != "undo" && kCheck(action);
     };
     const config::LoadedConfig loaded = config::loadConfig({}, noUndo);
-    // z, ctrl+z, button3 and the two shuttles' button2.
+    // z, ctrl+z, button3 and the two shuttles' undo buttons.
     ASSERT_EQ(loaded.problems.size(), 5U) << describeAll(loaded.problems);
     EXPECT_EQ(loaded.problems[0].file, "built-in defaults");
     EXPECT_EQ(loaded.problems[0].key, "bindings.keys.\"ctrl+z\"");
