@@ -91,9 +91,9 @@ std::string describe(const workflow::Action& a) {
     return out.str();
 }
 
-std::string describe(const std::vector<workflow::Action>& actions) {
+std::string describe(const std::vector<workflow::Action>& actions, bool bound) {
     if (actions.empty()) {
-        return "(unbound)";
+        return bound ? "(no action)" : "(unbound)";
     }
     std::string out;
     for (const workflow::Action& a : actions) {
@@ -171,8 +171,10 @@ class Printer {
   public:
     explicit Printer(std::ostream& out) : out_(out) {}
     void attach(kiosk::InputHub& hub) {
-        hub.setObserver([this](const ControlEvent& e, const std::vector<workflow::Action>& a) {
-            out_ << seconds(e.time) << ' ' << describe(e) << " -> " << describe(a) << '\n';
+        hub.setObserver([this, &hub](const ControlEvent& e,
+                                     const std::vector<workflow::Action>& a) {
+            out_ << seconds(e.time) << ' ' << describe(e) << " -> "
+                 << describe(a, hub.bindings().bound(e.control)) << '\n';
             observed_ += a.size();
         });
     }
@@ -202,7 +204,6 @@ int replay(const std::string& file, const config::KioskConfig& cfg) {
     }
     std::cout << "replaying " << recording.records.size() << " records of " << file << '\n';
     kiosk::InputHubLimits limits;
-    limits.logPrefix = "problem: ";
     kiosk::InputHub hub(kiosk::deviceSpecs(cfg.input.devices),
                         kiosk::ControlBindings(cfg.bindings.knobs, cfg.bindings.buttons),
                         kiosk::replayInputBackend(), false, std::cout, limits);
@@ -231,9 +232,8 @@ int live(const config::KioskConfig& cfg, std::optional<double> maxSeconds,
         record << "# steerseg input recording 1\n";
     }
     kiosk::InputHubLimits limits;
-    limits.logPrefix = "problem: ";
     kiosk::InputHub hub(specs, kiosk::ControlBindings(cfg.bindings.knobs, cfg.bindings.buttons),
-                        kiosk::liveInputBackend(std::cout, "problem: "), true, std::cout, limits);
+                        kiosk::liveInputBackend(std::cout, ""), true, std::cout, limits);
     Printer printer(std::cout);
     printer.attach(hub);
     if (record.is_open()) {
@@ -241,9 +241,11 @@ int live(const config::KioskConfig& cfg, std::optional<double> maxSeconds,
             record << platform::input::formatRecordLine(r) << '\n';
         });
     }
-    std::cout << "watching " << specs.size() << " configured devices"
-              << (maxSeconds ? " for " + seconds(*maxSeconds).substr(0, 8) + " s" : "")
-              << " (Ctrl-C stops)\n";
+    std::cout << "watching " << specs.size() << " configured devices";
+    if (maxSeconds) {
+        std::cout << " for " << *maxSeconds << " s";
+    }
+    std::cout << " (Ctrl-C stops)\n";
     g_interrupted = false;
     void (*previous)(int) = std::signal(SIGINT, onInterrupt);
     const auto start = std::chrono::steady_clock::now();

@@ -92,9 +92,8 @@ KioskConfig defaultConfig() {
         {"powermate_press", {"toggle_run", 1.0, ""}},
         {"dial_press", {"toggle_run", 1.0, ""}},
     };
-    // The decoder names a shuttle's buttons by their bit: the ShuttleXpress's five, left to
-    // right, are button5..button9, the ShuttlePRO v2's top row button1..button4 and the next
-    // row's first button5.
+    // A shuttle's buttons as the device numbers them: the ShuttleXpress's five left to right,
+    // the ShuttlePRO v2's first five (its top row of four and the next row's first).
     const auto shuttleButtons = [&c](const std::string& device, int first) {
         const std::vector<std::string_view> actions{"cycle_param", "undo", "redo", "proceed",
                                                     "export"};
@@ -103,7 +102,7 @@ KioskConfig defaultConfig() {
                 {std::string(actions[i]), 1.0, ""};
         }
     };
-    shuttleButtons("shuttle", 5);
+    shuttleButtons("shuttle", 1);
     shuttleButtons("shuttlepro", 1);
     using K = InputDeviceKind;
     // 0x01/0x0E: Generic Desktop, System Multi-Axis Controller (the Surface Dial's class).

@@ -52,6 +52,9 @@ class InputHub {
             open;
         std::function<std::unique_ptr<platform::input::Decoder>(const platform::input::DeviceSpec&)>
             decoder;
+        // Whether devices came or went since the last call (the hotplug monitor); missing
+        // devices are then opened at once instead of at their next retry. May be empty.
+        std::function<bool(double now)> devicesChanged;
     };
     // What one control event became, for input-monitor.
     using EventObserver = std::function<void(const platform::input::ControlEvent&,
@@ -83,6 +86,7 @@ class InputHub {
     // Whether something still moves without new input (a ring off centre, a replay).
     [[nodiscard]] bool busy() const;
     void setObserver(EventObserver observer) { observer_ = std::move(observer); }
+    [[nodiscard]] const ControlBindings& bindings() const { return bindings_; }
     // Every raw record a device delivered (its unplug and replug as Unplugged/Plugged records),
     // for input-monitor --record.
     using RecordObserver = std::function<void(const platform::input::RawRecord&)>;

@@ -132,9 +132,9 @@ TEST(ControlBindings, HoldBindingRunsWhileHeld) {
 TEST(ControlBindings, ButtonsOfTheIssuesMapping) {
     ControlBindings b = defaults();
     std::vector<Action> out;
-    b.feed(press("shuttle_button5", 0.0), out); // the ShuttleXpress's leftmost
-    b.feed(press("shuttle_button6", 0.0), out);
-    b.feed(press("shuttle_button9", 0.0), out);
+    b.feed(press("shuttle_button1", 0.0), out); // the ShuttleXpress's leftmost
+    b.feed(press("shuttle_button2", 0.0), out);
+    b.feed(press("shuttle_button5", 0.0), out);
     b.feed(step("powermate_turn", 2, 0.0), out);
     ASSERT_EQ(out.size(), 4U);
     EXPECT_EQ(std::get<workflow::CycleParam>(out[0]).delta, 1);

@@ -142,7 +142,7 @@ TEST(InputHub, AReplayedFloodIsCapped) {
     // 20000 PowerMate detents in one second (each with its SYN_REPORT).
     std::vector<RawRecord> flood;
     for (int i = 0; i < 20000; ++i) {
-        for (const auto [type, code, value] : {std::tuple{2, 7, 1}, std::tuple{0, 0, 0}}) {
+        for (const auto& [type, code, value] : {std::tuple{2, 7, 1}, std::tuple{0, 0, 0}}) {
             RawRecord r;
             r.kind = RawRecord::Kind::Evdev;
             r.time = i * 5e-5;
@@ -244,7 +244,7 @@ TEST(InputHub, LiveDeviceRetriedUntilPresentThenGoneThenBack) {
 
     // Pressed, then pulled: the press is released (nothing bound to it, but no stuck state),
     // the device is shown disconnected and opened again at the next retry.
-    for (const auto [type, code, value] :
+    for (const auto& [type, code, value] :
          {std::tuple{2, 7, 1}, std::tuple{0, 0, 0}, std::tuple{1, 256, 1}, std::tuple{0, 0, 0}}) {
         RawRecord r;
         r.kind = RawRecord::Kind::Evdev;
