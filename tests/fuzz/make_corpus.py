@@ -171,6 +171,78 @@ def script():
         "key hyper\nload $HOME\nexpect x ~ 1\nat 2\n")
 
 
+SURFACE_DIAL = bytes.fromhex(
+    "05 01 09 0E A1 01 85 01 05 0D 09 21 A1 02 15 00 25 01 75 01 95 01 A1 00 05 09 09 01 81 02"
+    " 05 0D 09 33 81 02 95 06 81 03 A1 02 05 01 09 37 16 01 80 26 FF 7F 75 10 95 01 81 06 35 00"
+    " 46 10 0E 15 00 26 10 0E 09 48 B1 02 45 00 C0 55 0E 65 11 46 00 00 26 00 00 09 30 81 42 09"
+    " 31 46 00 00 26 00 00 81 42 05 0D 09 48 15 3A 25 3A 75 08 55 0F 35 3A 45 3A 81 03 55 00 65"
+    " 00 35 00 45 00 05 0E 09 01 A1 02 15 00 26 FF 00 09 24 B1 42 09 24 91 42 15 01 25 07 09 20"
+    " B1 42 09 21 91 42 25 0A 09 28 B1 42 75 10 26 D0 07 09 25 B1 42 09 25 91 42 85 02 75 20 17"
+    " 37 00 01 00 27 37 00 01 00 09 22 B1 02 09 11 A1 02 05 0A 95 03 09 03 09 04 09 05 75 08 15"
+    " 00 25 FF B1 02 C0 05 0E 09 10 A1 02 05 0A 95 01 15 03 25 03 36 03 10 46 03 10 09 03 B1 02"
+    " 15 04 25 04 36 04 10 46 04 10 09 04 B1 02 15 05 25 05 36 04 10 46 04 10 09 05 B1 02 35 00"
+    " 45 00 C0 C0 C0 C0 C0")
+HANDMADE_RADIAL = bytes.fromhex(
+    "05 01 09 0E A1 01 85 03 05 09 19 01 29 03 15 00 25 01 75 01 95 03 81 02 A4 05 01 09 37 15"
+    " F0 25 0F 75 05 95 01 81 06 B4 75 05 95 01 81 03 85 04 05 01 09 38 16 00 F8 26 FF 07 75 0C"
+    " 95 01 81 06 75 04 81 03 C0")
+
+
+def hid_input(radial, descriptor, reports):
+    """fuzz_hid's input: decoder choice, descriptor length (LE16), descriptor, then reports
+    each after its length byte (None: an unplug)."""
+    data = bytes([1 if radial else 0]) + struct.pack("<H", len(descriptor)) + descriptor
+    for r in reports:
+        data += b"\xff" if r is None else bytes([len(r)]) + r
+    return data
+
+
+def hid():
+    shuttle = [bytes([0, j, 0, b & 255, b >> 8]) for j, b in
+               ((253, 0), (254, 0), (255, 0x10), (0, 0x10), (1, 0), (0, 0x4001))]
+    shuttle += [bytes([3, 0, 0, 0, 0]), bytes([0xF9, 0, 0, 0, 0]), bytes([0, 0, 0, 0, 0])]
+    out("hid", "shuttle.bin", hid_input(False, b"", shuttle + [None, bytes([0, 7, 0, 0, 0])]))
+    out("hid", "shuttle_garbage.bin",
+        hid_input(False, b"", [b"\x01\x02", bytes(6), bytes([0x40, 0, 0, 0, 0]),
+                               bytes([0, 0, 0, 0, 0x80])]))
+    dial = [bytes([1, b, v & 255, (v >> 8) & 255, 0, 0, 0, 0, 0])
+            for b, v in ((0, 3), (1, 0), (1, 0xFFFE), (0, 0))]
+    out("hid", "surface_dial.bin", hid_input(True, SURFACE_DIAL, dial + [None, bytes(3)]))
+    out("hid", "handmade_radial.bin",
+        hid_input(True, HANDMADE_RADIAL, [b"\x03\xf9\x00", b"\x04\x00\x08", b"\x03\x10\x00",
+                                          b"\x05\x00\x00"]))
+    out("hid", "wheel_only.bin",
+        hid_input(True, bytes.fromhex("05 01 09 0E A1 01 09 38 15 81 25 7F 75 08 95 01 81 06 C0"),
+                  [b"\xfe", b"\x02"]))
+
+
+def evdev():
+    # (type index: 0 SYN, 1 KEY, 2 REL, 3 MSC; code: 0x80 = BTN_0; value as int8; ms since last)
+    def ev(*events):
+        return b"".join(bytes([t, c, v & 255, dt]) for t, c, v, dt in events)
+    out("evdev", "turns_and_press.bin",
+        ev((2, 7, 1, 0), (2, 7, 2, 0), (0, 0, 0, 0), (1, 0x80, 1, 100), (0, 0, 0, 0),
+           (2, 7, -1, 50), (0, 0, 0, 0), (1, 0x80, 2, 30), (1, 0x80, 0, 200), (0, 0, 0, 0)))
+    out("evdev", "dropped.bin",
+        ev((2, 7, 5, 0), (0, 3, 0, 0), (1, 0x80, 1, 0), (0, 0, 0, 1), (2, 7, 1, 10),
+           (0, 0, 0, 0), (3, 1, 127, 5)))
+    out("evdev", "bounce_unplug.bin",
+        ev((1, 0x80, 1, 0), (1, 0x80, 0, 2), (1, 0x80, 1, 2), (1, 0x80, 0, 2), (0, 0, 0, 30),
+           (1, 0x80, 1, 200), (0, 0, 0, 0)) + bytes([0xFF, 0, 0, 10]))
+
+
+def recording():
+    data = os.path.join(HERE, "..", "data", "input")
+    for name in sorted(os.listdir(data)):
+        if name.endswith(".rec"):
+            with open(os.path.join(data, name), "rb") as f:
+                out("recording", name, f.read())
+    out("recording", "every_kind.rec",
+        "# steerseg input recording 1\n0.000000 dial hid-descriptor " + SURFACE_DIAL.hex() +
+        "\n0.010000 dial hid 010003000000000000\n0.020000 powermate evdev 2 7 -1\n"
+        "0.030000 pedal gpio 1\n0.040000 pedal unplug\n0.050000 pedal plug\n")
+
+
 if __name__ == "__main__":
     nifti()
     nrrd()
@@ -178,3 +250,6 @@ if __name__ == "__main__":
     mgz()
     config()
     script()
+    hid()
+    evdev()
+    recording()
