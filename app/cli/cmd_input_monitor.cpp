@@ -171,12 +171,12 @@ class Printer {
   public:
     explicit Printer(std::ostream& out) : out_(out) {}
     void attach(kiosk::InputHub& hub) {
-        hub.setObserver([this, &hub](const ControlEvent& e,
-                                     const std::vector<workflow::Action>& a) {
-            out_ << seconds(e.time) << ' ' << describe(e) << " -> "
-                 << describe(a, hub.bindings().bound(e.control)) << '\n';
-            observed_ += a.size();
-        });
+        hub.setObserver(
+            [this, &hub](const ControlEvent& e, const std::vector<workflow::Action>& a) {
+                out_ << seconds(e.time) << ' ' << describe(e) << " -> "
+                     << describe(a, hub.bindings().bound(e.control)) << '\n';
+                observed_ += a.size();
+            });
     }
     void poll(kiosk::InputHub& hub, double now) {
         actions_.clear();
