@@ -227,8 +227,13 @@ class Kiosk {
             for (auto& f : sink_.frames) {
                 pendingFrames_.push_back(std::move(f));
             }
+            // A script's raw records are a device's input: they count for the latency.
+            const std::size_t beforeRaw = actions_.size();
             for (const auto& r : sink_.raws) {
                 hub_.inject(r, actions_);
+            }
+            if (actions_.size() > beforeRaw && inputSince_ < 0.0) {
+                inputSince_ = now_;
             }
             for (const auto& path : sink_.recordings) {
                 replayRecording(path);
