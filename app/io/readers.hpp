@@ -6,6 +6,7 @@
 namespace steerseg::io {
 
 class SeekableSource;
+struct DicomSource;
 
 Volume readNifti(const std::filesystem::path& path, const ReadLimits& limits, std::string& format);
 Volume readNrrd(const std::filesystem::path& path, const ReadLimits& limits);
@@ -13,8 +14,10 @@ Volume readMetaImage(const std::filesystem::path& path, const ReadLimits& limits
 Volume readMgz(const std::filesystem::path& path, const ReadLimits& limits);
 // A folder of 2D images (sorted by name) or one multi-page TIFF, through OpenImageIO.
 Volume readImageStack(const std::filesystem::path& path, const ReadLimits& limits);
-// A folder holding a DICOM series, or one DICOM file (single- or multi-frame).
-Volume readDicom(const std::filesystem::path& path, const ReadLimits& limits);
+// A folder holding a DICOM series, or one DICOM file (single- or multi-frame). Where `source` is
+// given, it receives what DICOM SEG export needs of the series (io/dicom_source.hpp).
+Volume readDicom(const std::filesystem::path& path, const ReadLimits& limits,
+                 DicomSource* source = nullptr);
 
 // The same readers over an open source (a file, or bytes in memory for fuzz targets). `path`
 // names the scan in messages; detached data files (.nhdr, .mhd) are looked up beside it.

@@ -22,6 +22,12 @@ bool folderHoldsDicom(const std::filesystem::path& dir) {
     return false;
 }
 
+LoadedScan readDicomScan(const std::filesystem::path& path, const ReadLimits& limits) {
+    auto source = std::make_shared<DicomSource>();
+    Volume volume = readDicom(path, limits, source.get());
+    return {std::move(volume), "dicom", std::move(source)};
+}
+
 } // namespace
 
 bool looksLikeDicom(const std::filesystem::path& path) {
@@ -47,7 +53,7 @@ LoadedScan readScan(const std::filesystem::path& path, const ReadLimits& limits)
             throw ScanError(path, "the folder is empty");
         }
         if (folderHoldsDicom(path)) {
-            return {readDicom(path, limits), "dicom"};
+            return readDicomScan(path, limits);
         }
         return {readImageStack(path, limits), "image-stack"};
     }
@@ -70,7 +76,7 @@ LoadedScan readScan(const std::filesystem::path& path, const ReadLimits& limits)
         return {readMgz(path, limits), "mgz"};
     }
     if (hasSuffix(name, ".dcm") || looksLikeDicom(path)) {
-        return {readDicom(path, limits), "dicom"};
+        return readDicomScan(path, limits);
     }
     // A multi-page TIFF is a stack; any other single 2D image is a one-slice volume.
     for (const char* ext : {".tif", ".tiff", ".png", ".jpg", ".jpeg", ".bmp", ".pgm", ".ppm",

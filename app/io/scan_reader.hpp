@@ -1,9 +1,11 @@
 #pragma once
 
 #include "core/volume.hpp"
+#include "io/dicom_source.hpp"
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -46,6 +48,8 @@ struct LoadedScan {
     Volume volume;
     std::string
         format; // "nifti", "nifti2", "nrrd", "metaimage", "mgz", "dicom", "image-stack", "builtin"
+    // The source series of a scan read from DICOM (for DICOM SEG export); null otherwise.
+    std::shared_ptr<const DicomSource> dicom = nullptr;
 };
 
 // The pseudo-path naming the built-in sample phantom.

@@ -71,6 +71,34 @@ std::optional<double> readOneDecimal(const std::filesystem::path& path, const gd
     return v[0];
 }
 
+// What a derived object (DICOM SEG) copies from its source: Specific Character Set, and the
+// Patient, General Study, Patient Study and Frame of Reference modules' text attributes.
+constexpr std::pair<std::uint16_t, std::uint16_t> kInheritedTags[] = {
+    {0x0008, 0x0005}, // SpecificCharacterSet
+    {0x0010, 0x0010}, // PatientName
+    {0x0010, 0x0020}, // PatientID
+    {0x0010, 0x0021}, // IssuerOfPatientID
+    {0x0010, 0x0030}, // PatientBirthDate
+    {0x0010, 0x0032}, // PatientBirthTime
+    {0x0010, 0x0040}, // PatientSex
+    {0x0010, 0x2160}, // EthnicGroup
+    {0x0010, 0x4000}, // PatientComments
+    {0x0012, 0x0062}, // PatientIdentityRemoved
+    {0x0012, 0x0063}, // DeidentificationMethod
+    {0x0020, 0x000d}, // StudyInstanceUID
+    {0x0008, 0x0020}, // StudyDate
+    {0x0008, 0x0030}, // StudyTime
+    {0x0008, 0x0090}, // ReferringPhysicianName
+    {0x0020, 0x0010}, // StudyID
+    {0x0008, 0x0050}, // AccessionNumber
+    {0x0008, 0x1030}, // StudyDescription
+    {0x0010, 0x1010}, // PatientAge
+    {0x0010, 0x1020}, // PatientSize
+    {0x0010, 0x1030}, // PatientWeight
+    {0x0020, 0x0052}, // FrameOfReferenceUID
+    {0x0020, 0x1040}, // PositionReferenceIndicator
+};
+
 } // namespace
 
 void openForGdcm(gdcm::Reader& reader, const std::filesystem::path& file, std::uintmax_t dataSetEnd,
@@ -165,6 +193,19 @@ DicomHeader readDicomHeader(const std::filesystem::path& path, const ReadLimits&
     h.fileSize = fileSize;
     h.dataSetEnd = dataSetEnd;
     h.sopClassUid = readText(ds, gdcm::Tag(0x0008, 0x0016));
+    h.mediaStorageSopClassUid = readText(file.GetHeader(), gdcm::Tag(0x0002, 0x0002));
+    h.sopInstanceUid = readText(ds, gdcm::Tag(0x0008, 0x0018));
+    h.mediaStorageSopInstanceUid = readText(file.GetHeader(), gdcm::Tag(0x0002, 0x0003));
+    h.studyUid = readText(ds, gdcm::Tag(0x0020, 0x000d));
+    h.frameOfReferenceUid = readText(ds, gdcm::Tag(0x0020, 0x0052));
+    h.lossyCompression = readText(ds, gdcm::Tag(0x0028, 0x2110));
+    h.lossyRatio = readText(ds, gdcm::Tag(0x0028, 0x2112));
+    h.lossyMethod = readText(ds, gdcm::Tag(0x0028, 0x2114));
+    for (const auto& [group, element] : kInheritedTags) {
+        if (ds.FindDataElement(gdcm::Tag(group, element))) {
+            h.inherited.push_back({group, element, readText(ds, gdcm::Tag(group, element))});
+        }
+    }
     h.modality = readText(ds, gdcm::Tag(0x0008, 0x0060));
     h.seriesUid = readText(ds, gdcm::Tag(0x0020, 0x000e));
     h.description = readText(ds, gdcm::Tag(0x0008, 0x103e));

@@ -1,6 +1,7 @@
 #pragma once
 
 // What the DICOM reader needs from one file's header, read without its pixel data.
+#include "io/dicom_source.hpp"
 #include "io/scan_reader.hpp"
 
 #include <memory>
@@ -26,6 +27,16 @@ struct DicomFramePlane {
 struct DicomHeader {
     std::filesystem::path file;
     std::string sopClassUid;
+    std::string mediaStorageSopClassUid; // the file meta's copy, for files with no SOPClassUID
+    std::string sopInstanceUid;
+    std::string mediaStorageSopInstanceUid;
+    std::string studyUid;
+    std::string frameOfReferenceUid;
+    std::string lossyCompression; // LossyImageCompression: "00", "01" or empty
+    std::string lossyRatio;
+    std::string lossyMethod;
+    // Patient, study and frame of reference attributes, kept for DICOM SEG export (DicomSource).
+    std::vector<DicomAttribute> inherited;
     std::string modality;
     std::string seriesUid;
     std::string description;

@@ -105,8 +105,45 @@ Layout stackByPosition(const std::filesystem::path& where, const std::vector<Dic
     return out;
 }
 
+// The instance, frame and position behind each slice k, and the series' shared attributes.
+DicomSource describeSource(const std::vector<DicomHeader>& files, const Layout& layout) {
+    const DicomHeader& first = files.front();
+    DicomSource src;
+    src.studyInstanceUid = first.studyUid;
+    src.seriesInstanceUid = first.seriesUid;
+    src.frameOfReferenceUid = first.frameOfReferenceUid;
+    src.sliceThickness = first.sliceThickness;
+    src.inherited = first.inherited;
+    for (const auto& a : first.inherited) {
+        if (a.group == 0x0010 && a.element == 0x0020) {
+            src.patientId = a.value;
+        }
+    }
+    src.slices.resize(static_cast<std::size_t>(layout.geometry.dims.z));
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        const DicomHeader& h = files[i];
+        if (h.lossyCompression == "01" && !src.lossyCompressed) {
+            src.lossyCompressed = true;
+            src.lossyRatio = h.lossyRatio;
+            src.lossyMethod = h.lossyMethod;
+        }
+        for (std::size_t f = 0; f < layout.slices[i].size(); ++f) {
+            DicomSourceSlice& s = src.slices.at(layout.slices[i][f]);
+            s.sopClassUid = h.sopClassUid.empty() ? h.mediaStorageSopClassUid : h.sopClassUid;
+            s.sopInstanceUid =
+                h.sopInstanceUid.empty() ? h.mediaStorageSopInstanceUid : h.sopInstanceUid;
+            s.frameNumber = h.frames > 1 ? static_cast<int>(f) + 1 : 0;
+            // Frames stacked in file order repeat the file's position: only their own counts.
+            if (h.frames == 1 || h.framesFromGroups) {
+                s.position = h.planes[f].position;
+            }
+        }
+    }
+    return src;
+}
+
 Volume assemble(const std::filesystem::path& where, const std::vector<DicomHeader>& files,
-                const ReadLimits& limits) {
+                const ReadLimits& limits, DicomSource* source) {
     std::size_t slices = 0;
     for (const auto& h : files) {
         slices += h.planes.size();
@@ -121,6 +158,9 @@ Volume assemble(const std::filesystem::path& where, const std::vector<DicomHeade
             ? stackFramesInFileOrder(where, files.front())
             : stackByPosition(where, files);
 
+    if (source != nullptr) {
+        *source = describeSource(files, layout);
+    }
     PixelPlan plan = planPixels(files);
     for (int attempt = 0;; ++attempt) {
         try {
@@ -146,7 +186,7 @@ Volume assemble(const std::filesystem::path& where, const std::vector<DicomHeade
 
 } // namespace
 
-Volume readDicom(const std::filesystem::path& path, const ReadLimits& limits) {
+Volume readDicom(const std::filesystem::path& path, const ReadLimits& limits, DicomSource* source) {
     quietGdcm();
     try {
         std::vector<DicomHeader> series;
@@ -161,7 +201,7 @@ Volume readDicom(const std::filesystem::path& path, const ReadLimits& limits) {
             }
             series.push_back(std::move(h));
         }
-        return assemble(path, series, limits);
+        return assemble(path, series, limits, source);
     } catch (const ScanError&) {
         throw;
     } catch (const std::bad_alloc&) {
