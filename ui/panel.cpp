@@ -69,6 +69,21 @@ class Drawer {
         ImGui::ProgressBar(static_cast<float>(shown), ImVec2(-FLT_MIN, touch_), overlay);
     }
 
+    // A small line per controller, so a knob that does nothing shows why at a glance.
+    void devices(const std::vector<Readout>& items) {
+        if (items.empty() || !ImGui::BeginTable("##devices", 2)) {
+            return;
+        }
+        for (const Readout& item : items) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextDisabled("%s", item.label.c_str());
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(item.value.c_str());
+        }
+        ImGui::EndTable();
+    }
+
     // Two label/value pairs a row, the values large.
     void readouts(const std::vector<Readout>& items) {
         if (items.empty() || !ImGui::BeginTable("##readouts", 4)) {
@@ -291,6 +306,10 @@ std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status&
         if (!model.scans.empty()) {
             d.heading("Scans");
             d.grid(model.scans, 1);
+        }
+        if (!model.devices.empty()) {
+            d.heading("Controllers");
+            d.devices(model.devices);
         }
         if (twoColumns) {
             ImGui::EndTable();

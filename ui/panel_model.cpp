@@ -184,6 +184,9 @@ std::string scanLabel(const std::string& path) {
 
 PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::string>& scans) {
     PanelModel m;
+    for (const workflow::DeviceLink& d : st.devices) {
+        m.devices.push_back({d.name, d.connected ? "connected" : "disconnected"});
+    }
     const State s = st.state;
     m.banner = stateLabel(s);
     m.hint = hintFor(s);

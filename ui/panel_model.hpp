@@ -58,6 +58,7 @@ struct PanelModel {
     std::vector<PanelButton> tools;   // Run/Pause, erase mode, Undo, Redo, Restart, Export ...
     std::vector<PanelButton> views;   // ShowSlices
     std::vector<PanelButton> nav;     // Back, Proceed (labelled for the state), Dismiss
+    std::vector<Readout> devices;     // the controllers: name, "connected" or "disconnected"
 };
 
 // `scans`: what the Load list offers ("builtin:sample" and the paths the kiosk passes in).

@@ -27,6 +27,7 @@ const char* exitStatusHelp();
 int runExport(std::span<const std::string> args);
 int runGpuInfo(std::span<const std::string> args);
 int runInfo(std::span<const std::string> args);
+int runInputMonitor(std::span<const std::string> args);
 int runKiosk(std::span<const std::string> args);
 int runRender(std::span<const std::string> args);
 int runSegment(std::span<const std::string> args);

@@ -57,6 +57,11 @@ constexpr Command kCommands[] = {
      "appliance needs (GL, shaders, config, writable folders, controllers); one line per check, "
      "status 1 when a required one fails",
      steerseg::cli::runSelfTest},
+    {"input-monitor",
+     "input-monitor [--config FILE] [--seconds N] [--record FILE] | --replay FILE: list the "
+     "input devices and the configured ones they match, print decoded events and their bound "
+     "actions, record raw streams, or decode a recording (docs/input-devices.md)",
+     steerseg::cli::runInputMonitor},
 };
 
 void printUsage(std::FILE* out) {

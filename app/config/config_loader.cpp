@@ -76,14 +76,16 @@ void checkDefaultBindings(KioskConfig& config, const BindingCheck& check,
                           std::vector<ConfigProblem>& problems) {
     const auto checkTable = [&](BindingTable& table, std::string_view name) {
         for (auto it = table.begin(); it != table.end();) {
-            if (check(it->second.action)) {
+            if (check(it->second.action) &&
+                (it->second.release.empty() || check(it->second.release))) {
                 ++it;
                 continue;
             }
-            problems.push_back({"built-in defaults", 0, 0,
-                                detail::keyPath("bindings." + std::string(name), it->first),
-                                "\"" + it->second.action +
-                                    "\" is not an action a control can do; binding dropped"});
+            problems.push_back(
+                {"built-in defaults", 0, 0,
+                 detail::keyPath("bindings." + std::string(name), it->first),
+                 "\"" + (check(it->second.action) ? it->second.release : it->second.action) +
+                     "\" is not an action a control can do; binding dropped"});
             it = table.erase(it);
         }
     };
@@ -135,6 +137,13 @@ std::vector<ConfigProblem> applyConfigText(KioskConfig& config, std::string_view
     if (const toml::table* bindings = top.table("bindings")) {
         detail::TableReader reader(*bindings, "bindings", sink);
         detail::readBindings(reader, next.bindings, check);
+    }
+    if (const toml::table* input = top.table("input")) {
+        detail::TableReader reader(*input, "input", sink);
+        if (const toml::array* devices = reader.array("devices")) {
+            detail::readInputDevices(*devices, next.input.devices, sink);
+        }
+        reader.reportUnknownKeys();
     }
     if (const toml::array* presets = top.array("preset")) {
         detail::readPresets(*presets, next.presets, sink);

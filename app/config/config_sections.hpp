@@ -20,6 +20,11 @@ void readAudit(TableReader& table, AuditConfig& audit);
 // appends a preset and must give every field.
 void readPresets(const toml::array& entries, std::vector<Preset>& presets, ProblemSink& sink);
 
+// [[input.devices]]: a file that has the array replaces the whole list (an empty array
+// configures no device); each entry gives a name and a kind, and the fields its kind uses.
+void readInputDevices(const toml::array& entries, std::vector<InputDeviceConfig>& devices,
+                      ProblemSink& sink);
+
 // [bindings.keys], [bindings.knobs], [bindings.buttons], name -> action, key by key.
 void readBindings(TableReader& table, BindingsConfig& bindings, const BindingCheck& check);
 

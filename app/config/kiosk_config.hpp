@@ -88,9 +88,12 @@ struct Preset {
 
 // What a key, knob or button does: a bindable action of the workflow (workflow::bindableNames)
 // and how many of its steps one press or detent makes (-1 turns "nudge_selected" into a minus).
+// A button or pedal may also name what its release does (`release`, "" = nothing), so a
+// pedal can run while held: { action = "run", release = "pause" }.
 struct Binding {
     std::string action;
     double steps = 1.0;
+    std::string release;
     bool operator==(const Binding&) const = default;
 };
 using BindingTable = std::map<std::string, Binding, std::less<>>;
@@ -100,6 +103,35 @@ struct BindingsConfig {
     BindingTable knobs;   // control names of the input devices (devices issue)
     BindingTable buttons; // buttons and pedals, likewise
     bool operator==(const BindingsConfig&) const = default;
+};
+
+// One configured input device ([[input.devices]]); the kiosk turns it into a
+// platform::input::DeviceSpec (config may not include platform/). Which fields apply depends on
+// the kind: HID ids and usages for shuttle and radial (and the PowerMate without a path), chip
+// and line for the GPIO kinds.
+enum class InputDeviceKind { Shuttle, Radial, PowerMate, GpioInput, GpioLed };
+// "shuttle", "radial", "powermate", "gpio_input", "gpio_led"
+std::string_view inputDeviceKindName(InputDeviceKind kind);
+std::optional<InputDeviceKind> parseInputDeviceKind(std::string_view word);
+
+struct InputDeviceConfig {
+    std::string name; // control-name alphabet; prefix of its controls ("shuttle" -> shuttle_jog)
+    InputDeviceKind kind = InputDeviceKind::Shuttle;
+    int vendorId = 0; // 0..0xffff; 0 = any
+    int productId = 0;
+    int usagePage = 0;
+    int usage = 0;
+    std::string path; // evdev node; "" = found by vendor/product id
+    std::string chip; // GPIO chip name or label
+    std::string line; // GPIO line name, or its offset as digits
+    bool activeLow = false;
+    double debounceMs = 20.0;
+    bool operator==(const InputDeviceConfig&) const = default;
+};
+
+struct InputConfig {
+    std::vector<InputDeviceConfig> devices; // a file's [[input.devices]] replaces the list
+    bool operator==(const InputConfig&) const = default;
 };
 
 struct KioskConfig {
@@ -112,6 +144,7 @@ struct KioskConfig {
     AuditConfig audit;
     std::vector<Preset> presets; // in the order the panel shows them
     BindingsConfig bindings;
+    InputConfig input;
     bool operator==(const KioskConfig&) const = default;
 };
 

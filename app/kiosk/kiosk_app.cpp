@@ -4,6 +4,8 @@
 #include "io/image_file.hpp"
 #include "io/scan_reader.hpp"
 #include "kiosk/frame_stats.hpp"
+#include "kiosk/input_backend.hpp"
+#include "kiosk/input_hub.hpp"
 #include "kiosk/iteration_budget.hpp"
 #include "kiosk/key_bindings.hpp"
 #include "kiosk/mask_dice.hpp"
@@ -15,6 +17,7 @@
 #include "kiosk/view_painter.hpp"
 #include "platform/display_choice.hpp"
 #include "platform/egl/offscreen_display.hpp"
+#include "platform/input/recording.hpp"
 #include "platform/kms/kms_display.hpp"
 #include "platform/window/window_display.hpp"
 #include "ui/layout.hpp"
@@ -35,6 +38,8 @@ namespace steerseg::kiosk {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+constexpr const char* kLogPrefix = "steerseg kiosk: ";
 
 std::atomic<bool> g_stop{false};
 
@@ -101,8 +106,12 @@ class KioskScriptSink final : public ScriptSink {
     std::vector<workflow::Action> actions;
     std::vector<platform::InputEvent> events;
     std::vector<std::filesystem::path> frames;
+    std::vector<platform::input::RawRecord> raws;
+    std::vector<std::filesystem::path> recordings;
 
     void action(const workflow::Action& a) override { actions.push_back(a); }
+    void raw(const platform::input::RawRecord& r) override { raws.push_back(r); }
+    void replay(const std::filesystem::path& path) override { recordings.push_back(path); }
     void input(const platform::InputEvent& e) override { events.push_back(e); }
     void saveFrame(const std::filesystem::path& path) override { frames.push_back(path); }
     double maskDice(const std::filesystem::path& mask, const std::filesystem::path& reference,
@@ -130,9 +139,11 @@ std::unique_ptr<ScriptPlayer> makePlayer(const KioskOptions& options) {
 // The running kiosk: everything one frame touches, and the frame as named passes.
 class Kiosk {
   public:
+    // `liveDevices`: open the configured input devices (not offscreen, where a script's raw
+    // records are the only device input).
     Kiosk(const KioskOptions& options, const config::KioskConfig& cfg,
           std::unique_ptr<ScriptPlayer> player, std::unique_ptr<platform::Display> display,
-          std::ostream& err)
+          bool liveDevices, std::ostream& err)
         : options_(options), cfg_(cfg), err_(err), player_(std::move(player)),
           display_(std::move(display)), info_(display_->info()),
           dpi_(cfg.display.dpi > 0.0 ? cfg.display.dpi : info_.dpi),
@@ -142,8 +153,13 @@ class Kiosk {
           flow_(engine_, workflowSettings(cfg), &audit_),
           touch_({dpi_, cfg.ui.touchTargetMm, cfg.ui.fontScale, cfg.probe.radiusMm,
                   static_cast<double>(cfg.ui.longPressMs), "", scanList(options)}),
-          keys_(cfg.bindings.keys), budget_(cfg.frame.solverShare, cfg.frame.budgetMs * 1e-3,
-                                            cfg.frame.minIterations, cfg.frame.maxIterations),
+          keys_(cfg.bindings.keys),
+          hub_(kiosk::deviceSpecs(cfg.input.devices),
+               ControlBindings(cfg.bindings.knobs, cfg.bindings.buttons),
+               liveDevices ? liveInputBackend(err, kLogPrefix) : replayInputBackend(), liveDevices,
+               err, hubLimits()),
+          budget_(cfg.frame.solverShare, cfg.frame.budgetMs * 1e-3, cfg.frame.minIterations,
+                  cfg.frame.maxIterations),
           painter_(cfg.frame.interactiveScale), frameBudget_(cfg.frame.budgetMs * 1e-3),
           start_(Clock::now()) {
         screenState_.layout = layout();
@@ -214,11 +230,30 @@ class Kiosk {
             for (auto& f : sink_.frames) {
                 pendingFrames_.push_back(std::move(f));
             }
+            // A script's raw records are a device's input: they count for the latency.
+            const std::size_t beforeRaw = actions_.size();
+            for (const auto& r : sink_.raws) {
+                hub_.inject(r, actions_);
+            }
+            if (actions_.size() > beforeRaw && inputSince_ < 0.0) {
+                inputSince_ = now_;
+            }
+            for (const auto& path : sink_.recordings) {
+                replayRecording(path);
+            }
+            sink_.raws.clear();
+            sink_.recordings.clear();
             sink_.actions.clear();
             sink_.events.clear();
             sink_.frames.clear();
         }
         if (!events_.empty() && inputSince_ < 0.0) {
+            inputSince_ = now_;
+        }
+        // Knobs, rings, buttons and pedals (and a replay's records) through their decoders.
+        const std::size_t beforeDevices = actions_.size();
+        hub_.poll(now_, actions_);
+        if (actions_.size() > beforeDevices && inputSince_ < 0.0) {
             inputSince_ = now_;
         }
         for (const platform::InputEvent& raw : events_) {
@@ -232,7 +267,26 @@ class Kiosk {
             }
             touch_.feed(rotation_.toLogical(raw), screenState_, flow_.status(), actions_);
         }
-        return !events_.empty() || !actions_.empty();
+        return !events_.empty() || !actions_.empty() || hub_.busy();
+    }
+
+    static InputHubLimits hubLimits() {
+        InputHubLimits limits;
+        limits.logPrefix = kLogPrefix;
+        return limits;
+    }
+
+    void replayRecording(const std::filesystem::path& path) {
+        platform::input::Recording recording = platform::input::readRecording(path.string());
+        constexpr std::size_t kShown = 5; // a bad file's first lines say enough
+        for (std::size_t i = 0; i < recording.problems.size() && i < kShown; ++i) {
+            err_ << kLogPrefix << "replay: " << recording.problems[i] << '\n';
+        }
+        if (recording.problems.size() > kShown) {
+            err_ << kLogPrefix << "replay: " << recording.problems.size() - kShown
+                 << " more problems in " << path.string() << '\n';
+        }
+        hub_.replay(std::move(recording.records), now_);
     }
 
     void applyActions() {
@@ -245,6 +299,7 @@ class Kiosk {
         }
         actions_.clear();
         flow_.update();
+        hub_.setIndicator(indicatorFor(flow_.state()));
         // What the panel's message line says goes to the log too: a headless run has no panel.
         if (const std::string& message = flow_.status().message; message != lastMessage_) {
             lastMessage_ = message;
@@ -289,7 +344,10 @@ class Kiosk {
         }
         panelStart_ = Clock::now();
         glBindFramebuffer(GL_FRAMEBUFFER, screen_.framebuffer());
-        for (auto& a : touch_.drawFrame(screen_.size(), now_, screenState_, flow_.status())) {
+        // The panel lists the controllers beside what the workflow publishes.
+        shown_ = flow_.status();
+        shown_.devices = hub_.links();
+        for (auto& a : touch_.drawFrame(screen_.size(), now_, screenState_, shown_)) {
             actions_.push_back(std::move(a));
         }
     }
@@ -374,6 +432,7 @@ class Kiosk {
     workflow::Workflow flow_;
     ui::TouchUi touch_;
     KeyBindings keys_;
+    InputHub hub_;
     IterationBudget budget_;
     ViewPainter painter_;
     FrameStats stats_;
@@ -386,6 +445,7 @@ class Kiosk {
     std::vector<platform::InputEvent> events_;
     std::vector<std::filesystem::path> pendingFrames_;
     ui::ScreenState screenState_;
+    workflow::Status shown_; // the workflow's status with the controllers, for the panel
     std::uint64_t shownScan_ = 0;
     std::string lastMessage_;
     double now_ = 0.0;
@@ -420,7 +480,8 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
     std::unique_ptr<platform::Display> display = openDisplay(platformName, displayOpts);
     out << "steerseg kiosk: " << display->info().description << '\n';
     StopSignals signals;
-    Kiosk kiosk(options, cfg, std::move(player), std::move(display), err);
+    Kiosk kiosk(options, cfg, std::move(player), std::move(display), platformName != "offscreen",
+                err);
     while (kiosk.step()) {
     }
     kiosk.finish(out);

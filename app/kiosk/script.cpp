@@ -3,6 +3,7 @@
 #include "kiosk/script.hpp"
 
 #include "kiosk/script_tokens.hpp"
+#include "platform/input/recording.hpp"
 
 #include <algorithm>
 #include <array>
@@ -460,6 +461,39 @@ StepKind expect(Words& w) {
     return step;
 }
 
+// `raw [TIME] DEVICE KIND DATA...`: one line of a recording (platform/input/recording.hpp),
+// parsed by the recording's own parser. A leading time (a line pasted from a recording) is
+// read by parseScript, which spaces a run of timed raw lines as they were recorded.
+StepKind raw(Words& w) {
+    std::string line;
+    while (!w.empty()) {
+        line += (line.empty() ? "" : " ") + w.text("a word");
+    }
+    if (line.empty()) {
+        throw LineError("raw: write 'raw DEVICE KIND DATA', a recording line (docs/scripts.md)");
+    }
+    const bool timed = line.find_first_of("0123456789.") == 0;
+    std::string problem;
+    auto record = platform::input::parseRecordLine(timed ? line : "0 " + line, problem);
+    if (!record) {
+        throw LineError("raw: " +
+                        (problem.empty() ? std::string("not a recording line") : problem));
+    }
+    if (!timed) {
+        record->time = -1.0; // no time of its own: the step's timing alone
+    }
+    RawStep step;
+    step.record = std::move(*record);
+    return step;
+}
+
+StepKind replay(Words& w) {
+    RawStep step;
+    step.recording = pathWord(w, "the recording's path");
+    w.finish("replay RECORDING");
+    return step;
+}
+
 StepKind dice(Words& w) {
     const char* usage = "dice MASK REFERENCE [label N] OP VALUE";
     DiceStep step;
@@ -518,6 +552,9 @@ const std::map<std::string, Handler, std::less<>>& verbs() {
         {"wait", wait},
         {"expect", expect},
         {"dice", dice},
+        // Below the input path: raw device records through the input hub's decoders.
+        {"raw", raw},
+        {"replay", replay},
     };
     return kVerbs;
 }
@@ -605,6 +642,34 @@ ControlLines controlLines(std::string_view text) {
     return found;
 }
 
+// Raw lines pasted from a recording keep their spacing: a timed raw line without its own `at` or
+// `after` comes that long after the timed raw line before it (the first of a run at once).
+// A replay's relative path is the script's folder's, like the lines it stands for.
+void spaceRawLines(Step& step, double& lastRaw, const std::string& scriptName) {
+    auto* raw = std::get_if<RawStep>(&step.kind);
+    if (raw == nullptr) {
+        lastRaw = -1.0;
+        return;
+    }
+    if (!raw->record) {
+        lastRaw = -1.0;
+        const std::filesystem::path path(raw->recording);
+        if (path.is_relative() && !raw->recording.starts_with('$')) {
+            raw->recording = (std::filesystem::path(scriptName).parent_path() / path).string();
+        }
+        return;
+    }
+    const double time = raw->record->time;
+    if (time < 0.0) {
+        lastRaw = -1.0;
+        return;
+    }
+    if (step.timing.kind == Timing::Next && lastRaw >= 0.0 && time >= lastRaw) {
+        step.timing = {Timing::After, time - lastRaw};
+    }
+    lastRaw = time;
+}
+
 } // namespace
 
 Script parseScript(std::string_view text, const std::string& name) {
@@ -628,6 +693,7 @@ Script parseScript(std::string_view text, const std::string& name) {
     script.name = name;
     std::vector<std::string> errors;
     double lastAt = 0.0;
+    double lastRaw = -1.0; // the time of the raw line just before, < 0 when there was none
     int number = 0;
     std::size_t pos = 0;
     while (pos < text.size() && static_cast<int>(errors.size()) < kMaxErrors) {
@@ -661,6 +727,7 @@ Script parseScript(std::string_view text, const std::string& name) {
         }
         try {
             if (auto step = parseLine(line, number, lastAt)) {
+                spaceRawLines(*step, lastRaw, name);
                 script.steps.push_back(std::move(*step));
             }
         } catch (const LineError& e) {

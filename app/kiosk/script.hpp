@@ -4,6 +4,7 @@
 // ScriptPlayer replays frame by frame. Two levels share the format: device-level events
 // (touch, keys, wheel) that go through the kiosk's input path as a finger or a keyboard would,
 // and named operator actions that go straight to the workflow's action layer. GL-free.
+#include "platform/input/raw_record.hpp"
 #include "platform/input_event.hpp"
 #include "workflow/action.hpp"
 
@@ -86,7 +87,16 @@ struct DiceStep {
     double value = 0.0;
 };
 
-using StepKind = std::variant<InputStep, ActionStep, WaitStep, ExpectStep, FrameStep, DiceStep>;
+// Device level, below the input path: a raw record of an input device (`raw`, a recording line
+// without or with its time), or a whole recording file (`replay`), through the kiosk's input
+// hub and the device's real decoder (docs/input-devices.md).
+struct RawStep {
+    std::optional<platform::input::RawRecord> record; // `raw`: stamped with the script clock
+    std::string recording;                            // `replay`: the file (may hold $VARs)
+};
+
+using StepKind =
+    std::variant<InputStep, ActionStep, WaitStep, ExpectStep, FrameStep, DiceStep, RawStep>;
 
 struct Step {
     int line = 0;

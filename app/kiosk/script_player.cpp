@@ -5,9 +5,18 @@
 #include <cstdio>
 #include <exception>
 #include <set>
+#include <stdexcept>
 #include <type_traits>
 
 namespace steerseg::kiosk {
+
+void ScriptSink::raw(const platform::input::RawRecord& /*record*/) {
+    throw std::runtime_error("raw device input is not taken here");
+}
+
+void ScriptSink::replay(const std::filesystem::path& /*recording*/) {
+    throw std::runtime_error("recordings are not replayed here");
+}
 
 namespace {
 
@@ -96,6 +105,8 @@ ScriptPlayer::ScriptPlayer(Script script, Variables variables)
                 } else if constexpr (std::is_same_v<K, DiceStep>) {
                     fill(kind.mask);
                     fill(kind.reference);
+                } else if constexpr (std::is_same_v<K, RawStep>) {
+                    fill(kind.recording);
                 }
             },
             step.kind);
@@ -208,6 +219,16 @@ void ScriptPlayer::poll(double now, const workflow::Status& status, ScriptSink& 
                 complete(now);
             } else if (const auto* dice = std::get_if<DiceStep>(&step.kind)) {
                 runDice(step, *dice, status, sink);
+            } else if (const auto* raw = std::get_if<RawStep>(&step.kind)) {
+                if (raw->record) {
+                    platform::input::RawRecord record = *raw->record;
+                    record.time = now;
+                    sink.raw(record);
+                } else {
+                    sink.replay(runtimePath(raw->recording, status, false));
+                }
+                emitted = true;
+                complete(scheduled);
             }
         } catch (const std::exception& e) {
             fail(step, e.what());

@@ -33,6 +33,10 @@ class ScriptSink {
     // kiosk/mask_dice.hpp does it); label < 0: the reference's non-zero voxels.
     virtual double maskDice(const std::filesystem::path& mask,
                             const std::filesystem::path& reference, int label) = 0;
+    // Raw device input (`raw`, time = script clock) and whole recordings (`replay`) for the
+    // input hub. A sink without one refuses them, which fails the step.
+    virtual void raw(const platform::input::RawRecord& record);
+    virtual void replay(const std::filesystem::path& recording);
 };
 
 // SCAN (--scan), DATA (STEERSEG_DATA_DIR), OUT (where relative frame, export and dice-mask

@@ -29,6 +29,14 @@ struct ViewState {
     std::string transfer;     // transfer-function preset name ("" = the scan's default)
 };
 
+// A configured input device as the panel lists it. The kiosk fills Status::devices from its
+// input hub; the workflow itself knows no devices and leaves the list empty.
+struct DeviceLink {
+    std::string name; // the config's device name: "shuttle", "pedal"
+    std::string kind; // "shuttle", "radial", "powermate", "gpio_input", "gpio_led"
+    bool connected = false;
+};
+
 struct Status {
     State state = State::NoScan;
     std::string message; // the last error or notice for the operator ("" = none)
@@ -53,6 +61,7 @@ struct Status {
     std::vector<std::string> exportFormats; // what an export writes, in the config's order
     ViewState view;
     std::vector<std::string> presets; // names, in the config's order
+    std::vector<DeviceLink> devices;  // the kiosk's, for the panel (see DeviceLink)
 };
 
 } // namespace steerseg::workflow

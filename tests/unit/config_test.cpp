@@ -119,6 +119,15 @@ std::vector<std::string> differences(const KioskConfig& a, const KioskConfig& b)
     bindings("keys", a.bindings.keys, b.bindings.keys);
     bindings("knobs", a.bindings.knobs, b.bindings.knobs);
     bindings("buttons", a.bindings.buttons, b.bindings.buttons);
+    if (a.input.devices.size() != b.input.devices.size()) {
+        out.push_back("input.devices count");
+    } else {
+        for (std::size_t i = 0; i < a.input.devices.size(); ++i) {
+            if (!(a.input.devices[i] == b.input.devices[i])) {
+                out.push_back("input.devices[" + std::to_string(i + 1) + "]");
+            }
+        }
+    }
     return out;
 }
 
@@ -207,13 +216,17 @@ TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
     for (config::BindingTable* table :
          {&other.bindings.keys, &other.bindings.knobs, &other.bindings.buttons}) {
         for (auto& [key, binding] : *table) {
-            binding = {"quit", 7.0};
+            binding = {"quit", 7.0, ""};
         }
+    }
+    for (config::InputDeviceConfig& d : other.input.devices) {
+        d = {d.name + "x", config::InputDeviceKind::GpioLed, 1, 2, 3, 4, "/x", "c", "l", true, 1.0};
     }
     // 24 plain fields, 6 per preset (its name is its identity), every binding.
     ASSERT_EQ(differences(other, config::defaultConfig()).size(),
               24U + 6U * other.presets.size() + other.bindings.keys.size() +
-                  other.bindings.knobs.size() + other.bindings.buttons.size());
+                  other.bindings.knobs.size() + other.bindings.buttons.size() +
+                  other.input.devices.size());
 
     const std::vector<ConfigProblem> problems =
         config::applyConfigText(other, readAll(STEERSEG_SHIPPED_CONFIG), "steerseg.toml", kCheck);
@@ -235,9 +248,9 @@ TEST_F(ConfigTest, LayersOverrideKeyByKey) {
     KioskConfig expected = config::defaultConfig();
     expected.display.rotation = 90;
     expected.frame.budgetMs = 50.0;
-    expected.bindings.keys["space"] = {"run", 1.0};
+    expected.bindings.keys["space"] = {"run", 1.0, ""};
     expected.bindings.keys.erase("ctrl+z");
-    expected.bindings.keys["f5"] = {"zoom", -2.5};
+    expected.bindings.keys["f5"] = {"zoom", -2.5, ""};
     EXPECT_TRUE(loaded.config == expected) << joined(differences(loaded.config, expected));
 }
 
@@ -496,7 +509,8 @@ TEST_F(ConfigTest, TheBuiltInBindingsAreCheckedToo) {
         return action != "undo" && kCheck(action);
     };
     const config::LoadedConfig loaded = config::loadConfig({}, noUndo);
-    ASSERT_EQ(loaded.problems.size(), 3U) << describeAll(loaded.problems);
+    // z, ctrl+z, button3 and the two shuttles' undo buttons.
+    ASSERT_EQ(loaded.problems.size(), 5U) << describeAll(loaded.problems);
     EXPECT_EQ(loaded.problems[0].file, "built-in defaults");
     EXPECT_EQ(loaded.problems[0].key, "bindings.keys.\"ctrl+z\"");
     EXPECT_FALSE(loaded.config.bindings.keys.contains("z"));
@@ -515,6 +529,82 @@ TEST_F(ConfigTest, PlatformNames) {
         EXPECT_EQ(config::parsePlatform(config::platformName(platform)), platform);
     }
     EXPECT_FALSE(config::parsePlatform("KMS"));
+}
+
+TEST_F(ConfigTest, HoldBindingsOnButtonsOnly) {
+    const fs::path good = write("hold.toml", "[bindings.buttons]\n"
+                                             "foot = { action = \"run\", release = \"pause\" }\n");
+    const config::LoadedConfig loaded = load({good});
+    EXPECT_TRUE(loaded.problems.empty()) << describeAll(loaded.problems);
+    EXPECT_EQ(loaded.config.bindings.buttons.at("foot"), (config::Binding{"run", 1.0, "pause"}));
+    expectRejected("[bindings.buttons]\nfoot = { action = \"run\", release = \"paws\" }\n", 2,
+                   "bindings.buttons.foot.release", "\"paws\" is not an action");
+    expectRejected("[bindings.knobs]\nring = { action = \"zoom\", release = \"pause\" }\n", 2,
+                   "bindings.knobs.ring.release", "unknown key");
+    expectRejected("[bindings.buttons]\nfoot = { action = \"run\", release = \"none\" }\n", 2,
+                   "bindings.buttons.foot.release", "not a release action");
+}
+
+TEST_F(ConfigTest, InputDevicesReplaceTheListAndAcceptHexIds) {
+    const fs::path site = write("site.toml", "[[input.devices]]\n"
+                                             "name = \"knob\"\n"
+                                             "kind = \"shuttle\"\n"
+                                             "vendor_id = 0x0b33\n"
+                                             "product_id = 0x0030\n"
+                                             "[[input.devices]]\n"
+                                             "name = \"foot\"\n"
+                                             "kind = \"gpio_input\"\n"
+                                             "chip = \"gpiochip1\"\n"
+                                             "line = \"17\"\n"
+                                             "debounce_ms = 5\n");
+    const config::LoadedConfig loaded = load({site});
+    EXPECT_TRUE(loaded.problems.empty()) << describeAll(loaded.problems);
+    ASSERT_EQ(loaded.config.input.devices.size(), 2U);
+    const config::InputDeviceConfig& knob = loaded.config.input.devices[0];
+    EXPECT_EQ(knob.name, "knob");
+    EXPECT_EQ(knob.kind, config::InputDeviceKind::Shuttle);
+    EXPECT_EQ(knob.vendorId, 0x0b33);
+    EXPECT_EQ(knob.productId, 0x0030);
+    const config::InputDeviceConfig& foot = loaded.config.input.devices[1];
+    EXPECT_EQ(foot.kind, config::InputDeviceKind::GpioInput);
+    EXPECT_EQ(foot.line, "17");
+    EXPECT_EQ(foot.debounceMs, 5.0);
+    EXPECT_FALSE(foot.activeLow);
+
+    const fs::path none = write("none.toml", "[input]\ndevices = []\n");
+    EXPECT_TRUE(load({none}).config.input.devices.empty());
+}
+
+TEST_F(ConfigTest, BadInputDevices) {
+    const std::string head = "[[input.devices]]\nname = \"k\"\n";
+    expectRejected(head + "kind = \"trackball\"\n", 3, "input.devices[1].kind",
+                   "must be \"shuttle\"");
+    expectRejected(head + "kind = \"shuttle\"\nvendor_id = 0x10000\n", 4,
+                   "input.devices[1].vendor_id", "");
+    expectRejected(head + "kind = \"shuttle\"\n", 3, "input.devices[1].kind",
+                   "needs vendor_id/product_id or usage_page/usage");
+    expectRejected(head + "kind = \"shuttle\"\nvendor_id = 1\nchip = \"gpiochip0\"\n", 5,
+                   "input.devices[1].chip", "unknown key");
+    expectRejected(head + "kind = \"gpio_led\"\nchip = \"gpiochip0\"\nline = \"\"\n", 5,
+                   "input.devices[1].line", "must name a GPIO line");
+    expectRejected(head + "kind = \"gpio_input\"\nchip = \"c\"\nline = \"L\"\n"
+                          "debounce_ms = 5000\n",
+                   6, "input.devices[1].debounce_ms", "");
+    expectRejected("[[input.devices]]\nname = \"Shuttle 1\"\nkind = \"shuttle\"\n"
+                   "vendor_id = 1\n",
+                   2, "input.devices[1].name", "a-z, 0-9 and _");
+    expectRejected("[[input.devices]]\nname = \"a\"\nkind = \"powermate\"\npath = \"/p\"\n"
+                   "[[input.devices]]\nname = \"a\"\nkind = \"powermate\"\npath = \"/q\"\n",
+                   6, "input.devices[2].name", "given twice");
+}
+
+TEST(ConfigNames, InputDeviceKindsRoundTrip) {
+    for (const auto kind : {config::InputDeviceKind::Shuttle, config::InputDeviceKind::Radial,
+                            config::InputDeviceKind::PowerMate, config::InputDeviceKind::GpioInput,
+                            config::InputDeviceKind::GpioLed}) {
+        EXPECT_EQ(config::parseInputDeviceKind(config::inputDeviceKindName(kind)), kind);
+    }
+    EXPECT_FALSE(config::parseInputDeviceKind("Shuttle"));
 }
 
 } // namespace

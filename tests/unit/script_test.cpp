@@ -629,6 +629,73 @@ TEST(ScriptPlayer, ClockGoingBackFails) {
     EXPECT_NE(p.failure().find("the script clock went back"), std::string::npos);
 }
 
+TEST(ScriptParse, RawDeviceRecords) {
+    const Script s = parseScript("raw shuttle hid 0003000000\n"
+                                 "after 0.5 raw pedal gpio 1\n"
+                                 "raw 10.000 powermate evdev 2 7 -1\n"
+                                 "raw 10.250 powermate evdev 0 0 0\n"
+                                 "raw 10.300 pedal gpio 0\n"
+                                 "replay knob_turn.rec\n"
+                                 "replay $DATA/knobs/turn.rec\n",
+                                 "scenarios/knobs.session");
+    ASSERT_EQ(s.steps.size(), 7U);
+    const auto& first = std::get<kiosk::RawStep>(s.steps[0].kind);
+    ASSERT_TRUE(first.record);
+    EXPECT_EQ(first.record->device, "shuttle");
+    EXPECT_EQ(first.record->kind, platform::input::RawRecord::Kind::HidReport);
+    EXPECT_EQ(first.record->bytes, (std::vector<std::uint8_t>{0, 3, 0, 0, 0}));
+    EXPECT_EQ(s.steps[0].timing.kind, kiosk::Timing::Next);
+    EXPECT_TRUE(std::get<kiosk::RawStep>(s.steps[1].kind).record->active);
+    EXPECT_EQ(s.steps[1].timing.kind, kiosk::Timing::After);
+    // Lines pasted from a recording keep their spacing: the first of the run at once, the
+    // others as far after the one before as recorded.
+    EXPECT_EQ(s.steps[2].timing.kind, kiosk::Timing::Next);
+    EXPECT_EQ(s.steps[3].timing.kind, kiosk::Timing::After);
+    EXPECT_DOUBLE_EQ(s.steps[3].timing.seconds, 0.25);
+    EXPECT_NEAR(s.steps[4].timing.seconds, 0.05, 1e-9);
+    EXPECT_EQ(std::get<kiosk::RawStep>(s.steps[2].kind).record->value, -1);
+    // A replay's relative path is the script's folder's.
+    EXPECT_EQ(std::get<kiosk::RawStep>(s.steps[5].kind).recording, "scenarios/knob_turn.rec");
+    EXPECT_EQ(std::get<kiosk::RawStep>(s.steps[6].kind).recording, "$DATA/knobs/turn.rec");
+
+    for (const char* bad : {"raw", "raw shuttle hid 0g", "raw Shuttle hid 00", "raw pedal gpio 2",
+                            "raw 1.0 pedal", "replay"}) {
+        const std::string error = parseError(std::string(bad) + "\n");
+        EXPECT_EQ(error.rfind("s.session:1: ", 0), 0U) << bad << ": " << error;
+        EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+    }
+    EXPECT_NE(parseError("raw\n").find("write 'raw DEVICE KIND DATA'"), std::string::npos);
+}
+
+struct RawRecorder : Recorder {
+    std::vector<platform::input::RawRecord> raws;
+    std::vector<std::string> replays;
+    void raw(const platform::input::RawRecord& r) override { raws.push_back(r); }
+    void replay(const std::filesystem::path& p) override { replays.push_back(p.string()); }
+};
+
+TEST(ScriptPlayer, RawRecordsCarryTheScriptClock) {
+    ScriptPlayer p = player("raw pedal gpio 1\nafter 2 raw pedal gpio 0\nreplay $DATA/t.rec\n",
+                            {{"DATA", "/data"}});
+    RawRecorder r;
+    workflow::Status st;
+    p.poll(10.0, st, r);
+    p.poll(12.5, st, r);
+    ASSERT_EQ(r.raws.size(), 2U);
+    EXPECT_EQ(r.raws[0].time, 10.0);
+    EXPECT_TRUE(r.raws[0].active);
+    EXPECT_EQ(r.raws[1].time, 12.5);
+    EXPECT_EQ(r.replays, (std::vector<std::string>{"/data/t.rec"}));
+    EXPECT_TRUE(p.finished());
+
+    // A sink that takes no raw input fails the step with one line.
+    ScriptPlayer refused = player("raw pedal gpio 1\n");
+    Recorder plain;
+    refused.poll(0.0, st, plain);
+    EXPECT_EQ(refused.failure(),
+              "t.session:1: raw pedal gpio 1: raw device input is not taken here");
+}
+
 // --- the scenarios ------------------------------------------------------------------------
 
 // Every session under tests/scenarios parses, and the real scans and labels it names exist.

@@ -168,6 +168,18 @@ TEST(UiPanelModel, UndoGreyedWithNothingToUndo) {
     EXPECT_TRUE(got.count(indexOf<workflow::Redo>()));
 }
 
+TEST(UiPanelModel, ControllersAreListedConnectedOrNot) {
+    workflow::Status st = status(State::Paused);
+    EXPECT_TRUE(ui::buildPanelModel(st, kScans).devices.empty());
+    st.devices = {{"shuttle", "shuttle", true}, {"pedal", "gpio_input", false}};
+    const ui::PanelModel m = ui::buildPanelModel(st, kScans);
+    ASSERT_EQ(m.devices.size(), 2U);
+    EXPECT_EQ(m.devices[0].label, "shuttle");
+    EXPECT_EQ(m.devices[0].value, "connected");
+    EXPECT_EQ(m.devices[1].label, "pedal");
+    EXPECT_EQ(m.devices[1].value, "disconnected");
+}
+
 TEST(UiPanelModel, ScansAndViews) {
     const ui::PanelModel m = ui::buildPanelModel(status(State::NoScan), kScans);
     ASSERT_EQ(m.scans.size(), 3U);
