@@ -45,10 +45,16 @@ TEST(HidSource, AbsentDeviceIsNamedByIdAndUsage) {
     EXPECT_EQ(in::openHidSource(radial, problem), nullptr);
     EXPECT_EQ(problem, "dial: no HID device fffe:0001 with usage 0001:000e (hidraw)");
 
+    // A radial controller of any vendor, by its usage alone (no such device here).
+    radial.vendorId = 0;
+    radial.productId = 0;
+    EXPECT_EQ(in::openHidSource(radial, problem), nullptr);
+    EXPECT_EQ(problem, "dial: no HID device with usage 0001:000e (hidraw)");
+
     in::DeviceSpec noId;
     noId.name = "shuttle";
     EXPECT_EQ(in::openHidSource(noId, problem), nullptr);
-    EXPECT_TRUE(contains(problem, "no vendor/product id")) << problem;
+    EXPECT_TRUE(contains(problem, "neither a vendor/product id nor a usage")) << problem;
 }
 
 TEST(HidSource, ListingReturnsWithoutCrashing) {

@@ -153,8 +153,11 @@ std::unique_ptr<RawSource> openHidSource(const DeviceSpec& spec, std::string& pr
         problem = spec.name + ": " + problem;
         return nullptr;
     }
-    if (spec.vendorId == 0 && spec.productId == 0) {
-        problem = spec.name + ": no vendor/product id to find the HID device by";
+    // A kind of controller made by many vendors (radial dials) is found by its usage alone;
+    // hid_enumerate(0, 0) lists every device.
+    const bool byId = spec.vendorId != 0 || spec.productId != 0;
+    if (!byId && spec.usagePage == 0 && spec.usage == 0) {
+        problem = spec.name + ": neither a vendor/product id nor a usage to find the HID device by";
         return nullptr;
     }
     std::string node;
@@ -166,9 +169,9 @@ std::unique_ptr<RawSource> openHidSource(const DeviceSpec& spec, std::string& pr
         }
     }
     hid_free_enumeration(list);
-    const std::string id = hex4(spec.vendorId) + ":" + hex4(spec.productId);
+    const std::string id = byId ? hex4(spec.vendorId) + ":" + hex4(spec.productId) : "";
     if (node.empty()) {
-        problem = spec.name + ": no HID device " + id;
+        problem = spec.name + ": no HID device" + (byId ? " " + id : "");
         if (spec.usagePage != 0 || spec.usage != 0) {
             problem += " with usage " + hex4(spec.usagePage) + ":" + hex4(spec.usage);
         }
