@@ -88,16 +88,19 @@ Manifest readManifest(const std::filesystem::path& folder) {
 
 AutosaveStore::AutosaveStore(std::filesystem::path folder, int keep)
     : folder_(std::move(folder)), keep_(static_cast<std::size_t>(std::max(keep, 1))) {
+    std::string manifestProblem;
     try {
         manifest_ = readManifest(folder_);
     } catch (const std::exception& e) {
-        loadProblems_.emplace_back(e.what());
+        manifestProblem = e.what();
     }
     // Numbers go on from the highest in the folder, listed or not, so no file is overwritten.
     std::error_code ec;
+    bool anyFile = false;
     for (const auto& entry : std::filesystem::directory_iterator(folder_, ec)) {
         const std::string name = entry.path().filename().string();
         if (isAutosaveName(name)) {
+            anyFile = true;
             const std::string digits =
                 name.substr(std::string(kPrefix).size(), name.size() - std::string(kPrefix).size() -
                                                              std::string(kSuffix).size());
@@ -110,6 +113,11 @@ AutosaveStore::AutosaveStore(std::filesystem::path folder, int keep)
     }
     for (const ManifestEntry& e : manifest_.files) {
         nextSequence_ = std::max(nextSequence_, e.sequence + 1);
+    }
+    // No manifest in a folder without autosaves is a first start, not a problem.
+    if (!manifestProblem.empty() &&
+        (anyFile || std::filesystem::exists(folder_ / kManifestName, ec))) {
+        loadProblems_.push_back(manifestProblem);
     }
 }
 

@@ -9,6 +9,7 @@
 #include "kiosk/mask_dice.hpp"
 #include "kiosk/screen_compositor.hpp"
 #include "kiosk/script_player.hpp"
+#include "kiosk/session_autosave.hpp"
 #include "kiosk/session_engine.hpp"
 #include "kiosk/settings_from_config.hpp"
 #include "kiosk/view_painter.hpp"
@@ -137,7 +138,8 @@ class Kiosk {
           dpi_(cfg.display.dpi > 0.0 ? cfg.display.dpi : info_.dpi),
           physical_(info_.width, info_.height),
           rotation_(cfg.display.rotation, physical_.x, physical_.y),
-          screen_(physical_, cfg.display.rotation), audit_(cfg.audit.path),
+          screen_(physical_, cfg.display.rotation),
+          autosave_(cfg.autosave, cfg.audit.path, options.resume, err), audit_(cfg.audit.path),
           flow_(engine_, workflowSettings(cfg), &audit_),
           touch_({dpi_, cfg.ui.touchTargetMm, cfg.ui.fontScale, cfg.probe.radiusMm,
                   static_cast<double>(cfg.ui.longPressMs), "", scanList(options)}),
@@ -146,7 +148,7 @@ class Kiosk {
           painter_(cfg.frame.interactiveScale), frameBudget_(cfg.frame.budgetMs * 1e-3),
           start_(Clock::now()) {
         screenState_.layout = layout();
-        if (!options.scan.empty() && !player_) {
+        if (!options.scan.empty() && !player_ && !autosave_.resuming()) {
             actions_.emplace_back(workflow::LoadScan{options.scan});
         }
     }
@@ -158,6 +160,7 @@ class Kiosk {
         const bool hadInput = pollInput();
         applyActions();
         stepSolver();
+        autosave();
         drawScreen();
         present(frameStart);
         saveFrames();
@@ -171,6 +174,7 @@ class Kiosk {
     [[nodiscard]] int exitCode() const { return exitCode_; }
 
     void finish(std::ostream& out) {
+        autosave_.finish(flow_, engine_);
         if (const auto error = audit_.takeError()) {
             err_ << "steerseg kiosk: audit log: " << *error << '\n';
         }
@@ -265,6 +269,10 @@ class Kiosk {
             stats_.iterations(r.iterations, solverSeconds_);
         }
     }
+
+    // A snapshot when the workflow moved or every interval while evolving (written off this
+    // thread), and a resume's last step once its scan is in.
+    void autosave() { autosave_.frame(flow_, engine_, actions_); }
 
     // The views into the logical screen, then the panel on top; the panel's buttons act on the
     // next frame.
@@ -367,6 +375,7 @@ class Kiosk {
     ui::ScreenRotation rotation_;
     ScreenCompositor screen_;
     SessionEngine engine_;
+    SessionAutosave autosave_; // before the audit log: a resume reads it before it reopens
     workflow::AuditLog audit_;
     workflow::Workflow flow_;
     ui::TouchUi touch_;
