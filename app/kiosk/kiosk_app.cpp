@@ -29,6 +29,7 @@
 #include <optional>
 #include <ostream>
 #include <thread>
+#include <utility>
 
 namespace steerseg::kiosk {
 
@@ -105,6 +106,8 @@ class KioskScriptSink final : public ScriptSink {
     void action(const workflow::Action& a) override { actions.push_back(a); }
     void input(const platform::InputEvent& e) override { events.push_back(e); }
     void saveFrame(const std::filesystem::path& path) override { frames.push_back(path); }
+    void answerResume(bool resume) override { resumeAnswer = resume; }
+    std::optional<bool> resumeAnswer;
     double maskDice(const std::filesystem::path& mask, const std::filesystem::path& reference,
                     int label) override {
         return kiosk::maskDice(mask, reference, label);
@@ -218,6 +221,9 @@ class Kiosk {
             sink_.actions.clear();
             sink_.events.clear();
             sink_.frames.clear();
+            if (const auto answer = std::exchange(sink_.resumeAnswer, std::nullopt)) {
+                autosave_.answer(*answer);
+            }
         }
         if (!events_.empty() && inputSince_ < 0.0) {
             inputSince_ = now_;

@@ -86,7 +86,12 @@ struct DiceStep {
     double value = 0.0;
 };
 
-using StepKind = std::variant<InputStep, ActionStep, WaitStep, ExpectStep, FrameStep, DiceStep>;
+// The answer to the start-up offer of an unfinished session's autosave (docs/kiosk.md).
+struct AutosaveStep {
+    bool resume = false; // `autosave resume`; false: `autosave discard`
+};
+using StepKind =
+    std::variant<InputStep, ActionStep, WaitStep, ExpectStep, FrameStep, DiceStep, AutosaveStep>;
 
 struct Step {
     int line = 0;

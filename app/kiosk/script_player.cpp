@@ -208,6 +208,10 @@ void ScriptPlayer::poll(double now, const workflow::Status& status, ScriptSink& 
                 complete(now);
             } else if (const auto* dice = std::get_if<DiceStep>(&step.kind)) {
                 runDice(step, *dice, status, sink);
+            } else if (const auto* answer = std::get_if<AutosaveStep>(&step.kind)) {
+                sink.answerResume(answer->resume);
+                emitted = true;
+                complete(scheduled);
             }
         } catch (const std::exception& e) {
             fail(step, e.what());

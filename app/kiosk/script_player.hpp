@@ -33,6 +33,8 @@ class ScriptSink {
     // kiosk/mask_dice.hpp does it); label < 0: the reference's non-zero voxels.
     virtual double maskDice(const std::filesystem::path& mask,
                             const std::filesystem::path& reference, int label) = 0;
+    // `autosave resume|discard`: the answer to the offer of an unfinished session.
+    virtual void answerResume(bool resume) = 0;
 };
 
 // SCAN (--scan), DATA (STEERSEG_DATA_DIR), OUT (where relative frame, export and dice-mask

@@ -10,7 +10,8 @@ runs, waits until it evolves and autosaves, SIGKILLs it, and restarts it with --
     against the restored autosave's time;
   - the mask exported right after the resume equals the autosave's mask voxel for voxel;
   - a torn last audit line from the crash is reported and the log goes on readable;
-  - with the newest autosave corrupted on purpose, the one before it is used;
+  - with the newest autosave corrupted on purpose, the one before it is used (this run
+    answers the kiosk's offer from its script instead of --resume);
   - a scan file changed since the autosave is not resumed.
 Standard library only (Debian's python3); exit 0 on success, 1 with the reason.
 """
@@ -216,9 +217,10 @@ def main():
     write_config(config2, work, corrupt, os.path.join(work, "audit-corrupt.jsonl"))
     resume2 = os.path.join(work, "resume-previous.session")
     with open(resume2, "w") as f:
-        f.write("wait state paused timeout 30\nexpect seeds == 1\nexport previous.nii\n"
-                "wait state done timeout 30\n")
-    status, log, out = run_kiosk(steerseg, work, "corrupt", config2, resume2, ["--resume"])
+        # No --resume this time: the script answers the kiosk's offer, as an operator would.
+        f.write("autosave resume\nwait state paused timeout 30\nexpect seeds == 1\n"
+                "export previous.nii\nwait state done timeout 30\n")
+    status, log, out = run_kiosk(steerseg, work, "corrupt", config2, resume2, [])
     if status != 0:
         fail("the kiosk with a damaged newest autosave exited %d:\n%s" % (status, log))
     if "CRC mismatch" not in log or "resumed " + os.path.join(corrupt, previous["file"]) not in log:
