@@ -278,7 +278,18 @@ class Kiosk {
 
     // A snapshot when the workflow moved or every interval while evolving (written off this
     // thread), and a resume's last step once its scan is in.
-    void autosave() { autosave_.frame(flow_, engine_, actions_); }
+    // The offer of an unfinished session is a prompt over the panel until it is answered.
+    void autosave() {
+        if (const auto choice = touch_.takePromptChoice()) {
+            autosave_.answer(*choice == 0);
+        }
+        autosave_.frame(flow_, engine_, actions_);
+        touch_.setPrompt(autosave_.offering()
+                             ? std::optional<ui::Prompt>(ui::Prompt{"Resume the last session?",
+                                                                    autosave_.offerText(),
+                                                                    {"Resume", "Discard"}})
+                             : std::nullopt);
+    }
 
     // The views into the logical screen, then the panel on top; the panel's buttons act on the
     // next frame.

@@ -21,8 +21,14 @@ bool resumable(workflow::State state) {
            state != workflow::State::Done;
 }
 
+// "2026-11-23 13:01:40 UTC": for the operator and the log.
 std::string utcOf(std::int64_t ms) {
-    return workflow::isoUtc(std::chrono::system_clock::time_point(std::chrono::milliseconds(ms)));
+    std::string iso =
+        workflow::isoUtc(std::chrono::system_clock::time_point(std::chrono::milliseconds(ms)));
+    if (iso.size() >= 19) {
+        iso = iso.substr(0, 10) + " " + iso.substr(11, 8) + " UTC";
+    }
+    return iso;
 }
 
 } // namespace
@@ -194,7 +200,9 @@ void SessionAutosave::save(const workflow::Status& status, SessionEngine& engine
     s.iterations = status.iterations;
     s.evolvedTime = status.evolvedTime;
     if (status.hasLevelSet && engine.session() != nullptr) {
-        s.mask = encodeRuns(engine.session()->mask());
+        const std::vector<std::uint8_t> mask = engine.session()->mask();
+        readBackSeconds_ += std::chrono::duration<double>(SteadyClock::now() - start).count();
+        s.mask = encodeRuns(mask);
     }
     writer_->submit(std::move(s));
     savedState_ = status.state;
@@ -247,8 +255,9 @@ void SessionAutosave::finish(const workflow::Workflow& flow, SessionEngine& engi
     reportWriteError();
     if (snapshots_ > 0) {
         err_ << "steerseg kiosk: autosave: " << snapshots_ << " snapshots in "
-             << config_.folder.string() << "; read-back and encoding "
-             << 1e3 * captureSeconds_ / snapshots_ << " ms on average, " << 1e3 * captureMaxSeconds_
+             << config_.folder.string() << "; on the frame thread "
+             << 1e3 * captureSeconds_ / snapshots_ << " ms on average (mask read-back "
+             << 1e3 * readBackSeconds_ / snapshots_ << " ms), " << 1e3 * captureMaxSeconds_
              << " ms at most\n";
     }
 }

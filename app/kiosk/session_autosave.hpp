@@ -82,6 +82,7 @@ class SessionAutosave {
     int snapshots_ = 0;
     double captureSeconds_ = 0.0;
     double captureMaxSeconds_ = 0.0;
+    double readBackSeconds_ = 0.0;
 };
 
 } // namespace steerseg::kiosk
