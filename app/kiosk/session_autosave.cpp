@@ -190,9 +190,12 @@ void SessionAutosave::save(const workflow::Status& status, SessionEngine& engine
                       std::chrono::system_clock::now().time_since_epoch())
                       .count();
     s.state = status.state;
-    s.params.values[workflow::indexOf(workflow::Param::Target)] = status.params.T;
-    s.params.values[workflow::indexOf(workflow::Param::Epsilon)] = status.params.eps;
-    s.params.values[workflow::indexOf(workflow::Param::Alpha)] = status.params.alpha;
+    s.params.values[workflow::indexOf(workflow::Param::Target)] =
+        static_cast<double>(status.params.T);
+    s.params.values[workflow::indexOf(workflow::Param::Epsilon)] =
+        static_cast<double>(status.params.eps);
+    s.params.values[workflow::indexOf(workflow::Param::Alpha)] =
+        static_cast<double>(status.params.alpha);
     s.params.values[workflow::indexOf(workflow::Param::Radius)] = status.radius;
     s.params.preset = status.preset;
     s.seeds = status.seeds;
