@@ -4,6 +4,7 @@
 #include "workflow/utc_time.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -50,6 +51,15 @@ nlohmann::json toJson(const Manifest& m) {
             {"version", 1},
             {"clean", m.clean},
             {"files", files}};
+}
+
+// The CRC32 in a snapshot's header (the file has just been read whole and checked).
+std::uint32_t headerCrc(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::array<char, 64> head{};
+    in.read(head.data(), head.size());
+    return snapshotCrc(
+        std::as_bytes(std::span<const char>(head.data(), static_cast<std::size_t>(in.gcount()))));
 }
 
 } // namespace
@@ -198,6 +208,10 @@ AutosaveStore::newest(std::vector<std::string>& problems) const {
                     throw AutosaveFormatError(path.string() + ": " + std::to_string(size) +
                                               " bytes, the manifest says " +
                                               std::to_string(it->bytes));
+                }
+                if (const std::uint32_t crc = headerCrc(path); crc != it->crc) {
+                    throw AutosaveFormatError(path.string() + ": CRC32 " + std::to_string(crc) +
+                                              ", the manifest says " + std::to_string(it->crc));
                 }
                 if (s.sequence != it->sequence) {
                     throw AutosaveFormatError(path.string() + ": sequence " +

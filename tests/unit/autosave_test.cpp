@@ -235,6 +235,30 @@ TEST(AutosaveStore, DamagedNewestFallsBackToThePreviousOne) {
     }
 }
 
+// A whole autosave that is not the one the manifest lists (a rename, a copy from elsewhere).
+TEST(AutosaveStore, AFileOtherThanTheManifestSaysIsPassedOver) {
+    const fs::path dir = freshDir("manifest-mismatch");
+    fs::path newest;
+    {
+        AutosaveStore store(dir, 4);
+        store.save(sampleSnapshot(100));
+        newest = store.save(sampleSnapshot(200));
+    }
+    AutosaveSnapshot other = sampleSnapshot(200);
+    other.sequence = 2;
+    other.seeds = 7; // same size, different content
+    const std::vector<std::byte> bytes = encodeSnapshot(other);
+    std::ofstream(newest, std::ios::binary | std::ios::trunc)
+        .write(reinterpret_cast<const char*>(bytes.data()),
+               static_cast<std::streamsize>(bytes.size()));
+    std::vector<std::string> problems;
+    const auto found = AutosaveStore(dir, 4).newest(problems);
+    ASSERT_TRUE(found);
+    EXPECT_EQ(found->snapshot.savedAtMs, 100);
+    ASSERT_EQ(problems.size(), 1U);
+    EXPECT_NE(problems[0].find("the manifest says"), std::string::npos) << problems[0];
+}
+
 TEST(AutosaveStore, DamagedManifestFallsBackToTheFolder) {
     const fs::path dir = freshDir("manifest-damaged");
     {
