@@ -47,6 +47,14 @@ std::vector<workflow::Action> TouchUi::drawFrame(const glm::ivec2& screenSize, d
         out.push_back(std::move(a));
     }
     drawViewCaptions(layer_, screen, status);
+    promptButtons_.clear();
+    if (prompt_) {
+        PromptFrame drawn = drawPrompt(layer_, *prompt_, screen.layout.panel);
+        if (drawn.chosen) {
+            promptChoice_ = drawn.chosen;
+        }
+        promptButtons_ = std::move(drawn.buttons);
+    }
     layer_.endFrame();
     return out;
 }

@@ -10,8 +10,11 @@
 #include "ui/imgui_layer.hpp"
 #include "ui/interaction.hpp"
 #include "ui/panel.hpp"
+#include "ui/prompt.hpp"
 #include "ui/screen_state.hpp"
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -42,6 +45,12 @@ class TouchUi {
                                             const workflow::Status& status);
 
     void setScans(std::vector<std::string> scans) { scans_ = std::move(scans); }
+    // A question over the panel until it is cleared (nullopt); the button pressed since the
+    // last call, once.
+    void setPrompt(std::optional<Prompt> prompt) { prompt_ = std::move(prompt); }
+    std::optional<std::size_t> takePromptChoice() { return std::exchange(promptChoice_, {}); }
+    // Where the prompt's buttons were drawn last frame (empty: no prompt).
+    [[nodiscard]] const std::vector<Rect>& promptButtons() const { return promptButtons_; }
     [[nodiscard]] const ImGuiLayer& layer() const { return layer_; }
     [[nodiscard]] const Panel& panel() const { return panel_; }
 
@@ -51,6 +60,9 @@ class TouchUi {
     Interaction interaction_;
     Panel panel_;
     std::vector<std::string> scans_;
+    std::optional<Prompt> prompt_;
+    std::optional<std::size_t> promptChoice_;
+    std::vector<Rect> promptButtons_;
 };
 
 } // namespace steerseg::ui

@@ -53,7 +53,7 @@ void requireWritableFile(const std::filesystem::path& file, const char* option) 
 int runKiosk(std::span<const std::string> words) {
     const Args args(
         words, {"platform", "config", "script", "scan", "frames", "size", "max-seconds", "stats"},
-        {"allow-root"});
+        {"allow-root", "resume", "no-resume"});
     // An appliance program that a mistake could run as root (cage does the same): it needs the
     // video and input groups, not root.
     if (::geteuid() == 0 && !args.flag("allow-root")) {
@@ -92,6 +92,14 @@ int runKiosk(std::span<const std::string> words) {
     }
     if (const auto s = args.value("stats")) {
         o.stats = *s;
+    }
+    if (args.flag("resume") && args.flag("no-resume")) {
+        throw UsageError("--resume and --no-resume: give one");
+    }
+    if (args.flag("resume")) {
+        o.resume = kiosk::ResumeChoice::Yes;
+    } else if (args.flag("no-resume")) {
+        o.resume = kiosk::ResumeChoice::No;
     }
     if (o.frames) {
         requireWritableFolder(*o.frames, "--frames");

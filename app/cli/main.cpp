@@ -49,8 +49,9 @@ constexpr Command kCommands[] = {
      steerseg::cli::runExport},
     {"kiosk",
      "kiosk [--platform auto|kms|window|offscreen] [--config FILE] [--scan PATH] [--script "
-     "SESSION] [--frames DIR] [--size WxH] [--stats FILE] [--max-seconds S]: the fullscreen "
-     "appliance (touch, keys and scripted sessions; docs/scripts.md)",
+     "SESSION] [--frames DIR] [--size WxH] [--stats FILE] [--max-seconds S] [--resume | "
+     "--no-resume]: the fullscreen appliance (touch, keys and scripted sessions; "
+     "docs/scripts.md); --resume picks up an unfinished session's autosave",
      steerseg::cli::runKiosk},
     {"self-test",
      "--self-test [--platform auto|surfaceless|device] [--config FILE]: check what the "

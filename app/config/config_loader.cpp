@@ -134,6 +134,7 @@ std::vector<ConfigProblem> applyConfigText(KioskConfig& config, std::string_view
     section("brush", detail::readBrush, next.brush);
     section("export", detail::readExport, next.exports);
     section("audit", detail::readAudit, next.audit);
+    section("autosave", detail::readAutosave, next.autosave);
     if (const toml::table* bindings = top.table("bindings")) {
         detail::TableReader reader(*bindings, "bindings", sink);
         detail::readBindings(reader, next.bindings, check);

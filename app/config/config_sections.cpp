@@ -194,6 +194,18 @@ void readAudit(TableReader& t, AuditConfig& a) {
     }
 }
 
+void readAutosave(TableReader& t, AutosaveConfig& a) {
+    if (auto v = t.text("folder", notEmpty)) {
+        a.folder = *v;
+    }
+    if (auto v = t.number("interval_seconds", {1.0, 3600.0})) {
+        a.intervalSeconds = *v;
+    }
+    if (auto v = t.integer("keep", {2, 1000})) {
+        a.keep = static_cast<int>(*v);
+    }
+}
+
 void checkRelations(const KioskConfig& config, const toml::table& root, ProblemSink& sink) {
     if (config.frame.minIterations > config.frame.maxIterations) {
         // Name the side this file set (both, or one over an earlier layer's other).

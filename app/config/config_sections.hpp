@@ -15,6 +15,7 @@ void readProbe(TableReader& table, ProbeConfig& probe);
 void readBrush(TableReader& table, BrushConfig& brush);
 void readExport(TableReader& table, ExportConfig& exports);
 void readAudit(TableReader& table, AuditConfig& audit);
+void readAutosave(TableReader& table, AutosaveConfig& autosave);
 
 // [[preset]]: an entry whose name is already a preset changes the fields it gives; a new name
 // appends a preset and must give every field.

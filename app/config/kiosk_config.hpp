@@ -74,6 +74,14 @@ struct AuditConfig {
     bool operator==(const AuditConfig&) const = default;
 };
 
+// Autosave of the operator's session for resume after a crash (docs/kiosk.md).
+struct AutosaveConfig {
+    std::filesystem::path folder = "steerseg-export/autosave";
+    double intervalSeconds = 10.0; // while evolving; every transition saves too
+    int keep = 5;                  // the newest this many are kept
+    bool operator==(const AutosaveConfig&) const = default;
+};
+
 // A one-touch tissue preset: the speed function's parameters and the view that goes with them.
 struct Preset {
     std::string name;
@@ -142,6 +150,7 @@ struct KioskConfig {
     BrushConfig brush;
     ExportConfig exports;
     AuditConfig audit;
+    AutosaveConfig autosave;
     std::vector<Preset> presets; // in the order the panel shows them
     BindingsConfig bindings;
     InputConfig input;

@@ -12,6 +12,7 @@
 #include "kiosk/screen_compositor.hpp"
 #include "kiosk/script_player.hpp"
 #include "kiosk/service_status.hpp"
+#include "kiosk/session_autosave.hpp"
 #include "kiosk/session_engine.hpp"
 #include "kiosk/settings_from_config.hpp"
 #include "kiosk/view_painter.hpp"
@@ -32,6 +33,7 @@
 #include <optional>
 #include <ostream>
 #include <thread>
+#include <utility>
 
 namespace steerseg::kiosk {
 
@@ -114,6 +116,8 @@ class KioskScriptSink final : public ScriptSink {
     void replay(const std::filesystem::path& path) override { recordings.push_back(path); }
     void input(const platform::InputEvent& e) override { events.push_back(e); }
     void saveFrame(const std::filesystem::path& path) override { frames.push_back(path); }
+    void answerResume(bool resume) override { resumeAnswer = resume; }
+    std::optional<bool> resumeAnswer;
     double maskDice(const std::filesystem::path& mask, const std::filesystem::path& reference,
                     int label) override {
         return kiosk::maskDice(mask, reference, label);
@@ -149,7 +153,8 @@ class Kiosk {
           dpi_(cfg.display.dpi > 0.0 ? cfg.display.dpi : info_.dpi),
           physical_(info_.width, info_.height),
           rotation_(cfg.display.rotation, physical_.x, physical_.y),
-          screen_(physical_, cfg.display.rotation), audit_(cfg.audit.path),
+          screen_(physical_, cfg.display.rotation),
+          autosave_(cfg.autosave, cfg.audit.path, options.resume, err), audit_(cfg.audit.path),
           flow_(engine_, workflowSettings(cfg), &audit_),
           touch_({dpi_, cfg.ui.touchTargetMm, cfg.ui.fontScale, cfg.probe.radiusMm,
                   static_cast<double>(cfg.ui.longPressMs), "", scanList(options)}),
@@ -163,7 +168,7 @@ class Kiosk {
           painter_(cfg.frame.interactiveScale), frameBudget_(cfg.frame.budgetMs * 1e-3),
           start_(Clock::now()) {
         screenState_.layout = layout();
-        if (!options.scan.empty() && !player_) {
+        if (!options.scan.empty() && !player_ && !autosave_.resuming()) {
             actions_.emplace_back(workflow::LoadScan{options.scan});
         }
     }
@@ -175,6 +180,7 @@ class Kiosk {
         const bool hadInput = pollInput();
         applyActions();
         stepSolver();
+        autosave();
         drawScreen();
         present(frameStart);
         service_.framePresented(flow_.status());
@@ -190,6 +196,7 @@ class Kiosk {
 
     void finish(std::ostream& out) {
         service_.stopping();
+        autosave_.finish(flow_, engine_);
         if (const auto error = audit_.takeError()) {
             err_ << "steerseg kiosk: audit log: " << *error << '\n';
         }
@@ -246,6 +253,9 @@ class Kiosk {
             sink_.actions.clear();
             sink_.events.clear();
             sink_.frames.clear();
+            if (const auto answer = std::exchange(sink_.resumeAnswer, std::nullopt)) {
+                autosave_.answer(*answer);
+            }
         }
         if (!events_.empty() && inputSince_ < 0.0) {
             inputSince_ = now_;
@@ -322,6 +332,21 @@ class Kiosk {
             budget_.record(r.iterations, solverSeconds_);
             stats_.iterations(r.iterations, solverSeconds_);
         }
+    }
+
+    // A snapshot when the workflow moved or every interval while evolving (written off this
+    // thread), and a resume's last step once its scan is in.
+    // The offer of an unfinished session is a prompt over the panel until it is answered.
+    void autosave() {
+        if (const auto choice = touch_.takePromptChoice()) {
+            autosave_.answer(*choice == 0);
+        }
+        autosave_.frame(flow_, engine_, actions_);
+        touch_.setPrompt(autosave_.offering()
+                             ? std::optional<ui::Prompt>(ui::Prompt{"Resume the last session?",
+                                                                    autosave_.offerText(),
+                                                                    {"Resume", "Discard"}})
+                             : std::nullopt);
     }
 
     // The views into the logical screen, then the panel on top; the panel's buttons act on the
@@ -428,6 +453,7 @@ class Kiosk {
     ui::ScreenRotation rotation_;
     ScreenCompositor screen_;
     SessionEngine engine_;
+    SessionAutosave autosave_; // before the audit log: a resume reads it before it reopens
     workflow::AuditLog audit_;
     workflow::Workflow flow_;
     ui::TouchUi touch_;

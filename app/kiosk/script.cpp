@@ -262,6 +262,15 @@ StepKind eraseMode(Words& w) {
     return actionStep(workflow::SetEraseMode{on == "on"});
 }
 
+StepKind autosave(Words& w) {
+    const std::string answer = w.text("resume or discard");
+    w.finish("autosave resume|discard");
+    if (answer != "resume" && answer != "discard") {
+        throw LineError("autosave '" + answer + "': give resume or discard");
+    }
+    return AutosaveStep{answer == "resume"};
+}
+
 StepKind set(Words& w) {
     const workflow::Param param = paramWord(w);
     const double value = w.number("the value", -kMaxValue, kMaxValue);
@@ -548,6 +557,7 @@ const std::map<std::string, Handler, std::less<>>& verbs() {
         {"show", show},
         {"export", exportMask},
         {"frame", frame},
+        {"autosave", autosave},
         // waits and checks
         {"wait", wait},
         {"expect", expect},

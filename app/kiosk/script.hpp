@@ -95,8 +95,12 @@ struct RawStep {
     std::string recording;                            // `replay`: the file (may hold $VARs)
 };
 
-using StepKind =
-    std::variant<InputStep, ActionStep, WaitStep, ExpectStep, FrameStep, DiceStep, RawStep>;
+// The answer to the start-up offer of an unfinished session's autosave (docs/kiosk.md).
+struct AutosaveStep {
+    bool resume = false; // `autosave resume`; false: `autosave discard`
+};
+using StepKind = std::variant<InputStep, ActionStep, WaitStep, ExpectStep, FrameStep, DiceStep,
+                              RawStep, AutosaveStep>;
 
 struct Step {
     int line = 0;

@@ -229,6 +229,10 @@ void ScriptPlayer::poll(double now, const workflow::Status& status, ScriptSink& 
                 }
                 emitted = true;
                 complete(scheduled);
+            } else if (const auto* answer = std::get_if<AutosaveStep>(&step.kind)) {
+                sink.answerResume(answer->resume);
+                emitted = true;
+                complete(scheduled);
             }
         } catch (const std::exception& e) {
             fail(step, e.what());

@@ -37,6 +37,9 @@ class ScriptSink {
     // input hub. A sink without one refuses them, which fails the step.
     virtual void raw(const platform::input::RawRecord& record);
     virtual void replay(const std::filesystem::path& recording);
+
+    // `autosave resume|discard`: the answer to the offer of an unfinished session.
+    virtual void answerResume(bool resume) = 0;
 };
 
 // SCAN (--scan), DATA (STEERSEG_DATA_DIR), OUT (where relative frame, export and dice-mask

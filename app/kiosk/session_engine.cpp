@@ -139,6 +139,7 @@ workflow::LoadPoll SessionEngine::pollLoad() {
     const Volume& scan = session_->scan();
     info_ = {};
     info_.identity = load->path + " (" + session_->format() + ")";
+    scanPath_ = load->path;
     info_.name = scanShortName(load->path);
     info_.dims = scan.dims();
     info_.spacing = scan.geometry().spacing;
@@ -258,6 +259,16 @@ void SessionEngine::restore(workflow::SnapshotId id) {
         requireSession().clearLevelSet();
     } else {
         requireSession().setMask(decodeRuns(it->second));
+    }
+    volumeMl_.reset();
+    changed();
+}
+
+void SessionEngine::setMask(const MaskRuns& mask) {
+    if (mask.runs.empty()) {
+        requireSession().clearLevelSet();
+    } else {
+        requireSession().setMask(decodeRuns(mask));
     }
     volumeMl_.reset();
     changed();

@@ -42,6 +42,12 @@ class SessionEngine final : public workflow::Engine {
     void drop(workflow::SnapshotId id) override;
     void exportMask(const std::filesystem::path& path) override;
 
+    // Resume: the level set from an autosave's mask (no runs: none). std::invalid_argument for
+    // a mask of another size.
+    void setMask(const MaskRuns& mask);
+    // The path the attached scan was loaded from ("" before one is).
+    [[nodiscard]] const std::string& scanPath() const { return scanPath_; }
+
     // The session, once a scan is attached (the kiosk draws through it).
     [[nodiscard]] session::Session* session() { return session_.get(); }
     // Counts every change of the level set (edits, steps, restores): the views redraw on it.
@@ -57,6 +63,7 @@ class SessionEngine final : public workflow::Engine {
     solver::SolverOptions options_;
     std::unique_ptr<session::Session> session_;
     workflow::ScanInfo info_;
+    std::string scanPath_;
     std::unique_ptr<PendingLoad> pending_;
     // Loads replaced before they finished: a read cannot be interrupted, so they are joined on
     // destruction instead of detached with the scan they are writing into.

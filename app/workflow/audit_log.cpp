@@ -4,7 +4,10 @@
 
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
 #include <system_error>
 #include <type_traits>
 #include <utility>
@@ -94,9 +97,18 @@ AuditLog::AuditLog(std::filesystem::path path, WallClock wall, SteadyClock stead
     if (path_.has_parent_path()) {
         std::filesystem::create_directories(path_.parent_path(), ec); // fopen names the failure
     }
-    file_ = std::fopen(path_.c_str(), "a");
+    file_ = std::fopen(path_.c_str(), "a+");
     if (file_ == nullptr) {
         fail(std::string("cannot open it: ") + std::strerror(errno));
+        return;
+    }
+    // A crash may have torn the last line: the first new record must not be glued onto it.
+    if (std::filesystem::is_regular_file(path_, ec) && std::fseek(file_, -1, SEEK_END) == 0 &&
+        std::fgetc(file_) != '\n') {
+        std::fseek(file_, 0, SEEK_END);
+        if (std::fputc('\n', file_) == EOF || std::fflush(file_) != 0) {
+            fail(std::string("write failed: ") + std::strerror(errno));
+        }
     }
 }
 
@@ -174,6 +186,51 @@ void AuditLog::transition(State from, State to, std::string_view cause, std::str
     } catch (const std::exception& e) {
         fail(std::string("record failed: ") + e.what());
     }
+}
+
+AuditLogContents readAuditLog(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw std::runtime_error("audit log " + path.string() + ": cannot open it");
+    }
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::string text = buffer.str();
+    AuditLogContents out;
+    std::size_t at = 0;
+    std::size_t lineNo = 0;
+    while (at < text.size()) {
+        ++lineNo;
+        const std::size_t nl = text.find('\n', at);
+        const bool last = nl == std::string::npos || nl + 1 == text.size();
+        const std::string line =
+            text.substr(at, nl == std::string::npos ? std::string::npos : nl - at);
+        at = nl == std::string::npos ? text.size() : nl + 1;
+        if (line.empty()) {
+            continue; // the separator a resumed log writes after a torn line
+        }
+        const std::string where = "line " + std::to_string(lineNo) + ": ";
+        try {
+            nlohmann::json record = nlohmann::json::parse(line);
+            if (!record.is_object()) {
+                throw std::runtime_error("not a JSON object");
+            }
+            if (nl == std::string::npos) {
+                // The record is whole but its newline never made it to the disk.
+                out.torn = where + "no newline at the end; the record is whole and kept";
+            }
+            out.records.push_back(std::move(record));
+        } catch (const std::exception&) {
+            const std::string what =
+                where + std::to_string(line.size()) + " bytes that are not a whole record";
+            if (last) {
+                out.torn = what;
+            } else {
+                out.problems.push_back(what);
+            }
+        }
+    }
+    return out;
 }
 
 } // namespace steerseg::workflow

@@ -16,6 +16,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace steerseg::workflow {
 
@@ -55,6 +56,17 @@ class AuditLog {
     std::string error_;
     bool reported_ = false;
 };
+
+// An audit log read back, e.g. by a resumed session that goes on writing it. A crash or power
+// cut can tear the last line (no newline, or cut inside the JSON): it is skipped and described
+// in `torn`; a damaged line before it is skipped and described in `problems`.
+struct AuditLogContents {
+    std::vector<nlohmann::json> records;
+    std::optional<std::string> torn;   // "line N: ..." when the last line was torn
+    std::vector<std::string> problems; // "line N: ..." for each other line skipped
+};
+// Throws std::runtime_error naming the file when it cannot be read (a missing file included).
+AuditLogContents readAuditLog(const std::filesystem::path& path);
 
 // The action's arguments as a JSON object ({} for actions without any): the audit log's
 // "values" and a script's round trip.

@@ -24,6 +24,16 @@
 
 namespace steerseg::workflow {
 
+// What a resumed session brings back besides the level set (which the caller has already put
+// into the engine): the parameters, the sphere counts the panel shows and the state it was in.
+struct RestoredSession {
+    ParamValues params;
+    int seeds = 0;
+    int erasures = 0;
+    State state = State::Paused;
+    std::string notice; // for the operator, e.g. "resumed the session saved at 13:01:40 UTC"
+};
+
 class Workflow {
   public:
     // Throws std::invalid_argument for invalid settings (validateSettings). The engine and the
@@ -43,6 +53,10 @@ class Workflow {
     void update();
     // The frame loop calls it while state() == Evolving (elsewhere it does nothing).
     solver::StepResult evolve(int iterations);
+    // Resume after a crash (workflow_resume.cpp): in Inspect, right after the autosave's scan
+    // loaded and its level set went back into the engine. A session that was evolving comes
+    // back paused: after a crash nothing moves until the operator says so. Undo starts empty.
+    Outcome restoreSession(const RestoredSession& restored);
 
     [[nodiscard]] State state() const { return status_.state; }
     [[nodiscard]] const Status& status() const { return status_; }

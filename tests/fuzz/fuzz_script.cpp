@@ -17,6 +17,7 @@ struct NullSink : steerseg::kiosk::ScriptSink {
                     const std::filesystem::path& /*reference*/, int label) override {
         return label < 0 ? 0.5 : 0.9;
     }
+    void answerResume(bool /*resume*/) override {}
 };
 
 } // namespace

@@ -160,7 +160,8 @@ def script():
         "select alpha\ncycle -1\nseed 1 2 3\nerase 1 2 3 2\nerase_mode on\nwindow 40 400\n"
         "run\nwait iterations 5 timeout 9\npause\nrotate 1 2\nzoom 2\npage axial -1\n"
         "slice coronal 3\nshow sagittal axial\nundo\nredo\nrestart\nproceed\nback\nfinish\n"
-        "resume\ndismiss\nexport\nexport $OUT/m.nii.gz\nframe ${OUT}/f.png\nquit\n")
+        "resume\ndismiss\nexport\nexport $OUT/m.nii.gz\nframe ${OUT}/f.png\nautosave resume\n"
+        "autosave discard\nquit\n")
     out("script", "checks.session",
         "wait loaded\nwait converged timeout 3\nwait state review\nwait seconds 2\n"
         "expect state done\nexpect volume_ml >= 1.5\nexpect converged\n"
@@ -242,6 +243,26 @@ def recording():
         "\n0.010000 dial hid 010003000000000000\n0.020000 powermate evdev 2 7 -1\n"
         "0.030000 pedal gpio 1\n0.040000 pedal unplug\n0.050000 pedal plug\n")
 
+def snapshot(runs, voxels, dims, state="evolving", version=1):
+    """An autosave (app/kiosk/autosave_snapshot.cpp): header, JSON metadata, uint32 runs."""
+    meta = ('{"dims":[%d,%d,%d],"erasures":1,"evolved_time":2.5,"iterations":40,'
+            '"params":{"T":200.0,"alpha":0.7,"eps":60.0,"preset":"","radius":3.0},'
+            '"saved_at":"2026-11-23T13:01:40.000Z","saved_at_ms":1795438900000,'
+            '"scan":{"bytes":885,"mtime_ns":1,"path":"/s.nrrd"},"seeds":1,"sequence":3,'
+            '"state":"%s"}' % (dims + (state,))).encode()
+    payload = meta + struct.pack("<%dI" % len(runs), *runs)
+    return (b"STEERSAV" + struct.pack("<IIQQI", version, len(meta), len(runs), voxels,
+                                      zlib.crc32(payload)) + payload)
+
+
+def autosave():
+    out("autosave", "ball.ssav", snapshot([10, 4, 10], 24, (2, 3, 4)))
+    out("autosave", "empty.ssav", snapshot([], 0, (2, 3, 4), state="inspect"))
+    out("autosave", "version2.ssav", snapshot([24], 24, (2, 3, 4), version=2))
+    good = snapshot([3, 5, 16], 24, (4, 3, 2), state="review")
+    out("autosave", "truncated.ssav", good[:-3])
+    out("autosave", "badcrc.ssav", good[:40] + b"X" + good[41:])
+
 
 if __name__ == "__main__":
     nifti()
@@ -253,3 +274,4 @@ if __name__ == "__main__":
     hid()
     evdev()
     recording()
+    autosave()

@@ -380,6 +380,52 @@ TEST_F(UiPanel, TouchUiRoutesTapsToViewsAndPanel) {
     EXPECT_EQ(out.size(), 1U) << "nothing more when the finger lifts";
 }
 
+// The resume offer over the panel: its buttons answer it, and a tap on it is no panel action.
+TEST_F(UiPanel, PromptOverThePanelIsAnsweredByItsButtons) {
+    Screen screen;
+    ui::TouchUiOptions options;
+    options.scans = kScans;
+    ui::TouchUi touch(options);
+    const workflow::Status st = status(State::NoScan);
+    ui::ScreenState s;
+    s.layout = layout_;
+    double t = 0.0;
+    std::vector<Action> out;
+    const auto frames = [&](int n) {
+        for (int i = 0; i < n; ++i) {
+            t += 1.0 / 30.0;
+            for (const Action& a : touch.drawFrame({kW, kH}, t, s, st)) {
+                out.push_back(a);
+            }
+        }
+    };
+    touch.setPrompt(
+        ui::Prompt{"Resume the last session?", "ball, evolving", {"Resume", "Discard"}});
+    frames(2);
+    ASSERT_EQ(touch.promptButtons().size(), 2U);
+    for (const ui::Rect& r : touch.promptButtons()) {
+        EXPECT_TRUE(layout_.panel.contains(r.x, r.y)) << "drawn over the panel";
+        EXPECT_GE(r.h, static_cast<int>(touch.layer().touchPx()) - 1) << "a full touch target";
+    }
+    EXPECT_FALSE(touch.takePromptChoice());
+    const ui::Rect discard = touch.promptButtons()[1];
+    const glm::dvec2 on(discard.x + 0.5 * discard.w, discard.y + 0.5 * discard.h);
+    for (const auto kind :
+         {platform::InputEvent::Kind::PointerDown, platform::InputEvent::Kind::PointerUp}) {
+        platform::InputEvent e = pointer(kind, on);
+        e.time = t;
+        touch.feed(e, s, st, out);
+        frames(1);
+    }
+    frames(1);
+    EXPECT_EQ(touch.takePromptChoice(), std::optional<std::size_t>(1));
+    EXPECT_FALSE(touch.takePromptChoice()) << "answered once";
+    EXPECT_TRUE(out.empty()) << "the panel under the prompt did not act";
+    touch.setPrompt(std::nullopt);
+    frames(1);
+    EXPECT_TRUE(touch.promptButtons().empty());
+}
+
 // On a portrait screen the panel is a wide strip below the views: the whole Paused panel
 // (the state with the most controls) fits without scrolling.
 TEST_F(UiPanel, PortraitPanelFitsItsControls) {

@@ -66,7 +66,8 @@ std::optional<std::string> missingTools() {
 }
 
 // A config for one run: the same frame for both (fixed iterations per frame, so `wait
-// iterations` stops both at the same count), its own audit log.
+// iterations` stops both at the same count), its own audit log and autosave folder (the first
+// run ends with unexported work: a shared folder would put a resume prompt over the second's).
 fs::path writeConfig(const fs::path& dir, const std::string& name) {
     const fs::path path = dir / (name + ".toml");
     std::ofstream(path) << "[display]\n"
@@ -77,7 +78,9 @@ fs::path writeConfig(const fs::path& dir, const std::string& name) {
                         << "[audit]\n"
                         << "path = \"" << (dir / (name + "-audit.jsonl")).string() << "\"\n"
                         << "[export]\n"
-                        << "folder = \"" << (dir / "export").string() << "\"\n";
+                        << "folder = \"" << (dir / "export").string() << "\"\n"
+                        << "[autosave]\n"
+                        << "folder = \"" << (dir / (name + "-autosave")).string() << "\"\n";
     return path;
 }
 

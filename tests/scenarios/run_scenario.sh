@@ -26,7 +26,7 @@ fi
 
 rm -rf "$out"
 mkdir -p "$out"
-# The session's own audit log and export folder, so runs do not mix. Nobody watches a replay:
+# The session's own audit log, export and autosave folders, so runs do not mix. Nobody watches a replay:
 # the solver may take most of each frame (an operator's console keeps half for the views).
 cat >"$out/kiosk.toml" <<TOML
 [frame]
@@ -35,6 +35,8 @@ solver_share = 0.9
 path = "$out/audit.jsonl"
 [export]
 folder = "$out/export"
+[autosave]
+folder = "$out/autosave"
 TOML
 "$bin" kiosk --platform offscreen --script "$session" --frames "$out" --size "$size" \
   --config "$out/kiosk.toml" --allow-root

@@ -368,10 +368,27 @@ struct Recorder : kiosk::ScriptSink {
                       std::to_string(label));
         return dice;
     }
+    void answerResume(bool resume) override {
+        log.push_back(resume ? "autosave resume" : "autosave discard");
+    }
 };
 
 ScriptPlayer player(const std::string& text, kiosk::Variables vars = {}) {
     return ScriptPlayer(parseScript(text, "t.session"), std::move(vars));
+}
+
+TEST(ScriptPlayer, AnswersTheResumeOffer) {
+    ScriptPlayer p = player("autosave resume\nautosave discard\n");
+    Recorder r;
+    workflow::Status st;
+    p.poll(0.0, st, r);
+    p.poll(0.1, st, r);
+    ASSERT_EQ(r.log.size(), 2U);
+    EXPECT_EQ(r.log[0], "autosave resume");
+    EXPECT_EQ(r.log[1], "autosave discard");
+    EXPECT_TRUE(p.finished());
+    EXPECT_THROW((void)kiosk::parseScript("autosave maybe\n", "s"), kiosk::ScriptError);
+    EXPECT_THROW((void)kiosk::parseScript("autosave\n", "s"), kiosk::ScriptError);
 }
 
 TEST(ScriptPlayer, EmitsTimedStepsWhenDue) {

@@ -1,0 +1,268 @@
+#include "kiosk/session_autosave.hpp"
+
+#include "kiosk/session_engine.hpp"
+#include "workflow/param_ranges.hpp"
+#include "workflow/utc_time.hpp"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+namespace steerseg::kiosk {
+
+namespace {
+
+using SteadyClock = std::chrono::steady_clock;
+
+// Moments a session can be picked up from; an autosave of a finished one (exported) or of one
+// that never had a scan offers nothing.
+bool resumable(workflow::State state) {
+    return state != workflow::State::NoScan && state != workflow::State::Loading &&
+           state != workflow::State::Done;
+}
+
+// "2026-11-23 13:01:40 UTC": for the operator and the log.
+std::string utcOf(std::int64_t ms) {
+    std::string iso =
+        workflow::isoUtc(std::chrono::system_clock::time_point(std::chrono::milliseconds(ms)));
+    if (iso.size() >= 19) {
+        iso = iso.substr(0, 10) + " " + iso.substr(11, 8) + " UTC";
+    }
+    return iso;
+}
+
+} // namespace
+
+SessionAutosave::SessionAutosave(const config::AutosaveConfig& config,
+                                 const std::filesystem::path& auditLog, ResumeChoice choice,
+                                 std::ostream& err)
+    : config_(config), auditLog_(auditLog), err_(err),
+      store_(std::make_unique<AutosaveStore>(config.folder, config.keep)) {
+    if (choice != ResumeChoice::No) {
+        std::vector<std::string> problems;
+        std::optional<AutosaveStore::Found> found = store_->newest(problems);
+        for (const std::string& p : problems) {
+            err_ << "steerseg kiosk: autosave: " << p << '\n';
+        }
+        if (found && !found->clean && resumable(found->snapshot.state)) {
+            const ScanReference& saved = found->snapshot.scan;
+            if (const std::string diff = differenceBetween(saved, referenceOf(saved.path));
+                !diff.empty()) {
+                err_ << "steerseg kiosk: autosave: " << found->file.string()
+                     << " not offered: " << diff << '\n';
+            } else {
+                offer_ = std::move(found);
+                err_ << "steerseg kiosk: autosave: an unfinished session can be resumed: "
+                     << offerText() << " (" << offer_->file.string() << ")\n";
+                readAuditLogBeforeItOpens();
+            }
+        }
+        if (choice == ResumeChoice::Yes) {
+            if (offer_) {
+                resuming_ = true;
+            } else {
+                err_ << "steerseg kiosk: autosave: --resume: no unfinished session to resume\n";
+            }
+        }
+    }
+    writer_ = std::make_unique<AutosaveWriter>(*store_);
+}
+
+SessionAutosave::~SessionAutosave() = default;
+
+std::string SessionAutosave::offerText() const {
+    if (!offer_) {
+        return {};
+    }
+    const AutosaveSnapshot& s = offer_->snapshot;
+    return scanShortName(s.scan.path) + ", " + std::string(workflow::stateName(s.state)) + ", " +
+           std::to_string(s.seeds) + (s.seeds == 1 ? " seed" : " seeds") + ", saved " +
+           utcOf(s.savedAtMs);
+}
+
+void SessionAutosave::answer(bool resume) {
+    if (!offering()) {
+        return;
+    }
+    if (!resume) {
+        err_ << "steerseg kiosk: autosave: discarded the unfinished session\n";
+        offer_.reset();
+        return;
+    }
+    resuming_ = true;
+}
+
+void SessionAutosave::frame(workflow::Workflow& flow, SessionEngine& engine,
+                            std::vector<workflow::Action>& actions) {
+    reportWriteError();
+    if (resuming_) {
+        if (!loadQueued_) {
+            for (const std::string& line : auditNotes_) {
+                err_ << "steerseg kiosk: " << line << '\n';
+            }
+            scansAtResume_ = engine.scansAttached();
+            actions.emplace_back(workflow::LoadScan{offer_->snapshot.scan.path});
+            loadQueued_ = true;
+            return;
+        }
+        finishResume(flow, engine);
+        return;
+    }
+    const workflow::Status& status = flow.status();
+    if (offering() && status.state != workflow::State::NoScan &&
+        status.state != workflow::State::Loading && status.state != workflow::State::Inspect) {
+        // The operator went on with new work without answering: that is a discard.
+        answer(false);
+    }
+    if (!offering() && due(status, engine)) {
+        save(status, engine);
+    }
+}
+
+void SessionAutosave::finishResume(workflow::Workflow& flow, SessionEngine& engine) {
+    if (flow.state() == workflow::State::Loading) {
+        return;
+    }
+    const AutosaveSnapshot& s = offer_->snapshot;
+    std::string failure;
+    if (engine.scansAttached() == scansAtResume_ || flow.state() != workflow::State::Inspect) {
+        failure = flow.status().message.empty() ? "its scan did not load" : flow.status().message;
+    } else if (engine.scanInfo().dims != s.dims) {
+        failure = "the scan's grid differs from the autosave's";
+    } else {
+        try {
+            engine.setMask(s.mask);
+            workflow::RestoredSession restored{s.params, s.seeds, s.erasures, s.state,
+                                               "resumed the session saved " + utcOf(s.savedAtMs)};
+            const workflow::Workflow::Outcome o = flow.restoreSession(restored);
+            if (!o.accepted) {
+                failure = o.reason;
+            }
+        } catch (const std::exception& e) {
+            failure = e.what();
+        }
+    }
+    if (failure.empty()) {
+        err_ << "steerseg kiosk: autosave: resumed " << offer_->file.string() << " (saved "
+             << utcOf(s.savedAtMs) << ", " << workflow::stateName(s.state) << ") as "
+             << workflow::stateName(flow.state()) << '\n';
+    } else {
+        err_ << "steerseg kiosk: autosave: resume of " << offer_->file.string()
+             << " failed: " << failure << '\n';
+    }
+    resuming_ = false;
+    offer_.reset();
+    if (failure.empty()) {
+        save(flow.status(), engine); // the restored point is this session's first autosave
+    }
+}
+
+bool SessionAutosave::due(const workflow::Status& status, const SessionEngine& engine) const {
+    using workflow::State;
+    const State state = status.state;
+    if (state == State::NoScan || state == State::Loading || state == State::Exporting) {
+        return false;
+    }
+    if (!savedState_ || *savedState_ != state) {
+        return true;
+    }
+    if (state == State::Evolving) {
+        return std::chrono::duration<double>(SteadyClock::now() - savedAt_).count() >=
+               config_.intervalSeconds;
+    }
+    const solver::LevelSetParams& p = status.params;
+    return engine.levelSetVersion() != savedVersion_ || p.T != savedParams_.T ||
+           p.eps != savedParams_.eps || p.alpha != savedParams_.alpha ||
+           status.radius != savedRadius_;
+}
+
+void SessionAutosave::save(const workflow::Status& status, SessionEngine& engine) {
+    const SteadyClock::time_point start = SteadyClock::now();
+    if (engine.scansAttached() != referenceScans_) {
+        // A stat (a DICOM folder's listing) once per scan, not once per snapshot.
+        scanReference_ = referenceOf(engine.scanPath());
+        referenceScans_ = engine.scansAttached();
+    }
+    AutosaveSnapshot s;
+    s.scan = scanReference_;
+    s.dims = status.scan.dims;
+    s.savedAtMs = std::chrono::duration_cast<std::chrono::milliseconds>(
+                      std::chrono::system_clock::now().time_since_epoch())
+                      .count();
+    s.state = status.state;
+    s.params.values[workflow::indexOf(workflow::Param::Target)] =
+        static_cast<double>(status.params.T);
+    s.params.values[workflow::indexOf(workflow::Param::Epsilon)] =
+        static_cast<double>(status.params.eps);
+    s.params.values[workflow::indexOf(workflow::Param::Alpha)] =
+        static_cast<double>(status.params.alpha);
+    s.params.values[workflow::indexOf(workflow::Param::Radius)] = status.radius;
+    s.params.preset = status.preset;
+    s.seeds = status.seeds;
+    s.erasures = status.erasures;
+    s.iterations = status.iterations;
+    s.evolvedTime = status.evolvedTime;
+    if (status.hasLevelSet && engine.session() != nullptr) {
+        const std::vector<std::uint8_t> mask = engine.session()->mask();
+        readBackSeconds_ += std::chrono::duration<double>(SteadyClock::now() - start).count();
+        s.mask = encodeRuns(mask);
+    }
+    writer_->submit(std::move(s));
+    savedState_ = status.state;
+    savedVersion_ = engine.levelSetVersion();
+    savedParams_ = status.params;
+    savedRadius_ = status.radius;
+    savedAt_ = start;
+    const double seconds = std::chrono::duration<double>(SteadyClock::now() - start).count();
+    ++snapshots_;
+    captureSeconds_ += seconds;
+    captureMaxSeconds_ = std::max(captureMaxSeconds_, seconds);
+}
+
+void SessionAutosave::readAuditLogBeforeItOpens() {
+    // A resumed session goes on writing the same log: what the crash left of it, read before
+    // the log reopens (which starts a fresh line after a torn one).
+    try {
+        const workflow::AuditLogContents log = workflow::readAuditLog(auditLog_);
+        auditNotes_.push_back("resuming: audit log " + auditLog_.string() + " continues after " +
+                              std::to_string(log.records.size()) + " records");
+        if (log.torn) {
+            auditNotes_.push_back("audit log: torn last record from the crash, " + *log.torn);
+        }
+        for (const std::string& p : log.problems) {
+            auditNotes_.push_back("audit log: skipped " + p);
+        }
+    } catch (const std::exception& e) {
+        auditNotes_.emplace_back(e.what());
+    }
+}
+
+void SessionAutosave::reportWriteError() {
+    if (const auto error = writer_->takeError()) {
+        err_ << "steerseg kiosk: " << *error << '\n';
+    }
+}
+
+void SessionAutosave::finish(const workflow::Workflow& flow, SessionEngine& engine) {
+    if (!offering() && !resuming_) {
+        const workflow::Status& status = flow.status();
+        if (due(status, engine)) {
+            save(status, engine);
+        }
+        const bool unexported = status.hasLevelSet && status.state != workflow::State::Done;
+        if (!unexported) {
+            writer_->markClean();
+        }
+    }
+    writer_->flush();
+    reportWriteError();
+    if (snapshots_ > 0) {
+        err_ << "steerseg kiosk: autosave: " << snapshots_ << " snapshots in "
+             << config_.folder.string() << "; on the frame thread "
+             << 1e3 * captureSeconds_ / snapshots_ << " ms on average (mask read-back "
+             << 1e3 * readBackSeconds_ / snapshots_ << " ms), " << 1e3 * captureMaxSeconds_
+             << " ms at most\n";
+    }
+}
+
+} // namespace steerseg::kiosk

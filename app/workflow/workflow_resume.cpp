@@ -1,0 +1,58 @@
+#include "workflow/workflow.hpp"
+
+namespace steerseg::workflow {
+
+namespace {
+
+// Where a resumed session lands: the state it was in, except where that state was a moment
+// that cannot be resumed (a run, a write, an error) or needs a level set it does not have.
+State resumedState(State saved, bool hasLevelSet) {
+    switch (saved) {
+    case State::Inspect:
+        return State::Inspect;
+    case State::Seeding:
+        return State::Seeding;
+    case State::Review:
+        return hasLevelSet ? State::Review : State::Seeding;
+    case State::Evolving:
+    case State::Paused:
+    case State::Exporting:
+    case State::Done:
+    case State::Error:
+        return hasLevelSet ? State::Paused : State::Seeding;
+    case State::NoScan:
+    case State::Loading:
+        break;
+    }
+    return State::Inspect;
+}
+
+} // namespace
+
+Workflow::Outcome Workflow::restoreSession(const RestoredSession& restored) {
+    if (!scanLoaded_ || status_.state != State::Inspect) {
+        return no("a session resumes right after its scan loaded, not in " +
+                  std::string(stateName(status_.state)));
+    }
+    cause_ = "resume";
+    try {
+        undo_.clear();
+        applyParams(clamped(restored.params), true);
+        status_.seeds = restored.seeds;
+        status_.erasures = restored.erasures;
+        status_.converged = false;
+        refreshEngineStatus();
+    } catch (const std::exception& e) {
+        enter(State::Error, e.what());
+        noteAuditError();
+        return no(e.what());
+    }
+    // Work that was never exported is still unexported.
+    dirty_ = status_.hasLevelSet;
+    refreshUndoFlags();
+    enter(resumedState(restored.state, status_.hasLevelSet), restored.notice);
+    noteAuditError();
+    return ok();
+}
+
+} // namespace steerseg::workflow
