@@ -8,7 +8,9 @@
 #include "gpu/gpu_info.hpp"
 #include "gpu/program.hpp"
 #include "gpu/shader_library.hpp"
+#include "kiosk/input_hub.hpp"
 #include "platform/egl/offscreen_context.hpp"
+#include "platform/input/sources.hpp"
 #include "solver/level_set_params.hpp"
 #include "solver/solver_types.hpp"
 #include "workflow/action.hpp"
@@ -21,6 +23,34 @@
 namespace steerseg::cli {
 
 namespace {
+
+// Each [[input.devices]] entry opened as the kiosk would: present, or the source's reason (not
+// plugged in, no permission and which group or rule is missing). Controllers are optional (a
+// console may run on touch alone), so a missing one warns.
+CheckResult checkConfiguredControllers(const config::KioskConfig& cfg) {
+    CheckResult r{"configured controllers", CheckLevel::Ok, "", {}};
+    const auto specs = kiosk::deviceSpecs(cfg.input.devices);
+    if (specs.empty()) {
+        r.detail = "none configured ([[input.devices]])";
+        return r;
+    }
+    std::size_t present = 0;
+    for (const auto& spec : specs) {
+        std::string problem;
+        if (platform::input::openSource(spec, problem) != nullptr) {
+            ++present;
+            r.problems.push_back(spec.name + ": present" +
+                                 (problem.empty() ? "" : " (" + problem + ")"));
+        } else {
+            r.problems.push_back(problem);
+        }
+    }
+    r.detail = std::to_string(present) + " of " + std::to_string(specs.size()) + " present";
+    if (present < specs.size()) {
+        r.level = CheckLevel::Warn;
+    }
+    return r;
+}
 
 // "OpenGL ES 3.2 Mesa 22.3.6" -> 3.2; 0.0 when the string is not a GLES version.
 double glesVersion(const std::string& version) {
@@ -142,16 +172,9 @@ int runSelfTest(std::span<const std::string> words) {
         }
         results.push_back(checkWritableFolder("audit log folder", auditFolder));
     }
-    if (const auto autosave = autosaveFolder(loaded.config)) {
-        results.push_back(checkWritableFolder("autosave folder", *autosave));
-    } else {
-        results.push_back({"autosave folder",
-                           CheckLevel::Warn,
-                           "this build's config has no [autosave] section: nothing to check",
-                           {}});
-    }
-    // The lead may swap this for platform/input's listing functions (sources.hpp).
+    results.push_back(checkWritableFolder("autosave folder", loaded.config.autosave.folder));
     results.push_back(checkControllers(findControllerNodes("/dev")));
+    results.push_back(checkConfiguredControllers(loaded.config));
 
     std::fputs(formatReport(results).c_str(), stdout);
     return anyFailed(results) ? kExitFailure : kExitOk;

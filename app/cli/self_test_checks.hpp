@@ -28,15 +28,6 @@ CheckResult checkConfig(const config::LoadedConfig& loaded);
 // the kiosk will do there, as this user. Fail with the step and the system's reason.
 CheckResult checkWritableFolder(const std::string& name, const std::filesystem::path& folder);
 
-// The autosave folder of the config, where this build's config has an [autosave] section.
-template <typename Config> std::optional<std::filesystem::path> autosaveFolder(const Config& cfg) {
-    if constexpr (requires { cfg.autosave.folder; }) {
-        return std::filesystem::path(cfg.autosave.folder);
-    } else {
-        return std::nullopt;
-    }
-}
-
 // Device nodes controllers may sit behind, below `devRoot` (/dev): hidraw*, input/event*,
 // gpiochip*, and whether this process may open each for reading and writing.
 struct ControllerNode {
