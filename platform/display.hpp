@@ -24,6 +24,8 @@ struct DisplayOptions {
     std::string drmDevice;   // kms: "" = the first card with a connected connector
     std::string connector;   // kms: "HDMI-A-1", "" = the first connected one
     std::string mode;        // kms: "1920x1080" or "1920x1080@60", "" = the preferred mode
+    // kms: the touchscreen's libinput calibration, "a b c d e f"; "" = udev's.
+    std::string touchCalibration;
     std::string title = "steerseg";
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 
 namespace steerseg::config::detail {
 
@@ -20,6 +21,34 @@ std::optional<int> takeNumber(std::string_view& text) {
     }
     text.remove_prefix(static_cast<std::size_t>(end - text.data()));
     return value;
+}
+
+// "" (udev's matrix) or six finite numbers separated by blanks, as libinput takes them; the
+// KMS backend parses the same text again (config may not include platform/).
+std::string calibrationProblem(std::string_view text) {
+    if (text.empty()) {
+        return "";
+    }
+    const std::string expected = "expected six numbers separated by blanks, e.g. "
+                                 "\"0 1 0 -1 0 1\" for a panel turned 90 degrees, or \"\"";
+    int count = 0;
+    while (true) {
+        while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) {
+            text.remove_prefix(1);
+        }
+        if (text.empty()) {
+            break;
+        }
+        double value = 0.0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (error != std::errc() || !std::isfinite(value) ||
+            (end != text.data() + text.size() && *end != ' ' && *end != '\t')) {
+            return expected;
+        }
+        text.remove_prefix(static_cast<std::size_t>(end - text.data()));
+        ++count;
+    }
+    return count == 6 ? "" : expected;
 }
 
 // "" (the preferred mode), "WIDTHxHEIGHT" or "WIDTHxHEIGHT@HZ", as the KMS backend reads it.
@@ -89,6 +118,9 @@ void readDisplay(TableReader& t, DisplayConfig& d) {
         } else {
             t.problem("rotation", "is " + std::to_string(*v) + "; must be 0, 90, 180 or 270");
         }
+    }
+    if (auto v = t.text("touch_calibration", calibrationProblem)) {
+        d.touchCalibration = *v;
     }
     if (auto v = t.number("dpi", {0.0, 1200.0})) {
         if (*v == 0.0 || *v >= 50.0) {

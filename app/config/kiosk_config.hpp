@@ -26,6 +26,9 @@ struct DisplayConfig {
     std::string mode;        // kms: "1920x1080" or "1920x1080@60", "" = the preferred mode
     int rotation = 0;        // degrees clockwise: 0, 90, 180, 270
     double dpi = 0.0;        // 0 = from the display's physical size
+    // kms: libinput's calibration matrix for the touchscreen, six numbers "a b c d e f"
+    // (udev's LIBINPUT_CALIBRATION_MATRIX form); "" = what udev sets, else none.
+    std::string touchCalibration;
     bool operator==(const DisplayConfig&) const = default;
 };
 

@@ -25,6 +25,7 @@ platform::DisplayOptions displayOptions(const config::DisplayConfig& display) {
     o.drmDevice = display.drmDevice;
     o.connector = display.connector;
     o.mode = display.mode;
+    o.touchCalibration = display.touchCalibration;
     return o;
 }
 

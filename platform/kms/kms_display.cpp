@@ -1,5 +1,6 @@
 #include "platform/kms/kms_display.hpp"
 
+#include "platform/input/libinput/touch_input.hpp"
 #include "platform/kms/drm_device.hpp"
 #include "platform/kms/egl_on_gbm.hpp"
 #include "platform/kms/gbm_surface.hpp"
@@ -21,6 +22,31 @@ namespace {
 // A flip normally lands within one refresh (17 ms at 60 Hz); past this something is wrong (a
 // hung driver, a monitor switched off) and the loop goes on rather than waits.
 constexpr int kFlipTimeoutMs = 100;
+
+// The console's touchscreen, mouse and keyboard come with the display (libinput on seat0, as
+// a compositor would take them), so the kiosk reads input the same way on every backend. A
+// console without them (knobs only) or without permission still shows its picture: the
+// reason is logged once and pollEvents() delivers nothing.
+std::unique_ptr<input::TouchInput> openConsoleInput(const DisplayOptions& options, int width,
+                                                    int height) {
+    input::TouchInputOptions o;
+    o.screenWidth = width;
+    o.screenHeight = height;
+    if (!options.touchCalibration.empty()) {
+        std::string problem;
+        o.calibration = input::parseCalibrationMatrix(options.touchCalibration, problem);
+        if (!o.calibration) {
+            std::fprintf(stderr, "kms: touch calibration \"%s\" ignored: %s\n",
+                         options.touchCalibration.c_str(), problem.c_str());
+        }
+    }
+    std::string problem;
+    auto touch = input::TouchInput::open(o, problem);
+    if (!touch) {
+        std::fprintf(stderr, "kms: no touch, mouse or keyboard input: %s\n", problem.c_str());
+    }
+    return touch;
+}
 
 class KmsDisplay final : public Display {
   public:
@@ -60,6 +86,7 @@ class KmsDisplay final : public Display {
                             std::to_string(mode.height) + "@" + std::to_string(mode.refreshHz) +
                             ", " + dpi + " dpi, " + (modeset_->atomic() ? "atomic" : "legacy") +
                             " modesetting";
+        input_ = openConsoleInput(options, mode.width, mode.height);
     }
 
     ~KmsDisplay() override {
@@ -118,7 +145,18 @@ class KmsDisplay final : public Display {
         waitForFlip(kFlipTimeoutMs);
     }
 
-    void pollEvents(std::vector<InputEvent>& /*out*/) override {}
+    void pollEvents(std::vector<InputEvent>& out) override {
+        if (!input_) {
+            return;
+        }
+        const double now =
+            std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+                .count();
+        input_->poll(now, out);
+        for (const std::string& problem : input_->takeProblems()) {
+            std::fprintf(stderr, "kms: %s\n", problem.c_str());
+        }
+    }
 
   private:
     static void onFlip(int /*fd*/, unsigned int /*frame*/, unsigned int /*sec*/,
@@ -168,6 +206,7 @@ class KmsDisplay final : public Display {
     std::unique_ptr<kms::GbmSurface> gbm_;
     std::unique_ptr<kms::EglOnGbm> egl_;
     std::unique_ptr<kms::Modeset> modeset_;
+    std::unique_ptr<input::TouchInput> input_;
     gbm_bo* front_ = nullptr;   // on the screen
     gbm_bo* pending_ = nullptr; // queued to flip
     bool stallLogged_ = false;

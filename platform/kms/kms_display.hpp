@@ -1,9 +1,10 @@
 #pragma once
 
 // The appliance's display: DRM/KMS through GBM and EGL on the console's monitor, no X server
-// (as kmscube). Frames are paced by page flips. Input does not come from here: pollEvents()
-// delivers nothing, and touch, knobs and the pedal arrive through platform/input (libinput,
-// the devices issue).
+// (as kmscube). Frames are paced by page flips. pollEvents() delivers the console's touchscreen,
+// mouse and keyboard through libinput on seat0 (platform/input/libinput; the calibration from
+// DisplayOptions::touchCalibration, else udev's); knobs and the pedal come through the kiosk's
+// input hub.
 #include "platform/display.hpp"
 
 #include <memory>

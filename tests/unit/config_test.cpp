@@ -66,6 +66,7 @@ std::vector<std::string> differences(const KioskConfig& a, const KioskConfig& b)
     field("display.mode", a.display.mode == b.display.mode);
     field("display.rotation", a.display.rotation == b.display.rotation);
     field("display.dpi", a.display.dpi == b.display.dpi);
+    field("display.touch_calibration", a.display.touchCalibration == b.display.touchCalibration);
     field("frame.budget_ms", a.frame.budgetMs == b.frame.budgetMs);
     field("frame.solver_share", a.frame.solverShare == b.frame.solverShare);
     field("frame.min_iterations", a.frame.minIterations == b.frame.minIterations);
@@ -203,7 +204,8 @@ TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
                      "DP-9",
                      "640x480",
                      180,
-                     200.0};
+                     200.0,
+                     "2 0 0 0 2 0"};
     other.frame = {50.0, 0.25, 2, 99, 0.75};
     other.ui = {12.0, 2.0, 900};
     other.probe = {7.0, 3.0, 20.0};
@@ -222,9 +224,9 @@ TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
     for (config::InputDeviceConfig& d : other.input.devices) {
         d = {d.name + "x", config::InputDeviceKind::GpioLed, 1, 2, 3, 4, "/x", "c", "l", true, 1.0};
     }
-    // 24 plain fields, 6 per preset (its name is its identity), every binding.
+    // 25 plain fields, 6 per preset (its name is its identity), every binding.
     ASSERT_EQ(differences(other, config::defaultConfig()).size(),
-              24U + 6U * other.presets.size() + other.bindings.keys.size() +
+              25U + 6U * other.presets.size() + other.bindings.keys.size() +
                   other.bindings.knobs.size() + other.bindings.buttons.size() +
                   other.input.devices.size());
 
@@ -236,7 +238,8 @@ TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
 }
 
 TEST_F(ConfigTest, LayersOverrideKeyByKey) {
-    const fs::path system = write("system.toml", "[display]\nrotation = 90\n");
+    const fs::path system =
+        write("system.toml", "[display]\nrotation = 90\ntouch_calibration = \"0 1 0 -1 0 1\"\n");
     const fs::path user = write("user.toml", "[frame]\nbudget_ms = 50\n"
                                              "[bindings.keys]\nspace = \"run\"\n"
                                              "\"ctrl+z\" = \"none\"\n"
@@ -247,6 +250,7 @@ TEST_F(ConfigTest, LayersOverrideKeyByKey) {
 
     KioskConfig expected = config::defaultConfig();
     expected.display.rotation = 90;
+    expected.display.touchCalibration = "0 1 0 -1 0 1";
     expected.frame.budgetMs = 50.0;
     expected.bindings.keys["space"] = {"run", 1.0, ""};
     expected.bindings.keys.erase("ctrl+z");
@@ -305,6 +309,11 @@ TEST_F(ConfigTest, OutOfRange) {
                    "\"auto\", \"kms\", \"window\" or \"offscreen\"");
     expectRejected("[display]\nmode = \"1920x\"\n", 2, "display.mode", "WIDTHxHEIGHT@HZ");
     expectRejected("[display]\ndpi = 10\n", 2, "display.dpi", "at least 50");
+    for (const char* matrix : {"1 0 0 0 1", "1 0 0 0 1 0 0", "1 0 0 0 1 x", "1 0 0 0 1 nan",
+                               "1,0,0,0,1,0", "1 0 0 0 1 1e999"}) {
+        expectRejected("[display]\ntouch_calibration = \"" + std::string(matrix) + "\"\n", 2,
+                       "display.touch_calibration", "six numbers");
+    }
     expectRejected("[audit]\npath = \"\"\n", 2, "audit.path", "must not be empty");
 }
 

@@ -65,19 +65,6 @@ TEST(SelfTestConfig, ProblemsFailWithEachListed) {
     EXPECT_NE(r.problems[0].find("bad.toml"), std::string::npos) << r.problems[0];
 }
 
-struct WithAutosave {
-    struct {
-        std::filesystem::path folder = "/var/lib/steerseg/autosave";
-    } autosave;
-};
-struct WithoutAutosave {};
-
-TEST(SelfTestConfig, AutosaveFolderWhereTheConfigHasOne) {
-    EXPECT_EQ(cli::autosaveFolder(WithAutosave{}),
-              std::filesystem::path("/var/lib/steerseg/autosave"));
-    EXPECT_FALSE(cli::autosaveFolder(WithoutAutosave{}).has_value());
-}
-
 TEST(SelfTestControllers, FindsTheNodeKindsAndIgnoresOthers) {
     const auto dev = tempDir("self-test-dev");
     std::filesystem::create_directories(dev / "input");
