@@ -108,8 +108,8 @@ KioskConfig defaultConfig() {
         const std::vector<std::string_view> actions{"cycle_param", "undo", "redo", "proceed",
                                                     "export"};
         for (std::size_t i = 0; i < actions.size(); ++i) {
-            c.bindings.buttons[device + "_button" + std::to_string(first + static_cast<int>(i))] =
-                {std::string(actions[i]), 1.0, ""};
+            c.bindings.buttons[device + "_button" + std::to_string(first + static_cast<int>(i))] = {
+                std::string(actions[i]), 1.0, ""};
         }
     };
     shuttleButtons("shuttle", 1);
