@@ -2,6 +2,7 @@
 // committed at each EV_SYN/SYN_REPORT as the kernel means them. SYN_DROPPED says the kernel's
 // buffer overflowed: the frame in progress and everything up to the next SYN_REPORT is
 // incomplete, so it is dropped rather than half applied.
+#include "platform/input/decoder_records.hpp"
 #include "platform/input/decoders.hpp"
 #include "platform/input/problem_log.hpp"
 
@@ -27,13 +28,8 @@ class PowerMateDecoder final : public Decoder {
         case RawRecord::Kind::Evdev:
             event(record, out);
             return;
-        case RawRecord::Kind::Unplugged:
-            reset(record.time, out);
-            return;
-        case RawRecord::Kind::Plugged:
-            return;
         default:
-            problems_.add(name_ + ": not an evdev record (ignored)");
+            feedOtherRecord(*this, record, out, problems_, name_, "an evdev");
             return;
         }
     }

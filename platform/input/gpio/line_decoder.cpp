@@ -4,6 +4,7 @@
 // the pending level, and once the line has been quiet that long the settled level is sent if
 // it differs from the last one sent. A bounce that ends released gives Press then Release; a
 // clean press gives one Press; a held pedal stays pressed without repeats.
+#include "platform/input/decoder_records.hpp"
 #include "platform/input/decoders.hpp"
 #include "platform/input/problem_log.hpp"
 
@@ -30,13 +31,8 @@ class GpioLineDecoder final : public Decoder {
             }
             edge(record.time, record.active, out);
             return;
-        case RawRecord::Kind::Unplugged:
-            reset(record.time, out);
-            return;
-        case RawRecord::Kind::Plugged:
-            return;
         default:
-            problems_.add(name_ + ": not a GPIO record (ignored)");
+            feedOtherRecord(*this, record, out, problems_, name_, "a GPIO");
             return;
         }
     }

@@ -2,6 +2,7 @@
 // (Generic Desktop 0x0E) holding a relative Dial (0x37), or a Wheel (0x38) where there is no
 // Dial, and a button (Button page). The fields are found by parsing the report descriptor, which
 // the source sends first, so a controller with another layout needs no new code.
+#include "platform/input/decoder_records.hpp"
 #include "platform/input/decoders.hpp"
 #include "platform/input/hid/field_extract.hpp"
 #include "platform/input/hid/report_descriptor.hpp"
@@ -85,13 +86,8 @@ class RadialDecoder final : public Decoder {
         case RawRecord::Kind::HidReport:
             report(record, out);
             return;
-        case RawRecord::Kind::Unplugged:
-            reset(record.time, out);
-            return;
-        case RawRecord::Kind::Plugged:
-            return;
         default:
-            problems_.add(name_ + ": not a HID record (ignored)");
+            feedOtherRecord(*this, record, out, problems_, name_, "a HID");
             return;
         }
     }

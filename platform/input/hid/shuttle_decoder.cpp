@@ -4,6 +4,7 @@
 // little-endian bit mask. The PRO v2's fifteen buttons are bits 0..14 (bit 0 = button1); the
 // ShuttleXpress's five are bits 4..8, numbered button1..button5 from the left as printed on the
 // device, so a site's bindings read like the hardware. Any other product id is numbered by bit.
+#include "platform/input/decoder_records.hpp"
 #include "platform/input/decoders.hpp"
 #include "platform/input/problem_log.hpp"
 
@@ -34,13 +35,8 @@ class ShuttleDecoder final : public Decoder {
             return;
         case RawRecord::Kind::HidDescriptor:
             return; // the layout is fixed; the descriptor says nothing new
-        case RawRecord::Kind::Unplugged:
-            reset(record.time, out);
-            return;
-        case RawRecord::Kind::Plugged:
-            return;
         default:
-            problems_.add(name_ + ": not a HID record (ignored)");
+            feedOtherRecord(*this, record, out, problems_, name_, "a HID");
             return;
         }
     }
