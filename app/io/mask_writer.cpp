@@ -170,6 +170,8 @@ std::string headerValue(const std::filesystem::path& path, const std::string& wh
     return value;
 }
 
+} // namespace
+
 void checkMaskSize(const std::filesystem::path& path, const Geometry& geometry,
                    std::span<const std::uint8_t> mask) {
     checkGeometry(path, geometry);
@@ -179,8 +181,6 @@ void checkMaskSize(const std::filesystem::path& path, const Geometry& geometry,
                                    std::to_string(geometry.voxelCount()));
     }
 }
-
-} // namespace
 
 void writeMask(const std::filesystem::path& path, const Geometry& geometry,
                std::span<const std::uint8_t> mask) {

@@ -17,6 +17,11 @@ namespace steerseg::io {
 void writeMask(const std::filesystem::path& path, const Geometry& geometry,
                std::span<const std::uint8_t> mask);
 
+// Every mask writer's first check: a valid grid (checkGeometry) and one byte per voxel of it;
+// io::WriteError naming `path` otherwise.
+void checkMaskSize(const std::filesystem::path& path, const Geometry& geometry,
+                   std::span<const std::uint8_t> mask);
+
 // One segment of a 3D Slicer segmentation: what Slicer shows in its segment list.
 struct SegmentInfo {
     std::string name = "Segment_1";

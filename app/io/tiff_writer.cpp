@@ -2,6 +2,7 @@
 
 #include "io/file_write.hpp"
 #include "io/load_checks.hpp"
+#include "io/mask_writer.hpp"
 #include "io/scan_reader.hpp"
 
 #include <OpenImageIO/imageio.h>
@@ -37,12 +38,7 @@ std::string number(double v) {
 
 void writeTiffStack(const std::filesystem::path& path, const Geometry& geometry,
                     std::span<const std::uint8_t> mask) {
-    checkGeometry(path, geometry);
-    if (geometry.voxelCount() == 0 || mask.size() != geometry.voxelCount()) {
-        throw WriteError(path, "mask has " + std::to_string(mask.size()) + " voxels but the grid " +
-                                   dimsText(geometry.dims) + " has " +
-                                   std::to_string(geometry.voxelCount()));
-    }
+    checkMaskSize(path, geometry, mask);
     const glm::ivec3 dims = geometry.dims;
     // The spacing in centimetres: TIFF's resolution is pixels per unit, and ImageJ reads the
     // description's slice spacing in the same unit as the resolution's.
