@@ -8,6 +8,8 @@
 #include "kiosk/input_hub.hpp"
 #include "kiosk/iteration_budget.hpp"
 #include "kiosk/key_bindings.hpp"
+#include "kiosk/kiosk_script_sink.hpp"
+#include "kiosk/kiosk_startup.hpp"
 #include "kiosk/mask_dice.hpp"
 #include "kiosk/screen_compositor.hpp"
 #include "kiosk/script_player.hpp"
@@ -17,19 +19,13 @@
 #include "kiosk/settings_from_config.hpp"
 #include "kiosk/view_painter.hpp"
 #include "platform/display_choice.hpp"
-#include "platform/egl/offscreen_display.hpp"
 #include "platform/input/recording.hpp"
-#include "platform/kms/kms_display.hpp"
-#include "platform/window/window_display.hpp"
 #include "ui/layout.hpp"
 #include "ui/screen_rotation.hpp"
 #include "ui/touch_ui.hpp"
 #include "workflow/workflow.hpp"
 
-#include <atomic>
 #include <chrono>
-#include <csignal>
-#include <cstdlib>
 #include <optional>
 #include <ostream>
 #include <thread>
@@ -43,101 +39,8 @@ using Clock = std::chrono::steady_clock;
 
 constexpr const char* kLogPrefix = "steerseg kiosk: ";
 
-std::atomic<bool> g_stop{false};
-
-extern "C" void onStopSignal(int /*signal*/) {
-    g_stop = true;
-}
-
-// SIGTERM (systemd stopping the unit) and SIGINT end the loop between frames, so the audit log
-// and the display are closed properly; the previous handlers come back on exit.
-class StopSignals {
-  public:
-    StopSignals() {
-        g_stop = false;
-        term_ = std::signal(SIGTERM, onStopSignal);
-        int_ = std::signal(SIGINT, onStopSignal);
-    }
-    ~StopSignals() {
-        std::signal(SIGTERM, term_);
-        std::signal(SIGINT, int_);
-    }
-    StopSignals(const StopSignals&) = delete;
-    StopSignals& operator=(const StopSignals&) = delete;
-
-  private:
-    void (*term_)(int) = SIG_DFL;
-    void (*int_)(int) = SIG_DFL;
-};
-
 double secondsSince(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
-}
-
-config::LoadedConfig readConfig(const KioskOptions& options, std::ostream& err) {
-    const config::BindingCheck check = [](std::string_view action) {
-        return workflow::bindingAction(action, 1.0).has_value();
-    };
-    config::LoadedConfig loaded =
-        config::loadConfig(config::kioskConfigSources(options.config), check);
-    for (const config::ConfigProblem& p : loaded.problems) {
-        err << "steerseg kiosk: config: " << config::describe(p) << '\n';
-    }
-    return loaded;
-}
-
-std::unique_ptr<platform::Display> openDisplay(const std::string& platform,
-                                               const platform::DisplayOptions& options) {
-    if (platform == "offscreen") {
-        return platform::openOffscreenDisplay(options);
-    }
-    if (platform == "window") {
-        return platform::openWindowDisplay(options);
-    }
-    if (platform == "kms") {
-        return platform::openKmsDisplay(options);
-    }
-    throw platform::DisplayError("unknown display platform '" + platform +
-                                 "' (kms, window, offscreen)");
-}
-
-// What a script does to the running kiosk: actions and input events join the frame's queue,
-// frames are written once drawn.
-class KioskScriptSink final : public ScriptSink {
-  public:
-    std::vector<workflow::Action> actions;
-    std::vector<platform::InputEvent> events;
-    std::vector<std::filesystem::path> frames;
-    std::vector<platform::input::RawRecord> raws;
-    std::vector<std::filesystem::path> recordings;
-
-    void action(const workflow::Action& a) override { actions.push_back(a); }
-    void raw(const platform::input::RawRecord& r) override { raws.push_back(r); }
-    void replay(const std::filesystem::path& path) override { recordings.push_back(path); }
-    void input(const platform::InputEvent& e) override { events.push_back(e); }
-    void saveFrame(const std::filesystem::path& path) override { frames.push_back(path); }
-    void answerResume(bool resume) override { resumeAnswer = resume; }
-    std::optional<bool> resumeAnswer;
-    double maskDice(const std::filesystem::path& mask, const std::filesystem::path& reference,
-                    int label) override {
-        return kiosk::maskDice(mask, reference, label);
-    }
-};
-
-std::unique_ptr<ScriptPlayer> makePlayer(const KioskOptions& options) {
-    if (!options.script) {
-        return nullptr;
-    }
-    Variables vars;
-    if (!options.scan.empty()) {
-        vars["SCAN"] = options.scan;
-    }
-    if (const char* data = std::getenv("STEERSEG_DATA_DIR"); data != nullptr && *data != '\0') {
-        vars["DATA"] = data;
-    }
-    vars["OUT"] =
-        options.frames ? options.frames->string() : std::filesystem::current_path().string();
-    return std::make_unique<ScriptPlayer>(loadScript(*options.script), std::move(vars));
 }
 
 // The running kiosk: everything one frame touches, and the frame as named passes.
@@ -268,7 +171,7 @@ class Kiosk {
         }
         for (const platform::InputEvent& raw : events_) {
             if (raw.kind == platform::InputEvent::Kind::Quit) {
-                g_stop = true;
+                StopSignals::requestStop();
                 break;
             }
             if (const auto bound = keys_.actionFor(raw)) {
@@ -409,7 +312,7 @@ class Kiosk {
     }
 
     std::optional<std::string> stopReason() {
-        if (g_stop) {
+        if (StopSignals::stopRequested()) {
             return "signal or quit";
         }
         if (flow_.quitRequested()) {

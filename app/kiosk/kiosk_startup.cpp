@@ -1,0 +1,87 @@
+#include "kiosk/kiosk_startup.hpp"
+
+#include "platform/egl/offscreen_display.hpp"
+#include "platform/kms/kms_display.hpp"
+#include "platform/window/window_display.hpp"
+#include "workflow/action.hpp"
+
+#include <atomic>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+
+namespace steerseg::kiosk {
+
+namespace {
+
+std::atomic<bool> g_stop{false};
+
+extern "C" void onStopSignal(int /*signal*/) {
+    g_stop = true;
+}
+
+} // namespace
+
+StopSignals::StopSignals() {
+    g_stop = false;
+    term_ = std::signal(SIGTERM, onStopSignal);
+    int_ = std::signal(SIGINT, onStopSignal);
+}
+
+StopSignals::~StopSignals() {
+    std::signal(SIGTERM, term_);
+    std::signal(SIGINT, int_);
+}
+
+bool StopSignals::stopRequested() {
+    return g_stop;
+}
+
+void StopSignals::requestStop() {
+    g_stop = true;
+}
+
+config::LoadedConfig readConfig(const KioskOptions& options, std::ostream& err) {
+    const config::BindingCheck check = [](std::string_view action) {
+        return workflow::bindingAction(action, 1.0).has_value();
+    };
+    config::LoadedConfig loaded =
+        config::loadConfig(config::kioskConfigSources(options.config), check);
+    for (const config::ConfigProblem& p : loaded.problems) {
+        err << "steerseg kiosk: config: " << config::describe(p) << '\n';
+    }
+    return loaded;
+}
+
+std::unique_ptr<platform::Display> openDisplay(const std::string& platform,
+                                               const platform::DisplayOptions& options) {
+    if (platform == "offscreen") {
+        return platform::openOffscreenDisplay(options);
+    }
+    if (platform == "window") {
+        return platform::openWindowDisplay(options);
+    }
+    if (platform == "kms") {
+        return platform::openKmsDisplay(options);
+    }
+    throw platform::DisplayError("unknown display platform '" + platform +
+                                 "' (kms, window, offscreen)");
+}
+
+std::unique_ptr<ScriptPlayer> makePlayer(const KioskOptions& options) {
+    if (!options.script) {
+        return nullptr;
+    }
+    Variables vars;
+    if (!options.scan.empty()) {
+        vars["SCAN"] = options.scan;
+    }
+    if (const char* data = std::getenv("STEERSEG_DATA_DIR"); data != nullptr && *data != '\0') {
+        vars["DATA"] = data;
+    }
+    vars["OUT"] =
+        options.frames ? options.frames->string() : std::filesystem::current_path().string();
+    return std::make_unique<ScriptPlayer>(loadScript(*options.script), std::move(vars));
+}
+
+} // namespace steerseg::kiosk

@@ -1,0 +1,44 @@
+#pragma once
+
+// What `steerseg kiosk` sets up before its first frame: the stop signals, the layered config
+// (its problems logged), the display of the chosen platform, the script's player.
+#include "config/config_loader.hpp"
+#include "kiosk/kiosk_options.hpp"
+#include "kiosk/script_player.hpp"
+#include "platform/display.hpp"
+
+#include <memory>
+#include <ostream>
+#include <string>
+
+namespace steerseg::kiosk {
+
+// SIGTERM (systemd stopping the unit) and SIGINT end the loop between frames, so the audit log
+// and the display are closed properly; the previous handlers come back on exit.
+class StopSignals {
+  public:
+    StopSignals();
+    ~StopSignals();
+    StopSignals(const StopSignals&) = delete;
+    StopSignals& operator=(const StopSignals&) = delete;
+
+    // A signal came (or requestStop was called) since construction.
+    [[nodiscard]] static bool stopRequested();
+    static void requestStop();
+
+  private:
+    void (*term_)(int) = nullptr;
+    void (*int_)(int) = nullptr;
+};
+
+// The layered config (defaults < /etc < --config); each problem logged as one line on `err`.
+config::LoadedConfig readConfig(const KioskOptions& options, std::ostream& err);
+
+// "offscreen", "window" or "kms"; DisplayError naming the failing step.
+std::unique_ptr<platform::Display> openDisplay(const std::string& platform,
+                                               const platform::DisplayOptions& options);
+
+// The --script's player with SCAN, DATA and OUT set; nullptr without a script.
+std::unique_ptr<ScriptPlayer> makePlayer(const KioskOptions& options);
+
+} // namespace steerseg::kiosk
