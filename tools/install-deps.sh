@@ -11,7 +11,7 @@ packages=(
   xvfb xauth xdotool
   glslang-tools libglm-dev
   libopenimageio-dev libgdcm-dev libnifti2-dev zlib1g-dev
-  libgpiod-dev libhidapi-dev libinput-dev libudev-dev libevdev-dev libsystemd-dev
+  libgpiod-dev libhidapi-dev libinput-dev libudev-dev libsystemd-dev
   libdcmtk-dev dicom3tools python3-pydicom
   dpkg-dev fakeroot lintian systemd
   libtomlplusplus-dev nlohmann-json3-dev libimgui-dev fonts-dejavu-core

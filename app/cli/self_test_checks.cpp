@@ -1,5 +1,7 @@
 #include "cli/self_test_checks.hpp"
 
+#include "platform/input/node_access.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -98,13 +100,8 @@ std::vector<ControllerNode> findControllerNodes(const std::filesystem::path& dev
     std::vector<ControllerNode> nodes;
     const auto scan = [&](const std::filesystem::path& dir, const std::string& prefix,
                           const std::string& kind) {
-        std::error_code ec;
-        for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
-            const std::string file = entry.path().filename().string();
-            if (file.rfind(prefix, 0) != 0) {
-                continue;
-            }
-            nodes.push_back({kind, entry.path(), ::access(entry.path().c_str(), R_OK | W_OK) == 0});
+        for (const std::string& node : platform::input::listNodes(dir.string(), prefix)) {
+            nodes.push_back({kind, node, ::access(node.c_str(), R_OK | W_OK) == 0});
         }
     };
     scan(devRoot, "hidraw", "hidraw");
