@@ -1,13 +1,17 @@
 // Frame time of the renderer's 3D and slice views at display sizes, on the built-in sample or
 // a scan file, with the level set drawn straight from the solver's brick pool: once with the
 // surface still, once with one solver iteration between frames (the interactive case).
-//   render_frame_bench [--scan PATH] [--scale F] [--frames N] [--size WxH] [--save DIR] [--docs
-//   DIR]
+//   render_frame_bench [--scan PATH] [--scale F] [--frames N] [--size WxH] [--view NAME]
+//   [--compare] [--save DIR] [--docs DIR]
 // The sample's lesion is segmented from a seed at its centre (T and eps around its intensity);
 // another scan gets a sphere at its centre. --scale resamples the scan (2 makes the sample
 // 256x256x192) to time scan sizes no file at hand has. --size replaces the two display sizes
 // (1280x800, 1920x1080) by one; --save writes the last frame of each case as PNG; --docs only
-// writes the README's four 256x256 pictures and exits.
+// writes the README's four 256x256 pictures and exits. --view runs one case only (3d,
+// 3d+surface, ...). --compare times each 3D case also with the gradient differenced per sample
+// (the ray caster before the gradient texture) in the same run, and prints the ratio.
+// Besides wall time: the process's CPU time per frame (llvmpipe draws on every core, so on a
+// shared machine CPU time drifts less than wall time) and rays (pixels) per second.
 #include "bench/bench_scan.hpp"
 #include "core/sample_phantom.hpp"
 #include "platform/egl/offscreen_context.hpp"
@@ -18,7 +22,9 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -34,10 +40,22 @@ struct Case {
     bool stepping; // one solver iteration before each frame
 };
 
+double processCpuMs() {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
+}
+
+struct FrameTime {
+    double wallMs = 0.0;
+    double cpuMs = 0.0;
+};
+
 // One frame: optionally a solver iteration, then the view of the current level set.
-double frameMs(render::Renderer& renderer, const render::ViewParams& p,
-               solver::LevelSetSolver* solver, bool stepping) {
+FrameTime frameTime(render::Renderer& renderer, const render::ViewParams& p,
+                    solver::LevelSetSolver* solver, bool stepping) {
     const auto start = std::chrono::steady_clock::now();
+    const double cpuStart = processCpuMs();
     if (solver != nullptr && stepping) {
         solver->step(1);
     }
@@ -45,8 +63,25 @@ double frameMs(render::Renderer& renderer, const render::ViewParams& p,
         solver != nullptr ? solver->poolView() : solver::BrickPoolView{};
     renderer.render(p, solver != nullptr ? &view : nullptr);
     glFinish();
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
+    return {
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(),
+        processCpuMs() - cpuStart};
+}
+
+// Median wall and CPU time of `frames` frames after one warm-up (program build, first dispatch).
+FrameTime medianFrame(render::Renderer& renderer, const render::ViewParams& p,
+                      solver::LevelSetSolver* solver, bool stepping, int frames) {
+    frameTime(renderer, p, solver, stepping);
+    std::vector<double> wall;
+    std::vector<double> cpu;
+    for (int f = 0; f < frames; ++f) {
+        const FrameTime t = frameTime(renderer, p, solver, stepping);
+        wall.push_back(t.wallMs);
+        cpu.push_back(t.cpuMs);
+    }
+    std::sort(wall.begin(), wall.end());
+    std::sort(cpu.begin(), cpu.end());
+    return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
 }
 
 // The README's pictures: 3D with the surface, the clip plane with its yellow line, an axial
@@ -85,9 +120,22 @@ int main(int argc, char** argv) {
     std::vector<glm::ivec2> sizes = {{1280, 800}, {1920, 1080}};
     std::filesystem::path saveDir;
     std::filesystem::path docsDir;
-    for (int n = 1; n + 1 < argc; n += 2) {
+    std::string only;
+    bool compare = false;
+    for (int n = 1; n < argc; n += 2) {
         const std::string key = argv[n];
-        if (key == "--scan") {
+        if (key == "--compare") {
+            compare = true;
+            --n;
+            continue;
+        }
+        if (n + 1 >= argc) {
+            std::fprintf(stderr, "render_frame_bench: %s needs a value\n", key.c_str());
+            return 2;
+        }
+        if (key == "--view") {
+            only = argv[n + 1];
+        } else if (key == "--scan") {
             scanPath = argv[n + 1];
         } else if (key == "--scale") {
             scale = std::atof(argv[n + 1]);
@@ -108,7 +156,7 @@ int main(int argc, char** argv) {
             docsDir = argv[n + 1];
         } else {
             std::fprintf(stderr, "usage: render_frame_bench [--scan PATH] [--scale F] [--frames N] "
-                                 "[--size WxH] [--save DIR] "
+                                 "[--size WxH] [--view NAME] [--compare] [--save DIR] "
                                  "[--docs DIR]\n");
             return 2;
         }
@@ -125,6 +173,11 @@ int main(int argc, char** argv) {
                     g.dims.x, g.dims.y, g.dims.z);
         solver::LevelSetSolver solver(volume);
         render::Renderer renderer(volume, solver.scan());
+        std::unique_ptr<render::Renderer> differencing;
+        if (compare) {
+            differencing = std::make_unique<render::Renderer>(volume, solver.scan(), 0);
+        }
+        std::printf("gradient texture: %s\n", renderer.precomputedGradient() ? "yes" : "no");
         glm::dvec3 centre = 0.5 * glm::dvec3(g.dims - 1);
         if (scanPath == builtin) {
             centre = glm::dvec3(kPhantomLesion.i, kPhantomLesion.j, kPhantomLesion.k) *
@@ -162,9 +215,13 @@ int main(int argc, char** argv) {
             {"axial+solver", render::ViewKind::Axial, true, false, true},
         };
         std::setvbuf(stdout, nullptr, _IOLBF, 0); // progress shows while slow cases run
-        std::printf("%-18s %-10s %10s %10s %8s\n", "view", "size", "min ms", "median ms", "fps");
+        std::printf("%-18s %-10s %10s %10s %8s %8s%s\n", "view", "size", "median ms", "cpu ms",
+                    "fps", "Mrays/s", compare ? "   before cpu ms  ratio" : "");
         for (const glm::ivec2& size : sizes) {
             for (const Case& c : cases) {
+                if (!only.empty() && only != c.name) {
+                    continue;
+                }
                 render::ViewParams p = renderer.defaultParams(c.kind, size);
                 p.slice = static_cast<int>(centre.z);
                 p.camera.orbit(20.0, 15.0);
@@ -172,15 +229,15 @@ int main(int argc, char** argv) {
                     p.clip = {true, {0.0, -1.0, 0.0}, -centre.y};
                 }
                 solver::LevelSetSolver* s = c.surface ? &solver : nullptr;
-                frameMs(renderer, p, s, c.stepping); // warm-up: program build, first dispatch
-                std::vector<double> times;
-                for (int f = 0; f < frames; ++f) {
-                    times.push_back(frameMs(renderer, p, s, c.stepping));
+                const FrameTime t = medianFrame(renderer, p, s, c.stepping, frames);
+                const double rays = static_cast<double>(size.x) * size.y;
+                std::printf("%-18s %4dx%-5d %10.1f %10.1f %8.2f %8.2f", c.name, size.x, size.y,
+                            t.wallMs, t.cpuMs, 1000.0 / t.wallMs, rays / (t.wallMs * 1e3));
+                if (differencing && c.kind == render::ViewKind::Volume3d) {
+                    const FrameTime b = medianFrame(*differencing, p, s, c.stepping, frames);
+                    std::printf(" %16.1f %6.2f", b.cpuMs, b.cpuMs / t.cpuMs);
                 }
-                std::sort(times.begin(), times.end());
-                const double median = times[times.size() / 2];
-                std::printf("%-18s %4dx%-5d %10.1f %10.1f %8.1f\n", c.name, size.x, size.y,
-                            times.front(), median, 1000.0 / median);
+                std::printf("\n");
                 if (!saveDir.empty()) {
                     std::filesystem::create_directories(saveDir);
                     bench::saveImage(

@@ -25,18 +25,18 @@ gpu::Buffer makeEmptyBuffer() {
 
 } // namespace
 
-Renderer::Renderer(const Volume& scan, const gpu::ScanTexture& texture)
+Renderer::Renderer(const Volume& scan, const gpu::ScanTexture& texture, std::size_t gradientBudget)
     : geometry_(scan.geometry()), stats_(scan.stats()), scan_(&texture), skip_(scan, texture),
-      empty_(makeEmptyBuffer()) {
+      gradient_(texture, gradientBudget), empty_(makeEmptyBuffer()) {
     if (texture.dims() != scan.dims()) {
         throw std::invalid_argument("renderer: the scan texture is not this scan's size");
     }
 }
 
-Renderer::Renderer(const Volume& scan)
+Renderer::Renderer(const Volume& scan, std::size_t gradientBudget)
     : geometry_(scan.geometry()), stats_(scan.stats()),
       ownScan_(std::make_unique<gpu::ScanTexture>(scan)), scan_(ownScan_.get()),
-      skip_(scan, *scan_), empty_(makeEmptyBuffer()) {}
+      skip_(scan, *scan_), gradient_(*scan_, gradientBudget), empty_(makeEmptyBuffer()) {}
 
 std::optional<SliceFrame> Renderer::render(const ViewParams& params,
                                            const solver::BrickPoolView* pool) {
@@ -48,7 +48,7 @@ std::optional<SliceFrame> Renderer::render(const ViewParams& params,
     last_ = static_cast<std::size_t>(params.target);
     RenderTarget& target = targets_[last_];
     target.ensureSize(params.size);
-    const RenderInputs in{*scan_, skip_, geometry_, pool, empty_.id(), target};
+    const RenderInputs in{*scan_, skip_, geometry_, pool, empty_.id(), target, gradient_.texture()};
     if (params.kind == ViewKind::Volume3d) {
         volume_.draw(in, params);
         return std::nullopt;

@@ -3,6 +3,7 @@
 #include "core/volume.hpp"
 #include "gpu/gl_handle.hpp"
 #include "gpu/scan_texture.hpp"
+#include "render/gradient_texture.hpp"
 #include "render/render_params.hpp"
 #include "render/render_target.hpp"
 #include "render/skip_grid.hpp"
@@ -23,10 +24,13 @@ namespace steerseg::render {
 class Renderer {
   public:
     // Borrows `texture`, the scan on the GPU (shared with the solver), which must outlive the
-    // renderer.
-    Renderer(const Volume& scan, const gpu::ScanTexture& texture);
+    // renderer. `gradientBudget`: bytes the 3D view's gradient texture may take (0: none, the
+    // ray caster differences the scan per sample).
+    Renderer(const Volume& scan, const gpu::ScanTexture& texture,
+             std::size_t gradientBudget = GradientTexture::kDefaultBudget);
     // Uploads and owns the scan's texture (a renderer with no solver beside it).
-    explicit Renderer(const Volume& scan);
+    explicit Renderer(const Volume& scan,
+                      std::size_t gradientBudget = GradientTexture::kDefaultBudget);
 
     // Draws one view into target(); `pool` is the level set (the solver's poolView(), valid
     // for this call) or null for the scan alone. Returns the slice frame for slice views.
@@ -38,6 +42,8 @@ class Renderer {
     [[nodiscard]] RgbaImage readback() const { return target().readback(); }
     [[nodiscard]] const Geometry& geometry() const { return geometry_; }
     [[nodiscard]] const gpu::ScanTexture& scan() const { return *scan_; }
+    // Whether the 3D view reads a precomputed gradient (false: a scan over its budget).
+    [[nodiscard]] bool precomputedGradient() const { return gradient_.available(); }
 
     // Default parameters for this scan: MR-style presets, anterior camera, middle slice.
     [[nodiscard]] ViewParams defaultParams(ViewKind kind, const glm::ivec2& size) const;
@@ -48,6 +54,7 @@ class Renderer {
     std::unique_ptr<gpu::ScanTexture> ownScan_;
     const gpu::ScanTexture* scan_;
     SkipGrid skip_;
+    GradientTexture gradient_;
     std::array<RenderTarget, kRenderTargets> targets_;
     std::size_t last_ = 0;
     gpu::Buffer empty_;

@@ -4,17 +4,23 @@
 #include "gpu/gl_state_guard.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace steerseg::render {
 
 namespace {
 
-// Fills `out` with the min/max of every block of block layer bz. `at(i, j, k)` gives a value;
-// only slices 8 bz - 1 .. 8 bz + 8 are asked for.
+// Fills `out` with the ranges of every block of block layer bz (kSkipRangeChannels floats a
+// block). `at(i, j, k)` gives a value; only slices 8 bz - 2 .. 8 bz + 9 are asked for (the
+// apron and the gradient's neighbours).
 template <typename At>
-void layerMinMax(const glm::ivec3& dims, const glm::ivec3& grid, int bz, const At& at,
+void layerRanges(const glm::ivec3& dims, const glm::ivec3& grid, int bz, const At& at,
                  std::vector<float>& out) {
+    const auto clamped = [&](int i, int j, int k) {
+        return at(std::clamp(i, 0, dims.x - 1), std::clamp(j, 0, dims.y - 1),
+                  std::clamp(k, 0, dims.z - 1));
+    };
     for (int by = 0; by < grid.y; ++by) {
         for (int bx = 0; bx < grid.x; ++bx) {
             const glm::ivec3 lo = glm::max(glm::ivec3(bx, by, bz) * kSkipBlock - 1, 0);
@@ -22,12 +28,19 @@ void layerMinMax(const glm::ivec3& dims, const glm::ivec3& grid, int bz, const A
                 glm::min(glm::ivec3(bx, by, bz) * kSkipBlock + kSkipBlock + 1, dims);
             float mn = std::numeric_limits<float>::max();
             float mx = std::numeric_limits<float>::lowest();
+            float gradient2 = 0.0F;
             for (int k = lo.z; k < hi.z; ++k) {
                 for (int j = lo.y; j < hi.y; ++j) {
                     for (int i = lo.x; i < hi.x; ++i) {
                         const float v = at(i, j, k);
                         mn = std::min(mn, v);
                         mx = std::max(mx, v);
+                        // The ray caster's gradient (render/gradient.comp): central differences
+                        // with the edge clamped.
+                        const float gx = clamped(i + 1, j, k) - clamped(i - 1, j, k);
+                        const float gy = clamped(i, j + 1, k) - clamped(i, j - 1, k);
+                        const float gz = clamped(i, j, k + 1) - clamped(i, j, k - 1);
+                        gradient2 = std::max(gradient2, gx * gx + gy * gy + gz * gz);
                     }
                 }
             }
@@ -36,20 +49,23 @@ void layerMinMax(const glm::ivec3& dims, const glm::ivec3& grid, int bz, const A
                 static_cast<std::size_t>(grid.x) *
                     (static_cast<std::size_t>(by) +
                      static_cast<std::size_t>(grid.y) * static_cast<std::size_t>(bz));
-            out[2 * cell] = mn;
-            out[2 * cell + 1] = mx;
+            float* range = &out[kSkipRangeChannels * cell];
+            range[0] = mn;
+            range[1] = mx;
+            range[2] = 0.0F;
+            range[3] = 0.5F * std::sqrt(gradient2);
         }
     }
 }
 
 } // namespace
 
-std::vector<float> blockMinMax(const std::vector<float>& values, const glm::ivec3& dims) {
+std::vector<float> blockRanges(const std::vector<float>& values, const glm::ivec3& dims) {
     const glm::ivec3 grid = (dims + kSkipBlock - 1) / kSkipBlock;
-    std::vector<float> out(static_cast<std::size_t>(grid.x) * grid.y * grid.z * 2);
+    std::vector<float> out(static_cast<std::size_t>(grid.x) * grid.y * grid.z * kSkipRangeChannels);
     const auto at = [&](int i, int j, int k) { return values[linearIndex(dims, i, j, k)]; };
     for (int bz = 0; bz < grid.z; ++bz) {
-        layerMinMax(dims, grid, bz, at, out);
+        layerRanges(dims, grid, bz, at, out);
     }
     return out;
 }
@@ -58,18 +74,19 @@ SkipGrid::SkipGrid(const Volume& volume, const gpu::ScanTexture& scan)
     : dims_((volume.dims() + kSkipBlock - 1) / kSkipBlock) {
     const glm::ivec3 d = volume.dims();
     const std::size_t slice = static_cast<std::size_t>(d.x) * static_cast<std::size_t>(d.y);
-    std::vector<float> out(static_cast<std::size_t>(dims_.x) * dims_.y * dims_.z * 2);
+    std::vector<float> out(static_cast<std::size_t>(dims_.x) * dims_.y * dims_.z *
+                           kSkipRangeChannels);
     std::vector<float> slab;
     for (int bz = 0; bz < dims_.z; ++bz) {
-        const int k0 = std::max(bz * kSkipBlock - 1, 0);
-        const int k1 = std::min(bz * kSkipBlock + kSkipBlock + 1, d.z);
+        const int k0 = std::max(bz * kSkipBlock - 2, 0);
+        const int k1 = std::min(bz * kSkipBlock + kSkipBlock + 2, d.z);
         slab.resize(slice * static_cast<std::size_t>(k1 - k0));
         volume.realValues(slice * static_cast<std::size_t>(k0), slab);
         for (float& v : slab) {
             v = static_cast<float>(scan.normalise(static_cast<double>(v)));
         }
         const auto at = [&](int i, int j, int k) { return slab[linearIndex(d, i, j, k - k0)]; };
-        layerMinMax(d, dims_, bz, at, out);
+        layerRanges(d, dims_, bz, at, out);
     }
     gpu::GlStateGuard guard;
     glActiveTexture(GL_TEXTURE0);
@@ -77,8 +94,8 @@ SkipGrid::SkipGrid(const Volume& volume, const gpu::ScanTexture& scan)
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     texture_ = gpu::createTexture();
     glBindTexture(GL_TEXTURE_3D, texture_.id());
-    glTexStorage3D(GL_TEXTURE_3D, 1, GL_RG16F, dims_.x, dims_.y, dims_.z);
-    glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, dims_.x, dims_.y, dims_.z, GL_RG, GL_FLOAT,
+    glTexStorage3D(GL_TEXTURE_3D, 1, GL_RGBA16F, dims_.x, dims_.y, dims_.z);
+    glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, dims_.x, dims_.y, dims_.z, GL_RGBA, GL_FLOAT,
                     out.data());
     glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);

@@ -11,9 +11,14 @@ namespace steerseg::render {
 
 inline constexpr int kSkipBlock = 8; // voxels per side of an empty-space-skipping block
 
+inline constexpr int kSkipRangeChannels = 4; // min, max intensity, unused, max |gradient|
+
 // The ray caster's empty-space-skipping grid: per block of kSkipBlock voxels, the min and max
-// normalised intensity (RG16F), including a one-voxel apron since trilinear samples reach into
-// neighbours. Built a layer of blocks at a time, so the host holds kSkipBlock + 2 slices.
+// normalised intensity and the largest gradient magnitude (normalised intensity per voxel, as
+// render/gradient.comp computes it) (RGBA16F), including a one-voxel apron since trilinear
+// samples reach into neighbours. With the gradient, a block of homogeneous tissue under a
+// gradient-gated transfer function is skipped although its intensities are visible at edges.
+// Built a layer of blocks at a time, so the host holds kSkipBlock + 4 slices.
 class SkipGrid {
   public:
     SkipGrid(const Volume& volume, const gpu::ScanTexture& scan);
@@ -25,8 +30,9 @@ class SkipGrid {
     gpu::Texture texture_;
 };
 
-// Per-block min/max of `values` (dims, i fastest) over blocks of kSkipBlock voxels grown by
-// one voxel on each side; interleaved (min, max), block x fastest. Exposed for tests.
-std::vector<float> blockMinMax(const std::vector<float>& values, const glm::ivec3& dims);
+// Per-block ranges of `values` (dims, i fastest) over blocks of kSkipBlock voxels grown by one
+// voxel on each side: kSkipRangeChannels floats a block (min, max, 0, max |gradient|), block x
+// fastest. Exposed for tests.
+std::vector<float> blockRanges(const std::vector<float>& values, const glm::ivec3& dims);
 
 } // namespace steerseg::render

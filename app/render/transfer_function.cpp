@@ -134,18 +134,25 @@ std::vector<std::uint8_t> bakeTransferLut(const TransferFunction& tf, double ran
     return lut;
 }
 
-std::vector<std::uint8_t> occupiedBins(const std::vector<std::uint8_t>& lut) {
-    std::vector<std::uint8_t> used(kTfIntensityBins, 0);
-    for (int g = 0; g < kTfGradientBins; ++g) {
-        for (int b = 0; b < kTfIntensityBins; ++b) {
-            if (lut[4 * (static_cast<std::size_t>(g) * kTfIntensityBins +
-                         static_cast<std::size_t>(b)) +
-                    3] != 0) {
-                used[static_cast<std::size_t>(b)] = 1;
-            }
+std::vector<float> occupancyTable(const std::vector<std::uint8_t>& lut) {
+    constexpr std::size_t width = kTfIntensityBins + 1;
+    std::vector<float> table(width * (kTfGradientBins + 1), 0.0F);
+    for (std::size_t g = 0; g < kTfGradientBins; ++g) {
+        float row = 0.0F; // occupied texels of gradient bin g below intensity bin b
+        for (std::size_t b = 0; b < kTfIntensityBins; ++b) {
+            row += lut[4 * (g * kTfIntensityBins + b) + 3] != 0 ? 1.0F : 0.0F;
+            table[(g + 1) * width + b + 1] = table[g * width + b + 1] + row;
         }
     }
-    return used;
+    return table;
+}
+
+bool occupiedIn(const std::vector<float>& table, int lo, int hi, int gHi) {
+    // The same two lookups as blockOccupied() in shaders/render/raycast.comp.
+    const std::size_t row = static_cast<std::size_t>(gHi + 1) * (kTfIntensityBins + 1);
+    return table[row + static_cast<std::size_t>(hi) + 1] -
+               table[row + static_cast<std::size_t>(lo)] >
+           0.5F;
 }
 
 } // namespace steerseg::render

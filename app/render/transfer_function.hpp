@@ -43,7 +43,11 @@ inline constexpr int kTfGradientBins = 32;
 std::vector<std::uint8_t> bakeTransferLut(const TransferFunction& tf, double rangeMin,
                                           double rangeMax);
 
-// Per intensity bin: 1 where any gradient bin has non-zero opacity (empty-space skipping).
-std::vector<std::uint8_t> occupiedBins(const std::vector<std::uint8_t>& lut);
+// Empty-space skipping: a summed-area table of the lut's texels with non-zero opacity,
+// (kTfIntensityBins + 1) x (kTfGradientBins + 1) counts, intensity fastest: entry (b, g) counts
+// the occupied texels of intensity bin < b and gradient bin < g. Whether any texel of intensity
+// bins lo..hi and gradient bins 0..gHi is occupied is then two lookups (occupiedIn).
+std::vector<float> occupancyTable(const std::vector<std::uint8_t>& lut);
+bool occupiedIn(const std::vector<float>& table, int lo, int hi, int gHi);
 
 } // namespace steerseg::render

@@ -11,8 +11,10 @@ GLuint PoolProgram::get(const solver::BrickPoolView* pool) {
     const int brick = pool != nullptr ? pool->brickSize : 8;
     const float far = pool != nullptr ? pool->phiFar : 4.0F;
     if (!program_ || brick != brickSize_ || far != phiFar_) {
-        program_ = gpu::buildComputeProgram(
-            shader_, {{"BRICK_SIZE", std::to_string(brick)}, {"PHI_FAR", std::to_string(far)}});
+        gpu::Defines defines = defines_;
+        defines.emplace_back("BRICK_SIZE", std::to_string(brick));
+        defines.emplace_back("PHI_FAR", std::to_string(far));
+        program_ = gpu::buildComputeProgram(shader_, defines);
         brickSize_ = brick;
         phiFar_ = far;
     }

@@ -22,16 +22,20 @@ struct RenderInputs {
     const solver::BrickPoolView* pool;
     GLuint emptyBuffer; // bound in place of the pool when there is none
     const RenderTarget& target;
+    GLuint gradient; // GradientTexture, 0 when the scan has none
 };
 
-// A compute program built for the pool's BRICK_SIZE / PHI_FAR, rebuilt when they change.
+// A compute program built for the pool's BRICK_SIZE / PHI_FAR, rebuilt when they change;
+// `defines` choose a variant of the shader.
 class PoolProgram {
   public:
-    explicit PoolProgram(std::string shader) : shader_(std::move(shader)) {}
+    explicit PoolProgram(std::string shader, gpu::Defines defines = {})
+        : shader_(std::move(shader)), defines_(std::move(defines)) {}
     GLuint get(const solver::BrickPoolView* pool);
 
   private:
     std::string shader_;
+    gpu::Defines defines_;
     gpu::Program program_;
     int brickSize_ = 0;
     float phiFar_ = 0.0F;

@@ -40,7 +40,7 @@ VolumeView::VolumeView() {
     occupancy_ = gpu::createTexture();
     glActiveTexture(GL_TEXTURE0 + VIEW_OCCUPANCY_UNIT);
     glBindTexture(GL_TEXTURE_2D, occupancy_.id());
-    glTexStorage2D(GL_TEXTURE_2D, 1, GL_R32F, kTfIntensityBins + 1, 1);
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_R32F, kTfIntensityBins + 1, kTfGradientBins + 1);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     gpu::checkGl("creating the transfer function textures");
@@ -51,14 +51,7 @@ void VolumeView::bakeTransfer(const gpu::ScanTexture& scan, const TransferFuncti
         return;
     }
     const std::vector<std::uint8_t> lut = bakeTransferLut(tf, scan.rangeMin(), scan.rangeMax());
-    const std::vector<std::uint8_t> used = occupiedBins(lut);
-    // Prefix counts: any occupied bin in [lo, hi] <=> prefix[hi + 1] - prefix[lo] > 0.
-    std::vector<float> prefix(kTfIntensityBins + 1, 0.0F);
-    for (int b = 0; b < kTfIntensityBins; ++b) {
-        prefix[static_cast<std::size_t>(b) + 1] =
-            prefix[static_cast<std::size_t>(b)] +
-            static_cast<float>(used[static_cast<std::size_t>(b)]);
-    }
+    const std::vector<float> occupancy = occupancyTable(lut);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
     glActiveTexture(GL_TEXTURE0 + VIEW_TF_LUT_UNIT);
@@ -67,8 +60,8 @@ void VolumeView::bakeTransfer(const gpu::ScanTexture& scan, const TransferFuncti
                     GL_UNSIGNED_BYTE, lut.data());
     glActiveTexture(GL_TEXTURE0 + VIEW_OCCUPANCY_UNIT);
     glBindTexture(GL_TEXTURE_2D, occupancy_.id());
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kTfIntensityBins + 1, 1, GL_RED, GL_FLOAT,
-                    prefix.data());
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kTfIntensityBins + 1, kTfGradientBins + 1, GL_RED,
+                    GL_FLOAT, occupancy.data());
     gpu::checkGl("uploading the transfer function");
     baked_ = tf;
     haveBaked_ = true;
@@ -76,9 +69,14 @@ void VolumeView::bakeTransfer(const gpu::ScanTexture& scan, const TransferFuncti
 
 void VolumeView::draw(const RenderInputs& in, const ViewParams& params) {
     bakeTransfer(in.scan, params.transfer);
-    const GLuint program = program_.get(in.pool);
+    const GLuint program =
+        programs_[in.pool != nullptr ? 1 : 0][in.gradient != 0 ? 1 : 0].get(in.pool);
     glUseProgram(program);
     bindCommon(program, in, params);
+    if (in.gradient != 0) {
+        glActiveTexture(GL_TEXTURE0 + VIEW_GRADIENT_UNIT);
+        glBindTexture(GL_TEXTURE_3D, in.gradient);
+    }
     glActiveTexture(GL_TEXTURE0 + VIEW_TF_LUT_UNIT);
     glBindTexture(GL_TEXTURE_2D, lut_.id());
     glActiveTexture(GL_TEXTURE0 + VIEW_SKIP_GRID_UNIT);

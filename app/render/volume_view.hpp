@@ -13,7 +13,12 @@ class VolumeView {
   private:
     void bakeTransfer(const gpu::ScanTexture& scan, const TransferFunction& tf);
 
-    PoolProgram program_{"render/raycast.comp"};
+    // The ray caster's variants: [with a level set][with the gradient texture].
+    PoolProgram programs_[2][2] = {
+        {PoolProgram{"render/raycast.comp", {{"HAS_SURFACE", "0"}, {"GRADIENT_TEXTURE", "0"}}},
+         PoolProgram{"render/raycast.comp", {{"HAS_SURFACE", "0"}, {"GRADIENT_TEXTURE", "1"}}}},
+        {PoolProgram{"render/raycast.comp", {{"HAS_SURFACE", "1"}, {"GRADIENT_TEXTURE", "0"}}},
+         PoolProgram{"render/raycast.comp", {{"HAS_SURFACE", "1"}, {"GRADIENT_TEXTURE", "1"}}}}};
     gpu::Texture lut_;
     gpu::Texture occupancy_;
     TransferFunction baked_;

@@ -24,8 +24,10 @@
 #define VIEW_TF_LUT_UNIT 1    // render/raycast.comp: transfer function
 #define VIEW_SKIP_GRID_UNIT 2 // render/raycast.comp: block min/max for empty-space skipping
 #define VIEW_OCCUPANCY_UNIT 3 // render/raycast.comp: occupied transfer-function bins
+#define VIEW_GRADIENT_UNIT 4  // render/raycast.comp: the scan's gradient (render/gradient.comp)
 
 // Image units.
 #define VIEW_OUT_IMAGE_UNIT 0 // render/view_common.glsl: the rendered picture
+#define VIEW_GRADIENT_IMAGE_UNIT 0 // render/gradient.comp (runs alone): the gradient it fills
 
 #endif

@@ -9,8 +9,22 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "render/view_common.glsl"
 
 layout(binding = VIEW_TF_LUT_UNIT) uniform sampler2D tfLut;      // RGBA8, intensity x gradient bins
-layout(binding = VIEW_SKIP_GRID_UNIT) uniform sampler3D skipGrid;   // RG16F block min/max
-layout(binding = VIEW_OCCUPANCY_UNIT) uniform sampler2D occupancy;  // R32F, 257 prefix counts of occupied bins
+layout(binding = VIEW_SKIP_GRID_UNIT) uniform sampler3D skipGrid;   // RGBA16F block min, max, -, max |grad|
+layout(binding = VIEW_OCCUPANCY_UNIT) uniform sampler2D occupancy;  // R32F 257x33 summed-area table of occupied bins
+
+// 1: the scan's gradient comes from render/gradient.comp's texture (one fetch per sample);
+// 0: differenced here from six fetches (a scan too large for the gradient texture).
+#ifndef GRADIENT_TEXTURE
+#define GRADIENT_TEXTURE 1
+#endif
+// 0: no level set bound. A separate program rather than a test of hasSurface in the loop: a
+// software rasteriser pays for the surface's code in every sample otherwise (5x on llvmpipe).
+#ifndef HAS_SURFACE
+#define HAS_SURFACE 1
+#endif
+#if GRADIENT_TEXTURE
+layout(binding = VIEW_GRADIENT_UNIT) uniform sampler3D gradientTex; // RGBA16F, normalised / voxel
+#endif
 
 uniform vec3 eyeIndex;       // camera eye in voxel-index space
 uniform mat3 worldToIndex;   // inverse of direction * diag(spacing)
@@ -29,6 +43,7 @@ uniform float lineWidth;     // |phi| below this on the plane is drawn yellow (v
 const vec3 SURFACE_COLOUR = vec3(0.95, 0.62, 0.25);
 const float SURFACE_TRANSLUCENT_ALPHA = 0.35;
 const int TF_BINS = 256;
+const int TF_GRADIENT_BINS = 32;
 
 vec2 boxHits(vec3 o, vec3 d, vec3 lo, vec3 hi) {
     vec3 inv = 1.0 / d;
@@ -39,32 +54,171 @@ vec2 boxHits(vec3 o, vec3 d, vec3 lo, vec3 hi) {
     return vec2(max(max(tmin.x, tmin.y), tmin.z), min(min(tmax.x, tmax.y), tmax.z));
 }
 
-bool blockOccupied(vec3 p, out vec3 blockLo) {
-    ivec3 grid = textureSize(skipGrid, 0);
-    ivec3 b = clamp(ivec3(floor((p + 0.5) / 8.0)), ivec3(0), grid - 1);
-    blockLo = vec3(b * 8) - 0.5;
-    vec2 mm = texelFetch(skipGrid, b, 0).rg;
-    int lo = clamp(int(floor(mm.x * float(TF_BINS - 1))), 0, TF_BINS - 1);
-    int hi = clamp(int(ceil(mm.y * float(TF_BINS - 1))), 0, TF_BINS - 1);
-    return texelFetch(occupancy, ivec2(hi + 1, 0), 0).r - texelFetch(occupancy, ivec2(lo, 0), 0).r > 0.5;
+// Any occupied transfer-function texel in intensity bins lo..hi, gradient bins 0..gHi
+// (occupancyTable() in app/render/transfer_function.cpp).
+bool occupiedIn(int lo, int hi, int gHi) {
+    return texelFetch(occupancy, ivec2(hi + 1, gHi + 1), 0).r -
+               texelFetch(occupancy, ivec2(lo, gHi + 1), 0).r > 0.5;
+}
+
+// Whether block b may hold a visible sample.
+bool blockOccupied(ivec3 b) {
+    vec4 range = texelFetch(skipGrid, b, 0);
+    int lo = clamp(int(floor(range.r * float(TF_BINS - 1))), 0, TF_BINS - 1);
+    int hi = clamp(int(ceil(range.g * float(TF_BINS - 1))), 0, TF_BINS - 1);
+    // No sample in the block has a steeper gradient than its voxels' largest (a trilinear
+    // blend of gradients is no longer than the longest); + 1 bin for the half-float rounding.
+    int gHi = clamp(int(ceil(range.a / gradientScale * float(TF_GRADIENT_BINS - 1))) + 1, 0,
+                    TF_GRADIENT_BINS - 1);
+    return occupiedIn(lo, hi, gHi);
 }
 
 vec3 shade(vec3 base, vec3 gradIndex, vec3 rayDir) {
     vec3 n = transpose(worldToIndex) * gradIndex; // index-space gradient to world
-    float len = length(n);
-    if (len < 1e-6) {
-        return base;
-    }
-    n /= len;
-    float diffuse = abs(dot(n, rayDir));                  // headlight, two-sided
-    float specular = pow(diffuse, 24.0);
-    return base * (0.25 + 0.75 * diffuse) + vec3(0.25 * specular);
+    float len2 = dot(n, n);
+    // Branch-free: a software rasteriser runs both sides of a branch for the whole SIMD group.
+    float lit = len2 < 1e-12 ? 0.0 : 1.0;
+    float diffuse = abs(dot(n, rayDir)) * inversesqrt(max(len2, 1e-12)); // headlight, two-sided
+    // diffuse^24 by squaring: pow() is exp2(log2()) in software rasterisers.
+    float d2 = diffuse * diffuse;
+    float d8 = d2 * d2 * d2 * d2;
+    float specular = d8 * d8 * d8;
+    return mix(base, base * (0.25 + 0.75 * diffuse) + vec3(0.25 * specular), lit);
 }
 
 void composite(inout vec4 acc, vec3 colour, float alpha) {
     acc.rgb += (1.0 - acc.a) * alpha * colour;
     acc.a += (1.0 - acc.a) * alpha;
 }
+
+// The scan's sample at p composited into acc, its opacity scaled by `weight` (the region of
+// interest); true once the ray is opaque.
+bool addScanSample(inout vec4 acc, vec3 p, float weight, vec3 rayWorld) {
+    float v = scanAt(p);
+#if !GRADIENT_TEXTURE
+    // The value alone may already rule the sample out (no six fetches for the gradient). With
+    // the gradient texture the lookup below costs no more, and an unoccupied value bin gives
+    // zero opacity there too.
+    float bin = v * float(TF_BINS - 1);
+    if (!occupiedIn(clamp(int(floor(bin)), 0, TF_BINS - 1), clamp(int(ceil(bin)), 0, TF_BINS - 1),
+                    TF_GRADIENT_BINS - 1)) {
+        return false;
+    }
+    vec3 g = 0.5 * vec3(scanAt(p + vec3(1, 0, 0)) - scanAt(p - vec3(1, 0, 0)),
+                        scanAt(p + vec3(0, 1, 0)) - scanAt(p - vec3(0, 1, 0)),
+                        scanAt(p + vec3(0, 0, 1)) - scanAt(p - vec3(0, 0, 1)));
+#else
+    vec3 g = texture(gradientTex, (p + 0.5) / vec3(volumeDims)).rgb;
+#endif
+    float gm = clamp(length(g) / gradientScale, 0.0, 1.0);
+    vec2 uv = (vec2(v, gm) * vec2(float(TF_BINS - 1), float(TF_GRADIENT_BINS - 1)) + 0.5) /
+              vec2(float(TF_BINS), float(TF_GRADIENT_BINS));
+    vec4 tf = texture(tfLut, uv);
+    float alpha = (1.0 - pow(1.0 - min(tf.a, 0.999), stepMm)) * weight;
+    if (alpha > 0.001) {
+        composite(acc, shade(tf.rgb, g, rayWorld), alpha);
+        return acc.a > 0.98;
+    }
+    return false;
+}
+
+ivec3 blockAt(vec3 p, ivec3 grid) {
+    return clamp(ivec3(floor((p + 0.5) / 8.0)), ivec3(0), grid - 1);
+}
+
+// The scan alone from t to tEnd (exclusive), skipping blocks with nothing visible.
+void marchScan(inout vec4 acc, vec3 origin, vec3 dir, vec3 rayWorld, float t, float tEnd) {
+    // A ray stays in a block for many samples: its skip-grid verdict is looked up once.
+    ivec3 grid = textureSize(skipGrid, 0);
+    ivec3 block = ivec3(-1);
+    bool blockUsed = false;
+    for (int guard = 0; guard < 16384 && t < tEnd; ++guard) {
+        vec3 p = origin + t * dir;
+        ivec3 b = blockAt(p, grid);
+        if (b != block) {
+            block = b;
+            blockUsed = blockOccupied(b);
+        }
+        if (blockUsed) {
+            if (addScanSample(acc, p, 1.0, rayWorld)) {
+                return;
+            }
+        } else {
+            // Nothing to see in this block: jump to where the ray leaves it, keeping samples on
+            // the same lattice.
+            vec3 blockLo = vec3(b * 8) - 0.5;
+            vec2 bh = boxHits(origin, dir, blockLo, blockLo + 8.0);
+            t += max(0.0, ceil((bh.y - t) / stepMm) - 1.0) * stepMm;
+        }
+        t += stepMm;
+    }
+}
+
+#if HAS_SURFACE
+// t of the first sample on the lattice from t whose phi has the other sign than the first
+// sample's, or -1 when the ray leaves first.
+float firstCrossing(vec3 origin, vec3 dir, float t, float tEnd) {
+    float first = phiFast(origin + t * dir);
+    for (int guard = 0; guard < 16384 && t < tEnd; ++guard) {
+        if ((phiFast(origin + t * dir) <= 0.0) != (first <= 0.0)) {
+            return t;
+        }
+        t += stepMm;
+    }
+    return -1.0;
+}
+
+// The shaded surface where phi crosses zero between the samples at t - stepMm and t.
+vec3 surfaceColour(vec3 origin, vec3 dir, vec3 rayWorld, float t) {
+    float a = t - stepMm;
+    float b = t;
+    float fa = phiTrilinear(origin + a * dir);
+    for (int i = 0; i < 6; ++i) {
+        float m = 0.5 * (a + b);
+        float fm = phiTrilinear(origin + m * dir);
+        if ((fm <= 0.0) == (fa <= 0.0)) {
+            a = m;
+            fa = fm;
+        } else {
+            b = m;
+        }
+    }
+    vec3 hit = origin + 0.5 * (a + b) * dir;
+    return shade(SURFACE_COLOUR, phiGradient(hit), rayWorld);
+}
+
+// The scan and the surface together: a translucent surface, or the surface as region of
+// interest.
+void marchWithSurface(inout vec4 acc, vec3 origin, vec3 dir, vec3 rayWorld, float t, float tEnd) {
+    ivec3 grid = textureSize(skipGrid, 0);
+    ivec3 block = ivec3(-1);
+    bool blockUsed = false;
+    float prevPhi = phiFast(origin + t * dir);
+    for (int guard = 0; guard < 16384 && t < tEnd; ++guard) {
+        vec3 p = origin + t * dir;
+        float phi = phiFast(p);
+        if (surfaceMode != 0 && (phi <= 0.0) != (prevPhi <= 0.0)) {
+            composite(acc, surfaceColour(origin, dir, rayWorld, t),
+                      surfaceMode == 1 ? 1.0 : SURFACE_TRANSLUCENT_ALPHA);
+            if (acc.a > 0.98) {
+                return;
+            }
+        }
+        prevPhi = phi;
+        ivec3 b = blockAt(p, grid);
+        if (b != block) {
+            block = b;
+            blockUsed = blockOccupied(b);
+        }
+        // Outside the surface the scan is hidden (inside only) or dimmed.
+        float weight = phi > 0.0 ? (roiMode == 1 ? 0.0 : (roiMode == 2 ? dimFactor : 1.0)) : 1.0;
+        if (blockUsed && weight > 0.0 && addScanSample(acc, p, weight, rayWorld)) {
+            return;
+        }
+        t += stepMm;
+    }
+}
+#endif
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) + firstPixel;
@@ -112,74 +266,22 @@ void main() {
             // wood-grain aliasing into fine, deterministic noise.
             float jitter = fract(52.9829189 * fract(dot(vec2(pixel), vec2(0.06711056, 0.00583715))));
             float t = span.x + jitter * stepMm;
-            float prevPhi = hasSurface != 0 ? phiFast(origin + t * dir) : 1.0;
-            for (int guard = 0; guard < 16384 && t < span.y; ++guard) {
-                vec3 p = origin + t * dir;
-                float phi = hasSurface != 0 ? phiFast(p) : 1.0;
-                if (hasSurface != 0 && surfaceMode != 0 && (phi <= 0.0) != (prevPhi <= 0.0)) {
-                    // Refine the crossing between the previous sample and this one.
-                    float a = t - stepMm;
-                    float b = t;
-                    float fa = prevPhi;
-                    for (int i = 0; i < 6; ++i) {
-                        float m = 0.5 * (a + b);
-                        float fm = phiTrilinear(origin + m * dir);
-                        if ((fm <= 0.0) == (fa <= 0.0)) {
-                            a = m;
-                            fa = fm;
-                        } else {
-                            b = m;
-                        }
-                    }
-                    vec3 hit = origin + 0.5 * (a + b) * dir;
-                    vec3 c = shade(SURFACE_COLOUR, phiGradient(hit), rayWorld);
-                    composite(acc, c, surfaceMode == 1 ? 1.0 : SURFACE_TRANSLUCENT_ALPHA);
-                    if (acc.a > 0.98) {
-                        break;
-                    }
+#if HAS_SURFACE
+            if (surfaceMode == 1 && roiMode == 0) {
+                // An opaque surface and no region of interest: find the surface first, then
+                // march the scan up to it without the level set's code in the loop.
+                float tHit = firstCrossing(origin, dir, t, span.y);
+                // Half a step short of the hit: the samples before it, however t was rounded.
+                marchScan(acc, origin, dir, rayWorld, t, tHit < 0.0 ? span.y : tHit - 0.5 * stepMm);
+                if (tHit >= 0.0 && acc.a <= 0.98) {
+                    composite(acc, surfaceColour(origin, dir, rayWorld, tHit), 1.0);
                 }
-                prevPhi = phi;
-                vec3 blockLo;
-                bool blockUsed = blockOccupied(p, blockLo);
-                // ROI inside: nothing of the scan outside the surface.
-                bool occupied = blockUsed && !(hasSurface != 0 && roiMode == 1 && phi > 0.0);
-                float v = occupied ? scanAt(p) : 0.0;
-                if (occupied) {
-                    // The value alone may already rule the sample out (no gradient needed).
-                    float bin = v * float(TF_BINS - 1);
-                    int lo = clamp(int(floor(bin)), 0, TF_BINS - 1);
-                    int hi = clamp(int(ceil(bin)), 0, TF_BINS - 1);
-                    occupied = texelFetch(occupancy, ivec2(hi + 1, 0), 0).r -
-                                   texelFetch(occupancy, ivec2(lo, 0), 0).r > 0.5;
-                }
-                if (occupied) {
-                    vec3 g = 0.5 * vec3(scanAt(p + vec3(1, 0, 0)) - scanAt(p - vec3(1, 0, 0)),
-                                        scanAt(p + vec3(0, 1, 0)) - scanAt(p - vec3(0, 1, 0)),
-                                        scanAt(p + vec3(0, 0, 1)) - scanAt(p - vec3(0, 0, 1)));
-                    float gm = clamp(length(g) / gradientScale, 0.0, 1.0);
-                    vec2 uv = (vec2(v, gm) * vec2(float(TF_BINS - 1), 31.0) + 0.5) /
-                              vec2(float(TF_BINS), 32.0);
-                    vec4 tf = texture(tfLut, uv);
-                    float alpha = 1.0 - pow(1.0 - min(tf.a, 0.999), stepMm);
-                    if (hasSurface != 0 && phi > 0.0) {
-                        alpha *= roiMode == 1 ? 0.0 : (roiMode == 2 ? dimFactor : 1.0);
-                    }
-                    if (alpha > 0.001) {
-                        composite(acc, shade(tf.rgb, g, rayWorld), alpha);
-                        if (acc.a > 0.98) {
-                            break;
-                        }
-                    }
-                } else if (!blockUsed && hasSurface == 0) {
-                    // Nothing to see in this block: jump to where the ray leaves it, keeping
-                    // samples on the same lattice.
-                    vec2 bh = boxHits(origin, dir, blockLo, blockLo + 8.0);
-                    float skip = max(0.0, ceil((bh.y - t) / stepMm) - 1.0);
-                    t += skip * stepMm;
-                    prevPhi = 1.0;
-                }
-                t += stepMm;
+            } else {
+                marchWithSurface(acc, origin, dir, rayWorld, t, span.y);
             }
+#else
+            marchScan(acc, origin, dir, rayWorld, t, span.y);
+#endif
         }
     }
     imageStore(outImage, pixel, vec4(acc.rgb, 1.0));

@@ -29,6 +29,24 @@ Geometry cube(int n) {
 
 class RenderApi : public GpuTest {};
 
+struct PictureDifference {
+    int worst = 0;     // largest channel difference
+    double mean = 0.0; // mean channel difference
+};
+
+PictureDifference difference(const RgbaImage& a, const RgbaImage& b) {
+    PictureDifference d;
+    long total = 0;
+    for (std::size_t i = 0; i < a.pixels.size() && i < b.pixels.size(); ++i) {
+        const int c = std::abs(int(a.pixels[i]) - int(b.pixels[i]));
+        d.worst = std::max(d.worst, c);
+        total += c;
+    }
+    d.mean =
+        static_cast<double>(total) / static_cast<double>(std::max<std::size_t>(a.pixels.size(), 1));
+    return d;
+}
+
 // The kiosk draws a slow 3D view over several frames in tiles, into a picture of its own that
 // the slice views drawn in between leave alone: the tiles must add up to the picture drawn at
 // once.
@@ -127,15 +145,50 @@ TEST_F(RenderApi, DisplaysTheSharedScanTextureLikeTheHalfFloatCopy) {
         const RgbaImage a = own.readback();
         const RgbaImage b = shared.readback();
         ASSERT_EQ(a.pixels.size(), b.pixels.size());
-        int worst = 0;
-        long total = 0;
-        for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-            const int d = std::abs(int(a.pixels[i]) - int(b.pixels[i]));
-            worst = std::max(worst, d);
-            total += d;
-        }
-        EXPECT_LE(worst, 8) << static_cast<int>(kind);
-        EXPECT_LT(static_cast<double>(total) / static_cast<double>(a.pixels.size()), 0.5);
+        const PictureDifference d = difference(a, b);
+        EXPECT_LE(d.worst, 8) << static_cast<int>(kind);
+        EXPECT_LT(d.mean, 0.5);
+    }
+}
+
+// The gradient texture is a speed-up, not another picture: the ray caster that differences the
+// scan per sample (a scan over the texture's budget) draws the same views, with and without a
+// surface, opaque (found before the scan's march) and translucent, and as region of interest.
+TEST_F(RenderApi, GradientTextureDrawsWhatPerSampleDifferencesDraw) {
+    // Noise makes the gradient matter everywhere, not only at the scene's edges.
+    const Volume head = makeHeadScene();
+    const Volume scan = makeScan(head.geometry(), [&head](glm::ivec3 v) {
+        const std::uint32_t h = (static_cast<std::uint32_t>(v.x) * 73856093U) ^
+                                (static_cast<std::uint32_t>(v.y) * 19349663U) ^
+                                (static_cast<std::uint32_t>(v.z) * 83492791U);
+        return static_cast<float>(head.valueAt(v.x, v.y, v.z)) + static_cast<float>(h % 61U) -
+               30.0F;
+    });
+    render::Renderer fast(scan);
+    render::Renderer differencing(scan, 0);
+    ASSERT_TRUE(fast.precomputedGradient());
+    ASSERT_FALSE(differencing.precomputedGradient());
+    GpuPool pool(spherePool(scan.dims(), kHeadLesionCentre, kHeadLesionRadius));
+    const BrickPoolView view = pool.view();
+    struct Case {
+        const BrickPoolView* pool;
+        render::SurfaceMode surface;
+        render::RoiMode roi;
+    };
+    for (const Case c : {Case{nullptr, render::SurfaceMode::Opaque, render::RoiMode::Off},
+                         Case{&view, render::SurfaceMode::Opaque, render::RoiMode::Off},
+                         Case{&view, render::SurfaceMode::Translucent, render::RoiMode::Off},
+                         Case{&view, render::SurfaceMode::Hidden, render::RoiMode::Dim}}) {
+        render::ViewParams params = fast.defaultParams(ViewKind::Volume3d, {64, 64});
+        params.camera.orbit(30.0, 20.0);
+        params.surface = c.surface;
+        params.roi = c.roi;
+        fast.render(params, c.pool);
+        differencing.render(params, c.pool);
+        const PictureDifference d = difference(fast.readback(), differencing.readback());
+        EXPECT_LE(d.worst, 24) << "surface " << static_cast<int>(c.surface);
+        EXPECT_LT(d.mean, 0.5) << "surface " << static_cast<int>(c.surface) << " roi "
+                               << static_cast<int>(c.roi);
     }
 }
 
@@ -154,11 +207,18 @@ TEST_F(RenderApi, SkipGridCoversEachBlockWithItsApron) {
     const glm::ivec3 dims{20, 9, 9};
     std::vector<float> values(static_cast<std::size_t>(dims.x * dims.y * dims.z), 0.0F);
     values[8] = 1.0F; // voxel (8, 0, 0): first voxel of block 1, apron of block 0
-    const std::vector<float> mm = render::blockMinMax(values, dims);
-    ASSERT_EQ(mm.size(), 3u * 2u * 2u * 2u);
+    const std::vector<float> mm = render::blockRanges(values, dims);
+    ASSERT_EQ(mm.size(), 3u * 2u * 2u * 4u);
     EXPECT_EQ(mm[1], 1.0F); // block (0,0,0) max: apron reaches voxel 8
-    EXPECT_EQ(mm[3], 1.0F); // block (1,0,0)
-    EXPECT_EQ(mm[5], 0.0F); // block (2,0,0) starts at 16, apron from 15
+    EXPECT_EQ(mm[5], 1.0F); // block (1,0,0)
+    EXPECT_EQ(mm[9], 0.0F); // block (2,0,0) starts at 16, apron from 15
+    // |gradient|: at voxel (8,0,0) itself the clamped edge gives (0, -1, -1) / 2.
+    EXPECT_FLOAT_EQ(mm[3], 0.5F * std::sqrt(2.0F));
+    EXPECT_EQ(mm[11], 0.0F); // block 2: its apron voxel 15 has no bright neighbour
+    // Block (0,1,0) (voxels j 8..) starts at j 7 with its apron: voxel (8,0,0) is two rows
+    // away from it, so neither its intensity nor a gradient reaches it.
+    EXPECT_EQ(mm[3 * 4 + 1], 0.0F);
+    EXPECT_EQ(mm[3 * 4 + 3], 0.0F);
 }
 
 TEST(RenderTransfer, BakesTentTimesGradientRampAndMarksOccupiedBins) {
@@ -174,10 +234,14 @@ TEST(RenderTransfer, BakesTentTimesGradientRampAndMarksOccupiedBins) {
     EXPECT_EQ(alpha(50, 0), 0);                                    // below the gradient threshold
     EXPECT_EQ(alpha(100, 31), 0);                                  // outside the tent
     EXPECT_EQ(lut[4 * (31 * render::kTfIntensityBins + 50)], 255); // red
-    const std::vector<std::uint8_t> used = render::occupiedBins(lut);
-    EXPECT_EQ(used[50], 1);
-    EXPECT_EQ(used[30], 0);
-    EXPECT_EQ(used[70], 0);
+    const std::vector<float> table = render::occupancyTable(lut);
+    const int top = render::kTfGradientBins - 1;
+    EXPECT_TRUE(render::occupiedIn(table, 50, 50, top));
+    EXPECT_TRUE(render::occupiedIn(table, 0, 255, top));
+    EXPECT_FALSE(render::occupiedIn(table, 30, 30, top));
+    EXPECT_FALSE(render::occupiedIn(table, 70, 70, top));
+    EXPECT_FALSE(render::occupiedIn(table, 0, 255, 10)); // homogeneous: below the ramp
+    EXPECT_TRUE(render::occupiedIn(table, 45, 55, 20));
 }
 
 TEST(RenderProbe, MeanAndStddevInASphere) {
