@@ -35,9 +35,9 @@ constexpr Command kCommands[] = {
      "view to an image",
      steerseg::cli::runRender},
     {"segment",
-     "segment --input PATH --seed i,j,k,r [--seed ...] [--erase i,j,k,r ...] --T v --eps v --alpha "
-     "a "
-     "(--iterations N | --time t | --converge [--max-iterations N]) [--dense] --output OUT "
+     "segment --input PATH --seed i,j,k,r [--seed ...] [--erase i,j,k,r ...] [--barrier i,j,k,r "
+     "...] --T v --eps v --alpha a (--iterations N | --time t | --converge [--max-iterations N]) "
+     "[--stop-on-leak] [--dense] --output OUT "
      "[--format F] [--report REPORT.json]: level-set segmentation on the GPU; OUT as for export "
      "(surfaces from the level set itself)",
      steerseg::cli::runSegment},

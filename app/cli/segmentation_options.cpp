@@ -66,12 +66,12 @@ void checkInside(const std::vector<solver::Sphere>& spheres, const glm::ivec3& d
 } // namespace
 
 std::vector<std::string> segmentationValueOptions() {
-    return {"seed", "erase",          "T",         "eps", "alpha", "iterations",
-            "time", "max-iterations", "brick-size"};
+    return {"seed",       "erase", "barrier",        "T",         "eps", "alpha",
+            "iterations", "time",  "max-iterations", "brick-size"};
 }
 
 std::vector<std::string> segmentationFlagOptions() {
-    return {"converge", "dense"};
+    return {"converge", "dense", "stop-on-leak"};
 }
 
 bool wantsSegmentation(const Args& args) {
@@ -95,11 +95,18 @@ SegmentationRequest parseSegmentation(const Args& args) {
     for (const std::string& s : args.values("erase")) {
         r.erases.push_back(parseSphere(s, "--erase"));
     }
+    for (const std::string& s : args.values("barrier")) {
+        r.barriers.push_back(parseSphere(s, "--barrier"));
+    }
+    if (r.barriers.size() > solver::kMaxBarriers) {
+        throw UsageError("at most " + std::to_string(solver::kMaxBarriers) + " --barrier spheres");
+    }
     if (r.seeds.empty()) {
         throw UsageError("give at least one --seed i,j,k,r");
     }
     r.mode = parseRunMode(args);
     r.options.dense = args.flag("dense");
+    r.options.stopOnLeak = args.flag("stop-on-leak");
     const long long brick = args.integer("brick-size").value_or(0);
     if (brick != 0 && brick != 4 && brick != 8 && brick != 16) {
         throw UsageError("--brick-size must be 4, 8 or 16");
@@ -111,6 +118,7 @@ SegmentationRequest parseSegmentation(const Args& args) {
 void checkSpheresInside(const SegmentationRequest& request, const glm::ivec3& dims) {
     checkInside(request.seeds, dims, "--seed");
     checkInside(request.erases, dims, "--erase");
+    checkInside(request.barriers, dims, "--barrier");
 }
 
 void applySegmentation(session::Session& session, const SegmentationRequest& request) {
@@ -119,6 +127,9 @@ void applySegmentation(session::Session& session, const SegmentationRequest& req
     }
     for (const solver::Sphere& s : request.erases) {
         session.erase(s);
+    }
+    for (const solver::Sphere& s : request.barriers) {
+        session.addBarrier(s);
     }
     session.setParams(request.params);
 }

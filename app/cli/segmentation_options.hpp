@@ -15,6 +15,7 @@ struct SegmentationRequest {
     solver::LevelSetParams params;
     std::vector<solver::Sphere> seeds;
     std::vector<solver::Sphere> erases;
+    std::vector<solver::Sphere> barriers;
     session::RunMode mode; // exactly one of --iterations, --time, --converge
     solver::SolverOptions options;
 };
@@ -32,7 +33,7 @@ SegmentationRequest parseSegmentation(const Args& args);
 // Seeds and erasers must lie in the scan; throws UsageError naming the option.
 void checkSpheresInside(const SegmentationRequest& request, const glm::ivec3& dims);
 
-// Applies the request's seeds, erasers and parameters to the session.
+// Applies the request's seeds, erasers, barriers and parameters to the session.
 void applySegmentation(session::Session& session, const SegmentationRequest& request);
 
 } // namespace steerseg::cli

@@ -29,6 +29,18 @@ std::string segmentReport(const Session& session, const RunOutcome& run,
     j["iterations_per_second"] = seconds > 0.0 ? stats.iterations / seconds : 0.0;
     j["converged"] = session.converged();
     j["stop_reason"] = solver::stopReasonName(run.result.stopReason);
+    if (const auto& leak = run.result.leak) {
+        // Where the surface broke through: voxel indices and the scanner's millimetres.
+        const glm::vec3 c = leak->centre();
+        const glm::dvec3 mm = geometry.indexToWorld(glm::dvec3(c));
+        j["leak"] = {
+            {"iteration", leak->iteration},
+            {"centre_ijk", {c.x, c.y, c.z}},
+            {"box_ijk", {leak->lo.x, leak->lo.y, leak->lo.z, leak->hi.x, leak->hi.y, leak->hi.z}},
+            {"centre_lps_mm", {mm.x, mm.y, mm.z}}};
+    }
+    j["barriers"] = stats.barriers;
+    j["growth_rate"] = stats.growthRate;
     j["inside_voxels"] = inside;
     const double voxelMl = geometry.spacing.x * geometry.spacing.y * geometry.spacing.z / 1000.0;
     j["volume_ml"] = static_cast<double>(inside) * voxelMl;

@@ -65,6 +65,14 @@ void Session::erase(const solver::Sphere& sphere) {
     gpu_->solver.removeSphere(sphere);
 }
 
+void Session::addBarrier(const solver::Sphere& sphere) {
+    gpu_->solver.addBarrier(sphere);
+}
+
+void Session::clearBarriers() {
+    gpu_->solver.clearBarriers();
+}
+
 void Session::startFromMask(const std::filesystem::path& path) {
     const io::LoadedScan mask = io::readScan(path);
     if (mask.volume.dims() != scan_.dims()) {

@@ -57,6 +57,10 @@ class Session {
     // refused (std::invalid_argument naming the problem).
     void addSeed(const solver::Sphere& sphere);
     void erase(const solver::Sphere& sphere);
+    // A barrier: an erase that stays a no-go region for the rest of the run (a leak's neck).
+    // At most solver::kMaxBarriers; std::invalid_argument beyond.
+    void addBarrier(const solver::Sphere& sphere);
+    void clearBarriers();
     // A mask on the scan's grid (inside where > 0.5) replaces the level set. Throws
     // std::runtime_error naming the file when it cannot be read or its grid differs.
     void startFromMask(const std::filesystem::path& mask);

@@ -22,8 +22,22 @@ struct ControlBlock {
     std::uint32_t lastChange;
     float lastChangeTime;
     std::uint32_t peakActive;
+    std::uint32_t gained;
+    std::uint32_t lost;
+    std::uint32_t gainLo[3];
+    std::uint32_t gainHi[3];
 };
-static_assert(sizeof(ControlBlock) == 21 * 4);
+static_assert(sizeof(ControlBlock) == 29 * 4);
+
+// Clears the leak watch's counters (update_phi.comp accumulates them between checks).
+inline void clearGrowth(ControlBlock& ctrl) {
+    ctrl.gained = 0;
+    ctrl.lost = 0;
+    for (int a = 0; a < 3; ++a) {
+        ctrl.gainLo[a] = 0xFFFFFFFFU;
+        ctrl.gainHi[a] = 0;
+    }
+}
 
 // Byte offsets of the indirect dispatch arguments in the control block.
 inline constexpr std::ptrdiff_t kAllocArgs = 0;

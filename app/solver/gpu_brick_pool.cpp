@@ -88,7 +88,8 @@ GpuBrickPool::GpuBrickPool(const glm::ivec3& dims, int brickSize, std::size_t ma
     requests_ = makeBuffer(brickCount_ * 4);
     const std::vector<std::uint32_t> zeros(brickCount_, 0);
     wantEpoch_ = makeBuffer(brickCount_ * 4, zeros.data());
-    const ControlBlock ctrl{};
+    ControlBlock ctrl{};
+    clearGrowth(ctrl);
     control_ = makeBuffer(sizeof ctrl, &ctrl);
 }
 

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 namespace steerseg::solver {
 
@@ -102,9 +103,51 @@ void LevelSetSolver::noteChange() {
     lastUsed_ = pool_->usedSlots(ctrl);
     ctrl.lastChange = ctrl.iteration;
     ctrl.lastChangeTime = ctrl.time;
+    detail::clearGrowth(ctrl);
     pool_->writeControl(ctrl);
     known_ = ctrl;
     converged_ = false;
+    leakWatch_.reset();
+}
+
+void LevelSetSolver::addBarrier(const Sphere& sphere) {
+    validateSphere(sphere, dims_);
+    if (barriers_.size() >= kMaxBarriers) {
+        throw std::invalid_argument("at most " + std::to_string(kMaxBarriers) +
+                                    " barriers (clear them to place others)");
+    }
+    barriers_.push_back(sphere);
+    uploadBarriers();
+    // The surface already inside the barrier is cut away at once, as an erase would.
+    removeSphere(sphere);
+}
+
+void LevelSetSolver::clearBarriers() {
+    barriers_.clear();
+    uploadBarriers();
+    noteChange();
+}
+
+// Sets the barrier uniforms of the passes that evaluate the speed (barrier_speed.glsl).
+void LevelSetSolver::uploadBarriers() {
+    std::vector<float> packed;
+    for (const Sphere& b : barriers_) {
+        packed.insert(packed.end(), {b.centre.x, b.centre.y, b.centre.z, b.radius});
+    }
+    // alpha * hold = 1 + 3 (1 - alpha) outweighs the curvature term's pull (at most a few
+    // voxels^-1 on a voxel-scale bump), so the front recedes from a barrier. alpha = 0 has no
+    // data term for a barrier to act through.
+    const float alpha = haveParams_ ? params_.alpha : 1.0F;
+    const float hold = alpha > 0.0F ? (1.0F + 3.0F * (1.0F - alpha)) / alpha : 0.0F;
+    for (GLuint p : {programs_->measureSpeed.id(), programs_->updatePhi.id()}) {
+        glProgramUniform1i(p, glGetUniformLocation(p, "barrierCount"),
+                           static_cast<GLint>(barriers_.size()));
+        if (!barriers_.empty()) {
+            glProgramUniform4fv(p, glGetUniformLocation(p, "barriers"),
+                                static_cast<GLsizei>(barriers_.size()), packed.data());
+        }
+        glProgramUniform1f(p, glGetUniformLocation(p, "barrierHold"), hold);
+    }
 }
 
 } // namespace steerseg::solver

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <glm/glm.hpp>
 #include <string>
 
@@ -66,5 +67,8 @@ inline float sphereDistance(const Sphere& s, const glm::vec3& voxel) {
 }
 
 std::string describe(const LevelSetParams& params);
+
+// Barrier spheres one run may hold (uniforms of shaders/solver/barrier_speed.glsl).
+inline constexpr std::size_t kMaxBarriers = 16;
 
 } // namespace steerseg::solver

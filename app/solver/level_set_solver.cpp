@@ -48,6 +48,8 @@ const char* stopReasonName(StopReason reason) {
         return "time_reached";
     case StopReason::Converged:
         return "converged";
+    case StopReason::Leak:
+        return "leak";
     }
     return "unknown";
 }
@@ -94,6 +96,7 @@ LevelSetSolver::LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own,
                            grid.z);
     });
 
+    uploadBarriers();
     stats_.totalBricks = pool_->brickCount();
     stats_.densePhiBytes = voxels * sizeof(float);
     uploadPhi(std::vector<float>(voxels, kPhiFar));
@@ -112,6 +115,7 @@ void LevelSetSolver::setParams(const LevelSetParams& params) {
     }
     setUniform(programs_->chooseTimeStep.id(), "courant", rule.courant);
     setUniform(programs_->chooseTimeStep.id(), "fixedRate", rule.fixedRate);
+    uploadBarriers(); // their hold depends on alpha
     noteChange();
 }
 
@@ -211,6 +215,7 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
     }
     const std::uint32_t start = ctrl.iteration;
     int remaining = maxIterations;
+    std::optional<LeakSite> leak;
     while (remaining > 0) {
         const int chunk = std::min(remaining, options_.checkInterval);
         for (int n = 0; n < chunk; ++n) {
@@ -241,8 +246,9 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
             ctrl = pool_->readControl();
             continue;
         }
-        if ((untilConverged && converged_) || done < chunk) {
-            break; // converged, or the time limit stopped the steps
+        leak = watchGrowth(ctrl);
+        if ((untilConverged && converged_) || done < chunk || leak) {
+            break; // converged, the time limit stopped the steps, or a leak
         }
         if (managePool(ctrl)) {
             ctrl = pool_->readControl();
@@ -254,12 +260,37 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
     stats_.activeBricks = ctrl.activeCount;
     known_ = ctrl;
     StopReason reason = StopReason::IterationLimit;
-    if (untilConverged && converged_) {
+    if (leak) {
+        reason = StopReason::Leak;
+    } else if (untilConverged && converged_) {
         reason = StopReason::Converged;
     } else if (ctrl.time >= timeLimit) {
         reason = StopReason::TimeReached;
     }
-    return {static_cast<int>(ctrl.iteration - start), ctrl.time, converged_, reason};
+    return {static_cast<int>(ctrl.iteration - start), ctrl.time, converged_, reason, leak};
+}
+
+// The leak watch's check: this interval's growth from update_phi's counters, which are then
+// cleared on the GPU (`ctrl` is fresh and the GPU idle). A leak only when stopOnLeak asks.
+std::optional<LeakSite> LevelSetSolver::watchGrowth(ControlBlock& ctrl) {
+    GrowthSample sample;
+    sample.time = ctrl.time;
+    sample.iteration = static_cast<int>(ctrl.iteration);
+    sample.net = static_cast<std::int64_t>(ctrl.gained) - static_cast<std::int64_t>(ctrl.lost);
+    sample.anyGained = ctrl.gained > 0;
+    if (sample.anyGained) {
+        sample.gainLo =
+            glm::ivec3(static_cast<int>(ctrl.gainLo[0]), static_cast<int>(ctrl.gainLo[1]),
+                       static_cast<int>(ctrl.gainLo[2]));
+        sample.gainHi =
+            glm::ivec3(static_cast<int>(ctrl.gainHi[0]), static_cast<int>(ctrl.gainHi[1]),
+                       static_cast<int>(ctrl.gainHi[2]));
+    }
+    detail::clearGrowth(ctrl);
+    pool_->writeControl(ctrl);
+    std::optional<LeakSite> leak = leakWatch_.observe(sample);
+    stats_.growthRate = static_cast<float>(leakWatch_.lastRate());
+    return options_.stopOnLeak ? leak : std::nullopt;
 }
 
 // Keeps a margin of free slots for the band's advance until the next check, and gives memory
@@ -309,6 +340,7 @@ SolverStats LevelSetSolver::stats() const {
     s.capacity = pool_->capacity();
     s.levelSetBytes = pool_->levelSetBytes();
     s.bookkeepingBytes = pool_->bookkeepingBytes();
+    s.barriers = static_cast<int>(barriers_.size());
     return s;
 }
 

@@ -5,6 +5,7 @@
 #include "gpu/scan_texture.hpp"
 #include "solver/brick_pool_view.hpp"
 #include "solver/control_block.hpp"
+#include "solver/leak_watch.hpp"
 #include "solver/level_set_params.hpp"
 #include "solver/solver_types.hpp"
 
@@ -44,6 +45,12 @@ class LevelSetSolver {
     // Sphere edits (voxel indices, radius in voxels), between any two iterations.
     void addSphere(const Sphere& sphere);
     void removeSphere(const Sphere& sphere);
+    // Barriers: spheres the surface may not enter for the rest of the run (a leak's neck,
+    // shaders/solver/barrier_speed.glsl). Adding one also cuts the surface out of it. At most
+    // kMaxBarriers (std::invalid_argument beyond, or for a sphere validateSphere refuses).
+    void addBarrier(const Sphere& sphere);
+    void clearBarriers();
+    [[nodiscard]] const std::vector<Sphere>& barriers() const { return barriers_; }
     // Replace the level set.
     // `intensities`: the scan's real-unit values, i fastest (the solver keeps no host copy).
     void initFromThreshold(std::span<const float> intensities, float lo, float hi);
@@ -78,6 +85,8 @@ class LevelSetSolver {
     void editSphere(const Sphere& sphere, bool add);
     void uploadPhi(const std::vector<float>& phi);
     void noteChange();
+    void uploadBarriers();
+    std::optional<LeakSite> watchGrowth(detail::ControlBlock& ctrl);
     bool managePool(const detail::ControlBlock& ctrl);
     void dispatch(GLuint program, GLuint x, GLuint y = 1, GLuint z = 1);
     void dispatchIndirect(GLuint program, GLintptr offset);
@@ -98,6 +107,8 @@ class LevelSetSolver {
     std::uint32_t lastUsed_ = 0;                // used slots at the last pool check
     std::optional<detail::ControlBlock> known_; // the GPU's control block, when known
     bool converged_ = false;
+    std::vector<Sphere> barriers_;
+    LeakWatch leakWatch_;
 };
 
 } // namespace steerseg::solver

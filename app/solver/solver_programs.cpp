@@ -18,7 +18,8 @@ gpu::Defines definesFor(int brickSize, int localSize) {
     return {{"BRICK_SIZE", std::to_string(brickSize)},
             {"PHI_FAR", far},
             {"RESCALE_WEIGHT", rescale},
-            {"LOCAL_SIZE", std::to_string(localSize)}};
+            {"LOCAL_SIZE", std::to_string(localSize)},
+            {"MAX_BARRIERS", std::to_string(kMaxBarriers)}};
 }
 
 } // namespace

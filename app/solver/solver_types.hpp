@@ -4,6 +4,8 @@
 // layer and the workflow can hold them without a GPU.
 #include <cstddef>
 #include <cstdint>
+#include <glm/glm.hpp>
+#include <optional>
 
 namespace steerseg::solver {
 
@@ -20,6 +22,9 @@ struct SolverOptions {
     // strongly negative speed elsewhere takes tiny steps).
     int convergeIterations = 20;
     float convergeTime = 0.5F;
+    // Stop (StopReason::Leak) when the front's growth jumps after a slowdown: the surface broke
+    // through a narrow neck into tissue of the same intensity (LeakWatch).
+    bool stopOnLeak = false;
 };
 
 // Why a step call returned.
@@ -27,15 +32,26 @@ enum class StopReason {
     IterationLimit, // the call's iteration count (step) or maxIterations ran out first
     TimeReached,    // evolveUntil's time was reached (the last step cut to land on it)
     Converged,      // runUntilConverged: converged() holds
+    Leak,           // SolverOptions::stopOnLeak: the growth jumped after a slowdown
 };
-// "iteration_limit", "time_reached", "converged" (the segment report's stop_reason).
+// "iteration_limit", "time_reached", "converged", "leak" (the segment report's stop_reason).
 const char* stopReasonName(StopReason reason);
+
+// Where the front broke through: the box of the voxels that came inside while the growth
+// jumped (voxel indices, inclusive), and the iteration at which the jump was confirmed.
+struct LeakSite {
+    glm::ivec3 lo{0};
+    glm::ivec3 hi{0};
+    int iteration = 0;
+    [[nodiscard]] glm::vec3 centre() const { return 0.5F * glm::vec3(lo + hi); }
+};
 
 struct StepResult {
     int iterations = 0;       // performed by this call
     float evolvedTime = 0.0F; // total since the start
     bool converged = false;   // converged() after the call, whatever stopped it
     StopReason stopReason = StopReason::IterationLimit;
+    std::optional<LeakSite> leak; // set when the leak watch stopped the call
 };
 
 struct SolverStats {
@@ -52,6 +68,10 @@ struct SolverStats {
     int poolGrowths = 0;
     int poolShrinks = 0;
     int stalls = 0; // chunks that ran out of slots before a growth
+    // The front's net growth at the last check: voxels that came inside minus those that left,
+    // per unit of evolved time (the leak watch's signal).
+    float growthRate = 0.0F;
+    int barriers = 0; // barrier spheres in force
 };
 
 } // namespace steerseg::solver

@@ -4,6 +4,7 @@
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
 #include "solver/speed_threshold.glsl"
+#include "solver/barrier_speed.glsl"
 #include "solver/phi_stencil.glsl"
 #include "solver/phi_tile.glsl"
 layout(local_size_x = LOCAL_SIZE) in;
@@ -31,7 +32,7 @@ void main() {
             continue;
         }
         if (onFront(tileFaces(l))) {
-            localMax = max(localMax, abs(alpha * dataSpeed(g)));
+            localMax = max(localMax, abs(alpha * barrierSpeed(g, dataSpeed(g))));
         }
     }
     atomicMax(groupMax, floatBitsToUint(localMax));

@@ -43,6 +43,12 @@ layout(std430, binding = CONTROL_BINDING) coherent buffer Control {
     uint lastChange;   // iteration in which a voxel last changed side
     float lastChangeTime;
     uint peakActive;
+    // The leak watch's counters since the host last cleared them (every check): voxels that
+    // came inside and went outside, and the box of those that came inside (min > max: none).
+    uint gained;
+    uint lost;
+    uint gainLo[3];
+    uint gainHi[3];
 } ctrl;
 
 layout(std430, binding = SLOT_BRICK_BINDING) buffer SlotBrick { uint slotBrick[]; };

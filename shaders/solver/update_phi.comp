@@ -1,12 +1,14 @@
 #version 310 es
 // One group per active brick: one step of phi (phi_stencil.glsl) from the brick and a one-voxel
 // apron staged in shared memory; records the brick's new state and whether any voxel changed
-// side (convergence). phi is stored once: the interior is updated in place, the shell goes to
+// side (convergence), and counts the voxels that changed side with the box of those that came
+// inside (the leak watch: app/solver/leak_watch.hpp). phi is stored once: the interior is updated in place, the shell goes to
 // shellNext until commit_shells (solver/brick_shell.glsl).
 #define PHI_POOL_ACCESS
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
 #include "solver/speed_threshold.glsl"
+#include "solver/barrier_speed.glsl"
 #include "solver/phi_stencil.glsl"
 #include "solver/brick_state.glsl"
 #include "solver/phi_tile.glsl"
@@ -16,6 +18,10 @@ layout(local_size_x = LOCAL_SIZE) in;
 uniform float alpha;
 
 shared uint changedSide;
+shared uint gained;
+shared uint lost;
+shared uint gainLo[3];
+shared uint gainHi[3];
 
 // Every invocation reaches both barriers (GLSL ES 3.10): groups past the list only skip work.
 void main() {
@@ -29,6 +35,12 @@ void main() {
     beginBrickState();
     if (gl_LocalInvocationIndex == 0u) {
         changedSide = 0u;
+        gained = 0u;
+        lost = 0u;
+        for (int a = 0; a < 3; ++a) {
+            gainLo[a] = 0xFFFFFFFFu;
+            gainHi[a] = 0u;
+        }
     }
     barrier();
     float dt = ctrl.dt;
@@ -39,11 +51,20 @@ void main() {
         float out_ = s.c;
         if (all(lessThan(g, volumeDims))) {
             if (dt > 0.0 && inNarrowBand(s)) {
-                out_ = phiStep(s, dataSpeed(g), alpha, dt);
+                out_ = phiStep(s, barrierSpeed(g, dataSpeed(g)), alpha, dt);
             }
             noteVoxelState(l, out_);
             if ((out_ < 0.0) != (s.c < 0.0)) {
                 atomicOr(changedSide, 1u);
+                if (out_ < 0.0) {
+                    atomicAdd(gained, 1u);
+                    for (int a = 0; a < 3; ++a) {
+                        atomicMin(gainLo[a], uint(g[a]));
+                        atomicMax(gainHi[a], uint(g[a]));
+                    }
+                } else {
+                    atomicAdd(lost, 1u);
+                }
             }
         }
         if (onShell(l)) {
@@ -58,6 +79,12 @@ void main() {
         if (changedSide != 0u) {
             atomicMax(ctrl.lastChange, ctrl.iteration);
             ctrl.lastChangeTime = ctrl.time;
+            atomicAdd(ctrl.gained, gained);
+            atomicAdd(ctrl.lost, lost);
+            for (int a = 0; a < 3; ++a) {
+                atomicMin(ctrl.gainLo[a], gainLo[a]);
+                atomicMax(ctrl.gainHi[a], gainHi[a]);
+            }
         }
     }
 }
