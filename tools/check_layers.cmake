@@ -2,8 +2,8 @@
 # itself and the modules below it. Fails listing each include that points the wrong way.
 #   cmake -DROOT=<source root> [-DSTAMP=<file>] -P check_layers.cmake
 # Modules (a folder's first path component in an include, relative to app/ or the root):
-#   core  <- io, gpu  <- solver  <- render  <- session  <- ui  <- kiosk  <- cli
-#   core, solver's plain types  <- workflow  <- config, ui, kiosk
+#   core  <- io, gpu  <- speed  <- solver  <- render  <- session  <- ui  <- kiosk  <- cli
+#   core, solver's and speed's plain types  <- workflow  <- config, ui, kiosk
 # ui/ sits at the root beside app/ (the design's top level) and is the module "ui".
 # platform/ is beside and below them all: only the composition roots (cli, kiosk) and ui may
 # include it, and it includes nothing of app/.
@@ -12,18 +12,20 @@ cmake_minimum_required(VERSION 3.25)
 set(allowed_core "core")
 set(allowed_io "core;io")
 set(allowed_gpu "core;gpu")
-set(allowed_solver "core;gpu;solver")
-set(allowed_render "core;gpu;solver;render")
-set(allowed_session "core;io;gpu;solver;render;session")
-# workflow may name solver's GL-free structs (level_set_params.hpp, solver_types.hpp); its
+set(allowed_speed "core;gpu;speed")
+set(allowed_solver "core;gpu;speed;solver")
+set(allowed_render "core;gpu;speed;solver;render")
+set(allowed_session "core;io;gpu;speed;solver;render;session")
+# workflow may name solver's and speed's GL-free structs (level_set_params.hpp, solver_types.hpp,
+# speed_kind.hpp); its
 # library links no solver code, so anything more fails its link.
-set(allowed_workflow "core;solver;workflow")
-set(allowed_config "core;workflow;config")
-set(allowed_ui "core;gpu;render;session;workflow;ui;platform")
-set(allowed_kiosk "core;io;gpu;solver;render;session;workflow;config;ui;kiosk;platform")
-set(allowed_cli "core;io;gpu;solver;render;session;workflow;config;kiosk;cli;platform")
+set(allowed_workflow "core;speed;solver;workflow")
+set(allowed_config "core;speed;workflow;config")
+set(allowed_ui "core;gpu;speed;render;session;workflow;ui;platform")
+set(allowed_kiosk "core;io;gpu;speed;solver;render;session;workflow;config;ui;kiosk;platform")
+set(allowed_cli "core;io;gpu;speed;solver;render;session;workflow;config;kiosk;cli;platform")
 set(allowed_platform "platform")
-set(modules core io gpu solver render session workflow config ui cli kiosk platform)
+set(modules core io gpu speed solver render session workflow config ui cli kiosk platform)
 
 if(NOT ROOT)
   message(FATAL_ERROR "check_layers: give -DROOT=<source root>")
