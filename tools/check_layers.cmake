@@ -17,8 +17,7 @@ set(allowed_solver "core;gpu;speed;solver")
 set(allowed_render "core;gpu;speed;solver;render")
 set(allowed_session "core;io;gpu;speed;solver;render;session")
 # workflow may name solver's and speed's GL-free structs (level_set_params.hpp, solver_types.hpp,
-# speed_kind.hpp); its
-# library links no solver code, so anything more fails its link.
+# speed_kind.hpp); its library links no solver code, so anything more fails its link.
 set(allowed_workflow "core;speed;solver;workflow")
 set(allowed_config "core;speed;workflow;config")
 set(allowed_ui "core;gpu;speed;render;session;workflow;ui;platform")
