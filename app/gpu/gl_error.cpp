@@ -28,6 +28,11 @@ void checkGl(const char* what) {
     }
     while (glGetError() != GL_NO_ERROR) {
     }
+    if (first == GL_OUT_OF_MEMORY) {
+        // Out of GPU memory is the scan or level set not fitting, as the CLI's exit 3 says.
+        throw GpuCapacityError(std::string(what) + ": " + glErrorName(first) +
+                               " (the GPU's memory is full)");
+    }
     throw GlError(std::string(what) + ": " + glErrorName(first));
 }
 

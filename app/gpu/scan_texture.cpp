@@ -3,6 +3,7 @@
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_state_guard.hpp"
 #include "gpu/gpu_info.hpp"
+#include "gpu/gpu_limits.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -24,13 +25,16 @@ void checkSize(const glm::ivec3& dims) {
     if (dims.x <= 0 || dims.y <= 0 || dims.z <= 0) {
         throw std::invalid_argument("scan texture: empty volume");
     }
-    const int limit = queryGpuInfo().max3dTextureSize;
+    const int limit = gpuLimits().max3dTextureSize;
     if (std::max({dims.x, dims.y, dims.z}) > limit) {
-        throw GpuCapacityError("the scan (" + std::to_string(dims.x) + "x" +
-                               std::to_string(dims.y) + "x" + std::to_string(dims.z) +
-                               ") is larger than the GPU's 3D texture limit (" +
-                               std::to_string(limit) + " per side)");
+        throw GpuCapacityError("scan " + sizeText(dims.x, dims.y, dims.z) +
+                               " exceeds GL_MAX_3D_TEXTURE_SIZE " + std::to_string(limit) +
+                               " of this GPU");
     }
+}
+
+double voxelCount(const glm::ivec3& dims) {
+    return static_cast<double>(dims.x) * static_cast<double>(dims.y) * static_cast<double>(dims.z);
 }
 
 Texture allocate(GLenum format, const glm::ivec3& dims, GLenum filter) {
@@ -90,7 +94,17 @@ void ScanTexture::upload(const SliceSource& slices, ScanDisplay display) {
     if (!filterFloats || display == ScanDisplay::HalfFloatCopy) {
         display_ = allocate(GL_R16F, dims_, GL_LINEAR);
     }
-    gpu::checkGl("allocating the scan texture");
+    // Drivers report a texture larger than their memory here, not at the first upload.
+    const GLenum error = glGetError();
+    if (error == GL_OUT_OF_MEMORY) {
+        throw GpuCapacityError("scan " + sizeText(dims_.x, dims_.y, dims_.z) + " (" +
+                               bytesText(voxelCount(dims_) * (display_ ? 6.0 : 4.0)) + " as R32F" +
+                               (display_ ? " + R16F" : "") +
+                               ") does not fit in this GPU's memory (GL_OUT_OF_MEMORY)");
+    }
+    if (error != GL_NO_ERROR) {
+        throw GlError("allocating the scan texture: " + glErrorName(error));
+    }
     const int slab = slabSlices(dims_);
     std::vector<float> values;
     for (int k0 = 0; k0 < dims_.z; k0 += slab) {

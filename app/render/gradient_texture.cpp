@@ -3,6 +3,7 @@
 #include "common/bindings.h"
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_state_guard.hpp"
+#include "gpu/gpu_limits.hpp"
 #include "gpu/program.hpp"
 
 namespace steerseg::render {
@@ -10,8 +11,7 @@ namespace steerseg::render {
 namespace {
 
 bool fitsLimits(const glm::ivec3& dims) {
-    GLint max3d = 0;
-    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3d);
+    const int max3d = gpu::gpuLimits().max3dTextureSize;
     return dims.x <= max3d && dims.y <= max3d && dims.z <= max3d;
 }
 

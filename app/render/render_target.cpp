@@ -2,8 +2,10 @@
 
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_state_guard.hpp"
+#include "gpu/gpu_limits.hpp"
 
 #include <stdexcept>
+#include <string>
 
 namespace steerseg::render {
 
@@ -13,6 +15,12 @@ void RenderTarget::ensureSize(const glm::ivec2& size) {
     }
     if (size.x <= 0 || size.y <= 0 || size.x > 16384 || size.y > 16384) {
         throw std::invalid_argument("image size must be 1..16384 pixels per side");
+    }
+    const int limit = gpu::gpuLimits().maxTextureSize;
+    if (size.x > limit || size.y > limit) {
+        throw gpu::GpuCapacityError("picture " + std::to_string(size.x) + "x" +
+                                    std::to_string(size.y) + " exceeds GL_MAX_TEXTURE_SIZE " +
+                                    std::to_string(limit) + " of this GPU");
     }
     gpu::GlStateGuard guard;
     texture_ = gpu::createTexture();

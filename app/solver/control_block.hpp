@@ -44,6 +44,13 @@ inline constexpr std::ptrdiff_t kAllocArgs = 0;
 inline constexpr std::ptrdiff_t kBrickArgs = 12;
 inline constexpr std::ptrdiff_t kListArgs = 24;
 
+// Work groups per row of the passes laid out 2D over requested or active bricks (one group a
+// brick): solver_common.glsl's GROUPS_PER_ROW.
+inline constexpr std::uint32_t kGroupsPerRow = 1024;
+// Slots (or active bricks) per work group of the 1D passes over them (build_active_list's and
+// the list passes' local size).
+inline constexpr std::uint32_t kSlotsPerGroup = 64;
+
 // Work groups of `size` invocations that cover `count` items.
 inline std::uint32_t groupsOf(std::uint32_t count, std::uint32_t size) {
     return (count + size - 1) / size;

@@ -3,6 +3,7 @@
 #include "common/bindings.h"
 #include "core/volume.hpp"
 #include "gpu/gl_error.hpp"
+#include "solver/control_block.hpp"
 #include "solver/level_set_params.hpp"
 
 #include <algorithm>
@@ -74,14 +75,37 @@ template <typename T> std::vector<T> readBuffer(const gpu::Buffer& b, std::size_
 
 } // namespace
 
-GpuBrickPool::GpuBrickPool(const glm::ivec3& dims, int brickSize, std::size_t maxBlockBytes)
+GpuBrickPool::GpuBrickPool(const glm::ivec3& dims, int brickSize, const gpu::GpuLimits& limits)
     : dims_(dims), grid_((dims + brickSize - 1) / brickSize), brickSize_(brickSize),
-      maxBlockBytes_(maxBlockBytes),
-      brickCount_(static_cast<std::uint32_t>(grid_.x * grid_.y * grid_.z)) {
-    if (static_cast<std::size_t>(brickCount_) * 4 > maxBlockBytes_ ||
-        maxBlockBytes_ < brickBytes()) {
-        throw gpu::GpuCapacityError("volume too large for the GPU's shader storage block limit (" +
-                                    std::to_string(maxBlockBytes_ >> 20) + " MiB)");
+      limits_(limits), brickCount_(static_cast<std::uint32_t>(grid_.x * grid_.y * grid_.z)) {
+    const std::string levelSet = "level set of " + gpu::sizeText(dims.x, dims.y, dims.z) + " (" +
+                                 std::to_string(brickCount_) + " bricks of " +
+                                 std::to_string(brickSize) + "^3)";
+    const std::size_t block = limits_.maxShaderStorageBlockBytes;
+    if (static_cast<std::size_t>(brickCount_) * 4 > block || block < brickBytes()) {
+        throw gpu::GpuCapacityError(levelSet + ": its page table (" +
+                                    gpu::bytesText(brickCount_ * 4.0) +
+                                    ") exceeds GL_MAX_SHADER_STORAGE_BLOCK_SIZE " +
+                                    gpu::bytesText(static_cast<double>(block)) + " of this GPU");
+    }
+    // Passes over requested bricks run one work group per brick, kGroupsPerRow to a row.
+    const std::uint32_t rows = groupsOf(brickCount_, kGroupsPerRow);
+    if (rows > limits_.maxComputeWorkGroupCount[1] ||
+        kGroupsPerRow > limits_.maxComputeWorkGroupCount[0]) {
+        throw gpu::GpuCapacityError(
+            levelSet + ": one work group per brick needs " + std::to_string(rows) + " rows of " +
+            std::to_string(kGroupsPerRow) + ", more than GL_MAX_COMPUTE_WORK_GROUP_COUNT " +
+            std::to_string(limits_.maxComputeWorkGroupCount[0]) + "x" +
+            std::to_string(limits_.maxComputeWorkGroupCount[1]) + " of this GPU");
+    }
+    // A sphere edit runs one work group per brick of its box in each axis.
+    for (int a = 0; a < 3; ++a) {
+        if (static_cast<std::uint32_t>(grid_[a]) > limits_.maxComputeWorkGroupCount[a]) {
+            throw gpu::GpuCapacityError(
+                levelSet + ": " + std::to_string(grid_[a]) + " bricks along axis " +
+                std::to_string(a) + " exceed GL_MAX_COMPUTE_WORK_GROUP_COUNT[" + std::to_string(a) +
+                "] " + std::to_string(limits_.maxComputeWorkGroupCount[a]) + " of this GPU");
+        }
     }
     const std::vector<std::uint32_t> outside(brickCount_, kBrickOutside);
     pageTable_ = makeBuffer(brickCount_ * 4, outside.data());
@@ -104,8 +128,26 @@ std::size_t GpuBrickPool::shellBytes() const {
 }
 
 std::uint32_t GpuBrickPool::maxCapacity() const {
-    return static_cast<std::uint32_t>(
-        std::min<std::size_t>(brickCount_, maxBlockBytes_ / brickBytes()));
+    return static_cast<std::uint32_t>(std::min<std::size_t>(
+        {brickCount_, limits_.maxShaderStorageBlockBytes / brickBytes(),
+         static_cast<std::size_t>(limits_.maxComputeWorkGroupCount[0]) * kSlotsPerGroup}));
+}
+
+std::string GpuBrickPool::capacityLimitText() const {
+    const std::uint32_t most = maxCapacity();
+    const std::string bricks = std::to_string(most) + " bricks";
+    if (most == brickCount_) {
+        return "every brick of the volume (" + bricks + ")";
+    }
+    if (most == limits_.maxShaderStorageBlockBytes / brickBytes()) {
+        return bricks + " (" + gpu::bytesText(static_cast<double>(most) * brickBytes()) +
+               " of phi), the most GL_MAX_SHADER_STORAGE_BLOCK_SIZE " +
+               gpu::bytesText(static_cast<double>(limits_.maxShaderStorageBlockBytes)) +
+               " of this GPU holds";
+    }
+    return bricks + ", the most GL_MAX_COMPUTE_WORK_GROUP_COUNT[0] " +
+           std::to_string(limits_.maxComputeWorkGroupCount[0]) + " of this GPU reaches at " +
+           std::to_string(kSlotsPerGroup) + " slots per work group";
 }
 
 std::size_t GpuBrickPool::levelSetBytes() const {
@@ -167,8 +209,7 @@ void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
     const auto used = static_cast<std::uint32_t>(usedBricks.size());
     if (used > maxCapacity()) {
         throw gpu::GpuCapacityError("the level set needs " + std::to_string(used) +
-                                    " bricks, more than the GPU's storage block holds (" +
-                                    std::to_string(maxCapacity()) + ")");
+                                    " bricks, more than " + capacityLimitText());
     }
     const std::uint32_t capacity =
         dense ? brickCount_

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "gpu/gl_handle.hpp"
+#include "gpu/gpu_limits.hpp"
 #include "solver/brick_pool_view.hpp"
 #include "solver/control_block.hpp"
 
@@ -8,6 +9,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace steerseg::solver::detail {
@@ -31,8 +33,10 @@ inline std::uint32_t poolTarget(std::uint32_t used, std::uint32_t growth, std::u
 // Capacity changes copy on the GPU; only a shrink reads the small slot map back to plan moves.
 class GpuBrickPool {
   public:
-    // Throws std::runtime_error if the page table alone exceeds the storage block limit.
-    GpuBrickPool(const glm::ivec3& dims, int brickSize, std::size_t maxBlockBytes);
+    // Throws gpu::GpuCapacityError, naming the limit and the numbers, where the level set of
+    // `dims` cannot be held or dispatched over within `limits` (docs/large-scans.md): the page
+    // table past the storage block size, or more bricks than the 2D dispatches reach.
+    GpuBrickPool(const glm::ivec3& dims, int brickSize, const gpu::GpuLimits& limits);
 
     // Replaces the level set by a dense phi (uniform bricks become constants). `dense`: every
     // brick gets a slot (the dense benchmark mode). Resets the control block.
@@ -55,7 +59,11 @@ class GpuBrickPool {
     [[nodiscard]] std::uint32_t usedSlots(const ControlBlock& ctrl) const {
         return capacity_ - ctrl.freeCount;
     }
+    // The most slots: every brick, or fewer where the phi pool would pass the storage block
+    // size or the passes over the slots (64 per work group, 1D) the work group count.
     [[nodiscard]] std::uint32_t maxCapacity() const;
+    // Which limit sets maxCapacity, with the numbers, for messages.
+    [[nodiscard]] std::string capacityLimitText() const;
     [[nodiscard]] std::uint32_t brickCount() const { return brickCount_; }
     [[nodiscard]] std::size_t brickBytes() const;
     // Bytes of one slot's shell scratch.
@@ -74,7 +82,7 @@ class GpuBrickPool {
     glm::ivec3 dims_;
     glm::ivec3 grid_;
     int brickSize_;
-    std::size_t maxBlockBytes_;
+    gpu::GpuLimits limits_;
     std::uint32_t brickCount_;
     std::uint32_t capacity_ = 0;
     gpu::Buffer pageTable_;

@@ -86,7 +86,8 @@ void LevelSetSolver::editSphere(const Sphere& sphere, bool add) {
              groupsOf(static_cast<std::uint32_t>(size.z), 4));
     allocateAndList();
     if (pool_->readControl().stalled != 0) {
-        throw gpu::GpuCapacityError("sphere edit needs more bricks than the GPU's storage holds");
+        throw gpu::GpuCapacityError("the sphere edit needs more bricks than " +
+                                    pool_->capacityLimitText());
     }
     dispatch(apply, static_cast<GLuint>(size.x), static_cast<GLuint>(size.y),
              static_cast<GLuint>(size.z));

@@ -3,7 +3,7 @@
 #include "common/bindings.h"
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_state_guard.hpp"
-#include "gpu/gpu_info.hpp"
+#include "gpu/gpu_limits.hpp"
 #include "solver/gpu_brick_pool.hpp"
 #include "solver/phi_init.hpp"
 #include "solver/solver_programs.hpp"
@@ -83,11 +83,9 @@ LevelSetSolver::LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own,
     }
     const std::size_t voxels = static_cast<std::size_t>(dims.x) * static_cast<std::size_t>(dims.y) *
                                static_cast<std::size_t>(dims.z);
-    const gpu::GpuInfo info = gpu::queryGpuInfo();
     const int localSize = std::min(b * b * b, 64);
     programs_ = std::make_unique<detail::SolverPrograms>(b, localSize);
-    pool_ = std::make_unique<detail::GpuBrickPool>(
-        dims, b, static_cast<std::size_t>(info.maxShaderStorageBlockBytes));
+    pool_ = std::make_unique<detail::GpuBrickPool>(dims, b, gpu::gpuLimits());
     const glm::ivec3 grid = pool_->brickGrid();
     programs_->forEach([&](gpu::Program& p) {
         glProgramUniform3i(p.id(), glGetUniformLocation(p.id(), "volumeDims"), dims.x, dims.y,
@@ -145,7 +143,7 @@ void LevelSetSolver::allocateAndList() {
     glProgramUniform1ui(p.buildActiveList.id(),
                         glGetUniformLocation(p.buildActiveList.id(), "capacity"),
                         pool_->capacity());
-    dispatch(p.buildActiveList.id(), groupsOf(pool_->capacity(), 64));
+    dispatch(p.buildActiveList.id(), groupsOf(pool_->capacity(), detail::kSlotsPerGroup));
     dispatch(p.prepareDispatch.id(), 1);
 }
 
@@ -233,9 +231,7 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
         if (ctrl.stalled != 0) {
             ++stats_.stalls;
             if (pool_->capacity() >= pool_->maxCapacity()) {
-                throw gpu::GpuCapacityError(
-                    "the level set outgrew the GPU's shader storage block limit (" +
-                    std::to_string(pool_->maxCapacity()) + " bricks)");
+                throw gpu::GpuCapacityError("the level set outgrew " + pool_->capacityLimitText());
             }
             // The band outran the margin: grow for twice the advance it made by now.
             const std::uint32_t used = pool_->usedSlots(ctrl);
