@@ -277,7 +277,14 @@ int main(int argc, char** argv) {
         j["upload_seconds"] = uploadSeconds;
         j["scan_texture_bytes"] = textureBytes;
 
+        start = Clock::now();
         solver::LevelSetSolver solver(texture);
+        glFinish();
+        const double solverSetupSeconds = secondsSince(start);
+        std::printf("solver: set up in %.2f s, host memory now %.0f MiB (peak %.0f MiB)\n",
+                    solverSetupSeconds, statusBytes("VmRSS") / 1048576.0,
+                    statusBytes("VmHWM") / 1048576.0);
+        j["solver_setup_seconds"] = solverSetupSeconds;
         solver.setParams({120.0F, 45.0F, 0.8F});
         solver.addSphere({glm::vec3(ct.lesionCentre), 3.0F});
         start = Clock::now();

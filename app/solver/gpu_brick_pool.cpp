@@ -173,7 +173,18 @@ void GpuBrickPool::allocateSlotBuffers(std::uint32_t capacity) {
 void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
     const int b = brickSize_;
     const std::size_t bv = brickBytes() / sizeof(float);
+    const std::size_t voxels = static_cast<std::size_t>(dims_.x) *
+                               static_cast<std::size_t>(dims_.y) *
+                               static_cast<std::size_t>(dims_.z);
+    if (!phi.empty() && phi.size() != voxels) {
+        throw std::invalid_argument("brick pool: phi does not match the volume's dimensions");
+    }
+    // Empty: everything outside, without a dense phi on the host (1 GiB at 512x512x1000).
+    const bool outside = phi.empty();
     auto at = [&](int i, int j, int k) {
+        if (outside) {
+            return kPhiFar;
+        }
         i = std::min(i, dims_.x - 1);
         j = std::min(j, dims_.y - 1);
         k = std::min(k, dims_.z - 1);
@@ -189,13 +200,15 @@ void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
         bool negative = false;
         bool positive = false;
         bool live = false;
-        for (int k = o.z; k < std::min(o.z + b, dims_.z); ++k) {
-            for (int j = o.y; j < std::min(o.y + b, dims_.y); ++j) {
-                for (int i = o.x; i < std::min(o.x + b, dims_.x); ++i) {
-                    const float p = at(i, j, k);
-                    live = live || std::abs(p) < kPhiFar;
-                    negative = negative || p < 0.0F;
-                    positive = positive || p >= 0.0F;
+        if (!outside) {
+            for (int k = o.z; k < std::min(o.z + b, dims_.z); ++k) {
+                for (int j = o.y; j < std::min(o.y + b, dims_.y); ++j) {
+                    for (int i = o.x; i < std::min(o.x + b, dims_.x); ++i) {
+                        const float p = at(i, j, k);
+                        live = live || std::abs(p) < kPhiFar;
+                        negative = negative || p < 0.0F;
+                        positive = positive || p >= 0.0F;
+                    }
                 }
             }
         }

@@ -38,7 +38,8 @@ class GpuBrickPool {
     // table past the storage block size, or more bricks than the 2D dispatches reach.
     GpuBrickPool(const glm::ivec3& dims, int brickSize, const gpu::GpuLimits& limits);
 
-    // Replaces the level set by a dense phi (uniform bricks become constants). `dense`: every
+    // Replaces the level set by a dense phi (uniform bricks become constants), or by nothing
+    // inside where `phi` is empty. `dense`: every
     // brick gets a slot (the dense benchmark mode). Resets the control block.
     void upload(std::span<const float> phi, bool dense);
     // Dense phi of the current buffer (tests, mask output; not per iteration).

@@ -17,7 +17,7 @@ using detail::ControlBlock;
 using detail::groupsOf;
 using detail::kBrickArgs;
 
-void LevelSetSolver::uploadPhi(const std::vector<float>& phi) {
+void LevelSetSolver::uploadPhi(std::span<const float> phi) {
     gpu::GlStateGuard guard;
     pool_->upload(phi, options_.dense);
     pool_->bind();

@@ -97,7 +97,7 @@ LevelSetSolver::LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own,
     uploadBarriers();
     stats_.totalBricks = pool_->brickCount();
     stats_.densePhiBytes = voxels * sizeof(float);
-    uploadPhi(std::vector<float>(voxels, kPhiFar));
+    uploadPhi({}); // everything outside
 }
 
 LevelSetSolver::~LevelSetSolver() = default;

@@ -83,7 +83,8 @@ class LevelSetSolver {
     void allocateAndList();
     void settle();
     void editSphere(const Sphere& sphere, bool add);
-    void uploadPhi(const std::vector<float>& phi);
+    // A dense phi, or empty: everything outside.
+    void uploadPhi(std::span<const float> phi);
     void noteChange();
     void uploadBarriers();
     std::optional<LeakSite> watchGrowth(detail::ControlBlock& ctrl);
