@@ -2,13 +2,14 @@
 # The GPU figures in one command: solver iterations/s at 256^3 and 512^3 over a range of active
 # fractions, renderer frame times at 1920x1080 with the solver stepping, time to ITK's evolved
 # time on the real cases, the README's pictures for comparison with llvmpipe's, and the kiosk's
-# frame loop at 1280x800 and 1920x1080 (tools/bench-kiosk.sh). Writes bench-gpu.md (the tables)
-# and bench-gpu.json (the same figures) to the output folder.
+# frame loop at 1280x800 and 1920x1080 (tools/bench-kiosk.sh), and a full-size CT (a synthetic
+# 512x512x1000 int16 DICOM series: load, GPU memory, solver, a frame; docs/large-scans.md).
+# Writes bench-gpu.md (the tables) and bench-gpu.json (the same figures) to the output folder.
 #
 #   tools/bench-gpu.sh [--small] [--skip PART[,PART...]] [--out DIR] [--bin DIR]
 #   tools/bench-gpu.sh --pack DIR
 #
-# PARTs: solver, render, segment, pictures, kiosk. --small uses sizes a software rasteriser
+# PARTs: solver, render, segment, pictures, kiosk, large. --small uses sizes a software rasteriser
 # finishes in a minute or two (CI runs it, so the script cannot rot between GPU sessions).
 # Without --bin it installs what it needs (apt) and builds the benchmarks in build/bench-gpu.
 #
@@ -17,7 +18,7 @@
 # only, pictures as PPM), and puts them, the two libraries they need (nifticlib) and the real
 # cases' scans (from STEERSEG_DATA_DIR) in DIR; there, `DIR/bench-gpu.sh --bin DIR` runs them.
 # The kiosk (steerseg, which needs OpenImageIO's some 280 libraries) is not packed: --bin runs
-# that part only where DIR holds a steerseg. It says so when the renderer is a software one:
+# that part only where DIR holds a steerseg; nor is large_scan_bench (GDCM), likewise. It says so when the renderer is a software one:
 # those figures are not GPU figures.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -34,7 +35,7 @@ while (($#)); do
     --out) out=${2:?--out needs a folder}; shift ;;
     --bin) bin=${2:?--bin needs a folder}; shift ;;
     --pack) pack=${2:?--pack needs a folder}; shift ;;
-    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,23p' "$0"; exit 0 ;;
     *) echo "bench-gpu: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
@@ -52,7 +53,12 @@ cases=(
 build_benches() { # build-dir io(ON|OFF) [more targets]
   cmake -S "$root" -B "$1" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSTEERSEG_BUILD_TESTS=OFF \
     -DSTEERSEG_BENCH_IO="$2" >/dev/null
-  cmake --build "$1" -j "$(nproc)" --target solver_bench render_frame_bench segment_bench "${@:3}" >&2
+  local io=()
+  if [[ $2 == ON ]]; then
+    io=(large_scan_bench) # the DICOM series needs GDCM
+  fi
+  cmake --build "$1" -j "$(nproc)" --target solver_bench render_frame_bench segment_bench \
+    "${io[@]}" "${@:3}" >&2
 }
 
 if [[ -n $pack ]]; then
@@ -113,7 +119,8 @@ run() { # part command...: runs one benchmark, keeping its output in the log and
   echo "bench-gpu: $part: $*" >&2
   "$@" 2>&1 | tee -a "$log" >>"$out/$part.txt"
 }
-rm -f "$out"/{solver,render,segment,pictures,kiosk}.txt "$out/kiosk/bench-kiosk.json"
+rm -f "$out"/{solver,render,segment,pictures,kiosk,large}.txt "$out/kiosk/bench-kiosk.json" \
+  "$out/large.json"
 
 renderer=$("$bin/solver_bench" --size 16 --iterations 1 --dense-size 0 2>&1 | sed -n 's/^renderer: \(.*\), volume .*/\1/p')
 software=0
@@ -157,6 +164,18 @@ if wants segment; then
 fi
 if wants pictures; then
   run pictures "$bin/render_frame_bench" --docs "$out/pictures"
+fi
+
+if wants large; then
+  if [[ -x $bin/large_scan_bench ]]; then
+    large_args=(--size 512x512x1000 --repeat 3)
+    if ((small)); then
+      large_args=(--size 128x128x64 --body-iterations 8)
+    fi
+    run large "$bin/large_scan_bench" "${large_args[@]}" --json "$out/large.json"
+  else
+    echo "bench-gpu: large skipped: no $bin/large_scan_bench (the pack has no DICOM reader)" >&2
+  fi
 fi
 
 if wants kiosk; then
@@ -224,10 +243,12 @@ for line in text("segment").splitlines():
 lesion = re.search(r"lesion: (\d+) iterations, evolved time ([\d.]+), (\d+) voxels inside", text("pictures"))
 kiosk_json = out / "kiosk" / "bench-kiosk.json"
 kiosk = json.loads(kiosk_json.read_text()) if kiosk_json.exists() else None
+large_json = out / "large.json"
+large = json.loads(large_json.read_text()) if large_json.exists() else None
 report = {"renderer": renderer, "software_renderer": software, "small": small, "seconds": seconds,
           "solver": tables(text("solver")), "render": frames, "segment": cases,
           "sample_lesion": {"iterations": int(lesion[1]), "inside": int(lesion[3])} if lesion else None,
-          "kiosk": kiosk}
+          "kiosk": kiosk, "large": large}
 (out / "bench-gpu.json").write_text(json.dumps(report, indent=2) + "\n")
 
 md = [f"# GPU benchmarks: {renderer}", ""]
@@ -254,6 +275,8 @@ if lesion:
     md += [f"Sample lesion: {lesion[1]} iterations, {lesion[3]} voxels inside; pictures in pictures/ (compare with llvmpipe's: `idiff`).", ""]
 if kiosk:
     md += (out / "kiosk" / "bench-kiosk.md").read_text().splitlines() + [""]
+if large:
+    md += ["## Full-size scan (docs/large-scans.md)", "", "```"] + text("large").splitlines() + ["```", ""]
 (out / "bench-gpu.md").write_text("\n".join(md))
 EOF
 cat "$md"
