@@ -168,5 +168,37 @@ TEST(SolverCli, WritesEachFormatByExtensionOrFormat) {
     EXPECT_NE(unknown.err.find("cannot tell the format"), std::string::npos) << unknown.err;
 }
 
+// A scan one voxel wider than this GPU's 3D textures (2049x2x2 on llvmpipe, a few KiB): the
+// real refusal, through segment and render, exit status 3 with the limit named.
+TEST(SolverCli, AScanPastTheGpus3dTextureSizeIsRefusedWithTheLimitNamed) {
+    const CliRun info = runSteerseg("gpu-info");
+    ASSERT_EQ(info.exitCode, 0) << info.err;
+    const int limit = nlohmann::json::parse(info.out).at("max_3d_texture_size").get<int>();
+    ASSERT_GT(limit, 0);
+    const auto dir = tempDir("solver_cli_wide");
+    const auto scan = dir / "wide.mha";
+    {
+        std::ofstream out(scan, std::ios::binary);
+        out << "ObjectType = Image\nNDims = 3\nDimSize = " << limit + 1
+            << " 2 2\nElementType = MET_UCHAR\nElementDataFile = LOCAL\n";
+        const std::string voxels(static_cast<std::size_t>(limit + 1) * 4, '\x10');
+        out << voxels;
+    }
+    const std::string expected = "scan " + std::to_string(limit + 1) +
+                                 "x2x2 exceeds GL_MAX_3D_TEXTURE_SIZE " + std::to_string(limit) +
+                                 " of this GPU";
+    const CliRun segment = runSteerseg("segment --input " + scan.string() +
+                                       " --seed 1,1,1,1 --T 16 --eps 4 --alpha 0.5 "
+                                       "--iterations 1 --output " +
+                                       (dir / "m.nii.gz").string());
+    EXPECT_EQ(segment.exitCode, 3) << segment.err;
+    EXPECT_NE(segment.err.find(expected), std::string::npos) << segment.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "m.nii.gz"));
+    const CliRun render = runSteerseg("render --input " + scan.string() +
+                                      " --view axial --output " + (dir / "v.png").string());
+    EXPECT_EQ(render.exitCode, 3) << render.err;
+    EXPECT_NE(render.err.find(expected), std::string::npos) << render.err;
+}
+
 } // namespace
 } // namespace steerseg::test
