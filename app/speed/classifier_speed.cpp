@@ -6,6 +6,7 @@
 #include "gpu/program.hpp"
 #include "speed/classifier_features.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <vector>
@@ -16,6 +17,8 @@ namespace {
 
 constexpr int kMaxSamplesPerClass = 1 << 20;
 constexpr int kEvaluateGroup = 4; // classifier_evaluate.comp's local size per axis
+// Slices per dispatch: 16M voxels at 512^2 a slice, a bounded share of a large scan each.
+constexpr int kSlabSlices = 64;
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -107,7 +110,13 @@ void ClassifierSpeed::evaluate(GLuint intensity) {
     auto groups = [](int n) {
         return static_cast<GLuint>((n + kEvaluateGroup - 1) / kEvaluateGroup);
     };
-    glDispatchCompute(groups(dims_.x), groups(dims_.y), groups(dims_.z));
+    const GLint zOffsetAt = glGetUniformLocation(program.id(), "zOffset");
+    for (int z = 0; z < dims_.z; z += kSlabSlices) {
+        glUniform1i(zOffsetAt, z);
+        glDispatchCompute(groups(dims_.x), groups(dims_.y),
+                          groups(std::min(kSlabSlices, dims_.z - z)));
+        glFlush(); // each slab its own submission
+    }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     // Finished here, so that the timing is the evaluation's and the solver's first read waits
     // on nothing.

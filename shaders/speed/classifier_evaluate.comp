@@ -1,7 +1,9 @@
 #version 310 es
 // The classifier speed at every voxel: the features, then the mean over the forest's trees of
 // the leaf's P(inside) - P(outside). One invocation per voxel, 4x4x4 voxels per group, so a
-// scan of up to 262140 voxels a side stays within the 65535 groups a dimension allows.
+// scan of up to 262140 voxels a side stays within the 65535 groups a dimension allows; the host
+// dispatches slabs of slices from zOffset, so no single dispatch runs long enough on a large
+// scan to trip a GPU watchdog.
 precision highp float;
 precision highp int;
 precision highp sampler3D;
@@ -29,9 +31,10 @@ layout(std430, binding = CLASSIFIER_ROOTS_BINDING) readonly buffer Roots {
 layout(r32f, binding = CLASSIFIER_OUT_IMAGE_UNIT) uniform writeonly image3D speedOut;
 uniform int treeCount;
 uniform int maxDepth; // bounds each walk, whatever the buffer holds
+uniform int zOffset;
 
 void main() {
-    ivec3 v = ivec3(gl_GlobalInvocationID);
+    ivec3 v = ivec3(gl_GlobalInvocationID) + ivec3(0, 0, zOffset);
     if (any(greaterThanEqual(v, classifierDims))) {
         return;
     }

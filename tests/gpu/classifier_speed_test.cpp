@@ -242,6 +242,59 @@ TEST_F(ClassifierSpeedTest, GpuEvaluationMatchesTheCpuForest) {
     EXPECT_GT(between, 10U);
 }
 
+TEST_F(ClassifierSpeedTest, EvaluatesEverySlabOfALongScan) {
+    // More slices than one evaluation dispatch takes (64): calm below z = 35, rough above.
+    const glm::ivec3 d{12, 12, 72};
+    speed::SplitMix rng(6);
+    std::vector<float> vol(static_cast<std::size_t>(d.x) * d.y * d.z);
+    for (const glm::ivec3 p : allVoxels(d)) {
+        vol[indexOf(d, p)] = 50.0F + (p.z < 35 ? 5.0F : 30.0F) * noise(rng);
+    }
+    const gpu::ScanTexture scan(vol, d);
+    const std::vector<Example> calm{{glm::vec3(6.0F, 6.0F, 12.0F), 5.0F}};
+    const std::vector<Example> rough{{glm::vec3(6.0F, 6.0F, 60.0F), 5.0F}};
+    const ClassifierSpeed speed(scan.exact(), d, calm, rough);
+    std::vector<glm::ivec3> last;
+    for (const glm::ivec3 p : allVoxels(d)) {
+        if (p.z >= 66) {
+            last.push_back(p);
+        }
+    }
+    std::size_t outside = 0;
+    for (const float v : readAt(speed.texture(), last)) {
+        outside += v < 0.0F ? 1 : 0;
+    }
+    EXPECT_GT(outside, last.size() * 9 / 10);
+}
+
+TEST_F(ClassifierSpeedTest, LeavesTheCallersGlStateAsItWas) {
+    const std::vector<float> vol = twoTextures();
+    const gpu::ScanTexture scan(vol, kTwoDims);
+    const gpu::Buffer foreign =
+        gpu::createBuffer(GL_SHADER_STORAGE_BUFFER, 64, nullptr, GL_STATIC_DRAW);
+    const gpu::Texture image = gpu::createTexture();
+    glBindTexture(GL_TEXTURE_3D, image.id());
+    glTexStorage3D(GL_TEXTURE_3D, 1, GL_R32F, 2, 2, 2);
+    glBindImageTexture(0, image.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_3D, image.id());
+    for (const GLuint binding : {10U, 11U, 12U, 13U}) {
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, foreign.id());
+    }
+    const ClassifierSpeed speed(scan.exact(), kTwoDims, kCalm, kRough);
+    GLint value = 0;
+    for (const GLuint binding : {10U, 11U, 12U, 13U}) {
+        glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, binding, &value);
+        EXPECT_EQ(static_cast<GLuint>(value), foreign.id()) << "SSBO binding " << binding;
+    }
+    glGetIntegeri_v(GL_IMAGE_BINDING_NAME, 0, &value);
+    EXPECT_EQ(static_cast<GLuint>(value), image.id());
+    glGetIntegerv(GL_TEXTURE_BINDING_3D, &value);
+    EXPECT_EQ(static_cast<GLuint>(value), image.id());
+    glGetIntegerv(GL_CURRENT_PROGRAM, &value);
+    EXPECT_EQ(value, 0);
+}
+
 std::string refusal(GLuint texture, glm::ivec3 dims, const std::vector<Example>& inside,
                     const std::vector<Example>& outside, const ClassifierParams& params = {}) {
     try {
