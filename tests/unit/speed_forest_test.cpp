@@ -70,6 +70,21 @@ TEST(SpeedForest, LearnsXor) {
     EXPECT_GT(forest.outOfBagAccuracy(), 0.95);
 }
 
+TEST(SpeedForest, TakesAnOutsideOfTwoTissues) {
+    // Inside at middle intensities, outside both darker and brighter (fat and bone around
+    // muscle): one threshold cannot say it, two splits can.
+    SplitMix rng(13);
+    Set set;
+    for (int n = 0; n < 600; ++n) {
+        set.add(40.0F + 10.0F * uniform(rng), uniform(rng), true);
+        set.add((n % 2 == 0 ? 0.0F : 80.0F) + 10.0F * uniform(rng), uniform(rng), false);
+    }
+    const RandomForest forest = RandomForest::train(set.features, set.labels, 2);
+    EXPECT_GT(predictAt(forest, 45.0F, 0.5F), 0.9F);
+    EXPECT_LT(predictAt(forest, 5.0F, 0.5F), -0.9F);
+    EXPECT_LT(predictAt(forest, 85.0F, 0.5F), -0.9F);
+}
+
 TEST(SpeedForest, BalancesClassesWhateverTheirCounts) {
     // Both classes drawn from one distribution, nine times as many inside: with equal priors
     // the forest leans to neither; counting samples would give about +0.8.
