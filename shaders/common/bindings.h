@@ -17,6 +17,11 @@
 #define REQUESTS_BINDING 7
 #define WANT_EPOCH_BINDING 8
 #define SLOT_STATE_BINDING 9
+// The classifier speed (speed/classifier_gather.comp, speed/classifier_evaluate.comp).
+#define CLASSIFIER_SAMPLES_BINDING 10  // voxel coordinates of the training samples
+#define CLASSIFIER_FEATURES_BINDING 11 // their feature vectors, read back once
+#define CLASSIFIER_NODES_BINDING 12    // the forest's nodes
+#define CLASSIFIER_ROOTS_BINDING 13    // each tree's root node
 
 // Texture units of the samplers (glActiveTexture(GL_TEXTURE0 + unit)).
 #define SOLVER_SCAN_UNIT 0    // solver/speed_threshold.glsl: the scan, texelFetch only
@@ -25,9 +30,11 @@
 #define VIEW_SKIP_GRID_UNIT 2 // render/raycast.comp: block min/max for empty-space skipping
 #define VIEW_OCCUPANCY_UNIT 3 // render/raycast.comp: occupied transfer-function bins
 #define VIEW_GRADIENT_UNIT 4  // render/raycast.comp: the scan's gradient (render/gradient.comp)
+#define CLASSIFIER_INTENSITY_UNIT 0 // speed/classifier_features.glsl: intensities, texelFetch only
 
 // Image units.
 #define VIEW_OUT_IMAGE_UNIT 0 // render/view_common.glsl: the rendered picture
 #define VIEW_GRADIENT_IMAGE_UNIT 0 // render/gradient.comp (runs alone): the gradient it fills
+#define CLASSIFIER_OUT_IMAGE_UNIT 0 // speed/classifier_evaluate.comp (runs alone): the speed
 
 #endif

@@ -83,7 +83,7 @@ TEST_F(ContextTest, ShaderLibraryHasTheProductsShadersOnly) {
     for (const std::string_view name : gpu::shaderNames()) {
         // The kiosk's screen compositor (app/kiosk/screen_compositor.cpp) has its own pair.
         EXPECT_TRUE(name.rfind("solver/", 0) == 0 || name.rfind("render/", 0) == 0 ||
-                    name.rfind("kiosk/", 0) == 0)
+                    name.rfind("kiosk/", 0) == 0 || name.rfind("speed/", 0) == 0)
             << name;
     }
     EXPECT_THROW(gpu::buildComputeProgram("no/such.comp"), gpu::GlError);

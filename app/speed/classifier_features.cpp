@@ -1,0 +1,103 @@
+#include "speed/classifier_features.hpp"
+
+#include "common/bindings.h"
+#include "gpu/gl_error.hpp"
+#include "gpu/gl_handle.hpp"
+#include "gpu/gl_state_guard.hpp"
+#include "gpu/program.hpp"
+#include "speed/classifier_layout.h"
+
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace steerseg::speed {
+
+static_assert(kClassifierFeatureCount == CLASSIFIER_FEATURE_COUNT,
+              "the C++ and GLSL feature counts must agree");
+
+namespace {
+constexpr int kGroupSize = 64; // classifier_gather.comp's local size
+// Samples per dispatch: within the 65535 groups a dimension allows.
+constexpr std::size_t kMaxDispatchSamples = std::size_t{65535} * kGroupSize;
+} // namespace
+
+void checkIntensityTexture(GLuint intensity, glm::ivec3 dims) {
+    gpu::GlStateGuard guard;
+    if (intensity == 0 || glIsTexture(intensity) == GL_FALSE) {
+        throw std::invalid_argument("classifier speed: the intensity texture is not a texture");
+    }
+    glActiveTexture(GL_TEXTURE0 + CLASSIFIER_INTENSITY_UNIT);
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    glBindTexture(GL_TEXTURE_3D, intensity);
+    if (glGetError() != GL_NO_ERROR) {
+        throw std::invalid_argument("classifier speed: the intensity texture is not a 3D texture");
+    }
+    glm::ivec3 size{0};
+    GLint format = 0;
+    glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_WIDTH, &size.x);
+    glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_HEIGHT, &size.y);
+    glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_DEPTH, &size.z);
+    glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+    gpu::checkGl("reading the intensity texture's size");
+    if (size != dims || format != GL_R32F) {
+        throw std::invalid_argument("classifier speed: the intensity texture is not R32F of " +
+                                    std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" +
+                                    std::to_string(dims.z) + " voxels");
+    }
+}
+
+std::vector<float> gatherClassifierFeatures(GLuint intensity, glm::ivec3 dims,
+                                            std::span<const glm::ivec3> voxels) {
+    gpu::GlStateGuard guard;
+    std::vector<float> features(voxels.size() * kClassifierFeatureCount);
+    if (voxels.empty()) {
+        return features;
+    }
+    std::vector<glm::ivec4> coords(voxels.size());
+    for (std::size_t n = 0; n < voxels.size(); ++n) {
+        const glm::ivec3 v = voxels[n];
+        if (glm::any(glm::lessThan(v, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(v, dims))) {
+            throw std::invalid_argument("classifier speed: a sample voxel lies outside the scan");
+        }
+        coords[n] = glm::ivec4(v, 0);
+    }
+    const gpu::Program program = gpu::buildComputeProgram("speed/classifier_gather.comp");
+    const gpu::Buffer in = gpu::createBuffer(
+        GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(coords.size() * sizeof(glm::ivec4)),
+        coords.data(), GL_STATIC_DRAW);
+    const gpu::Buffer out = gpu::createBuffer(
+        GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(features.size() * sizeof(float)), nullptr,
+        GL_STREAM_READ);
+    glUseProgram(program.id());
+    glActiveTexture(GL_TEXTURE0 + CLASSIFIER_INTENSITY_UNIT);
+    glBindTexture(GL_TEXTURE_3D, intensity);
+    glUniform3i(glGetUniformLocation(program.id(), "classifierDims"), dims.x, dims.y, dims.z);
+    const GLint countAt = glGetUniformLocation(program.id(), "sampleCount");
+    for (std::size_t first = 0; first < coords.size(); first += kMaxDispatchSamples) {
+        const std::size_t count = std::min(kMaxDispatchSamples, coords.size() - first);
+        glBindBufferRange(GL_SHADER_STORAGE_BUFFER, CLASSIFIER_SAMPLES_BINDING, in.id(),
+                          static_cast<GLintptr>(first * sizeof(glm::ivec4)),
+                          static_cast<GLsizeiptr>(count * sizeof(glm::ivec4)));
+        glBindBufferRange(GL_SHADER_STORAGE_BUFFER, CLASSIFIER_FEATURES_BINDING, out.id(),
+                          static_cast<GLintptr>(first * kClassifierFeatureCount * sizeof(float)),
+                          static_cast<GLsizeiptr>(count * kClassifierFeatureCount * sizeof(float)));
+        glUniform1i(countAt, static_cast<GLint>(count));
+        glDispatchCompute(static_cast<GLuint>((count + kGroupSize - 1) / kGroupSize), 1, 1);
+    }
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, out.id());
+    const auto bytes = static_cast<GLsizeiptr>(features.size() * sizeof(float));
+    const void* mapped = glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, bytes, GL_MAP_READ_BIT);
+    if (mapped == nullptr) {
+        gpu::checkGl("mapping the classifier's sample features");
+        throw gpu::GlError("mapping the classifier's sample features failed");
+    }
+    std::memcpy(features.data(), mapped, static_cast<std::size_t>(bytes));
+    glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+    gpu::checkGl("gathering the classifier's sample features");
+    return features;
+}
+
+} // namespace steerseg::speed

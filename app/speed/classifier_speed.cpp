@@ -1,0 +1,128 @@
+#include "speed/classifier_speed.hpp"
+
+#include "common/bindings.h"
+#include "gpu/gl_error.hpp"
+#include "gpu/gl_state_guard.hpp"
+#include "gpu/program.hpp"
+#include "speed/classifier_features.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+#include <vector>
+
+namespace steerseg::speed {
+
+namespace {
+
+constexpr int kMaxSamplesPerClass = 1 << 20;
+constexpr int kEvaluateGroup = 4; // classifier_evaluate.comp's local size per axis
+// Slices per dispatch: 16M voxels at 512^2 a slice, a bounded share of a large scan each.
+constexpr int kSlabSlices = 64;
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+ForestParams forestParams(const ClassifierParams& p) {
+    if (p.maxSamplesPerClass < 1 || p.maxSamplesPerClass > kMaxSamplesPerClass) {
+        throw std::invalid_argument("classifier speed: samples per class must be in [1, 1048576]");
+    }
+    ForestParams forest;
+    forest.trees = p.trees;
+    forest.maxDepth = p.maxDepth;
+    forest.seed = p.seed;
+    return forest;
+}
+
+} // namespace
+
+ClassifierSpeed::ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<const Example> inside,
+                                 std::span<const Example> outside, const ClassifierParams& params)
+    : dims_(dims), maxDepth_(params.maxDepth) {
+    const ForestParams forestSettings = forestParams(params);
+    if (forestSettings.trees < 1 || forestSettings.trees > 256 || forestSettings.maxDepth < 1 ||
+        forestSettings.maxDepth > 16) {
+        // Bounded so that every voxel's walk stays cheap on the GPU (docs/speed.md).
+        throw std::invalid_argument(
+            "classifier speed: trees must be in [1, 256] and the depth in [1, 16]");
+    }
+    gpu::GlStateGuard guard;
+    checkIntensityTexture(intensity, dims);
+
+    auto start = std::chrono::steady_clock::now();
+    const auto cap = static_cast<std::size_t>(params.maxSamplesPerClass);
+    const ExampleVoxels in = exampleVoxels(inside, dims, cap, params.seed, "inside");
+    const ExampleVoxels out =
+        exampleVoxels(outside, dims, cap, static_cast<std::uint64_t>(params.seed) + 1, "outside");
+    std::vector<glm::ivec3> voxels = in.voxels;
+    voxels.insert(voxels.end(), out.voxels.begin(), out.voxels.end());
+    const std::vector<float> features = gatherClassifierFeatures(intensity, dims, voxels);
+    training_.featureSeconds = secondsSince(start);
+    training_.insideSamples = in.voxels.size();
+    training_.outsideSamples = out.voxels.size();
+    training_.insideCovered = in.covered;
+    training_.outsideCovered = out.covered;
+
+    start = std::chrono::steady_clock::now();
+    std::vector<std::uint8_t> labels(voxels.size(), 0);
+    std::fill(labels.begin(), labels.begin() + static_cast<std::ptrdiff_t>(in.voxels.size()), 1);
+    forest_ = RandomForest::train(features, labels, kClassifierFeatureCount, forestSettings);
+    training_.trainSeconds = secondsSince(start);
+    training_.outOfBagAccuracy = forest_.outOfBagAccuracy();
+
+    start = std::chrono::steady_clock::now();
+    evaluate(intensity);
+    training_.evaluateSeconds = secondsSince(start);
+}
+
+void ClassifierSpeed::evaluate(GLuint intensity) {
+    gpu::Texture texture = gpu::createTexture();
+    glActiveTexture(GL_TEXTURE0 + CLASSIFIER_INTENSITY_UNIT);
+    glBindTexture(GL_TEXTURE_3D, texture.id());
+    glTexStorage3D(GL_TEXTURE_3D, 1, GL_R32F, dims_.x, dims_.y, dims_.z);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    for (const GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) {
+        glTexParameteri(GL_TEXTURE_3D, wrap, GL_CLAMP_TO_EDGE);
+    }
+    gpu::checkGl("allocating the classifier speed texture");
+
+    const std::vector<ForestNode>& nodes = forest_.nodes();
+    const std::vector<std::int32_t>& roots = forest_.roots();
+    const gpu::Buffer nodeBuffer = gpu::createBuffer(
+        GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(nodes.size() * sizeof(ForestNode)),
+        nodes.data(), GL_STATIC_DRAW);
+    const gpu::Buffer rootBuffer = gpu::createBuffer(
+        GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(roots.size() * sizeof(std::int32_t)),
+        roots.data(), GL_STATIC_DRAW);
+    const gpu::Program program = gpu::buildComputeProgram("speed/classifier_evaluate.comp");
+    glUseProgram(program.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFIER_NODES_BINDING, nodeBuffer.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFIER_ROOTS_BINDING, rootBuffer.id());
+    glActiveTexture(GL_TEXTURE0 + CLASSIFIER_INTENSITY_UNIT);
+    glBindTexture(GL_TEXTURE_3D, intensity);
+    glBindImageTexture(CLASSIFIER_OUT_IMAGE_UNIT, texture.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                       GL_R32F);
+    glUniform3i(glGetUniformLocation(program.id(), "classifierDims"), dims_.x, dims_.y, dims_.z);
+    glUniform1i(glGetUniformLocation(program.id(), "treeCount"), static_cast<GLint>(roots.size()));
+    glUniform1i(glGetUniformLocation(program.id(), "maxDepth"), maxDepth_);
+    auto groups = [](int n) {
+        return static_cast<GLuint>((n + kEvaluateGroup - 1) / kEvaluateGroup);
+    };
+    const GLint zOffsetAt = glGetUniformLocation(program.id(), "zOffset");
+    for (int z = 0; z < dims_.z; z += kSlabSlices) {
+        glUniform1i(zOffsetAt, z);
+        glDispatchCompute(groups(dims_.x), groups(dims_.y),
+                          groups(std::min(kSlabSlices, dims_.z - z)));
+        glFlush(); // each slab its own submission
+    }
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    // Finished here, so that the timing is the evaluation's and the solver's first read waits
+    // on nothing.
+    glFinish();
+    gpu::checkGl("evaluating the classifier speed");
+    texture_ = std::move(texture);
+}
+
+} // namespace steerseg::speed

@@ -1,0 +1,61 @@
+#pragma once
+
+// The classification speed (issue 13, docs/speed.md): the operator's inside and outside examples
+// train a random forest over per-voxel features (GPU gather, CPU training), and the forest,
+// evaluated at every voxel on the GPU, gives the data speed P(inside) - P(outside) in [-1, 1]
+// as an R32F 3D texture for the solver. Needs a current GLES 3.1 context for its whole life.
+#include "gpu/gl_handle.hpp"
+#include "speed/example_voxels.hpp"
+#include "speed/random_forest.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <span>
+
+namespace steerseg::speed {
+
+struct ClassifierParams {
+    int trees = 32;
+    int maxDepth = 10;
+    int maxSamplesPerClass = 20000; // in [1, 2^20]
+    std::uint32_t seed = 1;
+};
+
+// What the training took and found; seconds of wall time, GPU work finished.
+struct ClassifierTraining {
+    double featureSeconds = 0.0;  // choosing the sample voxels and gathering their features
+    double trainSeconds = 0.0;    // the forest on the CPU
+    double evaluateSeconds = 0.0; // the forest at every voxel on the GPU
+    std::size_t insideSamples = 0;
+    std::size_t outsideSamples = 0;
+    std::size_t insideCovered = 0; // voxels of the scan the inside examples hold
+    std::size_t outsideCovered = 0;
+    double outOfBagAccuracy = 0.0; // balanced, on the samples (RandomForest::outOfBagAccuracy)
+};
+
+class ClassifierSpeed {
+  public:
+    // intensity: an R32F 3D texture of `dims` real-unit intensities (the scan, or its smoothed
+    // copy), read with texelFetch only. Throws std::invalid_argument with one line for a bad
+    // texture, bad parameters, or a class without examples or without a voxel in the scan.
+    ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<const Example> inside,
+                    std::span<const Example> outside, const ClassifierParams& params = {});
+
+    // R32F 3D texture of dims(): P(inside) - P(outside) per voxel.
+    [[nodiscard]] GLuint texture() const { return texture_.id(); }
+    [[nodiscard]] glm::ivec3 dims() const { return dims_; }
+    [[nodiscard]] const ClassifierTraining& training() const { return training_; }
+    [[nodiscard]] const RandomForest& forest() const { return forest_; }
+
+  private:
+    void evaluate(GLuint intensity);
+
+    glm::ivec3 dims_;
+    int maxDepth_;
+    RandomForest forest_;
+    ClassifierTraining training_;
+    gpu::Texture texture_;
+};
+
+} // namespace steerseg::speed
