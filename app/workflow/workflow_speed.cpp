@@ -1,7 +1,7 @@
 // The speed function and the classifier's examples: the operator's choice of data term, the
 // outside marks (the probes are the inside examples, workflow_params.cpp) and the outside mode.
-// A change travels through changeParams like a parameter's: clamped nothing, sent to the engine
-// (which may refuse it), recorded for undo.
+// A change travels through changeParams like a parameter's: sent to the engine (which may
+// refuse it) and recorded for undo.
 #include "workflow/speed_names.hpp"
 #include "workflow/workflow.hpp"
 
