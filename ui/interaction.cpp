@@ -78,6 +78,12 @@ std::vector<Action> Interaction::onSlice(const Gesture& g, const SliceView& view
         if (!voxel || !insideScan(*voxel, status.scan.dims)) {
             return {};
         }
+        // Outside mode: a tap is a counter-example for the classify speed, wherever the
+        // parameters may change (the workflow refuses it elsewhere).
+        if (status.outsideMode && g.kind == Gesture::Kind::Tap &&
+            (status.state == State::Inspect || editing(status.state))) {
+            return {workflow::MarkOutside{*voxel, config_.probeRadiusMm}};
+        }
         if (status.state == State::Inspect && g.kind == Gesture::Kind::Tap) {
             return {workflow::Probe{*voxel, config_.probeRadiusMm}};
         }

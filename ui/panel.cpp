@@ -291,6 +291,19 @@ std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status&
                 d.param(row);
             }
         }
+        if (!model.speeds.empty()) {
+            d.heading("Speed");
+            d.grid(model.speeds, 3);
+            if (!model.examples.empty()) {
+                ImGui::TextWrapped("Examples: %s", model.examples.c_str());
+            }
+            if (!model.speedNote.empty()) {
+                ImGui::TextWrapped("%s", model.speedNote.c_str());
+            }
+            if (!model.exampleTools.empty()) {
+                d.grid(model.exampleTools, 2);
+            }
+        }
         if (!model.presets.empty()) {
             d.heading("Presets");
             d.grid(model.presets, 2);

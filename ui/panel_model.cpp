@@ -1,5 +1,7 @@
 #include "ui/panel_model.hpp"
 
+#include "workflow/speed_names.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -112,6 +114,35 @@ void addReadouts(const workflow::Status& st, PanelModel& m) {
     m.readouts.push_back({"done", st.converged ? "yes" : "no"});
 }
 
+// The speed is steered like a parameter: the same states, live while evolving. The examples
+// matter only to classify, so its tools appear only when it is chosen.
+void addSpeed(const workflow::Status& st, PanelModel& m) {
+    for (speed::SpeedKind k : workflow::kSpeedKinds) {
+        m.speeds.push_back({speedLabel(k) + "##speed", workflow::SetSpeed{k}, st.speed == k});
+    }
+    if (st.speed != speed::SpeedKind::Classify) {
+        return;
+    }
+    const std::size_t inside = st.insideExamples.size();
+    const std::size_t outside = st.outsideExamples.size();
+    m.examples = std::to_string(inside) + " inside, " + std::to_string(outside) + " outside";
+    m.exampleTools.push_back({st.outsideMode ? "Outside: on" : "Outside: off",
+                              workflow::SetOutsideMode{!st.outsideMode}, st.outsideMode});
+    m.exampleTools.push_back(
+        {"Clear examples", workflow::ClearExamples{}, false, inside + outside > 0});
+    if (st.speedInForce != speed::SpeedKind::Classify) {
+        std::string needs;
+        if (inside == 0) {
+            needs = "an inside example (probe)";
+        }
+        if (outside == 0) {
+            needs += std::string(needs.empty() ? "" : " and ") + "an outside example";
+        }
+        m.speedNote = "Classify needs " + needs + "; " +
+                      std::string(workflow::speedName(st.speedInForce)) + " runs until then.";
+    }
+}
+
 } // namespace
 
 std::string stateLabel(State s) {
@@ -150,6 +181,18 @@ std::string paramLabel(Param p) {
         return "alpha";
     case Param::Radius:
         return "brush";
+    }
+    return "?";
+}
+
+std::string speedLabel(speed::SpeedKind kind) {
+    switch (kind) {
+    case speed::SpeedKind::Threshold:
+        return "Threshold";
+    case speed::SpeedKind::Edge:
+        return "Edge";
+    case speed::SpeedKind::Classify:
+        return "Classify";
     }
     return "?";
 }
@@ -240,6 +283,10 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
         }
     }
 
+    if (s == State::Inspect || editing(s)) {
+        addSpeed(st, m);
+    }
+
     if (s == State::Inspect) {
         WindowRow w;
         w.min = st.scan.minValue;
@@ -300,7 +347,8 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
 
 std::vector<Action> reachableActions(const PanelModel& m) {
     std::vector<Action> out;
-    for (const auto* list : {&m.scans, &m.presets, &m.tools, &m.views, &m.nav}) {
+    for (const auto* list :
+         {&m.scans, &m.presets, &m.speeds, &m.exampleTools, &m.tools, &m.views, &m.nav}) {
         for (const PanelButton& b : *list) {
             if (b.enabled) {
                 out.push_back(b.action);

@@ -55,10 +55,16 @@ struct PanelModel {
     std::optional<WindowRow> window;
     std::vector<PanelButton> scans;   // LoadScan, one per scan
     std::vector<PanelButton> presets; // ApplyPreset
-    std::vector<PanelButton> tools;   // Run/Pause, erase mode, Undo, Redo, Restart, Export ...
-    std::vector<PanelButton> views;   // ShowSlices
-    std::vector<PanelButton> nav;     // Back, Proceed (labelled for the state), Dismiss
-    std::vector<Readout> devices;     // the controllers: name, "connected" or "disconnected"
+    std::vector<PanelButton> speeds;  // SetSpeed: threshold, edge, classify (the chosen one active)
+    // Classify chosen: the outside-mode toggle and Clear examples, the counts in `examples`,
+    // and `speedNote` while the classifier waits for an example of each kind.
+    std::vector<PanelButton> exampleTools;
+    std::string examples; // "2 inside, 1 outside" ("" unless classify is chosen)
+    std::string speedNote;
+    std::vector<PanelButton> tools; // Run/Pause, erase mode, Undo, Redo, Restart, Export ...
+    std::vector<PanelButton> views; // ShowSlices
+    std::vector<PanelButton> nav;   // Back, Proceed (labelled for the state), Dismiss
+    std::vector<Readout> devices;   // the controllers: name, "connected" or "disconnected"
 };
 
 // `scans`: what the Load list offers ("builtin:sample" and the paths the kiosk passes in).
@@ -73,6 +79,8 @@ std::vector<workflow::Action> reachableActions(const PanelModel& model);
 // nothing).
 std::string stateLabel(workflow::State state);
 std::string paramLabel(workflow::Param param);
+// "Threshold", "Edge", "Classify": the speed buttons' words.
+std::string speedLabel(speed::SpeedKind kind);
 std::string proceedLabel(workflow::State state);
 // A scan's name for its button: the file or folder name, "Sample" for builtin:sample.
 std::string scanLabel(const std::string& path);

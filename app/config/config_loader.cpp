@@ -132,6 +132,7 @@ std::vector<ConfigProblem> applyConfigText(KioskConfig& config, std::string_view
     section("ui", detail::readUi, next.ui);
     section("probe", detail::readProbe, next.probe);
     section("brush", detail::readBrush, next.brush);
+    section("speed", detail::readSpeed, next.speed);
     section("export", detail::readExport, next.exports);
     section("audit", detail::readAudit, next.audit);
     section("autosave", detail::readAutosave, next.autosave);

@@ -1,5 +1,7 @@
 #include "config/config_sections.hpp"
 
+#include "workflow/speed_names.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -170,6 +172,25 @@ void readProbe(TableReader& t, ProbeConfig& p) {
     }
     if (auto v = t.number("eps_floor", {0.0, 1e6})) {
         p.epsFloor = *v;
+    }
+}
+
+void readSpeed(TableReader& t, SpeedConfig& s) {
+    if (auto v = t.text("kind", [](std::string_view word) {
+            return workflow::speedFromName(word)
+                       ? ""
+                       : "must be \"threshold\", \"edge\" or \"classify\"";
+        })) {
+        s.kind = *workflow::speedFromName(*v);
+    }
+    if (auto v = t.integer("smooth_iterations", {0, 1000})) {
+        s.smoothIterations = static_cast<int>(*v);
+    }
+    if (auto v = t.number("conductance_factor", {0.0, 10.0, true})) {
+        s.conductanceFactor = *v;
+    }
+    if (auto v = t.number("kappa_factor", {0.0, 10.0, true})) {
+        s.kappaFactor = *v;
     }
 }
 

@@ -13,6 +13,7 @@ void readFrame(TableReader& table, FrameConfig& frame);
 void readUi(TableReader& table, UiConfig& ui);
 void readProbe(TableReader& table, ProbeConfig& probe);
 void readBrush(TableReader& table, BrushConfig& brush);
+void readSpeed(TableReader& table, SpeedConfig& speed);
 void readExport(TableReader& table, ExportConfig& exports);
 void readAudit(TableReader& table, AuditConfig& audit);
 void readAutosave(TableReader& table, AutosaveConfig& autosave);

@@ -2,6 +2,8 @@
 
 // The kiosk's settings as one plain value. The defaults here are the shipped file
 // config/steerseg.toml, which documents every key; a unit test keeps the two equal.
+#include "speed/speed_kind.hpp" // the enum only: config links no speed code
+
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -58,6 +60,18 @@ struct ProbeConfig {
 struct BrushConfig {
     double radius = 3.0; // voxels
     bool operator==(const BrushConfig&) const = default;
+};
+
+// The speed function after a load (docs/speed.md) and the edge speed's preprocessing. The
+// smoothing (speed::SmoothingParams) and kappa (speed::edgeFactor) are in the scan's real
+// units there; here they are fractions of the scan's value range (max - min), so one file
+// serves CT in HU and MR in arbitrary units.
+struct SpeedConfig {
+    speed::SpeedKind kind = speed::SpeedKind::Threshold;
+    int smoothIterations = 5;        // anisotropic diffusion steps before the edge factor, 0 = none
+    double conductanceFactor = 0.02; // diffusion conductance K = factor * value range
+    double kappaFactor = 0.02;       // kappa = factor * value range (per voxel)
+    bool operator==(const SpeedConfig&) const = default;
 };
 
 struct ExportConfig {
@@ -151,6 +165,7 @@ struct KioskConfig {
     UiConfig ui;
     ProbeConfig probe;
     BrushConfig brush;
+    SpeedConfig speed;
     ExportConfig exports;
     AuditConfig audit;
     AutosaveConfig autosave;

@@ -1,6 +1,7 @@
 #include "kiosk/autosave_snapshot.hpp"
 
 #include "workflow/param_ranges.hpp"
+#include "workflow/speed_names.hpp"
 #include "workflow/utc_time.hpp"
 
 #include <array>
@@ -58,8 +59,48 @@ std::optional<workflow::State> stateFromName(const std::string& name) {
     return std::nullopt;
 }
 
+nlohmann::json spheres(const std::vector<solver::Sphere>& list) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const solver::Sphere& e : list) {
+        out.push_back({e.centre.x, e.centre.y, e.centre.z, e.radius});
+    }
+    return out;
+}
+
+std::vector<solver::Sphere> readSpheres(const nlohmann::json& params, const char* key) {
+    std::vector<solver::Sphere> out;
+    if (!params.contains(key)) {
+        return out;
+    }
+    for (const nlohmann::json& e : params.at(key)) {
+        out.push_back({{e.at(0).get<float>(), e.at(1).get<float>(), e.at(2).get<float>()},
+                       e.at(3).get<float>()});
+    }
+    if (out.size() > workflow::kMaxExamples) {
+        throw AutosaveFormatError(std::string("more ") + key + " examples than a session keeps");
+    }
+    return out;
+}
+
+// Snapshots from before the speed choice have none of these keys: the threshold speed.
+speed::SpeedKind readSpeed(const nlohmann::json& params, const char* key) {
+    if (!params.contains(key)) {
+        return speed::SpeedKind::Threshold;
+    }
+    const std::string name = params.at(key).get<std::string>();
+    const std::optional<speed::SpeedKind> kind = workflow::speedFromName(name);
+    if (!kind) {
+        throw AutosaveFormatError("unknown speed '" + name + "'");
+    }
+    return *kind;
+}
+
 nlohmann::json metadata(const AutosaveSnapshot& s) {
-    nlohmann::json params{{"preset", s.params.preset}};
+    nlohmann::json params{{"preset", s.params.preset},
+                          {"speed", workflow::speedName(s.params.speed.kind)},
+                          {"speed_fallback", workflow::speedName(s.params.fallback)},
+                          {"inside", spheres(s.params.speed.inside)},
+                          {"outside", spheres(s.params.speed.outside)}};
     for (int i = 0; i < workflow::kParamCount; ++i) {
         const auto p = static_cast<workflow::Param>(i);
         params[std::string(workflow::paramName(p))] = s.params.values[workflow::indexOf(p)];
@@ -97,6 +138,10 @@ void readMetadata(const nlohmann::json& j, AutosaveSnapshot& s) {
     s.state = *state;
     const nlohmann::json& params = j.at("params");
     s.params.preset = params.at("preset").get<std::string>();
+    s.params.speed.kind = readSpeed(params, "speed");
+    s.params.fallback = readSpeed(params, "speed_fallback");
+    s.params.speed.inside = readSpheres(params, "inside");
+    s.params.speed.outside = readSpheres(params, "outside");
     for (int i = 0; i < workflow::kParamCount; ++i) {
         const auto p = static_cast<workflow::Param>(i);
         s.params.values[workflow::indexOf(p)] =

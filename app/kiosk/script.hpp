@@ -55,8 +55,10 @@ struct Condition {
         Compare,     // a numeric field against a value
         MessageHas,  // status.message contains `text`
         ExportedHas, // status.exportedPath contains `text`
+        Speed,       // status.speedInForce == speed: the speed the engine runs
     } kind = State;
     workflow::State state = workflow::State::NoScan;
+    speed::SpeedKind speed = speed::SpeedKind::Threshold;
     std::string field; // Compare: "volume_ml", "iterations", "T", ... (statusFields())
     enum class Op { Less, LessEqual, Greater, GreaterEqual, Equal, NotEqual } op = Op::Equal;
     double value = 0.0;

@@ -1,5 +1,7 @@
 #include "kiosk/script_condition.hpp"
 
+#include "workflow/speed_names.hpp"
+
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -31,6 +33,11 @@ const std::vector<std::pair<std::string_view, Getter>>& fieldTable() {
         {"can_undo", [](const S& s) { return flag(s.canUndo); }},
         {"can_redo", [](const S& s) { return flag(s.canRedo); }},
         {"erase_mode", [](const S& s) { return flag(s.eraseMode); }},
+        {"outside_mode", [](const S& s) { return flag(s.outsideMode); }},
+        {"inside_examples",
+         [](const S& s) { return static_cast<double>(s.insideExamples.size()); }},
+        {"outside_examples",
+         [](const S& s) { return static_cast<double>(s.outsideExamples.size()); }},
         {"load_progress", [](const S& s) { return s.loadProgress; }},
         {"window_level", [](const S& s) { return s.view.windowLevel; }},
         {"window_width", [](const S& s) { return s.view.windowWidth; }},
@@ -127,6 +134,8 @@ bool holds(const Condition& condition, const workflow::Status& status) {
         return status.message.find(condition.text) != std::string::npos;
     case Condition::ExportedHas:
         return status.exportedPath.find(condition.text) != std::string::npos;
+    case Condition::Speed:
+        return status.speedInForce == condition.speed;
     }
     return false;
 }
@@ -150,6 +159,11 @@ std::string observed(const Condition& condition, const workflow::Status& status)
         return "message is \"" + status.message + "\"";
     case Condition::ExportedHas:
         return "exported path is \"" + status.exportedPath + "\"";
+    case Condition::Speed:
+        return "speed is " + std::string(workflow::speedName(status.speedInForce)) +
+               (status.speed != status.speedInForce
+                    ? " (" + std::string(workflow::speedName(status.speed)) + " chosen)"
+                    : "");
     }
     return state;
 }

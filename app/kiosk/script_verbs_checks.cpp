@@ -1,5 +1,6 @@
 #include "kiosk/script_verbs.hpp"
 #include "kiosk/script_words.hpp"
+#include "workflow/speed_names.hpp"
 
 #include <algorithm>
 
@@ -30,11 +31,21 @@ void fieldComparison(Words& w, const std::string& field, Condition& c) {
     c.value = w.number("the value", -kMaxValue, kMaxValue);
 }
 
+speed::SpeedKind speedWord(Words& w) {
+    const std::string name = w.text("threshold, edge or classify");
+    const std::optional<speed::SpeedKind> kind = workflow::speedFromName(name);
+    if (!kind) {
+        throw LineError("speed '" + name + "': give threshold, edge or classify");
+    }
+    return *kind;
+}
+
 StepKind wait(Words& w) {
     const char* usage =
-        "wait converged|loaded|state NAME|iterations N|until FIELD OP VALUE|seconds S [timeout S]";
-    const std::string what = w.text("what to wait for (converged, loaded, state, iterations, "
-                                    "until, seconds)");
+        "wait converged|loaded|state NAME|speed NAME|iterations N|until FIELD OP VALUE|seconds S "
+        "[timeout S]";
+    const std::string what = w.text("what to wait for (converged, loaded, state, speed, "
+                                    "iterations, until, seconds)");
     WaitStep step;
     if (what == "converged") {
         step.condition.kind = Condition::Converged;
@@ -43,6 +54,9 @@ StepKind wait(Words& w) {
     } else if (what == "state") {
         step.condition.kind = Condition::State;
         step.condition.state = stateWord(w);
+    } else if (what == "speed") {
+        step.condition.kind = Condition::Speed;
+        step.condition.speed = speedWord(w);
     } else if (what == "iterations") {
         step.condition.kind = Condition::Iterations;
         step.condition.count = w.integer("the iterations", 1, 100000000);
@@ -68,14 +82,17 @@ StepKind wait(Words& w) {
 }
 
 StepKind expect(Words& w) {
-    const char* usage = "expect state NAME | loaded | converged | FIELD OP VALUE | message "
-                        "contains TEXT | exported contains TEXT";
+    const char* usage = "expect state NAME | speed NAME | loaded | converged | FIELD OP VALUE | "
+                        "message contains TEXT | exported contains TEXT";
     const std::string what = w.text("what to check");
     ExpectStep step;
     Condition& c = step.condition;
     if (what == "state") {
         c.kind = Condition::State;
         c.state = stateWord(w);
+    } else if (what == "speed") {
+        c.kind = Condition::Speed;
+        c.speed = speedWord(w);
     } else if (what == "loaded") {
         c.kind = Condition::Loaded;
     } else if (what == "converged" && w.empty()) {
@@ -89,7 +106,7 @@ StepKind expect(Words& w) {
     } else {
         if (!isStatusField(what)) {
             throw LineError("expect '" + what +
-                            "': not a check (state, loaded, converged, "
+                            "': not a check (state, speed, loaded, converged, "
                             "message, exported, or a field: " +
                             knownFields() + ")");
         }

@@ -1,5 +1,6 @@
 #include "kiosk/script_verbs.hpp"
 #include "kiosk/script_words.hpp"
+#include "workflow/speed_names.hpp"
 
 namespace steerseg::kiosk::detail {
 
@@ -57,6 +58,36 @@ StepKind eraseMode(Words& w) {
         throw LineError("erase_mode '" + on + "': give on or off");
     }
     return actionStep(workflow::SetEraseMode{on == "on"});
+}
+
+StepKind speedVerb(Words& w) {
+    const std::string name = w.text("threshold, edge or classify");
+    w.finish("speed threshold|edge|classify");
+    const std::optional<speed::SpeedKind> kind = workflow::speedFromName(name);
+    if (!kind) {
+        throw LineError("speed '" + name + "': give threshold, edge or classify");
+    }
+    return actionStep(workflow::SetSpeed{*kind});
+}
+
+// An outside example for the classify speed, sized as a probe.
+StepKind outside(Words& w) {
+    workflow::MarkOutside m;
+    m.voxel = voxelWords(w);
+    if (!w.empty()) {
+        m.radiusMm = w.number("the example's radius (mm)", 0.1, 1000.0);
+    }
+    w.finish("outside I J K [RADIUS_MM]");
+    return actionStep(m);
+}
+
+StepKind outsideMode(Words& w) {
+    const std::string on = w.text("on or off");
+    w.finish("outside_mode on|off");
+    if (on != "on" && on != "off") {
+        throw LineError("outside_mode '" + on + "': give on or off");
+    }
+    return actionStep(workflow::SetOutsideMode{on == "on"});
 }
 
 StepKind autosave(Words& w) {
@@ -179,6 +210,10 @@ void addOperatorVerbs(VerbTable& table) {
         {"seed", sphere<workflow::AddSeed>("seed I J K [RADIUS_VOXELS]")},
         {"erase", sphere<workflow::Erase>("erase I J K [RADIUS_VOXELS]")},
         {"erase_mode", eraseMode},
+        {"speed", speedVerb},
+        {"outside", outside},
+        {"outside_mode", outsideMode},
+        {"clear_examples", plain<workflow::ClearExamples>("clear_examples")},
         {"set", set},
         {"nudge", nudge},
         {"select", select},

@@ -198,6 +198,12 @@ void SessionAutosave::save(const workflow::Status& status, SessionEngine& engine
         static_cast<double>(status.params.alpha);
     s.params.values[workflow::indexOf(workflow::Param::Radius)] = status.radius;
     s.params.preset = status.preset;
+    s.params.speed = {status.speed, status.insideExamples, status.outsideExamples};
+    // While classify waits, the speed that runs is the one it falls back to; once it runs, what
+    // it fell back to is not shown and the threshold speed stands in.
+    s.params.fallback = status.speedInForce != speed::SpeedKind::Classify
+                            ? status.speedInForce
+                            : speed::SpeedKind::Threshold;
     s.seeds = status.seeds;
     s.erasures = status.erasures;
     s.iterations = status.iterations;

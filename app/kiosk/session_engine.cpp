@@ -5,6 +5,7 @@
 #include "io/scan_reader.hpp"
 #include "kiosk/view_setup.hpp"
 #include "render/slice_frame.hpp"
+#include "workflow/speed_names.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -205,6 +206,16 @@ bool SessionEngine::hasLevelSet() const {
 void SessionEngine::setParams(const solver::LevelSetParams& params) {
     requireSession().setParams(params);
     changed(); // the speed view shows the parameters
+}
+
+void SessionEngine::setSpeed(const workflow::SpeedChoice& choice) {
+    requireSession();
+    // Until the session applies the edge and classify speeds (issue 13), only the paper's
+    // threshold speed runs; the workflow keeps the previous speed and shows this line.
+    if (choice.kind != speed::SpeedKind::Threshold) {
+        throw std::runtime_error(std::string(workflow::speedName(choice.kind)) +
+                                 " speed not available in this build");
+    }
 }
 
 solver::StepResult SessionEngine::step(int iterations) {

@@ -33,6 +33,7 @@ class SessionEngine final : public workflow::Engine {
     void clearLevelSet() override;
     [[nodiscard]] bool hasLevelSet() const override;
     void setParams(const solver::LevelSetParams& params) override;
+    void setSpeed(const workflow::SpeedChoice& choice) override;
     solver::StepResult step(int iterations) override;
     [[nodiscard]] solver::SolverStats stats() const override;
     [[nodiscard]] double volumeMl() const override;

@@ -52,6 +52,14 @@ template <class T> constexpr std::string_view nameOf() {
         return "erase";
     } else if constexpr (std::is_same_v<T, SetEraseMode>) {
         return "set_erase_mode";
+    } else if constexpr (std::is_same_v<T, SetSpeed>) {
+        return "set_speed";
+    } else if constexpr (std::is_same_v<T, MarkOutside>) {
+        return "mark_outside";
+    } else if constexpr (std::is_same_v<T, ClearExamples>) {
+        return "clear_examples";
+    } else if constexpr (std::is_same_v<T, SetOutsideMode>) {
+        return "set_outside_mode";
     } else if constexpr (std::is_same_v<T, Run>) {
         return "run";
     } else if constexpr (std::is_same_v<T, Pause>) {
@@ -117,6 +125,12 @@ const std::vector<Binding>& bindings() {
         {"quit", [](double) -> Action { return Quit{}; }},
         {"erase_mode:on", [](double) -> Action { return SetEraseMode{true}; }},
         {"erase_mode:off", [](double) -> Action { return SetEraseMode{false}; }},
+        {"speed:threshold", [](double) -> Action { return SetSpeed{speed::SpeedKind::Threshold}; }},
+        {"speed:edge", [](double) -> Action { return SetSpeed{speed::SpeedKind::Edge}; }},
+        {"speed:classify", [](double) -> Action { return SetSpeed{speed::SpeedKind::Classify}; }},
+        {"outside_mode:on", [](double) -> Action { return SetOutsideMode{true}; }},
+        {"outside_mode:off", [](double) -> Action { return SetOutsideMode{false}; }},
+        {"clear_examples", [](double) -> Action { return ClearExamples{}; }},
         {"select:T", [](double) -> Action { return SelectParam{Param::Target}; }},
         {"select:eps", [](double) -> Action { return SelectParam{Param::Epsilon}; }},
         {"select:alpha", [](double) -> Action { return SelectParam{Param::Alpha}; }},

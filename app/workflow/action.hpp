@@ -3,6 +3,9 @@
 // The workflow's vocabulary: the states of the fixed operator workflow and the actions that
 // move it. Devices, gestures, bindings and scripts all end here; nothing in this folder knows
 // where an action came from. No GL, no OS: the workflow runs in unit tests without a GPU.
+#include "speed/speed_kind.hpp" // the enum only
+
+#include <cstddef>
 #include <glm/glm.hpp>
 #include <optional>
 #include <string>
@@ -81,6 +84,21 @@ struct Erase {
 struct SetEraseMode { // a tap on a slice seeds, or erases in erase mode
     bool erase = false;
 };
+// The speed function (docs/speed.md). Classify learns from examples: the probes are its inside
+// examples, MarkOutside gives the outside ones (a tap in outside mode); the newest
+// kMaxExamples of each kind count.
+struct SetSpeed {
+    speed::SpeedKind kind = speed::SpeedKind::Threshold;
+};
+struct MarkOutside {
+    glm::dvec3 voxel{0.0};
+    double radiusMm = 0.0; // <= 0: the probe's radius
+};
+struct ClearExamples {};
+struct SetOutsideMode { // a tap on a slice marks an outside example in outside mode
+    bool outside = false;
+};
+inline constexpr std::size_t kMaxExamples = 3;
 struct Run {};
 struct Pause {};
 struct ToggleRun {}; // run if stopped, pause if running (a PowerMate press, the space bar)
@@ -119,11 +137,11 @@ struct ShowSlices { // which two orientations the slice views show
 };
 struct Quit {};
 
-using Action =
-    std::variant<LoadScan, Probe, ApplyPreset, SetParam, NudgeParam, NudgeSelected, SelectParam,
-                 CycleParam, SetWindow, AddSeed, Erase, SetEraseMode, Run, Pause, ToggleRun, Finish,
-                 Resume, Export, Undo, Redo, Restart, Proceed, Back, Dismiss, RotateView, ZoomView,
-                 PageSlice, SetSlice, ShowSlices, Quit>;
+using Action = std::variant<LoadScan, Probe, ApplyPreset, SetParam, NudgeParam, NudgeSelected,
+                            SelectParam, CycleParam, SetWindow, AddSeed, Erase, SetEraseMode,
+                            SetSpeed, MarkOutside, ClearExamples, SetOutsideMode, Run, Pause,
+                            ToggleRun, Finish, Resume, Export, Undo, Redo, Restart, Proceed, Back,
+                            Dismiss, RotateView, ZoomView, PageSlice, SetSlice, ShowSlices, Quit>;
 
 // "load_scan", "probe", ... (snake_case of the type): the audit log's and scripts' names.
 std::string_view actionName(const Action& action);

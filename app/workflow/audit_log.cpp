@@ -1,5 +1,6 @@
 #include "workflow/audit_log.hpp"
 
+#include "workflow/speed_names.hpp"
 #include "workflow/utc_time.hpp"
 
 #include <cerrno>
@@ -55,6 +56,15 @@ nlohmann::json values(const Erase& a) {
 }
 nlohmann::json values(const SetEraseMode& a) {
     return {{"erase", a.erase}};
+}
+nlohmann::json values(const SetSpeed& a) {
+    return {{"speed", speedName(a.kind)}};
+}
+nlohmann::json values(const MarkOutside& a) {
+    return {{"voxel", vec(a.voxel)}, {"radius_mm", a.radiusMm}};
+}
+nlohmann::json values(const SetOutsideMode& a) {
+    return {{"outside", a.outside}};
 }
 nlohmann::json values(const Export& a) {
     return {{"path", a.path}};

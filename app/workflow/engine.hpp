@@ -5,10 +5,12 @@
 // it in memory. Errors are exceptions with one line for the operator (std::exception::what()).
 #include "solver/level_set_params.hpp" // plain structs only: the workflow links no solver code
 #include "solver/solver_types.hpp"
+#include "speed/speed_kind.hpp" // the enum only: the workflow links no speed code
 
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace steerseg::workflow {
 
@@ -37,6 +39,33 @@ struct ProbeResult {
     std::size_t count = 0; // 0: the sphere missed the scan
 };
 
+// The data term the engine should run (docs/speed.md). Threshold and Edge read T, eps and alpha
+// (setParams); Classify reads alpha and is trained on the examples, spheres in voxels: inside
+// from the operator's probes, outside from the outside marks. The workflow passes examples only
+// to Classify, and only when it has both kinds.
+struct SpeedChoice {
+    speed::SpeedKind kind = speed::SpeedKind::Threshold;
+    std::vector<solver::Sphere> inside;
+    std::vector<solver::Sphere> outside;
+    bool operator==(const SpeedChoice& other) const;
+};
+
+inline bool SpeedChoice::operator==(const SpeedChoice& other) const {
+    const auto same = [](const std::vector<solver::Sphere>& a,
+                         const std::vector<solver::Sphere>& b) {
+        if (a.size() != b.size()) {
+            return false;
+        }
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            if (a[i].centre != b[i].centre || a[i].radius != b[i].radius) {
+                return false;
+            }
+        }
+        return true;
+    };
+    return kind == other.kind && same(inside, other.inside) && same(outside, other.outside);
+}
+
 // A copy of the level set that undo can go back to.
 using SnapshotId = std::uint64_t;
 
@@ -60,6 +89,9 @@ class Engine {
     [[nodiscard]] virtual bool hasLevelSet() const = 0;
 
     virtual void setParams(const solver::LevelSetParams& params) = 0;
+    // Switches the data term; may take a while (smoothing, the edge factor, training run
+    // inside it). Throws with one line when it cannot (the previous speed stays in force).
+    virtual void setSpeed(const SpeedChoice& choice) = 0;
     virtual solver::StepResult step(int iterations) = 0;
     [[nodiscard]] virtual solver::SolverStats stats() const = 0;
     // Segmented volume in millilitres (counted on the GPU side's mask). While the solver runs

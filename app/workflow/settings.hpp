@@ -3,6 +3,8 @@
 // What the workflow takes from the configuration: tissue presets, the probe's rules, the brush,
 // the export folder and the depth of undo. Plain data; config/ fills it from TOML and
 // validateSettings() says in one line what is wrong with it.
+#include "speed/speed_kind.hpp" // the enum only
+
 #include <chrono>
 #include <filesystem>
 #include <functional>
@@ -38,12 +40,17 @@ struct Settings {
     // extensions the engine's writer knows); the first is the one the status reports.
     std::vector<std::string> exportFormats{"nii.gz"};
     int maxUndo = 32; // undo entries kept; older ones are dropped
-    WallClock clock;  // export names' time stamps; empty: the system clock (tests fix it)
+    // The speed after a load. Classify runs the threshold speed until it has an example of
+    // each kind; a speed the engine refuses after a load leaves the threshold speed, with a
+    // notice.
+    speed::SpeedKind defaultSpeed = speed::SpeedKind::Threshold;
+    WallClock clock; // export names' time stamps; empty: the system clock (tests fix it)
 };
 
 // Throws std::invalid_argument with one line naming the first bad value: non-finite numbers,
-// a negative eps floor, a probe factor or radius <= 0, maxUndo outside [1, 10000], a preset
-// without a name or with a duplicate one, or with eps < 0 or alpha outside [0, 1].
+// a negative eps floor, a probe factor or radius <= 0, maxUndo outside [1, 10000], an unknown
+// default speed, a preset without a name or with a duplicate one, or with eps < 0 or alpha
+// outside [0, 1].
 void validateSettings(const Settings& settings);
 
 } // namespace steerseg::workflow

@@ -47,6 +47,13 @@ struct Status {
     Param selected = Param::Target;
     std::array<ParamRange, kParamCount> ranges{};
     bool eraseMode = false;
+    bool outsideMode = false; // a tap marks an outside example (MarkOutside)
+    // The speed the operator chose, and the one the engine runs: they differ while Classify
+    // waits for an inside (probe) and an outside example.
+    speed::SpeedKind speed = speed::SpeedKind::Threshold;
+    speed::SpeedKind speedInForce = speed::SpeedKind::Threshold;
+    std::vector<solver::Sphere> insideExamples; // voxels, oldest first (at most kMaxExamples)
+    std::vector<solver::Sphere> outsideExamples;
     bool hasLevelSet = false;
     int seeds = 0;
     int erasures = 0;

@@ -16,10 +16,14 @@
 
 namespace steerseg::workflow {
 
-// Every parameter the operator sets (indexed by Param) and the preset they came from.
+// Every parameter the operator sets (indexed by Param) and the preset they came from, and the
+// speed: the kind chosen with the classifier's examples, and the kind that runs while Classify
+// waits for an example of each kind (the one in force when Classify was chosen).
 struct ParamValues {
     std::array<double, kParamCount> values{};
     std::string preset;
+    SpeedChoice speed;
+    speed::SpeedKind fallback = speed::SpeedKind::Threshold;
     bool operator==(const ParamValues&) const = default;
 };
 

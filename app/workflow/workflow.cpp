@@ -1,5 +1,7 @@
 #include "workflow/workflow.hpp"
 
+#include "workflow/one_line.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -38,27 +40,17 @@
 //                                                  NoScan without
 //   any        Quit                    (same)      quitRequested() becomes true
 //
-// Parameters (Probe, ApplyPreset, SetParam, NudgeParam, NudgeSelected) change in Inspect,
-// Seeding, Evolving and Paused, live. Spheres: AddSeed in Inspect, Seeding, Evolving, Paused;
-// Erase in Seeding, Evolving, Paused. Undo/Redo in Inspect, Seeding, Evolving, Paused. The view
-// (RotateView, ZoomView, PageSlice, SetSlice, ShowSlices, SetWindow), SelectParam, CycleParam
-// and SetEraseMode in any state with a scan. Dismiss in any state clears the notice. Everything
+// Parameters (Probe, ApplyPreset, SetParam, NudgeParam, NudgeSelected) and the speed (SetSpeed,
+// MarkOutside, ClearExamples) change in Inspect, Seeding, Evolving and Paused, live. Spheres:
+// AddSeed in Inspect, Seeding, Evolving, Paused; Erase in Seeding, Evolving, Paused. Undo/Redo
+// in Inspect, Seeding, Evolving, Paused. The view (RotateView, ZoomView, PageSlice, SetSlice,
+// ShowSlices, SetWindow), SelectParam, CycleParam, SetEraseMode and SetOutsideMode in any
+// state with a scan. Dismiss in any state clears the notice. Everything
 // else is refused with a one-line reason and changes nothing.
 
 namespace steerseg::workflow {
 
 namespace {
-
-// Engines and readers throw one line for the operator; a stray newline must not break the
-// panel or the audit record.
-std::string oneLine(const char* what) {
-    std::string s = what != nullptr ? what : "";
-    const auto nl = s.find_first_of("\r\n");
-    if (nl != std::string::npos) {
-        s.resize(nl);
-    }
-    return s.empty() ? std::string("unexpected failure") : s;
-}
 
 Settings validated(Settings s) {
     validateSettings(s);
@@ -76,6 +68,7 @@ bool keepsNotice(const Action& action) {
            std::holds_alternative<SelectParam>(action) ||
            std::holds_alternative<CycleParam>(action) ||
            std::holds_alternative<SetEraseMode>(action) ||
+           std::holds_alternative<SetOutsideMode>(action) ||
            std::holds_alternative<SetWindow>(action) || std::holds_alternative<Quit>(action);
 }
 
@@ -277,6 +270,9 @@ void Workflow::forgetScan() {
     status_.preset.clear();
     status_.exportedPath.clear();
     status_.eraseMode = false;
+    status_.outsideMode = false;
+    status_.insideExamples.clear(); // the next scan's examples start with its first probe
+    status_.outsideExamples.clear();
     status_.view = ViewState{};
 }
 

@@ -85,6 +85,10 @@ class Workflow {
     Outcome on(const AddSeed& a);
     Outcome on(const Erase& a);
     Outcome on(const SetEraseMode& a);
+    Outcome on(const SetSpeed& a);
+    Outcome on(const MarkOutside& a);
+    Outcome on(const ClearExamples& a);
+    Outcome on(const SetOutsideMode& a);
     Outcome on(const Run& a);
     Outcome on(const Pause& a);
     Outcome on(const ToggleRun& a);
@@ -123,6 +127,17 @@ class Workflow {
     [[nodiscard]] ParamValues clamped(ParamValues values) const;
     void setDefaultParams();
 
+    // The speed and the classifier's examples (workflow_speed.cpp).
+    // What the engine runs for these values: Classify with an example of each kind, else the
+    // fallback; the examples travel only with Classify.
+    [[nodiscard]] static SpeedChoice speedFor(const ParamValues& values);
+    // An example sphere in voxels for a probe-sized sphere in mm; nullopt outside the scan.
+    [[nodiscard]] std::optional<solver::Sphere> exampleAt(const glm::dvec3& voxel,
+                                                          double radiusMm) const;
+    void showSpeed(const ParamValues& values, speed::SpeedKind inForce);
+    // Appends, dropping the oldest past kMaxExamples.
+    static void addExample(std::vector<solver::Sphere>& examples, const solver::Sphere& example);
+
     // The level set (workflow_edits.cpp).
     Outcome sphereEdit(const glm::dvec3& voxel, double radius, bool seed);
     void editLevelSet(std::string_view what, const std::function<void()>& edit, int seeds,
@@ -145,7 +160,8 @@ class Workflow {
     AuditLog* audit_;
     UndoStack undo_;
     Status status_;
-    ParamValues params_; // as the status shows them (T, eps, alpha rounded to float)
+    ParamValues params_;      // as the status shows them (T, eps, alpha rounded to float)
+    SpeedChoice engineSpeed_; // what the engine last accepted
     bool scanLoaded_ = false;
     bool dirty_ = false; // the level set changed since it was last exported
     bool quit_ = false;

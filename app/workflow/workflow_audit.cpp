@@ -1,5 +1,6 @@
 // What an accepted action changed, for its audit record's "result": the values it set after
 // clamping (the action's own "values" are what was asked for).
+#include "workflow/speed_names.hpp"
 #include "workflow/workflow.hpp"
 
 #include <array>
@@ -46,6 +47,13 @@ nlohmann::json Workflow::resultOf(const Action& action) const {
                               {"has_level_set", status_.hasLevelSet},
                               {"volume_ml", status_.volumeMl}};
     };
+    // The speed as chosen and as the engine runs it (they differ while classify waits).
+    const auto speed = [this] {
+        return nlohmann::json{{"speed", speedName(status_.speed)},
+                              {"speed_in_force", speedName(status_.speedInForce)},
+                              {"inside_examples", status_.insideExamples.size()},
+                              {"outside_examples", status_.outsideExamples.size()}};
+    };
     const ViewState& v = status_.view;
     return std::visit(
         [&](const auto& a) -> nlohmann::json {
@@ -55,6 +63,7 @@ nlohmann::json Workflow::resultOf(const Action& action) const {
                 r["mean"] = lastProbe_.mean;
                 r["stddev"] = lastProbe_.stddev;
                 r["count"] = lastProbe_.count;
+                r.update(speed());
                 return r;
             } else if constexpr (std::is_same_v<A, ApplyPreset>) {
                 nlohmann::json r = params();
@@ -69,8 +78,13 @@ nlohmann::json Workflow::resultOf(const Action& action) const {
             } else if constexpr (isOneOf<A, Undo, Redo>) {
                 nlohmann::json r = params();
                 r.update(levelSet());
+                r.update(speed());
                 r["entry"] = lastUndone_;
                 return r;
+            } else if constexpr (isOneOf<A, SetSpeed, MarkOutside, ClearExamples>) {
+                return speed();
+            } else if constexpr (std::is_same_v<A, SetOutsideMode>) {
+                return {{"outside_mode", status_.outsideMode}, {"erase_mode", status_.eraseMode}};
             } else if constexpr (isOneOf<A, SelectParam, CycleParam>) {
                 return {{"selected", paramName(status_.selected)}};
             } else if constexpr (isOneOf<A, Export, Proceed>) {

@@ -168,6 +168,9 @@ Workflow::Outcome Workflow::on(const SetEraseMode& a) {
         return no(*why);
     }
     status_.eraseMode = a.erase;
+    if (a.erase) {
+        status_.outsideMode = false; // one meaning per tap
+    }
     return ok();
 }
 

@@ -1,10 +1,12 @@
 // The speed's parameters and the brush: probe, presets, absolute and relative changes, the
 // knob's selection. Every change is clamped to the scan's ranges, sent to the engine at once
 // (live while evolving) and recorded for undo.
+#include "workflow/one_line.hpp"
 #include "workflow/workflow.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace steerseg::workflow {
 
@@ -53,6 +55,15 @@ ParamValues Workflow::clamped(ParamValues v) const {
 }
 
 void Workflow::applyParams(const ParamValues& values, bool force) {
+    // The speed first: when the engine refuses it (it throws) nothing has changed yet.
+    SpeedChoice want = speedFor(values);
+    const bool newSpeed = force || want != engineSpeed_;
+    if (newSpeed) {
+        engine_.setSpeed(want);
+        engineSpeed_ = std::move(want);
+        status_.converged = false;
+    }
+    showSpeed(values, engineSpeed_.kind);
     const solver::LevelSetParams p{static_cast<float>(values.values[indexOf(Param::Target)]),
                                    static_cast<float>(values.values[indexOf(Param::Epsilon)]),
                                    static_cast<float>(values.values[indexOf(Param::Alpha)])};
@@ -77,7 +88,18 @@ void Workflow::setDefaultParams() {
     v.values[indexOf(Param::Epsilon)] = std::max(settings_.epsFloor, (hi - lo) / 10.0);
     v.values[indexOf(Param::Alpha)] = 0.8;
     v.values[indexOf(Param::Radius)] = settings_.defaultRadius;
-    applyParams(clamped(v), true); // a new scan: the engine hears its parameters
+    v.speed.kind = settings_.defaultSpeed;
+    try {
+        applyParams(clamped(v), true); // a new scan: the engine hears its parameters
+    } catch (const std::exception& e) {
+        if (settings_.defaultSpeed == speed::SpeedKind::Threshold) {
+            throw;
+        }
+        // The scan is fine; the operator can still steer with the paper's speed.
+        v.speed.kind = speed::SpeedKind::Threshold;
+        applyParams(clamped(v), true);
+        status_.message = "the threshold speed runs: " + oneLine(e.what());
+    }
 }
 
 Workflow::Outcome Workflow::changeParams(ParamValues next, std::string_view what,
@@ -174,6 +196,10 @@ Workflow::Outcome Workflow::on(const Probe& a) {
     }
     lastProbe_ = p;
     ParamValues next = params_;
+    // The probe's sphere is the classifier's inside example (the tissue the operator wants).
+    if (auto example = exampleAt(a.voxel, radius)) {
+        addExample(next.speed.inside, *example);
+    }
     next.values[indexOf(Param::Target)] = p.mean;
     next.values[indexOf(Param::Epsilon)] =
         std::max(settings_.probeEpsFactor * p.stddev, settings_.epsFloor);

@@ -1,4 +1,7 @@
+#include "workflow/one_line.hpp"
 #include "workflow/workflow.hpp"
+
+#include <string>
 
 namespace steerseg::workflow {
 
@@ -35,9 +38,21 @@ Workflow::Outcome Workflow::restoreSession(const RestoredSession& restored) {
                   std::string(stateName(status_.state)));
     }
     cause_ = "resume";
+    std::string notice = restored.notice;
     try {
         undo_.clear();
-        applyParams(clamped(restored.params), true);
+        try {
+            applyParams(clamped(restored.params), true);
+        } catch (const std::exception& e) {
+            if (restored.params.speed.kind == speed::SpeedKind::Threshold) {
+                throw;
+            }
+            // The level set is back; the speed that shaped it can be chosen again.
+            ParamValues threshold = restored.params;
+            threshold.speed.kind = speed::SpeedKind::Threshold;
+            applyParams(clamped(threshold), true);
+            notice = "the threshold speed runs: " + oneLine(e.what());
+        }
         status_.seeds = restored.seeds;
         status_.erasures = restored.erasures;
         status_.converged = false;
@@ -50,7 +65,7 @@ Workflow::Outcome Workflow::restoreSession(const RestoredSession& restored) {
     // Work that was never exported is still unexported.
     dirty_ = status_.hasLevelSet;
     refreshUndoFlags();
-    enter(resumedState(restored.state, status_.hasLevelSet), restored.notice);
+    enter(resumedState(restored.state, status_.hasLevelSet), notice);
     noteAuditError();
     return ok();
 }

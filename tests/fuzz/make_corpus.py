@@ -161,11 +161,13 @@ def script():
         "run\nwait iterations 5 timeout 9\npause\nrotate 1 2\nzoom 2\npage axial -1\n"
         "slice coronal 3\nshow sagittal axial\nundo\nredo\nrestart\nproceed\nback\nfinish\n"
         "resume\ndismiss\nexport\nexport $OUT/m.nii.gz\nframe ${OUT}/f.png\nautosave resume\n"
-        "autosave discard\nquit\n")
+        "autosave discard\nspeed classify\noutside 1 2 3 4\noutside 1 2 3\noutside_mode on\n"
+        "clear_examples\nspeed edge\nquit\n")
     out("script", "checks.session",
         "wait loaded\nwait converged timeout 3\nwait state review\nwait seconds 2\n"
         "expect state done\nexpect volume_ml >= 1.5\nexpect converged\n"
         "expect message contains \"a # b\"\nexpect exported contains x\n"
+        "wait speed classify timeout 4\nexpect speed edge\nexpect outside_examples == 1\n"
         "dice $EXPORTED $DATA/r.nii.gz label 3 >= 0.8\n")
     out("script", "errors.session",
         "jump\nat -1 run\nat 5 run\nat 4 run\nseed 1 2 nan\nset eps 1e400\nload \"open\n"

@@ -77,6 +77,7 @@ workflow::LoadPoll FakeEngine::pollLoad() {
     inside_ = 0;
     iterations_ = 0;
     time_ = 0.0F;
+    speed_ = {}; // a new scan starts with the paper's speed, as the session does
     changed();
     p.kind = workflow::LoadPoll::Ready;
     p.progress = 1.0;
@@ -182,6 +183,36 @@ void FakeEngine::setParams(const solver::LevelSetParams& p) {
     }
     ++setParamsCalls;
     params_ = p;
+    changed();
+}
+
+void FakeEngine::setSpeed(const workflow::SpeedChoice& choice) {
+    requireScan("setSpeed");
+    const bool classify = choice.kind == speed::SpeedKind::Classify;
+    if (classify && (choice.inside.empty() || choice.outside.empty())) {
+        misused("setSpeed classify without an example of each kind");
+    }
+    if (!classify && (!choice.inside.empty() || !choice.outside.empty())) {
+        misused("setSpeed with examples for a speed that learns nothing");
+    }
+    for (const auto* list : {&choice.inside, &choice.outside}) {
+        for (const solver::Sphere& s : *list) {
+            for (int a = 0; a < 3; ++a) {
+                if (!std::isfinite(s.centre[a]) || s.centre[a] < 0.0F ||
+                    s.centre[a] > static_cast<float>(scan_.dims[a] - 1)) {
+                    misused("an example centred outside the scan");
+                }
+            }
+            if (!std::isfinite(s.radius) || s.radius <= 0.0F) {
+                misused("an example with a radius <= 0");
+            }
+        }
+    }
+    if (!speedError.empty() && choice.kind != speed::SpeedKind::Threshold) {
+        throw std::runtime_error(speedError);
+    }
+    speeds.push_back(choice);
+    speed_ = choice;
     changed();
 }
 

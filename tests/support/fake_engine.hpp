@@ -30,14 +30,19 @@ class FakeEngine : public workflow::Engine {
     std::string stepError;           // non-empty: step throws it
     std::string editError;           // non-empty: addSeed and erase throw it
     std::string snapshotError;       // non-empty: snapshot throws it
-    double probeStddev = 10.0;       // the spread every probe reports
-    int convergeAfter = 40;          // iterations without an edit or new parameters until converged
-    bool writeExports = false;       // exportMask writes a small file at the path
+    // Non-empty: setSpeed throws it for edge and classify (the threshold speed prepares
+    // nothing, so nothing can fail; the kiosk's engine always accepts it).
+    std::string speedError;
+    double probeStddev = 10.0; // the spread every probe reports
+    int convergeAfter = 40;    // iterations without an edit or new parameters until converged
+    bool writeExports = false; // exportMask writes a small file at the path
 
     // --- what happened ----------------------------------------------------------------------
     std::vector<std::string> loads;             // beginLoad's paths
     std::vector<std::filesystem::path> exports; // successful exports
     int setParamsCalls = 0;
+    std::vector<workflow::SpeedChoice> speeds; // setSpeed's accepted choices, in order
+    [[nodiscard]] speed::SpeedKind speedKind() const { return speed_.kind; }
     [[nodiscard]] const solver::LevelSetParams& params() const { return params_; }
     [[nodiscard]] std::size_t liveSnapshots() const { return snapshots_.size(); }
     [[nodiscard]] int misuse() const { return misuse_; }
@@ -57,6 +62,7 @@ class FakeEngine : public workflow::Engine {
     void clearLevelSet() override;
     [[nodiscard]] bool hasLevelSet() const override { return inside_ > 0; }
     void setParams(const solver::LevelSetParams& params) override;
+    void setSpeed(const workflow::SpeedChoice& choice) override;
     solver::StepResult step(int iterations) override;
     [[nodiscard]] solver::SolverStats stats() const override;
     [[nodiscard]] double volumeMl() const override;
@@ -88,6 +94,7 @@ class FakeEngine : public workflow::Engine {
     float time_ = 0.0F;
     int sinceChange_ = 0;
     solver::LevelSetParams params_;
+    workflow::SpeedChoice speed_;
     std::map<workflow::SnapshotId, LevelSet> snapshots_;
     workflow::SnapshotId nextId_ = 1;
     mutable int misuse_ = 0;

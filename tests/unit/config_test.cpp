@@ -79,6 +79,10 @@ std::vector<std::string> differences(const KioskConfig& a, const KioskConfig& b)
     field("probe.eps_factor", a.probe.epsFactor == b.probe.epsFactor);
     field("probe.eps_floor", a.probe.epsFloor == b.probe.epsFloor);
     field("brush.radius", a.brush.radius == b.brush.radius);
+    field("speed.kind", a.speed.kind == b.speed.kind);
+    field("speed.smooth_iterations", a.speed.smoothIterations == b.speed.smoothIterations);
+    field("speed.conductance_factor", a.speed.conductanceFactor == b.speed.conductanceFactor);
+    field("speed.kappa_factor", a.speed.kappaFactor == b.speed.kappaFactor);
     field("export.folder", a.exports.folder == b.exports.folder);
     field("export.formats", a.exports.formats == b.exports.formats);
     field("audit.path", a.audit.path == b.audit.path);
@@ -210,6 +214,7 @@ TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
     other.ui = {12.0, 2.0, 900};
     other.probe = {7.0, 3.0, 20.0};
     other.brush = {9.0};
+    other.speed = {speed::SpeedKind::Classify, 40, 0.5, 0.25};
     other.exports = {"elsewhere", {"nrrd"}};
     other.audit = {"elsewhere.jsonl"};
     for (config::Preset& p : other.presets) {
@@ -224,9 +229,9 @@ TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
     for (config::InputDeviceConfig& d : other.input.devices) {
         d = {d.name + "x", config::InputDeviceKind::GpioLed, 1, 2, 3, 4, "/x", "c", "l", true, 1.0};
     }
-    // 25 plain fields, 6 per preset (its name is its identity), every binding.
+    // 29 plain fields, 6 per preset (its name is its identity), every binding.
     ASSERT_EQ(differences(other, config::defaultConfig()).size(),
-              25U + 6U * other.presets.size() + other.bindings.keys.size() +
+              29U + 6U * other.presets.size() + other.bindings.keys.size() +
                   other.bindings.knobs.size() + other.bindings.buttons.size() +
                   other.input.devices.size());
 
@@ -315,6 +320,27 @@ TEST_F(ConfigTest, OutOfRange) {
                        "display.touch_calibration", "six numbers");
     }
     expectRejected("[audit]\npath = \"\"\n", 2, "audit.path", "must not be empty");
+}
+
+TEST_F(ConfigTest, Speed) {
+    const fs::path file = write("speed.toml", "[speed]\nkind = \"edge\"\nsmooth_iterations = 0\n"
+                                              "conductance_factor = 0.1\nkappa_factor = 0.5\n");
+    const config::LoadedConfig loaded = load({file});
+    EXPECT_TRUE(loaded.problems.empty()) << describeAll(loaded.problems);
+    EXPECT_EQ(loaded.config.speed.kind, speed::SpeedKind::Edge);
+    EXPECT_EQ(loaded.config.speed.smoothIterations, 0);
+    EXPECT_EQ(loaded.config.speed.conductanceFactor, 0.1);
+    EXPECT_EQ(loaded.config.speed.kappaFactor, 0.5);
+    expectRejected("[speed]\nkind = \"gradient\"\n", 2, "speed.kind",
+                   "must be \"threshold\", \"edge\" or \"classify\"");
+    expectRejected("[speed]\nkind = 2\n", 2, "speed.kind", "expected a string");
+    expectRejected("[speed]\nsmooth_iterations = 1001\n", 2, "speed.smooth_iterations",
+                   "at most 1000");
+    expectRejected("[speed]\nsmooth_iterations = -1\n", 2, "speed.smooth_iterations", "at least 0");
+    expectRejected("[speed]\nkappa_factor = 0\n", 2, "speed.kappa_factor", "is 0");
+    expectRejected("[speed]\nconductance_factor = 11\n", 2, "speed.conductance_factor",
+                   "at most 10");
+    expectRejected("[speed]\nkapa_factor = 1\n", 2, "speed.kapa_factor", "unknown key");
 }
 
 TEST_F(ConfigTest, DisplayModes) {

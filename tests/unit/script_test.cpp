@@ -4,6 +4,7 @@
 #include "io/mask_writer.hpp"
 #include "kiosk/mask_dice.hpp"
 #include "kiosk/script.hpp"
+#include "kiosk/script_condition.hpp"
 #include "kiosk/script_player.hpp"
 #include "support/test_data.hpp"
 
@@ -180,6 +181,81 @@ TEST(ScriptParse, WaitsChecksFramesDice) {
     EXPECT_EQ(dice.mask, "$EXPORTED");
     EXPECT_EQ(dice.label, 3);
     EXPECT_DOUBLE_EQ(dice.value, 0.8);
+}
+
+TEST(ScriptParse, SpeedVerbsAndChecks) {
+    EXPECT_EQ(action<workflow::SetSpeed>("speed threshold").kind, speed::SpeedKind::Threshold);
+    EXPECT_EQ(action<workflow::SetSpeed>("speed edge").kind, speed::SpeedKind::Edge);
+    EXPECT_EQ(action<workflow::SetSpeed>("speed classify").kind, speed::SpeedKind::Classify);
+    const auto outside = action<workflow::MarkOutside>("outside 10 20 30 4.5");
+    EXPECT_EQ(outside.voxel, glm::dvec3(10, 20, 30));
+    EXPECT_DOUBLE_EQ(outside.radiusMm, 4.5);
+    EXPECT_DOUBLE_EQ(action<workflow::MarkOutside>("outside 1 2 3").radiusMm, 0.0)
+        << "no radius: the probe's";
+    action<workflow::ClearExamples>("clear_examples");
+    EXPECT_TRUE(action<workflow::SetOutsideMode>("outside_mode on").outside);
+    EXPECT_FALSE(action<workflow::SetOutsideMode>("outside_mode off").outside);
+
+    const Script s = parseScript("wait speed classify timeout 5\n"
+                                 "expect speed edge\n"
+                                 "expect outside_examples == 1\n"
+                                 "wait until inside_examples >= 2\n"
+                                 "expect outside_mode == 1\n",
+                                 "s");
+    ASSERT_EQ(s.steps.size(), 5U);
+    using C = kiosk::Condition;
+    const auto& wait = std::get<kiosk::WaitStep>(s.steps[0].kind);
+    EXPECT_EQ(wait.condition.kind, C::Speed);
+    EXPECT_EQ(wait.condition.speed, speed::SpeedKind::Classify);
+    EXPECT_DOUBLE_EQ(wait.timeoutSeconds, 5.0);
+    const auto& expect = std::get<kiosk::ExpectStep>(s.steps[1].kind);
+    EXPECT_EQ(expect.condition.kind, C::Speed);
+    EXPECT_EQ(expect.condition.speed, speed::SpeedKind::Edge);
+    EXPECT_EQ(std::get<kiosk::ExpectStep>(s.steps[2].kind).condition.field, "outside_examples");
+
+    const std::string errors = parseError("speed gradient\n"
+                                          "speed\n"
+                                          "speed edge now\n"
+                                          "outside 1 2\n"
+                                          "outside 1 2 3 0\n"
+                                          "clear_examples all\n"
+                                          "outside_mode maybe\n"
+                                          "expect speed fast\n"
+                                          "wait speed\n");
+    const std::vector<std::string> expected = {
+        "s.session:1: speed 'gradient': give threshold, edge or classify",
+        "s.session:2: ",
+        "s.session:3: unexpected 'now' (usage: speed threshold|edge|classify)",
+        "s.session:4: ",
+        "s.session:5: the example's radius (mm) '0' is outside",
+        "s.session:6: unexpected 'all' (usage: clear_examples)",
+        "s.session:7: outside_mode 'maybe': give on or off",
+        "s.session:8: speed 'fast': give threshold, edge or classify",
+        "s.session:9: ",
+    };
+    for (const std::string& e : expected) {
+        EXPECT_NE(errors.find(e), std::string::npos) << "missing: " << e << "\nin:\n" << errors;
+    }
+    EXPECT_EQ(std::count(errors.begin(), errors.end(), '\n') + 1,
+              static_cast<long>(expected.size()))
+        << errors;
+}
+
+TEST(ScriptPlayer, SpeedConditionsReadTheSpeedInForce) {
+    workflow::Status st;
+    st.speed = speed::SpeedKind::Classify;
+    st.speedInForce = speed::SpeedKind::Edge;
+    st.insideExamples.resize(2);
+    kiosk::Condition c;
+    c.kind = kiosk::Condition::Speed;
+    c.speed = speed::SpeedKind::Classify;
+    EXPECT_FALSE(kiosk::holds(c, st)) << "chosen, but waiting for examples";
+    EXPECT_EQ(kiosk::observed(c, st), "speed is edge (classify chosen)");
+    st.speedInForce = speed::SpeedKind::Classify;
+    EXPECT_TRUE(kiosk::holds(c, st));
+    EXPECT_EQ(kiosk::observed(c, st), "speed is classify");
+    EXPECT_EQ(kiosk::statusField(st, "inside_examples"), 2.0);
+    EXPECT_EQ(kiosk::statusField(st, "outside_examples"), 0.0);
 }
 
 TEST(ScriptParse, WaitUntilAField) {

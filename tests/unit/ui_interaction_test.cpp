@@ -118,6 +118,36 @@ TEST(UiInteraction, TapSeedsOrErasesWhileEditing) {
     }
 }
 
+TEST(UiInteraction, TapInOutsideModeMarksAnOutsideExample) {
+    ui::InteractionConfig config;
+    config.probeRadiusMm = 6.0;
+    ui::Interaction in(config);
+    const ui::ScreenState s = screen();
+    const glm::dvec2 at = centreOf(s.layout.slice1);
+    for (State state : {State::Inspect, State::Seeding, State::Evolving, State::Paused}) {
+        workflow::Status st = status(state);
+        st.outsideMode = true;
+        const auto out = in.onGesture(gesture(ui::Gesture::Kind::Tap, at), s, st);
+        ASSERT_EQ(out.size(), 1U) << static_cast<int>(state);
+        const auto* mark = std::get_if<workflow::MarkOutside>(&out[0]);
+        ASSERT_NE(mark, nullptr) << static_cast<int>(state);
+        EXPECT_EQ(mark->radiusMm, 6.0) << "sized as a probe";
+        EXPECT_NEAR(glm::length(mark->voxel - *ui::voxelAtScreen(*s.slice1, at)), 0.0, 1e-12);
+        if (state != State::Inspect) {
+            // A long press still erases: outside mode changes the tap only.
+            const auto held = in.onGesture(gesture(ui::Gesture::Kind::LongPress, at), s, st);
+            ASSERT_EQ(held.size(), 1U);
+            EXPECT_TRUE(std::holds_alternative<workflow::Erase>(held[0]));
+        }
+    }
+    for (State state : {State::Review, State::Done, State::Error}) {
+        workflow::Status st = status(state);
+        st.outsideMode = true;
+        EXPECT_TRUE(in.onGesture(gesture(ui::Gesture::Kind::Tap, at), s, st).empty())
+            << static_cast<int>(state);
+    }
+}
+
 TEST(UiInteraction, TapBesideTheScanOrOnThePanelDoesNothing) {
     ui::Interaction in;
     const ui::ScreenState s = screen();

@@ -1,5 +1,6 @@
 #include "ui/panel_model.hpp"
 #include "ui/view_caption.hpp"
+#include "workflow/speed_names.hpp"
 
 #include <algorithm>
 #include <gtest/gtest.h>
@@ -67,8 +68,9 @@ TEST(UiPanelModel, EveryMeaningfulActionIsReachableByTouch) {
     const std::size_t back = indexOf<workflow::Back>();
     const std::size_t dismiss = indexOf<workflow::Dismiss>();
     const std::size_t show = indexOf<workflow::ShowSlices>();
+    const std::size_t speed = indexOf<workflow::SetSpeed>();
     const std::set<std::size_t> steering{preset, set,  nudge,   select, eraseMode,
-                                         undo,   redo, restart, show};
+                                         undo,   redo, restart, show,   speed};
     const auto with = [](std::set<std::size_t> s, std::initializer_list<std::size_t> more) {
         s.insert(more);
         return s;
@@ -76,7 +78,8 @@ TEST(UiPanelModel, EveryMeaningfulActionIsReachableByTouch) {
     const std::vector<std::pair<State, std::set<std::size_t>>> expected{
         {State::NoScan, {load}},
         {State::Loading, {}},
-        {State::Inspect, {load, preset, set, nudge, select, window, undo, redo, show, proceed}},
+        {State::Inspect,
+         {load, preset, set, nudge, select, window, undo, redo, show, proceed, speed}},
         {State::Seeding, with(steering, {run, back})},
         {State::Evolving, with(steering, {pause, proceed})},
         {State::Paused, with(steering, {run, proceed})},
@@ -157,6 +160,70 @@ TEST(UiPanelModel, ParametersReadoutsAndToggles) {
     ASSERT_NE(erase, m.tools.end());
     EXPECT_TRUE(erase->active);
     EXPECT_FALSE(std::get<workflow::SetEraseMode>(erase->action).erase) << "a tap turns it off";
+}
+
+TEST(UiPanelModel, TheSpeedsAreOfferedWhereParametersAre) {
+    for (State state : {State::Inspect, State::Seeding, State::Evolving, State::Paused}) {
+        workflow::Status st = status(state);
+        st.speed = speed::SpeedKind::Edge;
+        st.speedInForce = speed::SpeedKind::Edge;
+        const ui::PanelModel m = ui::buildPanelModel(st, kScans);
+        ASSERT_EQ(m.speeds.size(), 3U) << ui::stateLabel(state);
+        const std::vector<std::string> labels{"Threshold##speed", "Edge##speed", "Classify##speed"};
+        for (std::size_t i = 0; i < 3; ++i) {
+            EXPECT_EQ(m.speeds[i].label, labels[i]);
+            EXPECT_EQ(std::get<workflow::SetSpeed>(m.speeds[i].action).kind,
+                      workflow::kSpeedKinds[i]);
+            EXPECT_EQ(m.speeds[i].active, i == 1) << "the chosen speed is highlighted";
+            EXPECT_TRUE(m.speeds[i].enabled);
+        }
+        EXPECT_TRUE(m.exampleTools.empty()) << "examples are classify's";
+        EXPECT_TRUE(m.examples.empty());
+        EXPECT_TRUE(m.speedNote.empty());
+    }
+    for (State state : {State::NoScan, State::Loading, State::Review, State::Exporting, State::Done,
+                        State::Error}) {
+        EXPECT_TRUE(ui::buildPanelModel(status(state), kScans).speeds.empty())
+            << ui::stateLabel(state);
+    }
+}
+
+TEST(UiPanelModel, ClassifyShowsItsExamplesAndTools) {
+    workflow::Status st = status(State::Paused);
+    st.speed = speed::SpeedKind::Classify;
+    st.speedInForce = speed::SpeedKind::Threshold;
+    st.insideExamples.resize(2);
+    ui::PanelModel m = ui::buildPanelModel(st, kScans);
+    EXPECT_TRUE(m.speeds[2].active);
+    EXPECT_EQ(m.examples, "2 inside, 0 outside");
+    EXPECT_EQ(m.speedNote, "Classify needs an outside example; threshold runs until then.");
+    ASSERT_EQ(m.exampleTools.size(), 2U);
+    EXPECT_EQ(m.exampleTools[0].label, "Outside: off");
+    EXPECT_TRUE(std::get<workflow::SetOutsideMode>(m.exampleTools[0].action).outside);
+    EXPECT_FALSE(m.exampleTools[0].active);
+    EXPECT_TRUE(std::holds_alternative<workflow::ClearExamples>(m.exampleTools[1].action));
+    EXPECT_TRUE(m.exampleTools[1].enabled);
+    const std::set<std::size_t> got = kinds(ui::reachableActions(m));
+    EXPECT_TRUE(got.count(indexOf<workflow::SetOutsideMode>()));
+    EXPECT_TRUE(got.count(indexOf<workflow::ClearExamples>()));
+
+    st.insideExamples.clear();
+    st.outsideMode = true;
+    m = ui::buildPanelModel(st, kScans);
+    EXPECT_EQ(m.exampleTools[0].label, "Outside: on");
+    EXPECT_TRUE(m.exampleTools[0].active);
+    EXPECT_FALSE(std::get<workflow::SetOutsideMode>(m.exampleTools[0].action).outside);
+    EXPECT_FALSE(m.exampleTools[1].enabled) << "nothing to clear";
+    EXPECT_FALSE(kinds(ui::reachableActions(m)).count(indexOf<workflow::ClearExamples>()));
+    EXPECT_EQ(m.speedNote, "Classify needs an inside example (probe) and an outside example; "
+                           "threshold runs until then.");
+
+    st.insideExamples.resize(1);
+    st.outsideExamples.resize(3);
+    st.speedInForce = speed::SpeedKind::Classify;
+    m = ui::buildPanelModel(st, kScans);
+    EXPECT_EQ(m.examples, "1 inside, 3 outside");
+    EXPECT_TRUE(m.speedNote.empty()) << "the classifier runs";
 }
 
 TEST(UiPanelModel, UndoGreyedWithNothingToUndo) {

@@ -64,6 +64,8 @@ TEST(WorkflowAction, EveryBindableNameGivesItsAction) {
             act == stem || act.starts_with(stem) || (stem == "select" && act == "select_param") ||
             (stem == "nudge" && act == "nudge_param") || (stem == "page" && act == "page_slice") ||
             (stem == "erase_mode" && act == "set_erase_mode") ||
+            (stem == "outside_mode" && act == "set_outside_mode") ||
+            (stem == "speed" && act == "set_speed") ||
             (stem.starts_with("rotate") && act == "rotate_view") ||
             (stem == "zoom" && act == "zoom_view");
         EXPECT_TRUE(matches) << n << " -> " << act;

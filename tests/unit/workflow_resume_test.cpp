@@ -47,6 +47,37 @@ TEST(WorkflowResume, ARunComesBackPausedWithItsParametersAndCounts) {
     EXPECT_TRUE(rig.act(workflow::Run{}).accepted);
 }
 
+TEST(WorkflowResume, TheSpeedAndItsExamplesComeBack) {
+    Rig rig;
+    rig.load();
+    rig.engine.addSeed({{8.0, 6.0, 4.0}, 2.0});
+    RestoredSession r = restored(State::Paused);
+    r.params.speed = {
+        speed::SpeedKind::Classify, {{{8.0F, 6.0F, 4.0F}, 2.0F}}, {{{1.0F, 1.0F, 1.0F}, 1.0F}}};
+    const auto o = rig.wf->restoreSession(r);
+    ASSERT_TRUE(o.accepted) << o.reason;
+    EXPECT_EQ(rig.status().speed, speed::SpeedKind::Classify);
+    EXPECT_EQ(rig.status().speedInForce, speed::SpeedKind::Classify);
+    EXPECT_EQ(rig.engine.speedKind(), speed::SpeedKind::Classify) << "retrained";
+    EXPECT_EQ(rig.status().outsideExamples.size(), 1U);
+    EXPECT_EQ(rig.status().message, "resumed the session saved 13:01:40");
+}
+
+TEST(WorkflowResume, ASpeedTheEngineRefusesLeavesTheThresholdSpeed) {
+    Rig rig;
+    rig.load();
+    rig.engine.addSeed({{8.0, 6.0, 4.0}, 2.0});
+    RestoredSession r = restored(State::Paused);
+    r.params.speed.kind = speed::SpeedKind::Edge;
+    rig.engine.speedError = "edge speed: not enough GPU memory";
+    const auto o = rig.wf->restoreSession(r);
+    ASSERT_TRUE(o.accepted) << o.reason;
+    EXPECT_EQ(rig.state(), State::Paused) << "the level set is back all the same";
+    EXPECT_EQ(rig.status().speed, speed::SpeedKind::Threshold);
+    EXPECT_EQ(rig.status().params.T, 120.0F);
+    EXPECT_EQ(rig.status().message, "the threshold speed runs: edge speed: not enough GPU memory");
+}
+
 TEST(WorkflowResume, StatesComeBackWhereTheyCan) {
     const struct {
         State saved;

@@ -59,7 +59,7 @@ class Generator {
 
     Action action() {
         // Weighted towards what an operator does most: steering, seeding, looking.
-        switch (integer(0, 40)) {
+        switch (integer(0, 44)) {
         case 0:
             return LoadScan{chance(0.05) ? "" : "scan.nii.gz"};
         case 1:
@@ -130,6 +130,15 @@ class Generator {
             return ShowSlices{axis(), axis()};
         case 39:
             return Quit{};
+        case 40:
+            return SetSpeed{static_cast<speed::SpeedKind>(chance(0.01) ? 9 : integer(0, 2))};
+        case 41:
+        case 42:
+            return MarkOutside{voxel(), number(-1.0, 8.0)};
+        case 43:
+            return ClearExamples{};
+        case 44:
+            return SetOutsideMode{chance(0.5)};
         default:
             return Run{};
         }
@@ -169,6 +178,16 @@ std::string broken(const Workflow& wf, const FakeEngine& engine, std::size_t max
         const solver::LevelSetParams& e = engine.params();
         if (e.T != s.params.T || e.eps != s.params.eps || e.alpha != s.params.alpha) {
             return "parameters differ from the engine's";
+        }
+        if (engine.speedKind() != s.speedInForce ||
+            (s.speed != speed::SpeedKind::Classify && s.speedInForce != s.speed)) {
+            return "the speed differs from the engine's or the choice";
+        }
+        if (s.insideExamples.size() > kMaxExamples || s.outsideExamples.size() > kMaxExamples) {
+            return "more examples than kept";
+        }
+        if (s.outsideMode && s.eraseMode) {
+            return "outside and erase mode both on";
         }
         for (int a = 0; a < 3; ++a) {
             if (s.view.slice[a] < -1 || s.view.slice[a] >= s.scan.sliceCount[a]) {
@@ -250,6 +269,7 @@ void walk(long long count, AuditLog* audit, Walk& out) {
                 engine.stepError = gen.chance(0.05) ? "GPU lost" : "";
                 engine.editError = gen.chance(0.05) ? "edit failed" : "";
                 engine.snapshotError = gen.chance(0.05) ? "out of memory" : "";
+                engine.speedError = gen.chance(0.05) ? "speed refused" : "";
             }
         } catch (const std::exception& e) {
             FAIL() << "step " << n << " (" << what << ") threw: " << e.what();

@@ -1,0 +1,129 @@
+// The speed function and the classifier's examples: the operator's choice of data term, the
+// outside marks (the probes are the inside examples, workflow_params.cpp) and the outside mode.
+// A change travels through changeParams like a parameter's: sent to the engine (which may
+// refuse it) and recorded for undo.
+#include "workflow/speed_names.hpp"
+#include "workflow/workflow.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace steerseg::workflow {
+
+SpeedChoice Workflow::speedFor(const ParamValues& values) {
+    const SpeedChoice& chosen = values.speed;
+    if (chosen.kind == speed::SpeedKind::Classify) {
+        if (!chosen.inside.empty() && !chosen.outside.empty()) {
+            return chosen;
+        }
+        return SpeedChoice{values.fallback, {}, {}};
+    }
+    return SpeedChoice{chosen.kind, {}, {}};
+}
+
+std::optional<solver::Sphere> Workflow::exampleAt(const glm::dvec3& voxel, double radiusMm) const {
+    const glm::ivec3 dims = status_.scan.dims;
+    for (int a = 0; a < 3; ++a) {
+        if (!(voxel[a] >= 0.0 && voxel[a] <= static_cast<double>(dims[a] - 1))) {
+            return std::nullopt;
+        }
+    }
+    // The probe's sphere is round in mm, an ellipsoid in voxels; a voxel sphere of the same
+    // volume (the spacing's geometric mean), at least the voxel under the finger and at most
+    // the scan's diagonal (the solver's bound on a sphere; a huge probe radius stays finite).
+    const glm::dvec3 sp = status_.scan.spacing;
+    const double meanSpacing = std::cbrt(std::abs(sp.x * sp.y * sp.z));
+    const double r =
+        meanSpacing > 0.0 && std::isfinite(meanSpacing) ? radiusMm / meanSpacing : radiusMm;
+    const double diagonal = glm::length(glm::dvec3(dims));
+    return solver::Sphere{glm::vec3(voxel), static_cast<float>(std::clamp(r, 0.5, diagonal))};
+}
+
+void Workflow::addExample(std::vector<solver::Sphere>& examples, const solver::Sphere& example) {
+    examples.push_back(example);
+    if (examples.size() > kMaxExamples) {
+        examples.erase(examples.begin(), examples.begin() + static_cast<std::ptrdiff_t>(
+                                                                examples.size() - kMaxExamples));
+    }
+}
+
+void Workflow::showSpeed(const ParamValues& values, speed::SpeedKind inForce) {
+    status_.speed = values.speed.kind;
+    status_.speedInForce = inForce;
+    status_.insideExamples = values.speed.inside;
+    status_.outsideExamples = values.speed.outside;
+}
+
+Workflow::Outcome Workflow::on(const SetSpeed& a) {
+    if (!validSpeed(a.kind)) {
+        return no("unknown speed");
+    }
+    if (auto why = whyNoParamChange()) {
+        return no(*why);
+    }
+    if (a.kind == params_.speed.kind) {
+        return ok();
+    }
+    ParamValues next = params_;
+    if (a.kind == speed::SpeedKind::Classify) {
+        next.fallback = engineSpeed_.kind; // what runs until the classifier has its examples
+    }
+    next.speed.kind = a.kind;
+    Outcome out = changeParams(std::move(next), "set_speed", std::nullopt);
+    if (status_.speed == speed::SpeedKind::Classify &&
+        status_.speedInForce != speed::SpeedKind::Classify) {
+        status_.message = "classify needs an inside example (probe) and an outside example; the " +
+                          std::string(speedName(status_.speedInForce)) + " speed runs until then";
+    }
+    return out;
+}
+
+Workflow::Outcome Workflow::on(const MarkOutside& a) {
+    if (auto why = whyNoParamChange()) {
+        return no(*why);
+    }
+    if (!std::isfinite(a.voxel.x) || !std::isfinite(a.voxel.y) || !std::isfinite(a.voxel.z) ||
+        !std::isfinite(a.radiusMm)) {
+        return no("an outside example needs a finite position and radius");
+    }
+    const double radius = a.radiusMm > 0.0 ? a.radiusMm : settings_.probeRadiusMm;
+    const std::optional<solver::Sphere> example = exampleAt(a.voxel, radius);
+    if (!example) {
+        return no("outside example outside the scan");
+    }
+    ParamValues next = params_;
+    addExample(next.speed.outside, *example);
+    return changeParams(std::move(next), "mark_outside", std::nullopt);
+}
+
+Workflow::Outcome Workflow::on(const ClearExamples&) {
+    if (auto why = whyNoParamChange()) {
+        return no(*why);
+    }
+    if (params_.speed.inside.empty() && params_.speed.outside.empty()) {
+        return no("no examples to clear");
+    }
+    ParamValues next = params_;
+    next.speed.inside.clear();
+    next.speed.outside.clear();
+    Outcome out = changeParams(std::move(next), "clear_examples", std::nullopt);
+    if (status_.speed == speed::SpeedKind::Classify) {
+        status_.message = "examples cleared: the " + std::string(speedName(status_.speedInForce)) +
+                          " speed runs until classify has new ones";
+    }
+    return out;
+}
+
+Workflow::Outcome Workflow::on(const SetOutsideMode& a) {
+    if (auto why = whyNoScan()) {
+        return no(*why);
+    }
+    status_.outsideMode = a.outside;
+    if (a.outside) {
+        status_.eraseMode = false; // one meaning per tap
+    }
+    return ok();
+}
+
+} // namespace steerseg::workflow
