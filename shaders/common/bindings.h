@@ -17,6 +17,9 @@
 #define REQUESTS_BINDING 7
 #define WANT_EPOCH_BINDING 8
 #define SLOT_STATE_BINDING 9
+// Sleeping bricks (solver/solver_common.glsl): every used slot, and each slot's last measure.
+#define BAND_LIST_BINDING 10
+#define SLOT_FRONT_BINDING 11
 
 // Texture units of the samplers (glActiveTexture(GL_TEXTURE0 + unit)).
 #define SOLVER_SCAN_UNIT 0    // solver/speed_threshold.glsl: the scan, texelFetch only
