@@ -102,7 +102,9 @@ LevelSetSolver::LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own,
 
     glProgramUniform1ui(programs_->buildActiveList.id(),
                         glGetUniformLocation(programs_->buildActiveList.id(), "sleepAfter"),
-                        options_.sleep ? static_cast<GLuint>(options_.sleepAfter) : 256U);
+                        options_.sleep && !options_.dense
+                            ? static_cast<GLuint>(options_.sleepAfter)
+                            : 256U); // dense: the every-brick baseline
     setUniform(programs_->updatePhi.id(), "sleepTolerance", options_.sleepTolerance);
     uploadBarriers();
     stats_.totalBricks = pool_->brickCount();
