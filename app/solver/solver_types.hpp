@@ -26,10 +26,12 @@ struct SolverOptions {
     // through a narrow neck into tissue of the same intensity (LeakWatch).
     bool stopOnLeak = false;
     // Sleeping bricks (docs/solver.md): a brick none of whose voxels moved by more than
-    // sleepTolerance * dt in each of sleepAfter steps in a row is skipped until a neighbour's
-    // face, an edit or a parameter change wakes it. The tolerance is a speed (voxels per unit
-    // of evolved time), so what a sleeping brick can miss is bounded by the evolved time, not
-    // by the iteration count. sleep = false visits every brick of the band every iteration.
+    // sleepTolerance voxels in each of sleepAfter steps in a row is skipped until a neighbour's
+    // face, an edit or a parameter change wakes it. Per step, not per unit of time: the step is
+    // set so that the fastest front voxel moves half a voxel, whatever the scan's units, while
+    // a rate in voxels per unit time would mean 1000x less motion per step on CT (speeds in
+    // HU, dt ~ 1e-3) than on a unit-contrast phantom. sleep = false visits every brick of the
+    // band every iteration.
     bool sleep = true;
     float sleepTolerance = 1e-3F;
     int sleepAfter = 4; // 1 .. 255

@@ -3,8 +3,7 @@
 // apron staged in shared memory; records the brick's new state and whether any voxel changed
 // side (convergence), and counts the voxels that changed side with the box of those that came
 // inside (the leak watch: app/solver/leak_watch.hpp), and whether the brick and its faces
-// moved by more than the sleep tolerance (sleepTolerance * dt per step; solver_common.glsl's
-// QUIET_SHIFT). phi is stored once: the interior is updated in place, the shell goes to
+// moved by more than the sleep tolerance (solver_common.glsl's QUIET_SHIFT). phi is stored once: the interior is updated in place, the shell goes to
 // shellNext until commit_shells (solver/brick_shell.glsl).
 #define PHI_POOL_ACCESS
 #include "common/brick_pool.glsl"
@@ -18,7 +17,7 @@
 layout(local_size_x = LOCAL_SIZE) in;
 
 uniform float alpha;
-uniform float sleepTolerance; // voxels per unit of evolved time
+uniform float sleepTolerance; // voxels per step
 
 shared uint changedSide;
 shared uint movedAny;
@@ -51,7 +50,7 @@ void main() {
     }
     barrier();
     float dt = ctrl.dt;
-    float tolerance = sleepTolerance * dt;
+    float tolerance = sleepTolerance;
     for (uint v = gl_LocalInvocationIndex; hasWork && v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
         ivec3 l = localVoxel(v);
         ivec3 g = origin + l;

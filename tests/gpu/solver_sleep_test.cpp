@@ -69,6 +69,31 @@ TEST_F(SolverSleepTest, StoppedFrontSleepsAndKeepsTheMask) {
     EXPECT_EQ(awake.stats.activeBricks, awake.stats.bandBricks);
 }
 
+// Every brick asleep means nothing can change: runUntilConverged stops there, with the mask the
+// side-change rule reaches without sleeping.
+TEST_F(SolverSleepTest, EveryBrickAsleepIsConverged) {
+    const glm::ivec3 d(32, 32, 32);
+    const auto volume = ballVolume(d, 0.0F, 1.0F, glm::vec3(16.0F), 7.0F);
+    int asleepIterations = 0;
+    int awakeIterations = 0;
+    auto script = [](int& iterations) {
+        return [&iterations](LevelSetSolver& s) {
+            s.addSphere({glm::vec3(16.0F), 3.0F});
+            s.setParams(edgeParams());
+            const StepResult r = s.runUntilConverged(4000);
+            EXPECT_EQ(r.stopReason, StopReason::Converged);
+            iterations = r.iterations;
+        };
+    };
+    const SleepRun asleep = runScript(volume, d, true, script(asleepIterations));
+    const SleepRun awake = runScript(volume, d, false, script(awakeIterations));
+    report("converged", asleep, awake);
+    std::printf("converged after %d iterations (sleeping) vs %d\n", asleepIterations,
+                awakeIterations);
+    EXPECT_EQ(asleep.stats.activeBricks, 0U);
+    EXPECT_GE(dice(asleep.mask, awake.mask), 0.995);
+}
+
 // A tube along x: the front stops at the wall within a few iterations and runs on along the
 // axis; only the bricks at the tip need to stay awake.
 TEST_F(SolverSleepTest, FrontStoppedSidewaysSleepsWhileTheTipMoves) {
