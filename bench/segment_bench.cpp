@@ -5,6 +5,10 @@
 //   segment_bench --scan PATH --seed i,j,k,r [--seed ...] --T v --eps v --alpha a --time t
 //                 [--max-iterations N] [--repeat N] [--compare MASK] [--trace N]
 //                 [--dense 1] [--brick 4|8|16] [--check N] [--dump-phi FILE]
+//                 [--sleep 0|1] [--sleep-tolerance V] [--against-awake 1]
+// Each run prints iterations/s beside the voxels visited per iteration and the front's voxels
+// (sleeping bricks, docs/solver.md). --against-awake 1 adds one run with sleeping off and the
+// Dice between its mask and the last run's.
 // --dump-phi writes phi after the trace as raw float32, i fastest, to diff two runs voxel by
 // voxel.
 // --trace N steps one iteration at a time for N iterations and prints the evolved time and a
@@ -39,6 +43,7 @@ struct Options {
     int trace = 0;
     solver::SolverOptions solver;
     std::string dumpPhi;
+    bool againstAwake = false;
 };
 
 solver::Sphere parseSeed(const std::string& text) {
@@ -77,6 +82,12 @@ Options parse(int argc, char** argv) {
             o.solver.brickSize = std::stoi(value);
         } else if (key == "--check") {
             o.solver.checkInterval = std::stoi(value);
+        } else if (key == "--sleep") {
+            o.solver.sleep = value == "1";
+        } else if (key == "--sleep-tolerance") {
+            o.solver.sleepTolerance = std::stof(value);
+        } else if (key == "--against-awake") {
+            o.againstAwake = value == "1";
         } else if (key == "--dump-phi") {
             o.dumpPhi = value;
         } else if (key == "--trace") {
@@ -134,8 +145,13 @@ int main(int argc, char** argv) {
             return 0;
         }
         std::vector<double> seconds;
-        for (int run = 0; run < o.repeat; ++run) {
-            solver::LevelSetSolver solver(texture, o.solver);
+        std::vector<std::uint8_t> lastMask;
+        const int runs = o.repeat + (o.againstAwake ? 1 : 0);
+        for (int run = 0; run < runs; ++run) {
+            const bool awakeRun = run == o.repeat;
+            solver::SolverOptions options = o.solver;
+            options.sleep = options.sleep && !awakeRun;
+            solver::LevelSetSolver solver(texture, options);
             for (const solver::Sphere& s : o.seeds) {
                 solver.addSphere(s);
             }
@@ -144,8 +160,11 @@ int main(int argc, char** argv) {
             const auto start = std::chrono::steady_clock::now();
             const solver::StepResult r = solver.evolveUntil(o.time, o.maxIterations);
             glFinish();
-            seconds.push_back(
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+            const double elapsed =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            if (!awakeRun) {
+                seconds.push_back(elapsed);
+            }
             const std::vector<std::uint8_t> mask = solver.readMask();
             std::size_t inside = 0;
             std::size_t overlap = 0;
@@ -158,8 +177,26 @@ int main(int argc, char** argv) {
                     overlap += (in && mask[n] != 0) ? 1 : 0;
                 }
             }
-            std::printf("run %d: %d iterations, t = %.4f, %.4f s, %zu voxels inside", run + 1,
-                        r.iterations, static_cast<double>(r.evolvedTime), seconds.back(), inside);
+            const solver::SolverStats st = solver.stats();
+            std::printf("run %d%s: %d iterations, t = %.4f, %.4f s (%.1f it/s), %zu voxels "
+                        "inside, %.0f voxels visited per iteration, %u front voxels, %u of %u "
+                        "bricks awake at the end",
+                        run + 1, awakeRun ? " (sleeping off)" : "", r.iterations,
+                        static_cast<double>(r.evolvedTime), elapsed, r.iterations / elapsed, inside,
+                        st.visitedVoxelsPerIteration, st.frontVoxels, st.activeBricks,
+                        st.bandBricks);
+            if (awakeRun) {
+                std::size_t both = 0;
+                std::size_t sum = 0;
+                for (std::size_t n = 0; n < mask.size(); ++n) {
+                    both += (mask[n] != 0 && lastMask[n] != 0) ? 1 : 0;
+                    sum += (mask[n] != 0 ? 1 : 0) + (lastMask[n] != 0 ? 1 : 0);
+                }
+                std::printf(", Dice %.5f against the sleeping run",
+                            sum > 0 ? 2.0 * static_cast<double>(both) / static_cast<double>(sum)
+                                    : 1.0);
+            }
+            lastMask = mask;
             if (!o.compare.empty()) {
                 std::printf(", Dice %.4f against %s (%zu voxels)",
                             2.0 * static_cast<double>(overlap) /

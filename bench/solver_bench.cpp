@@ -1,7 +1,9 @@
 // Sparse packed-brick solver benchmark: iterations/s and level-set bytes against the number of
 // active bricks, sparse against dense (same kernels, every brick active) at several active
 // fractions, and brick sizes 4 / 8 / 16. Prints markdown tables. Not a test: numbers depend on
-// the machine (llvmpipe on a shared 2-core box is noisy; run it alone).
+// the machine (llvmpipe on a shared 2-core box is noisy; run it alone). The per-pass tables run
+// with sleeping off (every brick of the band does its full work); the last table runs a front
+// that has stopped with sleeping on and off (voxels visited per iteration beside iterations/s).
 //   solver_bench [--size N] [--iterations N] [--dense-size N]
 #include "gpu/gpu_info.hpp"
 #include "platform/egl/offscreen_context.hpp"
@@ -40,6 +42,42 @@ Measurement measure(int size, float radius, const solver::SolverOptions& options
     return {r.iterations / seconds, solver.stats()};
 }
 
+// A front that has stopped: a seed fills a ball (speed +40 inside, -40 outside) within the
+// warm-up, then `iterations` are timed while the surface rests at the ball's edge.
+Measurement measureStopped(int size, bool sleep, int iterations) {
+    const glm::ivec3 d(size);
+    const float radius = static_cast<float>(size) / 4.0F;
+    const glm::vec3 centre(static_cast<float>(size) / 2.0F);
+    std::vector<float> volume(static_cast<std::size_t>(size) * size * size, 0.0F);
+    for (int k = 0; k < size; ++k) {
+        for (int j = 0; j < size; ++j) {
+            for (int i = 0; i < size; ++i) {
+                if (glm::length(glm::vec3(i, j, k) - centre) <= radius) {
+                    volume[static_cast<std::size_t>(i + size * (j + size * k))] = 100.0F;
+                }
+            }
+        }
+    }
+    solver::SolverOptions options;
+    options.sleep = sleep;
+    solver::LevelSetSolver solver(volume, d, options);
+    solver.addSphere({centre, 3.0F});
+    solver.setParams({100.0F, 50.0F, 0.8F});
+    solver.step(8 * size); // the fill: ~0.5 voxel per iteration
+    const solver::SolverStats before = solver.stats();
+    glFinish();
+    const auto start = std::chrono::steady_clock::now();
+    const solver::StepResult r = solver.step(iterations);
+    glFinish();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    Measurement m{r.iterations / seconds, solver.stats()};
+    // Over the timed iterations only.
+    m.stats.visitedVoxelsPerIteration =
+        static_cast<double>(m.stats.visitedVoxels - before.visitedVoxels) / r.iterations;
+    return m;
+}
+
 double mib(std::size_t bytes) {
     return static_cast<double>(bytes) / (1024.0 * 1024.0);
 }
@@ -69,6 +107,7 @@ int main(int argc, char** argv) {
     for (const int b : {4, 8, 16}) {
         solver::SolverOptions o;
         o.brickSize = b;
+        o.sleep = false;
         const Measurement m = measure(size, static_cast<float>(size) / 4.0F, o, iterations);
         const double voxels = static_cast<double>(m.stats.activeBricks) * b * b * b;
         std::printf("| %d | %u | %.0f | %.1f | %.1f |\n", b, m.stats.activeBricks, voxels,
@@ -83,9 +122,11 @@ int main(int argc, char** argv) {
     denseOptions.dense = true;
     const Measurement dense =
         measure(size, static_cast<float>(size) / 8.0F, denseOptions, iterations);
+    solver::SolverOptions awake;
+    awake.sleep = false;
     for (const float fraction : {0.06F, 0.12F, 0.25F, 0.4F}) {
         const float r = fraction * static_cast<float>(size);
-        const Measurement m = measure(size, r, solver::SolverOptions{}, iterations);
+        const Measurement m = measure(size, r, awake, iterations);
         const std::size_t brickBytes = static_cast<std::size_t>(solver::defaultBrickSize()) *
                                        solver::defaultBrickSize() * solver::defaultBrickSize() * 4;
         const std::size_t activeBytes =
@@ -97,6 +138,16 @@ int main(int argc, char** argv) {
                     mib(m.stats.levelSetBytes), mib(activeBytes),
                     static_cast<double>(m.stats.levelSetBytes) / static_cast<double>(activeBytes),
                     mib(m.stats.densePhiBytes));
+    }
+
+    std::printf("\n## A stopped front, sleeping bricks off and on (ball r = %d)\n\n", size / 4);
+    std::printf("| sleeping | iterations/s | voxels visited per iteration | front voxels | awake / "
+                "stored bricks |\n|---|---|---|---|---|\n");
+    for (const bool sleep : {false, true}) {
+        const Measurement m = measureStopped(size, sleep, iterations);
+        std::printf("| %s | %.1f | %.0f | %u | %u / %u |\n", sleep ? "on" : "off",
+                    m.iterationsPerSecond, m.stats.visitedVoxelsPerIteration, m.stats.frontVoxels,
+                    m.stats.activeBricks, m.stats.bandBricks);
     }
 
     if (denseSize > 0) {

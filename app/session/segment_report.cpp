@@ -27,6 +27,11 @@ std::string segmentReport(const Session& session, const RunOutcome& run,
     j["evolved_time"] = stats.evolvedTime;
     j["solve_seconds"] = seconds;
     j["iterations_per_second"] = seconds > 0.0 ? stats.iterations / seconds : 0.0;
+    // The cost per iteration against the work it must do (sleeping bricks, docs/solver.md).
+    j["sleep"] = options.sleep;
+    j["voxels_visited_per_iteration"] = stats.visitedVoxelsPerIteration;
+    j["front_voxels"] = stats.frontVoxels;
+    j["band_bricks"] = stats.bandBricks;
     j["converged"] = session.converged();
     j["stop_reason"] = solver::stopReasonName(run.result.stopReason);
     if (const auto& leak = run.result.leak) {

@@ -26,8 +26,11 @@ struct ControlBlock {
     std::uint32_t lost;
     std::uint32_t gainLo[3];
     std::uint32_t gainHi[3];
+    std::uint32_t bandCount;     // used slots, asleep or awake
+    std::uint32_t visitedBricks; // active bricks summed over the steps since the host cleared it
+    std::uint32_t frontVoxels;   // the front's voxels in the last iteration
 };
-static_assert(sizeof(ControlBlock) == 29 * 4);
+static_assert(sizeof(ControlBlock) == 32 * 4);
 
 // Clears the leak watch's counters (update_phi.comp accumulates them between checks).
 inline void clearGrowth(ControlBlock& ctrl) {

@@ -156,7 +156,7 @@ std::size_t GpuBrickPool::levelSetBytes() const {
 }
 
 std::size_t GpuBrickPool::bookkeepingBytes() const {
-    return static_cast<std::size_t>(capacity_) * 4 * 4 +
+    return static_cast<std::size_t>(capacity_) * 4 * 7 +
            static_cast<std::size_t>(brickCount_) * 4 * 2 + sizeof(ControlBlock);
 }
 
@@ -168,6 +168,8 @@ void GpuBrickPool::allocateSlotBuffers(std::uint32_t capacity) {
     freeList_ = makeBuffer(capacity * 4);
     activeList_ = makeBuffer(capacity * 4);
     slotState_ = makeBuffer(capacity * 4);
+    bandList_ = makeBuffer(capacity * 4);
+    slotFront_ = makeBuffer(capacity * 8);
 }
 
 void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
@@ -303,10 +305,12 @@ void GpuBrickPool::grow(std::uint32_t newCapacity, const ControlBlock& ctrl) {
     gpu::Buffer oldSlotBrick = std::move(slotBrick_);
     gpu::Buffer oldFree = std::move(freeList_);
     gpu::Buffer oldState = std::move(slotState_);
+    gpu::Buffer oldFront = std::move(slotFront_);
     allocateSlotBuffers(newCapacity);
     copyBuffer(oldPhi, phi_, 0, 0, old * brickBytes());
     copyBuffer(oldSlotBrick, slotBrick_, 0, 0, old * 4);
     copyBuffer(oldState, slotState_, 0, 0, old * 4);
+    copyBuffer(oldFront, slotFront_, 0, 0, old * 8); // a sleeping brick's time-step bound
     copyBuffer(oldFree, freeList_, 0, 0, ctrl.freeCount * 4);
     const std::vector<std::uint32_t> none(newCapacity - old, kNoBrick);
     writeBuffer(slotBrick_, old * 4, none.data(), none.size() * 4);
@@ -330,7 +334,8 @@ void GpuBrickPool::shrink(std::uint32_t newCapacity, const ControlBlock& ctrl) {
     }
     // Plan on the CPU from the small slot map; the bricks themselves move on the GPU.
     auto slotBrick = readBuffer<std::uint32_t>(slotBrick_, capacity_);
-    auto state = readBuffer<std::uint32_t>(slotState_, capacity_);
+    auto state = readBuffer<std::uint32_t>(slotState_, capacity_); // sleep bits move with it
+    auto front = readBuffer<std::uint32_t>(slotFront_, 2 * static_cast<std::size_t>(capacity_));
     auto page = readBuffer<std::uint32_t>(pageTable_, brickCount_);
     std::vector<std::uint32_t> lowFree;
     for (std::uint32_t s = 0; s < newCapacity; ++s) {
@@ -347,6 +352,8 @@ void GpuBrickPool::shrink(std::uint32_t newCapacity, const ControlBlock& ctrl) {
         copyBuffer(phi_, phi_, s * brickBytes(), to * brickBytes(), brickBytes());
         slotBrick[to] = slotBrick[s];
         state[to] = state[s];
+        front[2 * to] = front[2 * s];
+        front[2 * to + 1] = front[2 * s + 1];
         page[slotBrick[s]] = to;
     }
     std::vector<std::uint32_t> freeList(lowFree.begin() + static_cast<std::ptrdiff_t>(nextFree),
@@ -356,6 +363,7 @@ void GpuBrickPool::shrink(std::uint32_t newCapacity, const ControlBlock& ctrl) {
     copyBuffer(oldPhi, phi_, 0, 0, newCapacity * brickBytes());
     writeBuffer(slotBrick_, 0, slotBrick.data(), newCapacity * 4);
     writeBuffer(slotState_, 0, state.data(), newCapacity * 4);
+    writeBuffer(slotFront_, 0, front.data(), newCapacity * 8);
     writeBuffer(freeList_, 0, freeList.data(), freeList.size() * 4);
     writeBuffer(pageTable_, 0, page.data(), page.size() * 4);
     ControlBlock next = ctrl;
@@ -375,6 +383,8 @@ void GpuBrickPool::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, REQUESTS_BINDING, requests_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, WANT_EPOCH_BINDING, wantEpoch_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SLOT_STATE_BINDING, slotState_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BAND_LIST_BINDING, bandList_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SLOT_FRONT_BINDING, slotFront_.id());
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, control_.id());
 }
 

@@ -71,7 +71,7 @@ class GpuBrickPool {
     [[nodiscard]] std::size_t shellBytes() const;
     // The phi pool, the shell scratch and the page table.
     [[nodiscard]] std::size_t levelSetBytes() const;
-    // Slot map, free and active lists, states, requests and epochs.
+    // Slot map, free, active and band lists, states, fronts, requests and epochs.
     [[nodiscard]] std::size_t bookkeepingBytes() const;
     [[nodiscard]] BrickPoolView view() const;
     [[nodiscard]] const glm::ivec3& brickGrid() const { return grid_; }
@@ -96,6 +96,8 @@ class GpuBrickPool {
     gpu::Buffer requests_;
     gpu::Buffer wantEpoch_;
     gpu::Buffer slotState_;
+    gpu::Buffer bandList_;
+    gpu::Buffer slotFront_; // two words per slot
 };
 
 } // namespace steerseg::solver::detail

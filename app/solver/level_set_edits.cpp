@@ -19,6 +19,7 @@ using detail::kBrickArgs;
 
 void LevelSetSolver::uploadPhi(std::span<const float> phi) {
     gpu::GlStateGuard guard;
+    wakeAll(); // the new slots' states are unset until classify_bricks
     pool_->upload(phi, options_.dense);
     pool_->bind();
     allocateAndList();
@@ -51,6 +52,7 @@ void LevelSetSolver::removeSphere(const Sphere& sphere) {
 void LevelSetSolver::editSphere(const Sphere& sphere, bool add) {
     validateSphere(sphere, dims_);
     gpu::GlStateGuard guard;
+    wakeAll(); // the sphere may cover sleeping bricks: classify_bricks must see them
     const int b = options_.brickSize;
     const float reach = sphere.radius + kPhiFar + 1.0F;
     const glm::ivec3 lo = glm::clamp(glm::ivec3(glm::floor(sphere.centre - reach)) / b,
@@ -98,8 +100,10 @@ void LevelSetSolver::editSphere(const Sphere& sphere, bool add) {
 }
 
 // An edit or a parameter change restarts the convergence clock, and the baseline of the pool's
-// growth estimate (managePool): an edit's bricks are not the band's advance.
+// growth estimate (managePool): an edit's bricks are not the band's advance. It wakes every
+// brick: what made a brick sleep may no longer hold.
 void LevelSetSolver::noteChange() {
+    wakeAll();
     ControlBlock ctrl = pool_->readControl();
     lastUsed_ = pool_->usedSlots(ctrl);
     ctrl.lastChange = ctrl.iteration;

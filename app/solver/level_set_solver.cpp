@@ -81,6 +81,10 @@ LevelSetSolver::LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own,
     if (options_.checkInterval < 1) {
         throw std::invalid_argument("checkInterval must be >= 1");
     }
+    if (options_.sleepAfter < 1 || options_.sleepAfter > 255 ||
+        !(options_.sleepTolerance >= 0.0F)) {
+        throw std::invalid_argument("sleepAfter must be 1..255 and sleepTolerance >= 0");
+    }
     const std::size_t voxels = static_cast<std::size_t>(dims.x) * static_cast<std::size_t>(dims.y) *
                                static_cast<std::size_t>(dims.z);
     const int localSize = std::min(b * b * b, 64);
@@ -94,6 +98,12 @@ LevelSetSolver::LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own,
                            grid.z);
     });
 
+    glProgramUniform1ui(programs_->buildActiveList.id(),
+                        glGetUniformLocation(programs_->buildActiveList.id(), "sleepAfter"),
+                        options_.sleep && !options_.dense
+                            ? static_cast<GLuint>(options_.sleepAfter)
+                            : 256U); // dense: the every-brick baseline
+    setUniform(programs_->updatePhi.id(), "sleepTolerance", options_.sleepTolerance);
     uploadBarriers();
     stats_.totalBricks = pool_->brickCount();
     stats_.densePhiBytes = voxels * sizeof(float);
@@ -115,6 +125,10 @@ void LevelSetSolver::setParams(const LevelSetParams& params) {
     setUniform(programs_->chooseTimeStep.id(), "fixedRate", rule.fixedRate);
     uploadBarriers(); // their hold depends on alpha
     noteChange();
+}
+
+void LevelSetSolver::wakeAll() {
+    wakePending_ = true;
 }
 
 void LevelSetSolver::requireParams() const {
@@ -143,6 +157,10 @@ void LevelSetSolver::allocateAndList() {
     glProgramUniform1ui(p.buildActiveList.id(),
                         glGetUniformLocation(p.buildActiveList.id(), "capacity"),
                         pool_->capacity());
+    glProgramUniform1i(p.buildActiveList.id(),
+                       glGetUniformLocation(p.buildActiveList.id(), "wakeAll"),
+                       wakePending_ ? 1 : 0);
+    wakePending_ = false;
     dispatch(p.buildActiveList.id(), groupsOf(pool_->capacity(), detail::kSlotsPerGroup));
     dispatch(p.prepareDispatch.id(), 1);
 }
@@ -224,9 +242,11 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
         const int done = static_cast<int>(ctrl.iteration - before);
         remaining -= done;
         const auto sinceChange = static_cast<int>(ctrl.iteration - ctrl.lastChange);
-        converged_ = sinceChange >= options_.convergeIterations &&
-                     (ctrl.time - ctrl.lastChangeTime >= options_.convergeTime ||
-                      sinceChange >= 10 * options_.convergeIterations);
+        // With every brick asleep nothing can change any more: converged at once.
+        converged_ = (sinceChange >= options_.convergeIterations &&
+                      (ctrl.time - ctrl.lastChangeTime >= options_.convergeTime ||
+                       sinceChange >= 10 * options_.convergeIterations)) ||
+                     (ctrl.activeCount == 0 && ctrl.bandCount > 0 && done > 0);
         stats_.peakActiveBricks = std::max(stats_.peakActiveBricks, ctrl.peakActive);
         if (ctrl.stalled != 0) {
             ++stats_.stalls;
@@ -242,6 +262,7 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
             ctrl = pool_->readControl();
             continue;
         }
+        takeVisits(ctrl);
         leak = watchGrowth(ctrl);
         if ((untilConverged && converged_) || done < chunk || leak) {
             break; // converged, the time limit stopped the steps, or a leak
@@ -254,6 +275,8 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
     lastIteration_ = static_cast<int>(ctrl.iteration);
     lastTime_ = ctrl.time;
     stats_.activeBricks = ctrl.activeCount;
+    stats_.bandBricks = ctrl.bandCount;
+    stats_.frontVoxels = ctrl.frontVoxels;
     known_ = ctrl;
     StopReason reason = StopReason::IterationLimit;
     if (leak) {
@@ -264,6 +287,14 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
         reason = StopReason::TimeReached;
     }
     return {static_cast<int>(ctrl.iteration - start), ctrl.time, converged_, reason, leak};
+}
+
+// Moves the GPU's count of visited bricks into the statistics; watchGrowth writes the cleared
+// block back with its own counters.
+void LevelSetSolver::takeVisits(ControlBlock& ctrl) {
+    const auto b = static_cast<std::uint64_t>(options_.brickSize);
+    stats_.visitedVoxels += static_cast<std::uint64_t>(ctrl.visitedBricks) * b * b * b;
+    ctrl.visitedBricks = 0;
 }
 
 // The leak watch's check: this interval's growth from update_phi's counters, which are then
@@ -337,6 +368,8 @@ SolverStats LevelSetSolver::stats() const {
     s.levelSetBytes = pool_->levelSetBytes();
     s.bookkeepingBytes = pool_->bookkeepingBytes();
     s.barriers = static_cast<int>(barriers_.size());
+    s.visitedVoxelsPerIteration =
+        lastIteration_ > 0 ? static_cast<double>(s.visitedVoxels) / lastIteration_ : 0.0;
     return s;
 }
 

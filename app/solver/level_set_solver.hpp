@@ -42,6 +42,10 @@ class LevelSetSolver {
 
     // Validated (std::invalid_argument); may change between any two iterations.
     void setParams(const LevelSetParams& params);
+    // Wakes every sleeping brick at the next iteration. Anything that changes the speed or
+    // the level set outside a step must call it (setParams, edits, barriers and uploads do):
+    // a sleeping brick's phi and its time-step bound are only valid for the speed it last saw.
+    void wakeAll();
     // Sphere edits (voxel indices, radius in voxels), between any two iterations.
     void addSphere(const Sphere& sphere);
     void removeSphere(const Sphere& sphere);
@@ -88,6 +92,7 @@ class LevelSetSolver {
     void noteChange();
     void uploadBarriers();
     std::optional<LeakSite> watchGrowth(detail::ControlBlock& ctrl);
+    void takeVisits(detail::ControlBlock& ctrl);
     bool managePool(const detail::ControlBlock& ctrl);
     void dispatch(GLuint program, GLuint x, GLuint y = 1, GLuint z = 1);
     void dispatchIndirect(GLuint program, GLintptr offset);
@@ -108,6 +113,7 @@ class LevelSetSolver {
     std::uint32_t lastUsed_ = 0;                // used slots at the last pool check
     std::optional<detail::ControlBlock> known_; // the GPU's control block, when known
     bool converged_ = false;
+    bool wakePending_ = true;
     std::vector<Sphere> barriers_;
     LeakWatch leakWatch_;
 };

@@ -25,6 +25,16 @@ struct SolverOptions {
     // Stop (StopReason::Leak) when the front's growth jumps after a slowdown: the surface broke
     // through a narrow neck into tissue of the same intensity (LeakWatch).
     bool stopOnLeak = false;
+    // Sleeping bricks (docs/solver.md): a brick none of whose voxels moved by more than
+    // sleepTolerance voxels in each of sleepAfter steps in a row is skipped until a neighbour's
+    // face, an edit or a parameter change wakes it. Per step, not per unit of time: the step is
+    // set so that the fastest front voxel moves half a voxel, whatever the scan's units, while
+    // a rate in voxels per unit time would mean 1000x less motion per step on CT (speeds in
+    // HU, dt ~ 1e-3) than on a unit-contrast phantom. sleep = false visits every brick of the
+    // band every iteration.
+    bool sleep = true;
+    float sleepTolerance = 1e-3F;
+    int sleepAfter = 4; // 1 .. 255
 };
 
 // Why a step call returned.
@@ -57,7 +67,8 @@ struct StepResult {
 struct SolverStats {
     int iterations = 0;
     float evolvedTime = 0.0F;
-    std::uint32_t activeBricks = 0; // bricks processed in the last iteration
+    std::uint32_t activeBricks = 0; // bricks processed (awake) in the last iteration
+    std::uint32_t bandBricks = 0;   // bricks stored (asleep or awake) in the last iteration
     std::uint32_t peakActiveBricks = 0;
     std::uint32_t totalBricks = 0;
     std::uint32_t capacity = 0;    // pool slots
@@ -72,6 +83,12 @@ struct SolverStats {
     // per unit of evolved time (the leak watch's signal).
     float growthRate = 0.0F;
     int barriers = 0; // barrier spheres in force
+    // Voxels the step's passes visited (the active bricks' voxels), summed over every iteration
+    // performed, and its mean per iteration; the front's voxels (a face neighbour on the other
+    // side) at the last check. Sleeping bricks keep the first near a small multiple of the last.
+    std::uint64_t visitedVoxels = 0;
+    double visitedVoxelsPerIteration = 0.0;
+    std::uint32_t frontVoxels = 0;
 };
 
 } // namespace steerseg::solver

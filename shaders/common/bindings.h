@@ -17,11 +17,15 @@
 #define REQUESTS_BINDING 7
 #define WANT_EPOCH_BINDING 8
 #define SLOT_STATE_BINDING 9
-// The classifier speed (speed/classifier_gather.comp, speed/classifier_evaluate.comp).
-#define CLASSIFIER_SAMPLES_BINDING 10  // voxel coordinates of the training samples
-#define CLASSIFIER_FEATURES_BINDING 11 // their feature vectors, read back once
-#define CLASSIFIER_NODES_BINDING 12    // the forest's nodes
-#define CLASSIFIER_ROOTS_BINDING 13    // each tree's root node
+// Sleeping bricks (solver/solver_common.glsl): every used slot, and each slot's last measure.
+#define BAND_LIST_BINDING 10
+#define SLOT_FRONT_BINDING 11
+// The classifier speed (speed/classifier_gather.comp, speed/classifier_evaluate.comp);
+// below 16: gpu::GlStateGuard saves bindings 0-15.
+#define CLASSIFIER_SAMPLES_BINDING 12  // voxel coordinates of the training samples
+#define CLASSIFIER_FEATURES_BINDING 13 // their feature vectors, read back once
+#define CLASSIFIER_NODES_BINDING 14    // the forest's nodes
+#define CLASSIFIER_ROOTS_BINDING 15    // each tree's root node
 
 // Texture units of the samplers (glActiveTexture(GL_TEXTURE0 + unit)).
 #define SOLVER_SCAN_UNIT 0    // solver/speed_threshold.glsl: the scan, texelFetch only

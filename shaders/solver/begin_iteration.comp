@@ -13,4 +13,6 @@ void main() {
     ctrl.popped = 0u;
     ctrl.activeCount = 0u;
     ctrl.maxRateBits = 0u;
+    ctrl.bandCount = 0u;
+    ctrl.frontVoxels = 0u;
 }

@@ -14,14 +14,18 @@ void beginBrickState() {
     }
 }
 
+// The brick faces local voxel l lies on, one bit per face in FACE_NEIGHBOURS order.
+uint facesOf(ivec3 l) {
+    uvec3 low = uvec3(equal(l, ivec3(0)));
+    uvec3 high = uvec3(equal(l, ivec3(BRICK_SIZE - 1)));
+    return low.x | (high.x << 1) | (low.y << 2) | (high.y << 3) | (low.z << 4) | (high.z << 5);
+}
+
 // phi of local voxel l (inside the volume).
 void noteVoxelState(ivec3 l, float phi) {
     if (abs(phi) < PHI_FAR) {
         atomicOr(stateLive, 1u);
-        uvec3 low = uvec3(equal(l, ivec3(0)));
-        uvec3 high = uvec3(equal(l, ivec3(BRICK_SIZE - 1)));
-        uint faces = low.x | (high.x << 1) | (low.y << 2) | (high.y << 3) | (low.z << 4) |
-                     (high.z << 5);
+        uint faces = facesOf(l);
         if (faces != 0u) {
             atomicOr(stateFaces, faces);
         }

@@ -20,5 +20,6 @@ void main() {
     if (dt > 0.0) {
         ctrl.time += dt;
         ctrl.iteration += 1u;
+        ctrl.visitedBricks += ctrl.activeCount;
     }
 }

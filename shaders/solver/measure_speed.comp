@@ -1,6 +1,7 @@
 #version 310 es
 // One group per active brick: the largest data speed |alpha * D| on the front, which sets the
-// next time step (choose_time_step.comp).
+// next time step (choose_time_step.comp), and the front's voxels; both kept per slot for the
+// iterations the brick sleeps (slotFront).
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
 #include "solver/speed_threshold.glsl"
@@ -11,20 +12,24 @@ layout(local_size_x = LOCAL_SIZE) in;
 
 uniform float alpha;
 shared uint groupMax;
+shared uint groupFront;
 
 // Every invocation reaches both barriers (GLSL ES 3.10): groups past the list only skip work.
 void main() {
     uint n = activeListIndex();
     bool hasWork = n != NO_BRICK;
-    ivec3 origin = hasWork ? brickCoord(slotBrick[activeList[n]]) * BRICK_SIZE : ivec3(0);
+    uint slot = hasWork ? activeList[n] : 0u;
+    ivec3 origin = hasWork ? brickCoord(slotBrick[slot]) * BRICK_SIZE : ivec3(0);
     if (hasWork) {
         loadTile(origin);
     }
     if (gl_LocalInvocationIndex == 0u) {
         groupMax = 0u;
+        groupFront = 0u;
     }
     barrier();
     float localMax = 0.0;
+    uint localFront = 0u;
     for (uint v = gl_LocalInvocationIndex; hasWork && v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
         ivec3 l = localVoxel(v);
         ivec3 g = origin + l;
@@ -32,12 +37,17 @@ void main() {
             continue;
         }
         if (onFront(tileFaces(l))) {
+            ++localFront;
             localMax = max(localMax, abs(alpha * barrierSpeed(g, dataSpeed(g))));
         }
     }
     atomicMax(groupMax, floatBitsToUint(localMax));
+    atomicAdd(groupFront, localFront);
     barrier();
     if (hasWork && gl_LocalInvocationIndex == 0u) {
         atomicMax(ctrl.maxRateBits, groupMax);
+        atomicAdd(ctrl.frontVoxels, groupFront);
+        slotFront[2u * slot] = groupMax;
+        slotFront[2u * slot + 1u] = groupFront;
     }
 }

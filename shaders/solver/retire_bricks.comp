@@ -1,5 +1,5 @@
 #version 310 es
-// One thread per active brick: a brick that became uniform (all -PHI_FAR or all +PHI_FAR) and
+// One thread per used slot (asleep or awake): a brick that became uniform (all -PHI_FAR or all +PHI_FAR) and
 // that no face neighbour's band reaches (the rule mark_wanted_bricks requests storage by) gives
 // its slot back and becomes BRICK_INSIDE / BRICK_OUTSIDE.
 #define PAGE_TABLE_ACCESS
@@ -11,10 +11,10 @@ layout(std430, binding = FREE_LIST_BINDING) buffer FreeList { uint freeList[]; }
 
 void main() {
     uint n = gl_GlobalInvocationID.x;
-    if (n >= ctrl.activeCount) {
+    if (n >= ctrl.bandCount) {
         return;
     }
-    uint slot = activeList[n];
+    uint slot = bandList[n];
     uint state = stateOf(slotState[slot]);
     if (state == STATE_LIVE || state == STATE_MIXED) {
         return;

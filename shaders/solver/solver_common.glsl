@@ -17,6 +17,16 @@ const uint STATE_MASK = 0xFFu;
 // an unclamped face neighbour) and the brick there needs storage. Only such a face lets the band
 // into a constant neighbour: its other voxels' face neighbours are all clamped.
 const uint FACE_REACH_SHIFT = 8u;
+// Sleeping (docs/solver.md, "Sleeping bricks"): bits QUIET_SHIFT.. count the iterations in a row
+// in which no voxel of the brick moved by more than the tolerance (saturating at 255); a brick
+// whose count reached sleepAfter is left out of the active list. Bits MOVED_SHIFT + f: in the
+// last step a voxel on face f moved by more than the tolerance, so the bricks whose stencils
+// read that face must be awake (mark_wanted_bricks clears their count).
+const uint QUIET_SHIFT = 16u;
+const uint QUIET_MASK = 0xFFu << QUIET_SHIFT;
+const uint MOVED_SHIFT = 24u;
+
+uint quietOf(uint slotWord) { return (slotWord & QUIET_MASK) >> QUIET_SHIFT; }
 
 uint stateOf(uint slotWord) { return slotWord & STATE_MASK; }
 
@@ -30,7 +40,7 @@ const uint GROUPS_PER_ROW = 1024u;
 layout(std430, binding = CONTROL_BINDING) coherent buffer Control {
     uint allocArgs[3]; // indirect dispatch: one group per requested brick
     uint brickArgs[3]; // indirect dispatch: one group per active brick
-    uint listArgs[3];  // indirect dispatch: one thread per active brick, 64 per group
+    uint listArgs[3];  // indirect dispatch: one thread per used slot (bandList), 64 per group
     uint requestCount; // bricks asking for a slot (neighbours of the band, sphere edits)
     uint activeCount;  // entries of activeList
     uint freeCount;    // entries of freeList
@@ -49,11 +59,21 @@ layout(std430, binding = CONTROL_BINDING) coherent buffer Control {
     uint lost;
     uint gainLo[3];
     uint gainHi[3];
+    // Sleeping: every used slot (bandList, for the passes that keep the band's bookkeeping),
+    // the active bricks summed over the iterations performed since the host last cleared it
+    // (voxels visited), and the front's voxels in this iteration (asleep: as last measured).
+    uint bandCount;
+    uint visitedBricks;
+    uint frontVoxels;
 } ctrl;
 
 layout(std430, binding = SLOT_BRICK_BINDING) buffer SlotBrick { uint slotBrick[]; };
 layout(std430, binding = ACTIVE_LIST_BINDING) buffer ActiveList { uint activeList[]; };
 layout(std430, binding = SLOT_STATE_BINDING) buffer SlotState { uint slotState[]; }; // state | reach
+layout(std430, binding = BAND_LIST_BINDING) buffer BandList { uint bandList[]; };
+// Per slot, as measure_speed last saw it: [2 s] max |alpha D| on its front (float bits),
+// [2 s + 1] its front's voxels; a sleeping brick contributes them unchanged.
+layout(std430, binding = SLOT_FRONT_BINDING) buffer SlotFront { uint slotFront[]; };
 
 ivec3 brickCoord(uint brick) {
     int b = int(brick);

@@ -2,7 +2,8 @@
 // One group per active brick: one step of phi (phi_stencil.glsl) from the brick and a one-voxel
 // apron staged in shared memory; records the brick's new state and whether any voxel changed
 // side (convergence), and counts the voxels that changed side with the box of those that came
-// inside (the leak watch: app/solver/leak_watch.hpp). phi is stored once: the interior is updated in place, the shell goes to
+// inside (the leak watch: app/solver/leak_watch.hpp), and whether the brick and its faces
+// moved by more than the sleep tolerance (solver_common.glsl's QUIET_SHIFT). phi is stored once: the interior is updated in place, the shell goes to
 // shellNext until commit_shells (solver/brick_shell.glsl).
 #define PHI_POOL_ACCESS
 #include "common/brick_pool.glsl"
@@ -16,8 +17,11 @@
 layout(local_size_x = LOCAL_SIZE) in;
 
 uniform float alpha;
+uniform float sleepTolerance; // voxels per step
 
 shared uint changedSide;
+shared uint movedAny;
+shared uint movedFaces;
 shared uint gained;
 shared uint lost;
 shared uint gainLo[3];
@@ -35,6 +39,8 @@ void main() {
     beginBrickState();
     if (gl_LocalInvocationIndex == 0u) {
         changedSide = 0u;
+        movedAny = 0u;
+        movedFaces = 0u;
         gained = 0u;
         lost = 0u;
         for (int a = 0; a < 3; ++a) {
@@ -44,6 +50,7 @@ void main() {
     }
     barrier();
     float dt = ctrl.dt;
+    float tolerance = sleepTolerance;
     for (uint v = gl_LocalInvocationIndex; hasWork && v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
         ivec3 l = localVoxel(v);
         ivec3 g = origin + l;
@@ -54,6 +61,10 @@ void main() {
                 out_ = phiStep(s, barrierSpeed(g, dataSpeed(g)), alpha, dt);
             }
             noteVoxelState(l, out_);
+            if (abs(out_ - s.c) > tolerance) {
+                atomicOr(movedAny, 1u);
+                atomicOr(movedFaces, facesOf(l));
+            }
             if ((out_ < 0.0) != (s.c < 0.0)) {
                 atomicOr(changedSide, 1u);
                 if (out_ < 0.0) {
@@ -75,7 +86,12 @@ void main() {
     }
     barrier();
     if (hasWork && gl_LocalInvocationIndex == 0u) {
-        slotState[slot] = brickState();
+        // No step (a stall, the time limit) says nothing about motion: the count stays.
+        uint quiet = quietOf(slotState[slot]);
+        if (dt > 0.0) {
+            quiet = movedAny != 0u ? 0u : min(quiet + 1u, 255u);
+        }
+        slotState[slot] = brickState() | (quiet << QUIET_SHIFT) | (movedFaces << MOVED_SHIFT);
         if (changedSide != 0u) {
             atomicMax(ctrl.lastChange, ctrl.iteration);
             ctrl.lastChangeTime = ctrl.time;

@@ -4,6 +4,7 @@
 #include "support/test_data.hpp"
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -69,9 +70,16 @@ TEST(SolverCli, SegmentsTheSampleLesionAndWritesMaskAndReport) {
     for (const char* key :
          {"iterations", "evolved_time", "solve_seconds", "iterations_per_second", "converged",
           "inside_voxels", "volume_ml", "peak_active_bricks", "total_bricks", "peak_pool_bytes",
-          "dense_phi_bytes", "active_bricks", "pool_bytes", "renderer", "stop_reason"}) {
+          "dense_phi_bytes", "active_bricks", "pool_bytes", "renderer", "stop_reason", "sleep",
+          "voxels_visited_per_iteration", "front_voxels", "band_bricks"}) {
         EXPECT_TRUE(j.contains(key)) << key;
     }
+    // The work per iteration beside the front it serves: a grown lesion has a front, and no
+    // iteration visits more than the stored bricks' voxels.
+    EXPECT_GT(j["front_voxels"].get<double>(), 0.0);
+    EXPECT_GT(j["voxels_visited_per_iteration"].get<double>(), 0.0);
+    EXPECT_LE(j["voxels_visited_per_iteration"].get<double>(),
+              j["peak_active_bricks"].get<double>() * std::pow(j["brick_size"].get<double>(), 3));
     EXPECT_NEAR(j["evolved_time"].get<double>(), 0.1, 1e-5);
     EXPECT_EQ(j["stop_reason"], "time_reached");
     EXPECT_GT(j["inside_voxels"].get<double>(), 4.0 / 3.0 * 3.14159 * 125.0); // grew from r = 5
