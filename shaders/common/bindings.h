@@ -20,6 +20,8 @@
 
 // Texture units of the samplers (glActiveTexture(GL_TEXTURE0 + unit)).
 #define SOLVER_SCAN_UNIT 0    // solver/speed_threshold.glsl: the scan, texelFetch only
+#define SOLVER_FACTOR_UNIT 1  // solver/speed_threshold.glsl: edge factor g or classifier output
+#define SPEED_SOURCE_UNIT 0   // speed/*.comp (each runs alone): the texture it reads
 #define VIEW_SCAN_UNIT 0      // render/view_common.glsl: the scan, linear filtering
 #define VIEW_TF_LUT_UNIT 1    // render/raycast.comp: transfer function
 #define VIEW_SKIP_GRID_UNIT 2 // render/raycast.comp: block min/max for empty-space skipping
@@ -29,5 +31,6 @@
 // Image units.
 #define VIEW_OUT_IMAGE_UNIT 0 // render/view_common.glsl: the rendered picture
 #define VIEW_GRADIENT_IMAGE_UNIT 0 // render/gradient.comp (runs alone): the gradient it fills
+#define SPEED_OUT_IMAGE_UNIT 0     // speed/*.comp (each runs alone): the R32F texture it fills
 
 #endif
