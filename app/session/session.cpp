@@ -128,6 +128,8 @@ void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progr
     // Back to the raw scan first: the solver must not hold textures freed below, and a failure
     // half way leaves a consistent (default) speed.
     g.solver.setSpeedInputs({});
+    g.speed = {};
+    g.timing = {};
     g.factor.reset();
     const auto start = std::chrono::steady_clock::now();
     if (!(settings.smoothing == g.smoothedWith) ||
