@@ -91,5 +91,22 @@ TEST(SpeedCli, ExplicitValuesOverrideTheProbeAndThresholdIsTheDefault) {
     EXPECT_FALSE(p.at("speed").contains("kappa"));
 }
 
+// render's speed-function view was --speed before segment took the name.
+TEST(SpeedCli, RenderTakesTheSpeedViewAsSpeedView) {
+    const auto out = tempDir("speed_cli_render") / "speed.png";
+    const CliRun r =
+        runSteerseg("render --input builtin:sample --view sagittal --speed-view --T 800 "
+                    "--eps 60 --size 64x64 --output " +
+                    out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(out));
+    const CliRun noEps = runSteerseg("render --input builtin:sample --view sagittal --speed-view "
+                                     "--output " +
+                                     out.string());
+    EXPECT_EQ(noEps.exitCode, 2);
+    EXPECT_NE(noEps.err.find("--speed-view needs --T and a positive --eps"), std::string::npos)
+        << noEps.err;
+}
+
 } // namespace
 } // namespace steerseg::test
