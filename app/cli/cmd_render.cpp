@@ -28,7 +28,7 @@ std::vector<std::string> valueOptions() {
 }
 
 std::vector<std::string> flagOptions() {
-    std::vector<std::string> names = {"speed", "no-labels"};
+    std::vector<std::string> names = {"speed-view", "no-labels"};
     const std::vector<std::string> segmentation = segmentationFlagOptions();
     names.insert(names.end(), segmentation.begin(), segmentation.end());
     return names;
@@ -131,9 +131,9 @@ void parseSliceOptions(const Args& args, render::ViewParams& p) {
 void parseSpeedOptions(const Args& args, render::ViewParams& p) {
     const auto target = args.number("T");
     const auto eps = args.number("eps");
-    if (args.flag("speed")) {
+    if (args.flag("speed-view")) {
         if (!target || !eps || !(*eps > 0.0)) {
-            throw UsageError("--speed needs --T and a positive --eps");
+            throw UsageError("--speed-view needs --T and a positive --eps");
         }
         p.content = render::SliceContent::Speed;
         p.speed = {*target, *eps};
@@ -182,7 +182,7 @@ int runRender(std::span<const std::string> words) {
     const Geometry g = scan.volume.geometry();
     checkSliceRange(g, p);
     if (request) {
-        checkSpheresInside(*request, g.dims);
+        completeWithScan(*request, scan.volume);
     }
     auto context = platform::createOffscreenContext();
     // The level set comes from the solver's brick pool; the renderer never copies phi.

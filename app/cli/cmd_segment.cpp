@@ -24,7 +24,7 @@ int runSegment(std::span<const std::string> words) {
     }
     const std::string input = args.required("input");
     const std::string output = args.required("output");
-    const SegmentationRequest request = parseSegmentation(args);
+    SegmentationRequest request = parseSegmentation(args);
     io::ExportFormat format{};
     try {
         format = io::exportFormatFor(output, args.value("format"));
@@ -34,7 +34,7 @@ int runSegment(std::span<const std::string> words) {
 
     // The scan first: a bad file is reported before the GPU is brought up.
     io::LoadedScan scan = io::readScan(input);
-    checkSpheresInside(request, scan.volume.dims());
+    completeWithScan(request, scan.volume);
     auto context = platform::createOffscreenContext();
     session::Session session(std::move(scan), request.options);
     applySegmentation(session, request);

@@ -30,14 +30,17 @@ constexpr Command kCommands[] = {
     {"render",
      "render --input SCAN --view 3d|axial|coronal|sagittal [--slice N] [--clip nx,ny,nz,d] [--roi "
      "inside|dim|off] [--surface opaque|translucent|hidden] [--preset bone|soft|mr] [--window L,W] "
-     "[--camera anterior|lateral|superior] [--orbit YAW,PITCH] [--zoom F] [--pan R,U] [--speed --T "
+     "[--camera anterior|lateral|superior] [--orbit YAW,PITCH] [--zoom F] [--pan R,U] "
+     "[--speed-view --T "
      "T --eps E] [--no-labels] [--mask MASK | --seed ... ] [--size WxH] --output PNG: draw one "
      "view to an image",
      steerseg::cli::runRender},
     {"segment",
      "segment --input PATH --seed i,j,k,r [--seed ...] [--erase i,j,k,r ...] [--barrier i,j,k,r "
      "...] --T v --eps v --alpha a (--iterations N | --time t | --converge [--max-iterations N]) "
-     "[--stop-on-leak] [--dense] --output OUT "
+     "[--stop-on-leak] [--dense] [--speed threshold|edge|classify] [--smooth N] "
+     "[--conductance v] [--kappa v] [--inside i,j,k,r ...] [--outside i,j,k,r ...] "
+     "[--probe i,j,k,r] --output OUT "
      "[--format F] [--report REPORT.json]: level-set segmentation on the GPU; OUT as for export "
      "(surfaces from the level set itself)",
      steerseg::cli::runSegment},

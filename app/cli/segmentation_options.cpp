@@ -1,5 +1,7 @@
 #include "cli/segmentation_options.hpp"
 
+#include "session/speed_probe.hpp"
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -63,11 +65,84 @@ void checkInside(const std::vector<solver::Sphere>& spheres, const glm::ivec3& d
     }
 }
 
+float positiveOption(const Args& args, const char* name) {
+    const double v = *args.number(name);
+    if (!(v > 0.0) || v > static_cast<double>(std::numeric_limits<float>::max())) {
+        throw UsageError(std::string("--") + name + " must be a number > 0");
+    }
+    return static_cast<float>(v);
+}
+
+// --speed and what each speed takes; what needs the scan (the probe) is left to
+// completeWithScan.
+void parseSpeed(const Args& args, SegmentationRequest& r) {
+    const std::string name = args.value("speed").value_or("threshold");
+    const auto kind = speed::parseSpeedKind(name);
+    if (!kind) {
+        throw UsageError("--speed must be threshold, edge or classify (got '" + name + "')");
+    }
+    r.speed.kind = *kind;
+    const long long smooth = args.integer("smooth").value_or(0);
+    if (smooth < 0 || smooth > speed::kMaxSmoothingIterations) {
+        throw UsageError("--smooth must be between 0 and " +
+                         std::to_string(speed::kMaxSmoothingIterations));
+    }
+    r.speed.smoothing.iterations = static_cast<int>(smooth);
+    if (args.value("conductance")) {
+        r.speed.smoothing.conductance = positiveOption(args, "conductance");
+        r.explicitConductance = true;
+    }
+    if (args.value("kappa")) {
+        if (*kind != speed::SpeedKind::Edge) {
+            throw UsageError("--kappa goes with --speed edge");
+        }
+        r.speed.kappa = positiveOption(args, "kappa");
+        r.explicitKappa = true;
+    }
+    for (const std::string& s : args.values("inside")) {
+        r.speed.inside.push_back(parseSphere(s, "--inside"));
+    }
+    for (const std::string& s : args.values("outside")) {
+        r.speed.outside.push_back(parseSphere(s, "--outside"));
+    }
+    if (*kind != speed::SpeedKind::Classify &&
+        (!r.speed.inside.empty() || !r.speed.outside.empty())) {
+        throw UsageError("--inside and --outside go with --speed classify");
+    }
+    if (const auto probe = args.value("probe")) {
+        r.probe = parseSphere(*probe, "--probe");
+    }
+    const bool probe = r.probe.has_value();
+    if (smooth > 0 && !r.explicitConductance && !probe) {
+        throw UsageError("--smooth needs --conductance v or --probe i,j,k,r");
+    }
+    if (*kind == speed::SpeedKind::Edge && !r.explicitKappa && !probe) {
+        throw UsageError("--speed edge needs --kappa v or --probe i,j,k,r");
+    }
+    if (*kind == speed::SpeedKind::Classify &&
+        ((r.speed.inside.empty() && !probe) || r.speed.outside.empty())) {
+        throw UsageError("--speed classify needs an inside example (--inside i,j,k,r or --probe) "
+                         "and an --outside i,j,k,r");
+    }
+}
+
+void validateRequest(const SegmentationRequest& r, const glm::ivec3* dims) {
+    try {
+        solver::validateParams(r.params);
+        if (dims != nullptr) {
+            session::validateSpeedSettings(r.speed, *dims);
+        }
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+}
+
 } // namespace
 
 std::vector<std::string> segmentationValueOptions() {
-    return {"seed",       "erase", "barrier",        "T",         "eps", "alpha",
-            "iterations", "time",  "max-iterations", "brick-size"};
+    return {"seed",        "erase", "barrier",        "T",          "eps",   "alpha",
+            "iterations",  "time",  "max-iterations", "brick-size", "speed", "smooth",
+            "conductance", "kappa", "inside",         "outside",    "probe"};
 }
 
 std::vector<std::string> segmentationFlagOptions() {
@@ -81,14 +156,20 @@ bool wantsSegmentation(const Args& args) {
 
 SegmentationRequest parseSegmentation(const Args& args) {
     SegmentationRequest r;
-    r.params.T = static_cast<float>(parseNumber(args.required("T"), "--T"));
-    r.params.eps = static_cast<float>(parseNumber(args.required("eps"), "--eps"));
+    parseSpeed(args, r);
+    // --probe suggests T and eps; without it they are required.
+    const bool probe = r.probe.has_value();
+    const auto number = [&](const char* name) {
+        return static_cast<float>(
+            parseNumber(probe ? args.value(name).value_or("0") : args.required(name),
+                        std::string("--") + name));
+    };
+    r.explicitT = args.value("T").has_value();
+    r.explicitEps = args.value("eps").has_value();
+    r.params.T = number("T");
+    r.params.eps = number("eps");
     r.params.alpha = static_cast<float>(parseNumber(args.required("alpha"), "--alpha"));
-    try {
-        solver::validateParams(r.params);
-    } catch (const std::invalid_argument& e) {
-        throw UsageError(e.what());
-    }
+    validateRequest(r, nullptr);
     for (const std::string& s : args.values("seed")) {
         r.seeds.push_back(parseSphere(s, "--seed"));
     }
@@ -115,10 +196,39 @@ SegmentationRequest parseSegmentation(const Args& args) {
     return r;
 }
 
-void checkSpheresInside(const SegmentationRequest& request, const glm::ivec3& dims) {
+void completeWithScan(SegmentationRequest& request, const Volume& scan) {
+    const glm::ivec3 dims = scan.dims();
     checkInside(request.seeds, dims, "--seed");
     checkInside(request.erases, dims, "--erase");
     checkInside(request.barriers, dims, "--barrier");
+    checkInside(request.speed.inside, dims, "--inside");
+    checkInside(request.speed.outside, dims, "--outside");
+    if (request.probe) {
+        checkInside({*request.probe}, dims, "--probe");
+        session::SpeedProbe p;
+        try {
+            p = session::probeSpeed(scan, *request.probe);
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(std::string("--probe: ") + e.what());
+        }
+        // Explicit values override what the probe suggests.
+        if (!request.explicitT) {
+            request.params.T = static_cast<float>(p.target);
+        }
+        if (!request.explicitEps) {
+            request.params.eps = static_cast<float>(p.epsilon);
+        }
+        if (!request.explicitConductance) {
+            request.speed.smoothing.conductance = static_cast<float>(p.conductance);
+        }
+        if (request.speed.kind == speed::SpeedKind::Edge && !request.explicitKappa) {
+            request.speed.kappa = static_cast<float>(p.kappa);
+        }
+        if (request.speed.kind == speed::SpeedKind::Classify) {
+            request.speed.inside.push_back(*request.probe);
+        }
+    }
+    validateRequest(request, &dims);
 }
 
 void applySegmentation(session::Session& session, const SegmentationRequest& request) {
@@ -132,6 +242,7 @@ void applySegmentation(session::Session& session, const SegmentationRequest& req
         session.addBarrier(s);
     }
     session.setParams(request.params);
+    session.setSpeed(request.speed);
 }
 
 } // namespace steerseg::cli

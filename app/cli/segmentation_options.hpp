@@ -5,14 +5,23 @@
 #include "cli/args.hpp"
 #include "core/volume.hpp"
 #include "session/session.hpp"
+#include "session/speed_settings.hpp"
 
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace steerseg::cli {
 
 struct SegmentationRequest {
+    // T and eps are final once completeWithScan has applied --probe.
     solver::LevelSetParams params;
+    session::SpeedSettings speed; // --speed, --smooth, --conductance, --kappa, --inside, --outside
+    std::optional<solver::Sphere> probe;
+    bool explicitT = false;
+    bool explicitEps = false;
+    bool explicitConductance = false;
+    bool explicitKappa = false;
     std::vector<solver::Sphere> seeds;
     std::vector<solver::Sphere> erases;
     std::vector<solver::Sphere> barriers;
@@ -30,10 +39,12 @@ bool wantsSegmentation(const Args& args);
 // Parses and validates everything that needs no scan; throws UsageError.
 SegmentationRequest parseSegmentation(const Args& args);
 
-// Seeds and erasers must lie in the scan; throws UsageError naming the option.
-void checkSpheresInside(const SegmentationRequest& request, const glm::ivec3& dims);
+// With the scan read: every sphere option must lie in the scan, --probe fills the parameters not
+// given explicitly (session::probeSpeed) and the result is validated; throws UsageError naming
+// the option.
+void completeWithScan(SegmentationRequest& request, const Volume& scan);
 
-// Applies the request's seeds, erasers, barriers and parameters to the session.
+// Applies the request's seeds, erasers, barriers, parameters and speed to the session.
 void applySegmentation(session::Session& session, const SegmentationRequest& request);
 
 } // namespace steerseg::cli

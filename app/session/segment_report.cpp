@@ -21,6 +21,21 @@ std::string segmentReport(const Session& session, const RunOutcome& run,
     j["T"] = params.T;
     j["eps"] = params.eps;
     j["alpha"] = params.alpha;
+    const SpeedSettings& speed = session.speed();
+    nlohmann::ordered_json sp;
+    sp["name"] = speed::speedKindName(speed.kind);
+    sp["smoothing_iterations"] = speed.smoothing.iterations;
+    sp["conductance"] = speed.smoothing.conductance;
+    if (speed.kind == speed::SpeedKind::Edge) {
+        sp["kappa"] = speed.kappa;
+    }
+    if (speed.kind == speed::SpeedKind::Classify) {
+        sp["inside_examples"] = speed.inside.size();
+        sp["outside_examples"] = speed.outside.size();
+    }
+    j["speed"] = sp;
+    j["preprocessing_seconds"] = session.speedTiming().preprocessingSeconds;
+    j["training_seconds"] = session.speedTiming().trainingSeconds;
     j["mode"] = options.dense ? "dense" : "sparse";
     j["brick_size"] = options.brickSize == 0 ? solver::defaultBrickSize() : options.brickSize;
     j["iterations"] = stats.iterations;

@@ -6,9 +6,13 @@
 #include "io/scan_reader.hpp"
 #include "render/renderer.hpp"
 #include "solver/level_set_solver.hpp"
+#include "speed/classifier_speed.hpp"
+#include "speed/edge_factor.hpp"
+#include "speed/smoothing.hpp"
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <stdexcept>
 
 namespace steerseg::session {
@@ -29,6 +33,13 @@ struct Session::Gpu {
     gpu::ScanTexture texture;
     solver::LevelSetSolver solver;
     render::Renderer renderer;
+    // The speed's textures (Session::setSpeed), borrowed by the solver.
+    gpu::Texture smoothed; // empty: the speed reads the raw scan
+    speed::SmoothingParams smoothedWith;
+    gpu::Texture factor;                             // edge: g
+    std::optional<speed::ClassifierSpeed> classifier; // classify: P(inside) - P(outside)
+    SpeedSettings speed;
+    SpeedTiming timing;
 };
 
 Session Session::open(const std::filesystem::path& path, const solver::SolverOptions& options) {
@@ -107,6 +118,73 @@ bool Session::hasLevelSet() const {
 
 void Session::setParams(const solver::LevelSetParams& params) {
     gpu_->solver.setParams(params);
+}
+
+void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progress) {
+    validateSpeedSettings(settings, scan_.dims());
+    Gpu& g = *gpu_;
+    const glm::ivec3 dims = scan_.dims();
+    // Back to the raw scan first: the solver must not hold textures freed below, and a failure
+    // half way leaves a consistent (default) speed.
+    g.solver.setSpeedInputs({});
+    g.speed = {};
+    g.timing = {};
+    g.factor.reset();
+    g.classifier.reset();
+    const auto start = std::chrono::steady_clock::now();
+    if (!(settings.smoothing == g.smoothedWith) ||
+        (settings.smoothing.iterations > 0 && !g.smoothed)) {
+        g.smoothed.reset(); // before the new copy: two smoothed copies would not fit a large scan
+        g.smoothedWith = {};
+        speed::SmoothingProgress step;
+        if (progress) {
+            step = [&progress](int done, int total) { progress("smoothing", done, total); };
+        }
+        g.smoothed = speed::smoothScan(g.texture.exact(), dims, settings.smoothing, step);
+        g.smoothedWith = settings.smoothing;
+    }
+    const GLuint intensity = g.smoothed ? g.smoothed.id() : g.texture.exact();
+    if (settings.kind == speed::SpeedKind::Edge) {
+        g.factor = speed::edgeFactor(intensity, dims, settings.kappa);
+        if (progress) {
+            progress("edge factor", 1, 1);
+        }
+    }
+    glFinish(); // the time covers the GPU work
+    const auto prepared = std::chrono::steady_clock::now();
+    g.timing.preprocessingSeconds = std::chrono::duration<double>(prepared - start).count();
+    GLuint factor = g.factor.id();
+    if (settings.kind == speed::SpeedKind::Classify) {
+        if (progress) {
+            progress("training", 0, 1);
+        }
+        const auto examples = [](const std::vector<solver::Sphere>& spheres) {
+            std::vector<speed::Example> out;
+            out.reserve(spheres.size());
+            for (const solver::Sphere& s : spheres) {
+                out.push_back({s.centre, s.radius});
+            }
+            return out;
+        };
+        g.classifier.emplace(intensity, dims, examples(settings.inside),
+                             examples(settings.outside));
+        factor = g.classifier->texture();
+        g.timing.trainingSeconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - prepared).count();
+        if (progress) {
+            progress("training", 1, 1);
+        }
+    }
+    g.solver.setSpeedInputs({settings.kind, g.smoothed.id(), factor});
+    g.speed = settings;
+}
+
+const SpeedSettings& Session::speed() const {
+    return gpu_->speed;
+}
+
+const SpeedTiming& Session::speedTiming() const {
+    return gpu_->timing;
 }
 
 solver::StepResult Session::step(int iterations) {

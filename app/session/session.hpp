@@ -11,6 +11,7 @@
 #include "render/render_params.hpp"
 #include "render/slice_frame.hpp"
 #include "session/probe.hpp"
+#include "session/speed_settings.hpp"
 #include "solver/level_set_params.hpp"
 #include "solver/solver_types.hpp"
 
@@ -73,6 +74,15 @@ class Session {
 
     // Validated (std::invalid_argument); may change between any two steps.
     void setParams(const solver::LevelSetParams& params);
+    // The speed that drives the surface (docs/speed.md): smooths the scan (once per smoothing
+    // parameters: a change of kind or kappa alone reuses it), computes the edge factor, trains
+    // the classifier. Restarts the convergence clock like setParams. std::invalid_argument for
+    // settings validateSpeedSettings refuses; std::runtime_error when the GPU cannot hold the
+    // textures, and for classify until the voxel classifier is built in. T and eps stay in
+    // setParams. Default: the threshold speed on the raw scan.
+    void setSpeed(const SpeedSettings& settings, const SpeedProgress& progress = {});
+    [[nodiscard]] const SpeedSettings& speed() const;
+    [[nodiscard]] const SpeedTiming& speedTiming() const;
     solver::StepResult step(int iterations);
     RunOutcome run(const RunMode& mode);
     [[nodiscard]] bool converged() const;

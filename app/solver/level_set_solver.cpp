@@ -131,6 +131,17 @@ void LevelSetSolver::wakeAll() {
     wakePending_ = true;
 }
 
+void LevelSetSolver::setSpeedInputs(const speed::SpeedInputs& inputs) {
+    speed::validateSpeedInputs(inputs);
+    gpu::GlStateGuard guard;
+    speedInputs_ = inputs;
+    for (GLuint p : {programs_->measureSpeed.id(), programs_->updatePhi.id()}) {
+        glProgramUniform1i(p, glGetUniformLocation(p, "speedKind"),
+                           static_cast<GLint>(inputs.kind));
+    }
+    noteChange();
+}
+
 void LevelSetSolver::requireParams() const {
     if (!haveParams_) {
         throw std::logic_error("solver: setParams before stepping");
@@ -213,7 +224,10 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
     requireParams();
     gpu::GlStateGuard guard;
     glActiveTexture(GL_TEXTURE0 + SOLVER_SCAN_UNIT);
-    glBindTexture(GL_TEXTURE_3D, scan_->exact());
+    glBindTexture(GL_TEXTURE_3D,
+                  speedInputs_.intensity != 0 ? speedInputs_.intensity : scan_->exact());
+    glActiveTexture(GL_TEXTURE0 + SOLVER_FACTOR_UNIT);
+    glBindTexture(GL_TEXTURE_3D, speedInputs_.factor);
     pool_->bind();
     // The block as the last call left it: no GPU sync before the first chunk, so a caller that
     // steps a few iterations per frame pays one readback per call (after its chunk).

@@ -8,6 +8,7 @@
 #include "solver/leak_watch.hpp"
 #include "solver/level_set_params.hpp"
 #include "solver/solver_types.hpp"
+#include "speed/speed_inputs.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -46,6 +47,12 @@ class LevelSetSolver {
     // the level set outside a step must call it (setParams, edits, barriers and uploads do):
     // a sleeping brick's phi and its time-step bound are only valid for the speed it last saw.
     void wakeAll();
+    // What the data term reads (speed::SpeedInputs, docs/speed.md); by default the threshold
+    // speed on the raw scan. The textures are borrowed: they must stay alive while the solver
+    // steps with them. A change restarts the convergence clock and the leak watch, as
+    // setParams does. std::invalid_argument for inputs speed::validateSpeedInputs refuses.
+    void setSpeedInputs(const speed::SpeedInputs& inputs);
+    [[nodiscard]] const speed::SpeedInputs& speedInputs() const { return speedInputs_; }
     // Sphere edits (voxel indices, radius in voxels), between any two iterations.
     void addSphere(const Sphere& sphere);
     void removeSphere(const Sphere& sphere);
@@ -105,6 +112,7 @@ class LevelSetSolver {
     std::unique_ptr<detail::SolverPrograms> programs_;
     std::unique_ptr<detail::GpuBrickPool> pool_;
     LevelSetParams params_;
+    speed::SpeedInputs speedInputs_;
     bool haveParams_ = false;
     std::uint32_t epoch_ = 1;
     SolverStats stats_;

@@ -5,6 +5,7 @@
 // Unit voxel spacing; neighbours outside the volume repeat the border voxel.
 
 #include "solver/level_set_params.hpp"
+#include "speed/speed_kind.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -105,6 +106,22 @@ inline float phiStep(const PhiStencil& s, float dataSpeed, float alpha, float dt
 // shaders/solver/speed_threshold.glsl.
 inline float thresholdSpeed(float intensity, const LevelSetParams& p) {
     return p.eps - std::abs(intensity - p.T);
+}
+
+// The data term of each speed (docs/speed.md) from the voxel's intensity and its precomputed
+// factor (edge: g; classify: P(in) - P(out)). The GPU twin is dataSpeed() in
+// shaders/solver/speed_threshold.glsl.
+inline float dataSpeed(float intensity, float factor, speed::SpeedKind kind,
+                       const LevelSetParams& p) {
+    switch (kind) {
+    case speed::SpeedKind::Classify:
+        return factor;
+    case speed::SpeedKind::Edge:
+        return factor * thresholdSpeed(intensity, p);
+    case speed::SpeedKind::Threshold:
+        break;
+    }
+    return thresholdSpeed(intensity, p);
 }
 
 } // namespace steerseg::solver

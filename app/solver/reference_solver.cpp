@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace steerseg::solver {
 
@@ -24,6 +26,21 @@ void ReferenceSolver::setParams(const LevelSetParams& params) {
     validateParams(params);
     params_ = params;
     haveParams_ = true;
+}
+
+void ReferenceSolver::setSpeed(speed::SpeedKind kind, std::vector<float> factor) {
+    if (kind != speed::SpeedKind::Threshold && factor.size() != intensities_.size()) {
+        throw std::invalid_argument("reference solver: the speed factor has " +
+                                    std::to_string(factor.size()) + " voxels, the volume " +
+                                    std::to_string(intensities_.size()));
+    }
+    speedKind_ = kind;
+    factor_ = std::move(factor);
+}
+
+float ReferenceSolver::speedAt(std::size_t at) const {
+    const float factor = speedKind_ == speed::SpeedKind::Threshold ? 0.0F : factor_[at];
+    return dataSpeed(intensities_[at], factor, speedKind_, params_);
 }
 
 void ReferenceSolver::addSphere(const Sphere& sphere) {
@@ -103,7 +120,7 @@ int ReferenceSolver::step(int n, float timeLimit) {
                     }
                     band.push_back(index(i, j, k));
                     if (onFront(s)) {
-                        const float d = thresholdSpeed(intensities_[band.back()], params_);
+                        const float d = speedAt(band.back());
                         maxRate = std::max(maxRate, std::abs(params_.alpha * d));
                     }
                 }
@@ -123,7 +140,7 @@ int ReferenceSolver::step(int n, float timeLimit) {
             const int k = static_cast<int>(
                 at / (static_cast<std::size_t>(dims_.x) * static_cast<std::size_t>(dims_.y)));
             const PhiStencil s = stencil(i, j, k);
-            const float d = thresholdSpeed(intensities_[at], params_);
+            const float d = speedAt(at);
             const float out = phiStep(s, d, params_.alpha, dt);
             changed = changed || ((out < 0.0F) != (s.c < 0.0F));
             next_[at] = out;

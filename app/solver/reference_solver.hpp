@@ -1,6 +1,7 @@
 #pragma once
 
 #include "solver/level_set_params.hpp"
+#include "speed/speed_kind.hpp"
 
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -18,6 +19,11 @@ class ReferenceSolver {
     ReferenceSolver(std::vector<float> intensities, const glm::ivec3& dims);
 
     void setParams(const LevelSetParams& params);
+    // The GPU solver's setSpeedInputs: `factor` per voxel (i fastest; edge: g, classify:
+    // P(in) - P(out)), ignored by the threshold speed. The intensities given to the constructor
+    // are the speed's I (pass the smoothed scan to mirror a smoothed GPU run).
+    // std::invalid_argument when the factor's size differs from the volume's.
+    void setSpeed(speed::SpeedKind kind, std::vector<float> factor);
     void addSphere(const Sphere& sphere);
     void removeSphere(const Sphere& sphere);
     void initFromMask(std::span<const std::uint8_t> mask);
@@ -41,7 +47,11 @@ class ReferenceSolver {
     [[nodiscard]] struct PhiStencil stencil(int i, int j, int k) const;
     [[nodiscard]] std::size_t index(int i, int j, int k) const;
 
+    [[nodiscard]] float speedAt(std::size_t at) const;
+
     std::vector<float> intensities_;
+    speed::SpeedKind speedKind_ = speed::SpeedKind::Threshold;
+    std::vector<float> factor_;
     glm::ivec3 dims_;
     std::vector<float> phi_;
     std::vector<float> next_;

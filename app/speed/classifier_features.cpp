@@ -27,7 +27,7 @@ void checkIntensityTexture(GLuint intensity, glm::ivec3 dims) {
     if (intensity == 0 || glIsTexture(intensity) == GL_FALSE) {
         throw std::invalid_argument("classifier speed: the intensity texture is not a texture");
     }
-    glActiveTexture(GL_TEXTURE0 + CLASSIFIER_INTENSITY_UNIT);
+    glActiveTexture(GL_TEXTURE0 + SPEED_SOURCE_UNIT);
     while (glGetError() != GL_NO_ERROR) {
     }
     glBindTexture(GL_TEXTURE_3D, intensity);
@@ -71,7 +71,7 @@ std::vector<float> gatherClassifierFeatures(GLuint intensity, glm::ivec3 dims,
         GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(features.size() * sizeof(float)), nullptr,
         GL_STREAM_READ);
     glUseProgram(program.id());
-    glActiveTexture(GL_TEXTURE0 + CLASSIFIER_INTENSITY_UNIT);
+    glActiveTexture(GL_TEXTURE0 + SPEED_SOURCE_UNIT);
     glBindTexture(GL_TEXTURE_3D, intensity);
     glUniform3i(glGetUniformLocation(program.id(), "classifierDims"), dims.x, dims.y, dims.z);
     const GLint countAt = glGetUniformLocation(program.id(), "sampleCount");

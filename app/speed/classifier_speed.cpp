@@ -78,7 +78,7 @@ ClassifierSpeed::ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<co
 
 void ClassifierSpeed::evaluate(GLuint intensity) {
     gpu::Texture texture = gpu::createTexture();
-    glActiveTexture(GL_TEXTURE0 + CLASSIFIER_INTENSITY_UNIT);
+    glActiveTexture(GL_TEXTURE0 + SPEED_SOURCE_UNIT);
     glBindTexture(GL_TEXTURE_3D, texture.id());
     glTexStorage3D(GL_TEXTURE_3D, 1, GL_R32F, dims_.x, dims_.y, dims_.z);
     glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -100,9 +100,9 @@ void ClassifierSpeed::evaluate(GLuint intensity) {
     glUseProgram(program.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFIER_NODES_BINDING, nodeBuffer.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFIER_ROOTS_BINDING, rootBuffer.id());
-    glActiveTexture(GL_TEXTURE0 + CLASSIFIER_INTENSITY_UNIT);
+    glActiveTexture(GL_TEXTURE0 + SPEED_SOURCE_UNIT);
     glBindTexture(GL_TEXTURE_3D, intensity);
-    glBindImageTexture(CLASSIFIER_OUT_IMAGE_UNIT, texture.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+    glBindImageTexture(SPEED_OUT_IMAGE_UNIT, texture.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
                        GL_R32F);
     glUniform3i(glGetUniformLocation(program.id(), "classifierDims"), dims_.x, dims_.y, dims_.z);
     glUniform1i(glGetUniformLocation(program.id(), "treeCount"), static_cast<GLint>(roots.size()));

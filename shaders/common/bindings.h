@@ -29,16 +29,17 @@
 
 // Texture units of the samplers (glActiveTexture(GL_TEXTURE0 + unit)).
 #define SOLVER_SCAN_UNIT 0    // solver/speed_threshold.glsl: the scan, texelFetch only
+#define SOLVER_FACTOR_UNIT 1  // solver/speed_threshold.glsl: edge factor g or classifier output
+#define SPEED_SOURCE_UNIT 0   // speed/*.comp (each runs alone): the texture it reads
 #define VIEW_SCAN_UNIT 0      // render/view_common.glsl: the scan, linear filtering
 #define VIEW_TF_LUT_UNIT 1    // render/raycast.comp: transfer function
 #define VIEW_SKIP_GRID_UNIT 2 // render/raycast.comp: block min/max for empty-space skipping
 #define VIEW_OCCUPANCY_UNIT 3 // render/raycast.comp: occupied transfer-function bins
 #define VIEW_GRADIENT_UNIT 4  // render/raycast.comp: the scan's gradient (render/gradient.comp)
-#define CLASSIFIER_INTENSITY_UNIT 0 // speed/classifier_features.glsl: intensities, texelFetch only
 
 // Image units.
 #define VIEW_OUT_IMAGE_UNIT 0 // render/view_common.glsl: the rendered picture
 #define VIEW_GRADIENT_IMAGE_UNIT 0 // render/gradient.comp (runs alone): the gradient it fills
-#define CLASSIFIER_OUT_IMAGE_UNIT 0 // speed/classifier_evaluate.comp (runs alone): the speed
+#define SPEED_OUT_IMAGE_UNIT 0     // speed/*.comp (each runs alone): the R32F texture it fills
 
 #endif

@@ -28,7 +28,7 @@ layout(std430, binding = CLASSIFIER_NODES_BINDING) readonly buffer Nodes {
 layout(std430, binding = CLASSIFIER_ROOTS_BINDING) readonly buffer Roots {
     int roots[];
 };
-layout(r32f, binding = CLASSIFIER_OUT_IMAGE_UNIT) uniform writeonly image3D speedOut;
+layout(r32f, binding = SPEED_OUT_IMAGE_UNIT) uniform writeonly image3D speedOut;
 uniform int treeCount;
 uniform int maxDepth; // bounds each walk, whatever the buffer holds
 uniform int zOffset;

@@ -8,7 +8,7 @@
 #include "common/bindings.h"
 #include "speed/classifier_layout.h"
 
-layout(binding = CLASSIFIER_INTENSITY_UNIT) uniform highp sampler3D classifierIntensity;
+layout(binding = SPEED_SOURCE_UNIT) uniform highp sampler3D classifierIntensity;
 uniform ivec3 classifierDims;
 
 float classifierFetch(ivec3 v) {

@@ -1,5 +1,6 @@
 // The classification speed on the GPU (issue 13): features against a CPU computation, the
 // GPU evaluation against the CPU forest, and the issue's two textures of one mean intensity.
+#include "common/bindings.h"
 #include "gpu/gl_handle.hpp"
 #include "gpu/gl_state_guard.hpp"
 #include "gpu/program.hpp"
@@ -267,6 +268,9 @@ TEST_F(ClassifierSpeedTest, EvaluatesEverySlabOfALongScan) {
     EXPECT_GT(outside, last.size() * 9 / 10);
 }
 
+constexpr GLuint kClassifierBindings[] = {CLASSIFIER_SAMPLES_BINDING, CLASSIFIER_FEATURES_BINDING,
+                                          CLASSIFIER_NODES_BINDING, CLASSIFIER_ROOTS_BINDING};
+
 TEST_F(ClassifierSpeedTest, LeavesTheCallersGlStateAsItWas) {
     const std::vector<float> vol = twoTextures();
     const gpu::ScanTexture scan(vol, kTwoDims);
@@ -278,12 +282,12 @@ TEST_F(ClassifierSpeedTest, LeavesTheCallersGlStateAsItWas) {
     glBindImageTexture(0, image.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_3D, image.id());
-    for (const GLuint binding : {10U, 11U, 12U, 13U}) {
+    for (const GLuint binding : kClassifierBindings) {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, foreign.id());
     }
     const ClassifierSpeed speed(scan.exact(), kTwoDims, kCalm, kRough);
     GLint value = 0;
-    for (const GLuint binding : {10U, 11U, 12U, 13U}) {
+    for (const GLuint binding : kClassifierBindings) {
         glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, binding, &value);
         EXPECT_EQ(static_cast<GLuint>(value), foreign.id()) << "SSBO binding " << binding;
     }

@@ -1,0 +1,39 @@
+#include "session/speed_settings.hpp"
+
+#include "speed/edge_factor.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace steerseg::session {
+
+namespace {
+
+void checkExamples(const std::vector<solver::Sphere>& spheres, const glm::ivec3& dims,
+                   const char* what) {
+    for (const solver::Sphere& s : spheres) {
+        try {
+            solver::validateSphere(s, dims);
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument(std::string(what) + ": " + e.what());
+        }
+    }
+}
+
+} // namespace
+
+void validateSpeedSettings(const SpeedSettings& settings, const glm::ivec3& dims) {
+    speed::validateSmoothing(settings.smoothing);
+    if (settings.kind == speed::SpeedKind::Edge) {
+        speed::validateKappa(settings.kappa);
+    }
+    if (settings.kind == speed::SpeedKind::Classify &&
+        (settings.inside.empty() || settings.outside.empty())) {
+        throw std::invalid_argument(
+            "the classify speed needs at least one inside and one outside example");
+    }
+    checkExamples(settings.inside, dims, "inside example");
+    checkExamples(settings.outside, dims, "outside example");
+}
+
+} // namespace steerseg::session

@@ -1,0 +1,40 @@
+#pragma once
+
+// Which speed drives the surface and what it needs, as plain data (docs/speed.md): the command
+// line and the kiosk fill it, Session::setSpeed turns it into textures on the GPU.
+#include "solver/level_set_params.hpp"
+#include "speed/smoothing_params.hpp"
+#include "speed/speed_kind.hpp"
+
+#include <functional>
+#include <glm/glm.hpp>
+#include <string_view>
+#include <vector>
+
+namespace steerseg::session {
+
+struct SpeedSettings {
+    speed::SpeedKind kind = speed::SpeedKind::Threshold;
+    speed::SmoothingParams smoothing; // what the speed's I is: the scan smoothed this way
+    float kappa = 0.0F;               // edge: real units per voxel, > 0
+    // classify: the operator's examples, voxel indices and radii in voxels.
+    std::vector<solver::Sphere> inside;
+    std::vector<solver::Sphere> outside;
+};
+
+// Throws std::invalid_argument (one line) for settings no speed can run with: smoothing out of
+// range, edge without kappa > 0, classify without an inside and an outside example, an example
+// that does not fit the scan (dims).
+void validateSpeedSettings(const SpeedSettings& settings, const glm::ivec3& dims);
+
+// Seconds spent making the speed's textures (GPU work finished).
+struct SpeedTiming {
+    double preprocessingSeconds = 0.0; // smoothing and the edge factor
+    double trainingSeconds = 0.0;      // the classifier's training and evaluation
+};
+
+// Progress of Session::setSpeed: the stage ("smoothing", "edge factor", "training") and its
+// steps done out of total (smoothing: per iteration).
+using SpeedProgress = std::function<void(std::string_view stage, int done, int total)>;
+
+} // namespace steerseg::session

@@ -1,0 +1,39 @@
+#include "speed/volume_texture.hpp"
+
+#include "common/bindings.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace steerseg::speed {
+
+gpu::Texture createVolumeTexture(const glm::ivec3& dims, const char* what) {
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    gpu::Texture texture = gpu::createTexture();
+    glActiveTexture(GL_TEXTURE0 + SPEED_SOURCE_UNIT);
+    glBindTexture(GL_TEXTURE_3D, texture.id());
+    glTexStorage3D(GL_TEXTURE_3D, 1, GL_R32F, dims.x, dims.y, dims.z);
+    if (glGetError() != GL_NO_ERROR) {
+        throw std::runtime_error(std::string(what) + ": the GPU cannot hold another " +
+                                 std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" +
+                                 std::to_string(dims.z) + " float texture");
+    }
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return texture;
+}
+
+void runVolumePass(GLuint program, GLuint source, GLuint target, const glm::ivec3& dims) {
+    glUseProgram(program);
+    glActiveTexture(GL_TEXTURE0 + SPEED_SOURCE_UNIT);
+    glBindTexture(GL_TEXTURE_3D, source);
+    glBindImageTexture(SPEED_OUT_IMAGE_UNIT, target, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+    glUniform3i(glGetUniformLocation(program, "volumeDims"), dims.x, dims.y, dims.z);
+    glDispatchCompute(static_cast<GLuint>((dims.x + 3) / 4), static_cast<GLuint>((dims.y + 3) / 4),
+                      static_cast<GLuint>((dims.z + 3) / 4));
+    // The next pass (or the solver) fetches what this one stored.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+} // namespace steerseg::speed

@@ -1,0 +1,129 @@
+// Session::setSpeed: validation, the timings, a speed change restarting the convergence clock as
+// a parameter change does, and the classification speed's front stopping at a texture border.
+#include "io/scan_reader.hpp"
+#include "session/session.hpp"
+#include "support/gpu_fixture.hpp"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace steerseg::test {
+namespace {
+
+class SessionSpeedTest : public GpuTest {};
+
+const solver::Sphere kLesionSeed{{80.0F, 56.0F, 52.0F}, 5.0F};
+
+TEST_F(SessionSpeedTest, RefusesBadSettingsAndKeepsTheLastGoodSpeed) {
+    session::Session s = session::Session::open(io::kBuiltinSample);
+    session::SpeedSettings edge;
+    edge.kind = speed::SpeedKind::Edge;
+    EXPECT_THROW(s.setSpeed(edge), std::invalid_argument); // no kappa
+    edge.kappa = NAN;
+    EXPECT_THROW(s.setSpeed(edge), std::invalid_argument);
+    edge.kappa = 15.0F;
+    edge.smoothing = {3, 0.0F}; // smoothing without a conductance
+    EXPECT_THROW(s.setSpeed(edge), std::invalid_argument);
+    edge.smoothing = {3, 45.0F};
+    int smoothingSteps = 0;
+    s.setSpeed(edge, [&](std::string_view stage, int done, int total) {
+        if (stage == "smoothing") {
+            ++smoothingSteps;
+            EXPECT_EQ(done, smoothingSteps);
+            EXPECT_EQ(total, 3);
+        }
+    });
+    EXPECT_EQ(smoothingSteps, 3);
+    EXPECT_EQ(s.speed().kind, speed::SpeedKind::Edge);
+    EXPECT_GT(s.speedTiming().preprocessingSeconds, 0.0);
+    EXPECT_EQ(s.speedTiming().trainingSeconds, 0.0);
+
+    session::SpeedSettings classify;
+    classify.kind = speed::SpeedKind::Classify;
+    classify.inside = {kLesionSeed};
+    EXPECT_THROW(s.setSpeed(classify), std::invalid_argument); // no outside example
+    classify.outside = {{{20.0F, 20.0F, 20.0F}, 4.0F}};
+    classify.inside.push_back({{500.0F, 0.0F, 0.0F}, 2.0F}); // outside the scan
+    EXPECT_THROW(s.setSpeed(classify), std::invalid_argument);
+    EXPECT_EQ(s.speed().kind, speed::SpeedKind::Edge);
+}
+
+TEST_F(SessionSpeedTest, ASpeedChangeRestartsTheConvergenceClock) {
+    session::Session s = session::Session::open(io::kBuiltinSample);
+    s.addSeed(kLesionSeed);
+    s.setParams({800.0F, 100.0F, 0.8F});
+    const session::RunOutcome first = s.run({session::RunMode::Converge, 3000, 0.0F});
+    ASSERT_TRUE(first.result.converged);
+    const std::vector<std::uint8_t> threshold = s.mask();
+    session::SpeedSettings edge;
+    edge.kind = speed::SpeedKind::Edge;
+    edge.kappa = 1e6F; // g = 1 to float precision: the same speed, but a change
+    s.setSpeed(edge);
+    EXPECT_FALSE(s.converged());
+    const session::RunOutcome second = s.run({session::RunMode::Converge, 3000, 0.0F});
+    EXPECT_TRUE(second.result.converged);
+    EXPECT_GE(second.result.iterations, 20); // the clock restarted
+    EXPECT_EQ(s.mask(), threshold);
+}
+
+// Two textures of one mean intensity (100 +- 8 below x = 24, 100 +- 40 from there): no threshold
+// separates them, the classifier's neighbourhood statistics do.
+constexpr glm::ivec3 kTwoDims{48, 32, 32};
+constexpr int kBorderX = 24;
+
+Volume twoTextures() {
+    Geometry g;
+    g.dims = kTwoDims;
+    Volume v(VoxelType::Float32, g);
+    std::uint32_t state = 12345U;
+    std::size_t n = 0;
+    for (int k = 0; k < kTwoDims.z; ++k) {
+        for (int j = 0; j < kTwoDims.y; ++j) {
+            for (int i = 0; i < kTwoDims.x; ++i) {
+                state = state * 1664525U + 1013904223U; // the same numbers on every platform
+                const float u = static_cast<float>(state >> 8U) / 8388608.0F - 1.0F;
+                v.voxels<float>()[n++] = 100.0F + (i < kBorderX ? 8.0F : 40.0F) * u;
+            }
+        }
+    }
+    v.invalidateStats();
+    return v;
+}
+
+TEST_F(SessionSpeedTest, TheClassifiedFrontStopsAtTheTextureBorder) {
+    session::Session s(twoTextures(), "test");
+    session::SpeedSettings classify;
+    classify.kind = speed::SpeedKind::Classify;
+    classify.inside = {{{10.0F, 16.0F, 16.0F}, 6.0F}};
+    classify.outside = {{{37.0F, 16.0F, 16.0F}, 6.0F}};
+    std::vector<std::string> stages;
+    s.setSpeed(classify, [&](std::string_view stage, int, int) { stages.emplace_back(stage); });
+    EXPECT_EQ(stages, (std::vector<std::string>{"training", "training"}));
+    EXPECT_GT(s.speedTiming().trainingSeconds, 0.0);
+    s.setParams({100.0F, 30.0F, 0.7F}); // T and eps do not enter the classification speed
+    s.addSeed({{10.0F, 16.0F, 16.0F}, 3.0F});
+    const session::RunOutcome r = s.run({session::RunMode::Converge, 3000, 0.0F});
+    EXPECT_TRUE(r.result.converged);
+    const std::vector<std::uint8_t> mask = s.mask();
+    std::size_t calm = 0;
+    std::size_t beyond = 0; // inside, two voxels or more past the border
+    std::size_t n = 0;
+    for (int k = 0; k < kTwoDims.z; ++k) {
+        for (int j = 0; j < kTwoDims.y; ++j) {
+            for (int i = 0; i < kTwoDims.x; ++i) {
+                const bool in = mask[n++] != 0;
+                calm += in && i < kBorderX ? 1 : 0;
+                beyond += in && i >= kBorderX + 2 ? 1 : 0;
+            }
+        }
+    }
+    const double calmVoxels = kBorderX * kTwoDims.y * kTwoDims.z;
+    EXPECT_GT(static_cast<double>(calm) / calmVoxels, 0.9);
+    EXPECT_LT(static_cast<double>(beyond) / calmVoxels, 0.02);
+}
+
+} // namespace
+} // namespace steerseg::test
