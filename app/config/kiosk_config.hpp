@@ -68,9 +68,11 @@ struct BrushConfig {
 // serves CT in HU and MR in arbitrary units.
 struct SpeedConfig {
     speed::SpeedKind kind = speed::SpeedKind::Threshold;
-    int smoothIterations = 5;        // anisotropic diffusion steps before the edge factor, 0 = none
-    double conductanceFactor = 0.02; // diffusion conductance K = factor * value range
-    double kappaFactor = 0.02;       // kappa = factor * value range (per voxel)
+    // The edge speed's preprocessing, from the noise the last probe measured (as segment
+    // --probe: session/speed_probe.hpp), so one file serves CT and MR.
+    int smoothIterations = 5;       // anisotropic diffusion steps before the edge factor, 0 = none
+    double conductanceFactor = 3.0; // diffusion conductance K = factor * the probe's noise
+    double kappaFactor = 1.0;       // kappa = factor * the probe's noise (per voxel)
     bool operator==(const SpeedConfig&) const = default;
 };
 

@@ -57,6 +57,8 @@ class Kiosk {
           physical_(info_.width, info_.height),
           rotation_(cfg.display.rotation, physical_.x, physical_.y),
           screen_(physical_, cfg.display.rotation),
+          engine_(solver::SolverOptions{},
+                  {cfg.speed.smoothIterations, cfg.speed.conductanceFactor, cfg.speed.kappaFactor}),
           autosave_(cfg.autosave, cfg.audit.path, options.resume, err), audit_(cfg.audit.path),
           flow_(engine_, workflowSettings(cfg), &audit_),
           touch_({dpi_, cfg.ui.touchTargetMm, cfg.ui.fontScale, cfg.probe.radiusMm,

@@ -8,6 +8,7 @@
 #include "workflow/speed_names.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace steerseg::kiosk {
@@ -57,7 +58,8 @@ std::string scanShortName(const std::string& path) {
     return name.empty() ? "scan" : name;
 }
 
-SessionEngine::SessionEngine(solver::SolverOptions options) : options_(options) {}
+SessionEngine::SessionEngine(solver::SolverOptions options, EdgeSpeedRules edge)
+    : options_(options), edge_(edge) {}
 
 SessionEngine::~SessionEngine() {
     if (pending_) {
@@ -130,6 +132,7 @@ workflow::LoadPoll SessionEngine::pollLoad() {
         // goes first so two scans never share the GPU's memory.
         session_.reset();
         snapshots_.clear();
+        lastProbe_.reset();
         session_ = std::make_unique<session::Session>(std::move(load->result), options_);
     } catch (const std::exception& e) {
         session_.reset();
@@ -177,7 +180,15 @@ workflow::ScanInfo SessionEngine::scanInfo() const {
 }
 
 workflow::ProbeResult SessionEngine::probe(const glm::dvec3& voxel, double radiusMm) const {
-    const session::ProbeStats s = requireSession().probeAt(voxel, radiusMm);
+    const session::Session& session = requireSession();
+    const session::ProbeStats s = session.probeAt(voxel, radiusMm);
+    if (s.count > 0) {
+        // The sphere of the probe's volume in voxels, at least one voxel across neighbours.
+        const glm::dvec3 sp = session.scan().geometry().spacing;
+        const double mean = std::cbrt(std::abs(sp.x * sp.y * sp.z));
+        const double r = mean > 0.0 && std::isfinite(mean) ? radiusMm / mean : radiusMm;
+        lastProbe_ = solver::Sphere{glm::vec3(voxel), static_cast<float>(std::max(r, 1.0))};
+    }
     return {s.mean, s.stddev, s.count};
 }
 
@@ -208,14 +219,32 @@ void SessionEngine::setParams(const solver::LevelSetParams& params) {
     changed(); // the speed view shows the parameters
 }
 
-void SessionEngine::setSpeed(const workflow::SpeedChoice& choice) {
-    requireSession();
-    // Until the session applies the edge and classify speeds (issue 13), only the paper's
-    // threshold speed runs; the workflow keeps the previous speed and shows this line.
-    if (choice.kind != speed::SpeedKind::Threshold) {
-        throw std::runtime_error(std::string(workflow::speedName(choice.kind)) +
-                                 " speed not available in this build");
+session::SpeedSettings SessionEngine::edgeSettings() const {
+    if (!lastProbe_) {
+        throw std::invalid_argument("the edge speed needs a probe first: the noise in the probed "
+                                    "tissue sets its smoothing and kappa");
     }
+    const session::SpeedProbe p = session::probeSpeed(requireSession().scan(), *lastProbe_);
+    session::SpeedSettings s;
+    s.kind = speed::SpeedKind::Edge;
+    s.smoothing = {edge_.smoothIterations,
+                   static_cast<float>(edge_.conductanceFactor * p.noise)};
+    s.kappa = static_cast<float>(edge_.kappaFactor * p.noise);
+    return s;
+}
+
+void SessionEngine::setSpeed(const workflow::SpeedChoice& choice) {
+    session::Session& s = requireSession();
+    session::SpeedSettings settings;
+    if (choice.kind == speed::SpeedKind::Edge) {
+        settings = edgeSettings();
+    }
+    settings.kind = choice.kind;
+    settings.inside = choice.inside;
+    settings.outside = choice.outside;
+    // Preprocessing and training run here, on the frame loop (a blocking step: docs/speed.md).
+    s.setSpeed(settings);
+    changed();
 }
 
 solver::StepResult SessionEngine::step(int iterations) {

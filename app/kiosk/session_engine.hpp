@@ -5,6 +5,7 @@
 // context. Level-set snapshots for undo are masks kept in host memory.
 #include "core/mask_runs.hpp"
 #include "session/session.hpp"
+#include "session/speed_probe.hpp"
 #include "workflow/engine.hpp"
 
 #include <chrono>
@@ -16,9 +17,17 @@
 
 namespace steerseg::kiosk {
 
+// How the kiosk sets the edge speed's smoothing and kappa: from the noise of the last probe, as
+// the command line's --probe does (session::probeSpeed), scaled by the config's [speed] factors.
+struct EdgeSpeedRules {
+    int smoothIterations = 5;
+    double conductanceFactor = session::kConductanceFactor; // K = factor * the probe's noise
+    double kappaFactor = session::kKappaFactor;             // kappa = factor * the probe's noise
+};
+
 class SessionEngine final : public workflow::Engine {
   public:
-    explicit SessionEngine(solver::SolverOptions options = {});
+    explicit SessionEngine(solver::SolverOptions options = {}, EdgeSpeedRules edge = {});
     ~SessionEngine() override;
     SessionEngine(const SessionEngine&) = delete;
     SessionEngine& operator=(const SessionEngine&) = delete;
@@ -61,8 +70,14 @@ class SessionEngine final : public workflow::Engine {
     void changed();
 
     struct PendingLoad;
+    [[nodiscard]] session::SpeedSettings edgeSettings() const;
+
     solver::SolverOptions options_;
+    EdgeSpeedRules edge_;
     std::unique_ptr<session::Session> session_;
+    // The last probe (voxels): the edge speed's noise comes from it. A probe changes no level
+    // set and is const to the workflow; remembering where it was is this engine's business.
+    mutable std::optional<solver::Sphere> lastProbe_;
     workflow::ScanInfo info_;
     std::string scanPath_;
     std::unique_ptr<PendingLoad> pending_;

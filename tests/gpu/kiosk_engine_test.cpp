@@ -9,6 +9,8 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
+#include <string>
 #include <thread>
 
 namespace steerseg::test {
@@ -29,6 +31,32 @@ LoadPoll waitForLoad(SessionEngine& engine) {
 }
 
 class KioskEngine : public GpuTest {};
+
+// The edge speed takes its smoothing and kappa from the last probe's noise, as segment --probe.
+TEST_F(KioskEngine, TheEdgeSpeedNeedsAProbeAndFollowsItsNoise) {
+    SessionEngine engine(solver::SolverOptions{}, {2, 3.0, 1.0});
+    engine.beginLoad("builtin:sample");
+    ASSERT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
+    workflow::SpeedChoice edge;
+    edge.kind = speed::SpeedKind::Edge;
+    try {
+        engine.setSpeed(edge);
+        FAIL() << "the edge speed was accepted before a probe";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("needs a probe first"), std::string::npos)
+            << e.what();
+    }
+    const glm::dvec3 lesion{80.0, 56.0, 52.0};
+    ASSERT_GT(engine.probe(lesion, 4.0).count, 0U);
+    engine.setSpeed(edge);
+    const session::Session& s = *engine.session();
+    EXPECT_EQ(s.speed().kind, speed::SpeedKind::Edge);
+    EXPECT_EQ(s.speed().smoothing.iterations, 2);
+    EXPECT_GT(s.speed().kappa, 0.0F);
+    EXPECT_FLOAT_EQ(s.speed().smoothing.conductance, 3.0F * s.speed().kappa);
+    engine.setSpeed(workflow::SpeedChoice{});
+    EXPECT_EQ(s.speed().kind, speed::SpeedKind::Threshold);
+}
 
 TEST_F(KioskEngine, LoadsSeedsStepsUndoesAndExports) {
     SessionEngine engine;
