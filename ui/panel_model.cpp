@@ -1,6 +1,6 @@
 #include "ui/panel_model.hpp"
 
-#include "workflow/speed_names.hpp"
+#include "speed/speed_kind.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -117,7 +117,7 @@ void addReadouts(const workflow::Status& st, PanelModel& m) {
 // The speed is steered like a parameter: the same states, live while evolving. The examples
 // matter only to classify, so its tools appear only when it is chosen.
 void addSpeed(const workflow::Status& st, PanelModel& m) {
-    for (speed::SpeedKind k : workflow::kSpeedKinds) {
+    for (speed::SpeedKind k : speed::kSpeedKinds) {
         m.speeds.push_back({speedLabel(k) + "##speed", workflow::SetSpeed{k}, st.speed == k});
     }
     if (st.speed != speed::SpeedKind::Classify) {
@@ -139,7 +139,7 @@ void addSpeed(const workflow::Status& st, PanelModel& m) {
             needs += std::string(needs.empty() ? "" : " and ") + "an outside example";
         }
         m.speedNote = "Classify needs " + needs + "; " +
-                      std::string(workflow::speedName(st.speedInForce)) + " runs until then.";
+                      std::string(speed::speedKindName(st.speedInForce)) + " runs until then.";
     }
 }
 

@@ -1,7 +1,7 @@
 #include "kiosk/autosave_snapshot.hpp"
 
+#include "speed/speed_kind.hpp"
 #include "workflow/param_ranges.hpp"
-#include "workflow/speed_names.hpp"
 #include "workflow/utc_time.hpp"
 
 #include <array>
@@ -88,7 +88,7 @@ speed::SpeedKind readSpeed(const nlohmann::json& params, const char* key) {
         return speed::SpeedKind::Threshold;
     }
     const std::string name = params.at(key).get<std::string>();
-    const std::optional<speed::SpeedKind> kind = workflow::speedFromName(name);
+    const std::optional<speed::SpeedKind> kind = speed::parseSpeedKind(name);
     if (!kind) {
         throw AutosaveFormatError("unknown speed '" + name + "'");
     }
@@ -97,8 +97,8 @@ speed::SpeedKind readSpeed(const nlohmann::json& params, const char* key) {
 
 nlohmann::json metadata(const AutosaveSnapshot& s) {
     nlohmann::json params{{"preset", s.params.preset},
-                          {"speed", workflow::speedName(s.params.speed.kind)},
-                          {"speed_fallback", workflow::speedName(s.params.fallback)},
+                          {"speed", speed::speedKindName(s.params.speed.kind)},
+                          {"speed_fallback", speed::speedKindName(s.params.fallback)},
                           {"inside", spheres(s.params.speed.inside)},
                           {"outside", spheres(s.params.speed.outside)}};
     for (int i = 0; i < workflow::kParamCount; ++i) {

@@ -1,6 +1,6 @@
 #include "kiosk/script_condition.hpp"
 
-#include "workflow/speed_names.hpp"
+#include "speed/speed_kind.hpp"
 
 #include <cstdio>
 #include <functional>
@@ -160,9 +160,9 @@ std::string observed(const Condition& condition, const workflow::Status& status)
     case Condition::ExportedHas:
         return "exported path is \"" + status.exportedPath + "\"";
     case Condition::Speed:
-        return "speed is " + std::string(workflow::speedName(status.speedInForce)) +
+        return "speed is " + std::string(speed::speedKindName(status.speedInForce)) +
                (status.speed != status.speedInForce
-                    ? " (" + std::string(workflow::speedName(status.speed)) + " chosen)"
+                    ? " (" + std::string(speed::speedKindName(status.speed)) + " chosen)"
                     : "");
     }
     return state;

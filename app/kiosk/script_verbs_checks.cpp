@@ -1,6 +1,6 @@
 #include "kiosk/script_verbs.hpp"
 #include "kiosk/script_words.hpp"
-#include "workflow/speed_names.hpp"
+#include "speed/speed_kind.hpp"
 
 #include <algorithm>
 
@@ -33,7 +33,7 @@ void fieldComparison(Words& w, const std::string& field, Condition& c) {
 
 speed::SpeedKind speedWord(Words& w) {
     const std::string name = w.text("threshold, edge or classify");
-    const std::optional<speed::SpeedKind> kind = workflow::speedFromName(name);
+    const std::optional<speed::SpeedKind> kind = speed::parseSpeedKind(name);
     if (!kind) {
         throw LineError("speed '" + name + "': give threshold, edge or classify");
     }

@@ -1,6 +1,6 @@
 #include "kiosk/script_verbs.hpp"
 #include "kiosk/script_words.hpp"
-#include "workflow/speed_names.hpp"
+#include "speed/speed_kind.hpp"
 
 namespace steerseg::kiosk::detail {
 
@@ -63,7 +63,7 @@ StepKind eraseMode(Words& w) {
 StepKind speedVerb(Words& w) {
     const std::string name = w.text("threshold, edge or classify");
     w.finish("speed threshold|edge|classify");
-    const std::optional<speed::SpeedKind> kind = workflow::speedFromName(name);
+    const std::optional<speed::SpeedKind> kind = speed::parseSpeedKind(name);
     if (!kind) {
         throw LineError("speed '" + name + "': give threshold, edge or classify");
     }

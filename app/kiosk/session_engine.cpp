@@ -5,7 +5,7 @@
 #include "io/scan_reader.hpp"
 #include "kiosk/view_setup.hpp"
 #include "render/slice_frame.hpp"
-#include "workflow/speed_names.hpp"
+#include "speed/speed_kind.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -227,8 +227,7 @@ session::SpeedSettings SessionEngine::edgeSettings() const {
     const session::SpeedProbe p = session::probeSpeed(requireSession().scan(), *lastProbe_);
     session::SpeedSettings s;
     s.kind = speed::SpeedKind::Edge;
-    s.smoothing = {edge_.smoothIterations,
-                   static_cast<float>(edge_.conductanceFactor * p.noise)};
+    s.smoothing = {edge_.smoothIterations, static_cast<float>(edge_.conductanceFactor * p.noise)};
     s.kappa = static_cast<float>(edge_.kappaFactor * p.noise);
     return s;
 }

@@ -23,7 +23,7 @@ std::string segmentReport(const Session& session, const RunOutcome& run,
     j["alpha"] = params.alpha;
     const SpeedSettings& speed = session.speed();
     nlohmann::ordered_json sp;
-    sp["name"] = speed::speedKindName(speed.kind);
+    sp["name"] = std::string(speed::speedKindName(speed.kind));
     sp["smoothing_iterations"] = speed.smoothing.iterations;
     sp["conductance"] = speed.smoothing.conductance;
     if (speed.kind == speed::SpeedKind::Edge) {

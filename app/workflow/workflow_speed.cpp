@@ -2,7 +2,7 @@
 // outside marks (the probes are the inside examples, workflow_params.cpp) and the outside mode.
 // A change travels through changeParams like a parameter's: sent to the engine (which may
 // refuse it) and recorded for undo.
-#include "workflow/speed_names.hpp"
+#include "speed/speed_kind.hpp"
 #include "workflow/workflow.hpp"
 
 #include <algorithm>
@@ -56,7 +56,7 @@ void Workflow::showSpeed(const ParamValues& values, speed::SpeedKind inForce) {
 }
 
 Workflow::Outcome Workflow::on(const SetSpeed& a) {
-    if (!validSpeed(a.kind)) {
+    if (!speed::validSpeedKind(a.kind)) {
         return no("unknown speed");
     }
     if (auto why = whyNoParamChange()) {
@@ -74,7 +74,8 @@ Workflow::Outcome Workflow::on(const SetSpeed& a) {
     if (status_.speed == speed::SpeedKind::Classify &&
         status_.speedInForce != speed::SpeedKind::Classify) {
         status_.message = "classify needs an inside example (probe) and an outside example; the " +
-                          std::string(speedName(status_.speedInForce)) + " speed runs until then";
+                          std::string(speed::speedKindName(status_.speedInForce)) +
+                          " speed runs until then";
     }
     return out;
 }
@@ -109,7 +110,8 @@ Workflow::Outcome Workflow::on(const ClearExamples&) {
     next.speed.outside.clear();
     Outcome out = changeParams(std::move(next), "clear_examples", std::nullopt);
     if (status_.speed == speed::SpeedKind::Classify) {
-        status_.message = "examples cleared: the " + std::string(speedName(status_.speedInForce)) +
+        status_.message = "examples cleared: the " +
+                          std::string(speed::speedKindName(status_.speedInForce)) +
                           " speed runs until classify has new ones";
     }
     return out;

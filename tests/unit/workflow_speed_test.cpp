@@ -1,7 +1,7 @@
 // The speed choice (issue 13): threshold, edge and classify, the classifier's examples (the
 // probes inside, the outside marks), the states that allow them, undo, the engine's refusals
 // and the audit records.
-#include "workflow/speed_names.hpp"
+#include "speed/speed_kind.hpp"
 #include "workflow_rig.hpp"
 
 #include <filesystem>
@@ -22,10 +22,10 @@ const glm::dvec3 kInside{8.0, 6.0, 4.0};
 const glm::dvec3 kOutside{1.0, 1.0, 1.0};
 
 TEST(WorkflowSpeed, NamesAndBindings) {
-    for (SpeedKind k : kSpeedKinds) {
-        EXPECT_EQ(speedFromName(speedName(k)), k);
+    for (SpeedKind k : speed::kSpeedKinds) {
+        EXPECT_EQ(speed::parseSpeedKind(speed::speedKindName(k)), k);
     }
-    EXPECT_FALSE(speedFromName("gradient"));
+    EXPECT_FALSE(speed::parseSpeedKind("gradient"));
     EXPECT_EQ(actionName(SetSpeed{}), "set_speed");
     EXPECT_EQ(actionName(MarkOutside{}), "mark_outside");
     EXPECT_EQ(actionName(ClearExamples{}), "clear_examples");
