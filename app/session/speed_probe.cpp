@@ -11,7 +11,7 @@ namespace steerseg::session {
 SpeedProbe probeSpeed(const Volume& volume, const solver::Sphere& sphere) {
     solver::validateSphere(sphere, volume.dims());
     const glm::dvec3 c(sphere.centre);
-    const double r = sphere.radius;
+    const double r = static_cast<double>(sphere.radius);
     const glm::ivec3 dims = volume.dims();
     const glm::ivec3 lo = glm::max(glm::ivec3(glm::ceil(c - r)), glm::ivec3(0));
     const glm::ivec3 hi = glm::min(glm::ivec3(glm::floor(c + r)), dims - 1);

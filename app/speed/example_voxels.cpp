@@ -48,8 +48,8 @@ ExampleVoxels exampleVoxels(std::span<const Example> examples, glm::ivec3 dims,
         glm::ivec3 lo;
         glm::ivec3 hi;
         for (int a = 0; a < 3; ++a) {
-            const double c = e.centre[a];
-            const double r = e.radius;
+            const double c = static_cast<double>(e.centre[a]);
+            const double r = static_cast<double>(e.radius);
             lo[a] =
                 static_cast<int>(std::clamp(std::ceil(c - r), 0.0, static_cast<double>(dims[a])));
             hi[a] = static_cast<int>(

@@ -123,7 +123,7 @@ class TreeBuilder {
             if (!(hi > lo)) {
                 continue;
             }
-            const double low = lo;
+            const double low = static_cast<double>(lo);
             const double range = static_cast<double>(hi) - low;
             // Class weights per bin of equal width over the node's range; candidate thresholds
             // are the bins' inner edges: O(samples + bins) per feature instead of a sort.
