@@ -36,7 +36,7 @@ struct Session::Gpu {
     // The speed's textures (Session::setSpeed), borrowed by the solver.
     gpu::Texture smoothed; // empty: the speed reads the raw scan
     speed::SmoothingParams smoothedWith;
-    gpu::Texture factor;                             // edge: g
+    gpu::Texture factor;                              // edge: g
     std::optional<speed::ClassifierSpeed> classifier; // classify: P(inside) - P(outside)
     SpeedSettings speed;
     SpeedTiming timing;

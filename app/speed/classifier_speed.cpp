@@ -102,8 +102,7 @@ void ClassifierSpeed::evaluate(GLuint intensity) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFIER_ROOTS_BINDING, rootBuffer.id());
     glActiveTexture(GL_TEXTURE0 + SPEED_SOURCE_UNIT);
     glBindTexture(GL_TEXTURE_3D, intensity);
-    glBindImageTexture(SPEED_OUT_IMAGE_UNIT, texture.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
-                       GL_R32F);
+    glBindImageTexture(SPEED_OUT_IMAGE_UNIT, texture.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
     glUniform3i(glGetUniformLocation(program.id(), "classifierDims"), dims_.x, dims_.y, dims_.z);
     glUniform1i(glGetUniformLocation(program.id(), "treeCount"), static_cast<GLint>(roots.size()));
     glUniform1i(glGetUniformLocation(program.id(), "maxDepth"), maxDepth_);

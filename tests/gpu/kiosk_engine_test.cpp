@@ -43,8 +43,7 @@ TEST_F(KioskEngine, TheEdgeSpeedNeedsAProbeAndFollowsItsNoise) {
         engine.setSpeed(edge);
         FAIL() << "the edge speed was accepted before a probe";
     } catch (const std::invalid_argument& e) {
-        EXPECT_NE(std::string(e.what()).find("needs a probe first"), std::string::npos)
-            << e.what();
+        EXPECT_NE(std::string(e.what()).find("needs a probe first"), std::string::npos) << e.what();
     }
     const glm::dvec3 lesion{80.0, 56.0, 52.0};
     ASSERT_GT(engine.probe(lesion, 4.0).count, 0U);

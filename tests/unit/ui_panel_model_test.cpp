@@ -1,6 +1,6 @@
+#include "speed/speed_kind.hpp"
 #include "ui/panel_model.hpp"
 #include "ui/view_caption.hpp"
-#include "speed/speed_kind.hpp"
 
 #include <algorithm>
 #include <gtest/gtest.h>
@@ -172,8 +172,7 @@ TEST(UiPanelModel, TheSpeedsAreOfferedWhereParametersAre) {
         const std::vector<std::string> labels{"Threshold##speed", "Edge##speed", "Classify##speed"};
         for (std::size_t i = 0; i < 3; ++i) {
             EXPECT_EQ(m.speeds[i].label, labels[i]);
-            EXPECT_EQ(std::get<workflow::SetSpeed>(m.speeds[i].action).kind,
-                      speed::kSpeedKinds[i]);
+            EXPECT_EQ(std::get<workflow::SetSpeed>(m.speeds[i].action).kind, speed::kSpeedKinds[i]);
             EXPECT_EQ(m.speeds[i].active, i == 1) << "the chosen speed is highlighted";
             EXPECT_TRUE(m.speeds[i].enabled);
         }
