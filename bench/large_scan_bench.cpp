@@ -13,6 +13,7 @@
 // --itk: the ITK reader (default: steerseg-itk-dicom-read beside this binary, built with
 // -DSTEERSEG_BENCH_ITK=ON; without it the ITK column is skipped, and the output says so).
 #include "bench/large_scan/synthetic_ct.hpp"
+#include "bench/proc_status.hpp"
 #include "gpu/gl.hpp"
 #include "gpu/scan_texture.hpp"
 #include "io/scan_reader.hpp"
@@ -41,19 +42,6 @@ double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// A field of /proc/self/status in bytes (VmRSS, VmHWM), 0 when absent.
-double statusBytes(const char* field) {
-    std::ifstream in("/proc/self/status");
-    std::string line;
-    const std::string key = std::string(field) + ":";
-    while (std::getline(in, line)) {
-        if (line.rfind(key, 0) == 0) {
-            return std::atof(line.c_str() + key.size()) * 1024.0;
-        }
-    }
-    return 0.0;
-}
-
 struct LoadFigures {
     double seconds = 0.0;
     double peakBytes = 0.0; // above the child's resident size at its start
@@ -70,12 +58,12 @@ LoadFigures loadInChild(const std::filesystem::path& dir) {
     if (pid == 0) {
         close(fds[0]);
         LoadFigures f;
-        const double before = statusBytes("VmRSS");
+        const double before = bench::statusBytes("VmRSS");
         const auto start = Clock::now();
         try {
             const io::LoadedScan scan = io::readScan(dir);
             f.seconds = secondsSince(start);
-            f.peakBytes = statusBytes("VmHWM") - before;
+            f.peakBytes = bench::statusBytes("VmHWM") - before;
             const Volume& v = scan.volume;
             const std::size_t slice =
                 static_cast<std::size_t>(v.dims().x) * static_cast<std::size_t>(v.dims().y);
@@ -282,8 +270,8 @@ int main(int argc, char** argv) {
         glFinish();
         const double solverSetupSeconds = secondsSince(start);
         std::printf("solver: set up in %.2f s, host memory now %.0f MiB (peak %.0f MiB)\n",
-                    solverSetupSeconds, statusBytes("VmRSS") / 1048576.0,
-                    statusBytes("VmHWM") / 1048576.0);
+                    solverSetupSeconds, bench::statusBytes("VmRSS") / 1048576.0,
+                    bench::statusBytes("VmHWM") / 1048576.0);
         j["solver_setup_seconds"] = solverSetupSeconds;
         solver.setParams({120.0F, 45.0F, 0.8F});
         solver.addSphere({glm::vec3(ct.lesionCentre), 3.0F});

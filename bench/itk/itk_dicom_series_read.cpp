@@ -7,34 +7,18 @@
 // reader does it), peak resident bytes above the process's size at the start of main (VmHWM -
 // VmRSS, so ITK's libraries do not count), the size, and the sum of the voxels in HU (to check
 // that both readers read the same numbers). Run it in its own process: the peak is the read's.
+#include "bench/proc_status.hpp"
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
-#include <fstream>
 #include <itkGDCMImageIO.h>
 #include <itkGDCMSeriesFileNames.h>
 #include <itkImage.h>
 #include <itkImageRegionConstIterator.h>
 #include <itkImageSeriesReader.h>
 #include <string>
-
-namespace {
-
-// A field of /proc/self/status in bytes (VmRSS, VmHWM), 0 when absent.
-double statusBytes(const char* field) {
-    std::ifstream in("/proc/self/status");
-    std::string line;
-    const std::string key = std::string(field) + ":";
-    while (std::getline(in, line)) {
-        if (line.rfind(key, 0) == 0) {
-            return std::atof(line.c_str() + key.size()) * 1024.0;
-        }
-    }
-    return 0.0;
-}
-
-} // namespace
 
 int main(int argc, char** argv) {
     if (argc != 2) {
@@ -43,7 +27,7 @@ int main(int argc, char** argv) {
     }
     using Image = itk::Image<short, 3>;
     try {
-        const double before = statusBytes("VmRSS");
+        const double before = steerseg::bench::statusBytes("VmRSS");
         const auto start = std::chrono::steady_clock::now();
         auto names = itk::GDCMSeriesFileNames::New();
         names->SetUseSeriesDetails(true);
@@ -59,7 +43,7 @@ int main(int argc, char** argv) {
         reader->Update();
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        const double peak = statusBytes("VmHWM") - before;
+        const double peak = steerseg::bench::statusBytes("VmHWM") - before;
         const Image* image = reader->GetOutput();
         const auto size = image->GetLargestPossibleRegion().GetSize();
         double sum = 0.0;
