@@ -6,9 +6,9 @@
 #include "kiosk/view_setup.hpp"
 #include "render/slice_frame.hpp"
 #include "speed/speed_kind.hpp"
+#include "workflow/probe_sphere.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 
 namespace steerseg::kiosk {
@@ -183,11 +183,9 @@ workflow::ProbeResult SessionEngine::probe(const glm::dvec3& voxel, double radiu
     const session::Session& session = requireSession();
     const session::ProbeStats s = session.probeAt(voxel, radiusMm);
     if (s.count > 0) {
-        // The sphere of the probe's volume in voxels, at least one voxel across neighbours.
-        const glm::dvec3 sp = session.scan().geometry().spacing;
-        const double mean = std::cbrt(std::abs(sp.x * sp.y * sp.z));
-        const double r = mean > 0.0 && std::isfinite(mean) ? radiusMm / mean : radiusMm;
-        lastProbe_ = solver::Sphere{glm::vec3(voxel), static_cast<float>(std::max(r, 1.0))};
+        // At least one voxel: the noise is measured between neighbours inside the sphere.
+        const Geometry& g = session.scan().geometry();
+        lastProbe_ = workflow::probeSphere(voxel, radiusMm, g.spacing, g.dims, 1.0);
     }
     return {s.mean, s.stddev, s.count};
 }

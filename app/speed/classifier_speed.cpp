@@ -5,6 +5,7 @@
 #include "gpu/gl_state_guard.hpp"
 #include "gpu/program.hpp"
 #include "speed/classifier_features.hpp"
+#include "speed/volume_texture.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -77,16 +78,7 @@ ClassifierSpeed::ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<co
 }
 
 void ClassifierSpeed::evaluate(GLuint intensity) {
-    gpu::Texture texture = gpu::createTexture();
-    glActiveTexture(GL_TEXTURE0 + SPEED_SOURCE_UNIT);
-    glBindTexture(GL_TEXTURE_3D, texture.id());
-    glTexStorage3D(GL_TEXTURE_3D, 1, GL_R32F, dims_.x, dims_.y, dims_.z);
-    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    for (const GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) {
-        glTexParameteri(GL_TEXTURE_3D, wrap, GL_CLAMP_TO_EDGE);
-    }
-    gpu::checkGl("allocating the classifier speed texture");
+    gpu::Texture texture = createVolumeTexture(dims_, "classifier speed");
 
     const std::vector<ForestNode>& nodes = forest_.nodes();
     const std::vector<std::int32_t>& roots = forest_.roots();

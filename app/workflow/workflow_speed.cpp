@@ -3,6 +3,7 @@
 // A change travels through changeParams like a parameter's: sent to the engine (which may
 // refuse it) and recorded for undo.
 #include "speed/speed_kind.hpp"
+#include "workflow/probe_sphere.hpp"
 #include "workflow/workflow.hpp"
 
 #include <algorithm>
@@ -29,15 +30,8 @@ std::optional<solver::Sphere> Workflow::exampleAt(const glm::dvec3& voxel, doubl
             return std::nullopt;
         }
     }
-    // The probe's sphere is round in mm, an ellipsoid in voxels; a voxel sphere of the same
-    // volume (the spacing's geometric mean), at least the voxel under the finger and at most
-    // the scan's diagonal (the solver's bound on a sphere; a huge probe radius stays finite).
-    const glm::dvec3 sp = status_.scan.spacing;
-    const double meanSpacing = std::cbrt(std::abs(sp.x * sp.y * sp.z));
-    const double r =
-        meanSpacing > 0.0 && std::isfinite(meanSpacing) ? radiusMm / meanSpacing : radiusMm;
-    const double diagonal = glm::length(glm::dvec3(dims));
-    return solver::Sphere{glm::vec3(voxel), static_cast<float>(std::clamp(r, 0.5, diagonal))};
+    // At least the voxel under the finger.
+    return probeSphere(voxel, radiusMm, status_.scan.spacing, dims, 0.5);
 }
 
 void Workflow::addExample(std::vector<solver::Sphere>& examples, const solver::Sphere& example) {
