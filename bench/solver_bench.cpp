@@ -24,6 +24,17 @@ struct Measurement {
     solver::SolverStats stats;
 };
 
+// `iterations` steps timed with the GPU's work finished on both sides; the rate and the stats.
+Measurement timedSteps(solver::LevelSetSolver& solver, int iterations) {
+    glFinish();
+    const auto start = std::chrono::steady_clock::now();
+    const solver::StepResult r = solver.step(iterations);
+    glFinish();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return {r.iterations / seconds, solver.stats()};
+}
+
 // A static-ish workload: a sphere of radius r under a zero data speed (T = intensity) and a
 // little curvature, so the active set stays the same while every pass does its full work.
 Measurement measure(int size, float radius, const solver::SolverOptions& options, int iterations) {
@@ -33,13 +44,7 @@ Measurement measure(int size, float radius, const solver::SolverOptions& options
     solver.addSphere({glm::vec3(static_cast<float>(size) / 2.0F), radius});
     solver.setParams({100.0F, 0.0F, 0.9F});
     solver.step(options.checkInterval); // warm-up: programs, pool growth
-    glFinish();
-    const auto start = std::chrono::steady_clock::now();
-    const solver::StepResult r = solver.step(iterations);
-    glFinish();
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return {r.iterations / seconds, solver.stats()};
+    return timedSteps(solver, iterations);
 }
 
 // A front that has stopped: a seed fills a ball (speed +40 inside, -40 outside) within the
@@ -65,16 +70,11 @@ Measurement measureStopped(int size, bool sleep, int iterations) {
     solver.setParams({100.0F, 50.0F, 0.8F});
     solver.step(8 * size); // the fill: ~0.5 voxel per iteration
     const solver::SolverStats before = solver.stats();
-    glFinish();
-    const auto start = std::chrono::steady_clock::now();
-    const solver::StepResult r = solver.step(iterations);
-    glFinish();
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    Measurement m{r.iterations / seconds, solver.stats()};
+    Measurement m = timedSteps(solver, iterations);
     // Over the timed iterations only.
     m.stats.visitedVoxelsPerIteration =
-        static_cast<double>(m.stats.visitedVoxels - before.visitedVoxels) / r.iterations;
+        static_cast<double>(m.stats.visitedVoxels - before.visitedVoxels) /
+        (m.stats.iterations - before.iterations);
     return m;
 }
 
