@@ -38,7 +38,7 @@
 #define VIEW_GRADIENT_UNIT 4  // render/raycast.comp: the scan's gradient (render/gradient.comp)
 
 // Image units.
-#define VIEW_OUT_IMAGE_UNIT 0 // render/view_common.glsl: the rendered picture
+#define VIEW_OUT_IMAGE_UNIT 0      // render/view_common.glsl: the rendered picture
 #define VIEW_GRADIENT_IMAGE_UNIT 0 // render/gradient.comp (runs alone): the gradient it fills
 #define SPEED_OUT_IMAGE_UNIT 0     // speed/*.comp (each runs alone): the R32F texture it fills
 
