@@ -2,6 +2,7 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "cli/segmentation_options.hpp"
+#include "core/mask_overlap.hpp"
 #include "gpu/gpu_info.hpp"
 #include "io/export_format.hpp"
 #include "io/scan_reader.hpp"
@@ -11,13 +12,15 @@
 
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 
 namespace steerseg::cli {
 
 int runSegment(std::span<const std::string> words) {
     std::vector<std::string> valueOptions = segmentationValueOptions();
-    valueOptions.insert(valueOptions.end(), {"input", "output", "report", "format"});
+    valueOptions.insert(valueOptions.end(),
+                        {"input", "output", "report", "format", "reference", "reference-label"});
     const Args args(words, valueOptions, segmentationFlagOptions());
     if (!args.positional().empty()) {
         throw UsageError("unexpected argument '" + args.positional().front() + "'");
@@ -32,9 +35,26 @@ int runSegment(std::span<const std::string> words) {
         throw UsageError(e.what());
     }
 
-    // The scan first: a bad file is reported before the GPU is brought up.
+    // The scan first, then the reference: a bad file is reported before the GPU is brought up.
     io::LoadedScan scan = io::readScan(input);
     completeWithScan(request, scan.volume);
+    std::optional<session::ReportContext::Reference> reference;
+    std::optional<Volume> referenceLabels;
+    if (const auto file = args.value("reference")) {
+        reference.emplace();
+        reference->file = *file;
+        if (const auto label = args.value("reference-label")) {
+            reference->label = static_cast<int>(parseNumber(*label, "--reference-label"));
+        }
+        referenceLabels = io::readScan(*file).volume;
+        if (referenceLabels->dims() != scan.volume.dims()) {
+            throw UsageError("--reference " + *file + " is not on the scan's grid (" +
+                             dimsText(referenceLabels->dims()) + " voxels, the scan " +
+                             dimsText(scan.volume.dims()) + ")");
+        }
+    } else if (args.value("reference-label")) {
+        throw UsageError("--reference-label goes with --reference");
+    }
     auto context = platform::createOffscreenContext();
     session::Session session(std::move(scan), request.options);
     applySegmentation(session, request);
@@ -46,8 +66,12 @@ int runSegment(std::span<const std::string> words) {
     if (!written.note.empty()) {
         std::fprintf(stderr, "steerseg: note: %s\n", written.note.c_str());
     }
+    if (reference) {
+        reference->overlap = maskOverlap(mask, *referenceLabels, reference->label);
+    }
     const std::string text = session::segmentReport(
-        session, run, mask, {input, output, gpu::queryGpuInfo().renderer, request.params});
+        session, run, mask,
+        {input, output, gpu::queryGpuInfo().renderer, request.params, reference});
     if (const auto report = args.value("report")) {
         std::ofstream out(*report);
         out << text << "\n";

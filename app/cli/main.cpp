@@ -41,8 +41,9 @@ constexpr Command kCommands[] = {
      "[--stop-on-leak] [--dense] [--speed threshold|edge|classify] [--smooth N] "
      "[--conductance v] [--kappa v] [--inside i,j,k,r ...] [--outside i,j,k,r ...] "
      "[--probe i,j,k,r] --output OUT "
-     "[--format F] [--report REPORT.json]: level-set segmentation on the GPU; OUT as for export "
-     "(surfaces from the level set itself)",
+     "[--format F] [--report REPORT.json] [--reference LABELS [--reference-label N]]: level-set "
+     "segmentation on the GPU; OUT as for export (surfaces from the level set itself); the "
+     "report gives the Dice against LABELS' voxels equal to N (or non-zero)",
      steerseg::cli::runSegment},
     {"export",
      "export --input SCAN --mask MASK --output OUT.nii.gz|.nii|.nrrd|.seg.nrrd|.dcm|.stl|.ply|.tif "

@@ -21,6 +21,10 @@ std::size_t voxelBytes(VoxelType type) {
     return 1;
 }
 
+std::string dimsText(const glm::ivec3& dims) {
+    return std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" + std::to_string(dims.z);
+}
+
 const char* voxelTypeName(VoxelType type) {
     switch (type) {
     case VoxelType::UInt8:

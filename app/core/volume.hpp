@@ -27,6 +27,8 @@ enum class VoxelType : std::uint8_t { UInt8, Int16, UInt16, Float32 };
 
 std::size_t voxelBytes(VoxelType type);
 const char* voxelTypeName(VoxelType type); // "uint8", "int16", "uint16", "float32"
+// "WxHxD", as every message about a grid's size says it.
+std::string dimsText(const glm::ivec3& dims);
 
 // Where voxels sit in the world. World coordinates are LPS millimetres (DICOM/ITK convention);
 // readers of RAS formats (NIfTI, MGZ) convert. Voxel index (i, j, k) is the file's own storage

@@ -7,10 +7,6 @@
 
 namespace steerseg::io {
 
-std::string dimsText(const glm::ivec3& dims) {
-    return std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" + std::to_string(dims.z);
-}
-
 void checkDims(const std::filesystem::path& path, const glm::ivec3& dims,
                const ReadLimits& limits) {
     for (int a = 0; a < 3; ++a) {

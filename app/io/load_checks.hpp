@@ -43,7 +43,4 @@ void checkDataLimit(const std::filesystem::path& path, std::uint64_t bytes,
 void checkDataFits(const std::filesystem::path& path, std::uint64_t bytes, const ByteSource& source,
                    const ReadLimits& limits, const std::string& what);
 
-// "512x512x300".
-std::string dimsText(const glm::ivec3& dims);
-
 } // namespace steerseg::io

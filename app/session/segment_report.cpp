@@ -73,6 +73,16 @@ std::string segmentReport(const Session& session, const RunOutcome& run,
     j["dense_phi_bytes"] = stats.densePhiBytes;
     j["pool_growths"] = stats.poolGrowths;
     j["pool_shrinks"] = stats.poolShrinks;
+    if (const auto& ref = context.reference) {
+        nlohmann::ordered_json r;
+        r["file"] = ref->file;
+        r["label"] = ref->label < 0 ? nlohmann::ordered_json("non-zero")
+                                    : nlohmann::ordered_json(ref->label);
+        r["voxels"] = ref->overlap.reference;
+        r["overlap_voxels"] = ref->overlap.both;
+        r["dice"] = ref->overlap.dice();
+        j["reference"] = r;
+    }
     j["renderer"] = context.renderer;
     return j.dump(2);
 }

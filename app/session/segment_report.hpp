@@ -1,8 +1,10 @@
 #pragma once
 
+#include "core/mask_overlap.hpp"
 #include "session/session.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -16,6 +18,13 @@ struct ReportContext {
     std::string output;
     std::string renderer; // GL_RENDERER
     solver::LevelSetParams params;
+    // `segment --reference`: the label the mask was compared with, and how well they agree.
+    struct Reference {
+        std::string file;
+        int label = -1; // < 0: every non-zero voxel
+        MaskOverlap overlap;
+    };
+    std::optional<Reference> reference;
 };
 // `mask`: session.mask() as exported (read back once by the caller).
 std::string segmentReport(const Session& session, const RunOutcome& run,

@@ -17,14 +17,6 @@
 
 namespace steerseg::session {
 
-namespace {
-
-std::string dimsText(const glm::ivec3& d) {
-    return std::to_string(d.x) + "x" + std::to_string(d.y) + "x" + std::to_string(d.z);
-}
-
-} // namespace
-
 // Everything that lives in the GL context, in the order it must be built and torn down: the
 // scan texture outlives the solver and the renderer that borrow it.
 struct Session::Gpu {

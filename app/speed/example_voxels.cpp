@@ -1,5 +1,6 @@
 #include "speed/example_voxels.hpp"
 
+#include "core/volume.hpp"
 #include "speed/split_mix.hpp"
 
 #include <algorithm>
@@ -10,10 +11,6 @@
 namespace steerseg::speed {
 
 namespace {
-
-std::string dimsText(glm::ivec3 d) {
-    return std::to_string(d.x) + "x" + std::to_string(d.y) + "x" + std::to_string(d.z);
-}
 
 bool contains(const Example& e, glm::ivec3 v) {
     const glm::dvec3 d = glm::dvec3(v) - glm::dvec3(e.centre);

@@ -88,6 +88,55 @@ TEST(SolverCli, SegmentsTheSampleLesionAndWritesMaskAndReport) {
     EXPECT_LE(j["pool_bytes"].get<double>(), j["peak_pool_bytes"].get<double>());
 }
 
+// --reference: the run's own mask as the reference agrees exactly, a reference on another grid
+// is refused before the GPU starts, and the label picks the reference's voxels.
+TEST(SolverCli, TheReportGivesTheDiceAgainstAReference) {
+    const auto dir = tempDir("solver_cli_reference");
+    const auto mask = dir / "lesion.nii.gz";
+    const std::string run = "--input builtin:sample --seed 80,56,52,5 --T 800 --eps 100 "
+                            "--alpha 0.8 --time 0.1 ";
+    ASSERT_EQ(runSegment(run + "--output " + mask.string()).status, 0);
+
+    const RunResult again = runSegment(run + "--output " + (dir / "again.nii.gz").string() +
+                                       " --reference " + mask.string());
+    ASSERT_EQ(again.status, 0) << again.output;
+    const nlohmann::json j =
+        nlohmann::json::parse(again.output.substr(0, again.output.rfind('}') + 1));
+    const nlohmann::json& ref = j.at("reference");
+    EXPECT_EQ(ref.at("label"), "non-zero");
+    EXPECT_EQ(ref.at("voxels"), j.at("inside_voxels"));
+    EXPECT_EQ(ref.at("overlap_voxels"), j.at("inside_voxels"));
+    EXPECT_DOUBLE_EQ(ref.at("dice").get<double>(), 1.0);
+
+    const RunResult label2 = runSegment(run + "--output " + (dir / "l2.nii.gz").string() +
+                                        " --reference " + mask.string() + " --reference-label 2");
+    ASSERT_EQ(label2.status, 0) << label2.output;
+    const nlohmann::json k =
+        nlohmann::json::parse(label2.output.substr(0, label2.output.rfind('}') + 1));
+    EXPECT_EQ(k.at("reference").at("voxels"), 0);
+    EXPECT_DOUBLE_EQ(k.at("reference").at("dice").get<double>(), 0.0);
+
+    const auto small = dir / "small.nrrd"; // 4x4x4 labels, not the sample's grid
+    {
+        std::ofstream out(small, std::ios::binary);
+        out << "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 4 4 4\nencoding: raw\n\n"
+            << std::string(64, '\1');
+    }
+    const RunResult otherGrid = runSegment(kBase +
+                                           "--seed 80,56,52,5 --T 800 --eps 100 "
+                                           "--alpha 0.8 --iterations 1 --reference " +
+                                           small.string());
+    EXPECT_EQ(otherGrid.status, 2) << otherGrid.output;
+    EXPECT_NE(otherGrid.output.find("is not on the scan's grid"), std::string::npos)
+        << otherGrid.output;
+    const RunResult labelAlone =
+        runSegment(kBase + "--seed 80,56,52,5 --T 800 --eps 100 "
+                           "--alpha 0.8 --iterations 1 --reference-label 1");
+    EXPECT_EQ(labelAlone.status, 2);
+    EXPECT_NE(labelAlone.output.find("--reference-label goes with --reference"), std::string::npos)
+        << labelAlone.output;
+}
+
 // Barriers and the leak watch from the command line: a barrier through the lesion's centre
 // leaves that part outside; too many or misplaced barriers are usage errors.
 TEST(SolverCli, BarriersAndTheLeakWatch) {

@@ -1,0 +1,48 @@
+#include "core/mask_overlap.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace steerseg {
+
+namespace {
+
+template <typename InsideAt>
+MaskOverlap countOverlap(std::size_t count, InsideAt insideAt, const Volume& reference, int label) {
+    MaskOverlap o;
+    for (std::size_t n = 0; n < count; ++n) {
+        const bool maskIn = insideAt(n);
+        const double ref = reference.rescale().apply(reference.storedAt(n));
+        const bool refIn = label < 0 ? ref != 0.0 : std::lround(ref) == label;
+        o.mask += maskIn ? 1 : 0;
+        o.reference += refIn ? 1 : 0;
+        o.both += maskIn && refIn ? 1 : 0;
+    }
+    return o;
+}
+
+} // namespace
+
+MaskOverlap maskOverlap(std::span<const std::uint8_t> mask, const Volume& reference, int label) {
+    if (mask.size() != reference.geometry().voxelCount()) {
+        throw std::invalid_argument("the mask has " + std::to_string(mask.size()) +
+                                    " voxels, the reference " + dimsText(reference.dims()) + " = " +
+                                    std::to_string(reference.geometry().voxelCount()));
+    }
+    return countOverlap(
+        mask.size(), [&](std::size_t n) { return mask[n] != 0; }, reference, label);
+}
+
+MaskOverlap maskOverlap(const Volume& mask, const Volume& reference, int label) {
+    if (mask.dims() != reference.dims()) {
+        throw std::invalid_argument("the mask is " + dimsText(mask.dims()) +
+                                    " voxels, the reference " + dimsText(reference.dims()));
+    }
+    return countOverlap(
+        mask.geometry().voxelCount(),
+        [&](std::size_t n) { return mask.rescale().apply(mask.storedAt(n)) != 0.0; }, reference,
+        label);
+}
+
+} // namespace steerseg

@@ -1,0 +1,31 @@
+#pragma once
+
+// How far a segmentation agrees with a reference label on the same grid: the accuracy figure
+// of `segment --reference`, the accuracy benchmark and scripted sessions' `dice` steps.
+#include "core/volume.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+namespace steerseg {
+
+struct MaskOverlap {
+    std::size_t mask = 0;      // voxels inside the segmentation
+    std::size_t reference = 0; // voxels of the reference label
+    std::size_t both = 0;
+    // 2|A and B| / (|A| + |B|); two empty sets agree (1).
+    [[nodiscard]] double dice() const {
+        return mask + reference == 0
+                   ? 1.0
+                   : 2.0 * static_cast<double>(both) / static_cast<double>(mask + reference);
+    }
+};
+
+// `inside(n)` says whether voxel n (linear, i fastest) is in the segmentation; the reference's
+// voxels are those whose real value rounds to `label`, or every non-zero one when label < 0.
+// Throws std::invalid_argument with one line when the grids differ in size.
+MaskOverlap maskOverlap(std::span<const std::uint8_t> mask, const Volume& reference, int label);
+MaskOverlap maskOverlap(const Volume& mask, const Volume& reference, int label);
+
+} // namespace steerseg
