@@ -38,7 +38,7 @@ int runSegment(std::span<const std::string> words) {
     // The scan first, then the reference: a bad file is reported before the GPU is brought up.
     io::LoadedScan scan = io::readScan(input);
     completeWithScan(request, scan.volume);
-    std::optional<session::ReportContext::Reference> reference;
+    std::optional<session::ReferenceOverlap> reference;
     std::optional<Volume> referenceLabels;
     if (const auto file = args.value("reference")) {
         reference.emplace();

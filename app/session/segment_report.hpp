@@ -10,21 +10,23 @@
 
 namespace steerseg::session {
 
+// `segment --reference`: the label the mask was compared with, and how well they agree.
+struct ReferenceOverlap {
+    std::string file;
+    int label = -1; // < 0: every non-zero voxel
+    MaskOverlap overlap;
+};
+
 // What a segmentation run is reported with (README "segment"): the parameters, iterations,
 // evolved time, solver seconds and rate, convergence, inside voxels and millilitres, the
-// pool's peak and final storage against a dense level set, and the GL renderer. JSON text.
+// pool's peak and final storage against a dense level set, the GL renderer and, with a
+// reference, the Dice against it. JSON text.
 struct ReportContext {
     std::string input;
     std::string output;
     std::string renderer; // GL_RENDERER
     solver::LevelSetParams params;
-    // `segment --reference`: the label the mask was compared with, and how well they agree.
-    struct Reference {
-        std::string file;
-        int label = -1; // < 0: every non-zero voxel
-        MaskOverlap overlap;
-    };
-    std::optional<Reference> reference;
+    std::optional<ReferenceOverlap> reference;
 };
 // `mask`: session.mask() as exported (read back once by the caller).
 std::string segmentReport(const Session& session, const RunOutcome& run,
