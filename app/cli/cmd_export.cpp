@@ -2,6 +2,7 @@
 // grid, as a mask or as a surface mesh. GL-free: it needs no GPU, only the two files.
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "core/volume.hpp"
 #include "io/export_writer.hpp"
 #include "io/file_name.hpp"
 #include "io/scan_reader.hpp"
@@ -63,11 +64,8 @@ std::vector<std::uint8_t> readMaskFor(const std::string& path, const Geometry& s
     const io::LoadedScan mask = io::readScan(path);
     const Geometry& g = mask.volume.geometry();
     if (g.dims != scan.dims) {
-        throw io::ScanError(path, "the mask is " + std::to_string(g.dims.x) + "x" +
-                                      std::to_string(g.dims.y) + "x" + std::to_string(g.dims.z) +
-                                      " voxels but the scan is " + std::to_string(scan.dims.x) +
-                                      "x" + std::to_string(scan.dims.y) + "x" +
-                                      std::to_string(scan.dims.z));
+        throw io::ScanError(path, "the mask is " + dimsText(g.dims) + " voxels but the scan is " +
+                                      dimsText(scan.dims));
     }
     const double far = glm::length(scan.indexToWorld(glm::dvec3(scan.dims - 1)) -
                                    g.indexToWorld(glm::dvec3(g.dims - 1)));

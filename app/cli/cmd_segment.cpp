@@ -38,17 +38,17 @@ int runSegment(std::span<const std::string> words) {
     // The scan first, then the reference: a bad file is reported before the GPU is brought up.
     io::LoadedScan scan = io::readScan(input);
     completeWithScan(request, scan.volume);
-    std::optional<session::ReferenceOverlap> reference;
+    const auto referenceFile = args.value("reference");
+    int referenceLabel = -1;
     std::optional<Volume> referenceLabels;
-    if (const auto file = args.value("reference")) {
-        reference.emplace();
-        reference->file = *file;
+    if (referenceFile) {
+        const std::string& file = *referenceFile;
         if (const auto label = args.value("reference-label")) {
-            reference->label = static_cast<int>(parseNumber(*label, "--reference-label"));
+            referenceLabel = static_cast<int>(parseNumber(*label, "--reference-label"));
         }
-        referenceLabels = io::readScan(*file).volume;
+        referenceLabels = io::readScan(file).volume;
         if (referenceLabels->dims() != scan.volume.dims()) {
-            throw UsageError("--reference " + *file + " is not on the scan's grid (" +
+            throw UsageError("--reference " + file + " is not on the scan's grid (" +
                              dimsText(referenceLabels->dims()) + " voxels, the scan " +
                              dimsText(scan.volume.dims()) + ")");
         }
@@ -66,8 +66,10 @@ int runSegment(std::span<const std::string> words) {
     if (!written.note.empty()) {
         std::fprintf(stderr, "steerseg: note: %s\n", written.note.c_str());
     }
-    if (reference) {
-        reference->overlap = maskOverlap(mask, *referenceLabels, reference->label);
+    std::optional<session::ReferenceOverlap> reference;
+    if (referenceLabels) {
+        reference = session::ReferenceOverlap{*referenceFile, referenceLabel,
+                                              maskOverlap(mask, *referenceLabels, referenceLabel)};
     }
     const std::string text = session::segmentReport(
         session, run, mask,

@@ -22,8 +22,8 @@ struct MaskOverlap {
     }
 };
 
-// `inside(n)` says whether voxel n (linear, i fastest) is in the segmentation; the reference's
-// voxels are those whose real value rounds to `label`, or every non-zero one when label < 0.
+// The segmentation's voxels are the mask's non-zero ones (real values for a Volume); the
+// reference's are those whose real value rounds to `label`, or every non-zero one when label < 0.
 // Throws std::invalid_argument with one line when the grids differ in size.
 MaskOverlap maskOverlap(std::span<const std::uint8_t> mask, const Volume& reference, int label);
 MaskOverlap maskOverlap(const Volume& mask, const Volume& reference, int label);

@@ -1,6 +1,7 @@
 #include "speed/classifier_features.hpp"
 
 #include "common/bindings.h"
+#include "core/volume.hpp"
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_handle.hpp"
 #include "gpu/gl_state_guard.hpp"
@@ -43,8 +44,7 @@ void checkIntensityTexture(GLuint intensity, glm::ivec3 dims) {
     gpu::checkGl("reading the intensity texture's size");
     if (size != dims || format != GL_R32F) {
         throw std::invalid_argument("classifier speed: the intensity texture is not R32F of " +
-                                    std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" +
-                                    std::to_string(dims.z) + " voxels");
+                                    dimsText(dims) + " voxels");
     }
 }
 

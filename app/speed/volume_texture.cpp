@@ -1,6 +1,7 @@
 #include "speed/volume_texture.hpp"
 
 #include "common/bindings.h"
+#include "core/volume.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -16,8 +17,7 @@ gpu::Texture createVolumeTexture(const glm::ivec3& dims, const char* what) {
     glTexStorage3D(GL_TEXTURE_3D, 1, GL_R32F, dims.x, dims.y, dims.z);
     if (glGetError() != GL_NO_ERROR) {
         throw std::runtime_error(std::string(what) + ": the GPU cannot hold another " +
-                                 std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" +
-                                 std::to_string(dims.z) + " float texture");
+                                 dimsText(dims) + " float texture");
     }
     glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
