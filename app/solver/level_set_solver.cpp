@@ -223,11 +223,7 @@ bool LevelSetSolver::converged() const {
 StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool untilConverged) {
     requireParams();
     gpu::GlStateGuard guard;
-    glActiveTexture(GL_TEXTURE0 + SOLVER_SCAN_UNIT);
-    glBindTexture(GL_TEXTURE_3D,
-                  speedInputs_.intensity != 0 ? speedInputs_.intensity : scan_->exact());
-    glActiveTexture(GL_TEXTURE0 + SOLVER_FACTOR_UNIT);
-    glBindTexture(GL_TEXTURE_3D, speedInputs_.factor);
+    speed::bindSpeedTextures(speedInputs_, scan_->exact(), SOLVER_SCAN_UNIT, SOLVER_FACTOR_UNIT);
     pool_->bind();
     // The block as the last call left it: no GPU sync before the first chunk, so a caller that
     // steps a few iterations per frame pays one readback per call (after its chunk).

@@ -103,14 +103,14 @@ inline float phiStep(const PhiStencil& s, float dataSpeed, float alpha, float dt
 }
 
 // The paper's threshold speed D(I) = eps - |I - T|. The GPU twin is
-// shaders/solver/speed_threshold.glsl.
+// shaders/speed/data_speed.glsl.
 inline float thresholdSpeed(float intensity, const LevelSetParams& p) {
     return p.eps - std::abs(intensity - p.T);
 }
 
 // The data term of each speed (docs/speed.md) from the voxel's intensity and its precomputed
 // factor (edge: g; classify: P(in) - P(out)). The GPU twin is dataSpeed() in
-// shaders/solver/speed_threshold.glsl.
+// shaders/speed/data_speed.glsl.
 inline float dataSpeed(float intensity, float factor, speed::SpeedKind kind,
                        const LevelSetParams& p) {
     switch (kind) {

@@ -13,4 +13,12 @@ void validateSpeedInputs(const SpeedInputs& inputs) {
     }
 }
 
+void bindSpeedTextures(const SpeedInputs& inputs, GLuint rawScan, int intensityUnit,
+                       int factorUnit) {
+    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(intensityUnit));
+    glBindTexture(GL_TEXTURE_3D, inputs.intensity != 0 ? inputs.intensity : rawScan);
+    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(factorUnit));
+    glBindTexture(GL_TEXTURE_3D, inputs.factor);
+}
+
 } // namespace steerseg::speed

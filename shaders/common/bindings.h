@@ -28,8 +28,8 @@
 #define CLASSIFIER_ROOTS_BINDING 15    // each tree's root node
 
 // Texture units of the samplers (glActiveTexture(GL_TEXTURE0 + unit)).
-#define SOLVER_SCAN_UNIT 0    // solver/speed_threshold.glsl: the scan, texelFetch only
-#define SOLVER_FACTOR_UNIT 1  // solver/speed_threshold.glsl: edge factor g or classifier output
+#define SOLVER_SCAN_UNIT 0    // speed/data_speed.glsl, solver: I (scan or smoothed copy)
+#define SOLVER_FACTOR_UNIT 1  // speed/data_speed.glsl, solver: edge g or classifier output
 #define SPEED_SOURCE_UNIT 0   // speed/*.comp (each runs alone): the texture it reads
 #define VIEW_SCAN_UNIT 0      // render/view_common.glsl: the scan, linear filtering
 #define VIEW_TF_LUT_UNIT 1    // render/raycast.comp: transfer function

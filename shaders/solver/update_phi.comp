@@ -8,7 +8,9 @@
 #define PHI_POOL_ACCESS
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
-#include "solver/speed_threshold.glsl"
+#define DATA_SPEED_INTENSITY_UNIT SOLVER_SCAN_UNIT
+#define DATA_SPEED_FACTOR_UNIT SOLVER_FACTOR_UNIT
+#include "speed/data_speed.glsl"
 #include "solver/barrier_speed.glsl"
 #include "solver/phi_stencil.glsl"
 #include "solver/brick_state.glsl"

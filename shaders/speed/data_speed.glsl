@@ -1,0 +1,31 @@
+// The data term of the speed, the outward speed in voxels per unit time before the alpha
+// weighting (docs/speed.md), by speedKind (speed::SpeedKind's order):
+//   0 threshold  eps - |I - T|          (Lefohn et al. 2003): positive where I lies in T +/- eps
+//   1 edge       g * (eps - |I - T|)    g the edge-stopping factor (speed/edge_factor.comp)
+//   2 classify   P(inside) - P(outside) the classifier's output, in [-1, 1]
+// I is the scan or its smoothed copy, whichever the host binds (speed::bindSpeedTextures). The
+// includer names the texture units (DATA_SPEED_INTENSITY_UNIT, DATA_SPEED_FACTOR_UNIT), so a
+// view of the speed can read the same definition beside its own samplers. CPU twin: dataSpeed()
+// in app/solver/phi_stencil.hpp.
+#if !defined(DATA_SPEED_INTENSITY_UNIT) || !defined(DATA_SPEED_FACTOR_UNIT)
+#error "define DATA_SPEED_INTENSITY_UNIT and DATA_SPEED_FACTOR_UNIT before speed/data_speed.glsl"
+#endif
+precision highp sampler3D;
+// Real-unit intensities (R32F), texelFetch only.
+layout(binding = DATA_SPEED_INTENSITY_UNIT) uniform highp sampler3D speedIntensity;
+// R32F, read by kinds 1 and 2 only.
+layout(binding = DATA_SPEED_FACTOR_UNIT) uniform highp sampler3D speedFactor;
+uniform float targetT;
+uniform float halfWidth;
+uniform int speedKind;
+
+float dataSpeed(ivec3 voxel) {
+    if (speedKind == 2) {
+        return texelFetch(speedFactor, voxel, 0).r;
+    }
+    float d = halfWidth - abs(texelFetch(speedIntensity, voxel, 0).r - targetT);
+    if (speedKind == 1) {
+        d *= texelFetch(speedFactor, voxel, 0).r;
+    }
+    return d;
+}
