@@ -69,6 +69,9 @@ void VolumeView::bakeTransfer(const gpu::ScanTexture& scan, const TransferFuncti
 
 void VolumeView::draw(const RenderInputs& in, const ViewParams& params) {
     bakeTransfer(in.scan, params.transfer);
+    if (in.pool != nullptr) {
+        bandBounds_.update(*in.pool);
+    }
     const GLuint program =
         programs_[in.pool != nullptr ? 1 : 0][in.gradient != 0 ? 1 : 0].get(in.pool);
     glUseProgram(program);

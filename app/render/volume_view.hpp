@@ -1,10 +1,12 @@
 #pragma once
 
+#include "render/band_bounds.hpp"
 #include "render/view_bindings.hpp"
 
 namespace steerseg::render {
 
-// The 3D view (shaders/render/raycast.comp): owns the program and the baked transfer function.
+// The 3D view (shaders/render/raycast.comp): owns the program, the baked transfer function and
+// the level set's band box for the surface search.
 class VolumeView {
   public:
     VolumeView();
@@ -19,6 +21,7 @@ class VolumeView {
          PoolProgram{"render/raycast.comp", {{"HAS_SURFACE", "0"}, {"GRADIENT_TEXTURE", "1"}}}},
         {PoolProgram{"render/raycast.comp", {{"HAS_SURFACE", "1"}, {"GRADIENT_TEXTURE", "0"}}},
          PoolProgram{"render/raycast.comp", {{"HAS_SURFACE", "1"}, {"GRADIENT_TEXTURE", "1"}}}}};
+    BandBounds bandBounds_;
     gpu::Texture lut_;
     gpu::Texture occupancy_;
     TransferFunction baked_;

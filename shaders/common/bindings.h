@@ -20,6 +20,10 @@
 // Sleeping bricks (solver/solver_common.glsl): every used slot, and each slot's last measure.
 #define BAND_LIST_BINDING 10
 #define SLOT_FRONT_BINDING 11
+// The 3D view's surface search: the box of bricks that are not constant outside
+// (render/band_bounds.comp writes it, render/raycast.comp reads it); no program of the
+// solver's, whose SHELL_NEXT_BINDING has the same number, runs with it.
+#define VIEW_BAND_BOUNDS_BINDING 2
 // The classifier speed (speed/classifier_gather.comp, speed/classifier_evaluate.comp);
 // below 16: gpu::GlStateGuard saves bindings 0-15.
 #define CLASSIFIER_SAMPLES_BINDING 12  // voxel coordinates of the training samples

@@ -49,9 +49,23 @@ vec2 boxHits(vec3 o, vec3 d, vec3 lo, vec3 hi) {
     vec3 inv = 1.0 / d;
     vec3 a = (lo - o) * inv;
     vec3 b = (hi - o) * inv;
+    // Along an axis the ray does not move on, its slab holds all of the ray or none of it
+    // (and 0 * inf, an origin on the slab's face, is not a number).
+    bvec3 still = equal(d, vec3(0.0));
+    bvec3 inSlab = bvec3(step(lo, o) * step(o, hi));
+    a = mix(a, mix(vec3(1e30), vec3(-1e30), inSlab), still);
+    b = mix(b, mix(vec3(-1e30), vec3(1e30), inSlab), still);
     vec3 tmin = min(a, b);
     vec3 tmax = max(a, b);
     return vec2(max(max(tmin.x, tmin.y), tmin.z), min(min(tmax.x, tmax.y), tmax.z));
+}
+
+// How far along d (in units of d) a ray at p inside the box [lo, hi] goes before it leaves it.
+float boxExit(vec3 p, vec3 d, vec3 lo, vec3 hi) {
+    vec3 toFace = (mix(lo, hi, greaterThan(d, vec3(0.0))) - p) / d;
+    // An axis the ray does not move along never ends the box (and 0 / 0 is not a number).
+    toFace = mix(toFace, vec3(1e30), equal(d, vec3(0.0)));
+    return min(min(toFace.x, toFace.y), toFace.z);
 }
 
 // Any occupied transfer-function texel in intensity bins lo..hi, gradient bins 0..gHi
@@ -155,12 +169,55 @@ void marchScan(inout vec4 acc, vec3 origin, vec3 dir, vec3 rayWorld, float t, fl
 }
 
 #if HAS_SURFACE
+// Bricks not stored as constant outside lie in bounds[0..2] ..= bounds[3..5] (render/
+// band_bounds.comp, run before each draw with a level set); max < min when there are none.
+layout(std430, binding = VIEW_BAND_BOUNDS_BINDING) readonly buffer BandBounds { int bounds[6]; };
+
 // t of the first sample on the lattice from t whose phi has the other sign than the first
-// sample's, or -1 when the ray leaves first.
+// sample's, or -1 when the ray leaves first. Every sample skipped below would have given the
+// first sample's sign, so the picture is the one a walk of every sample draws:
+// - beyond the box of bricks that are not constant outside (the positions whose trilinear cell
+//   touches one of them), phi is +PHI_FAR: a ray that starts outside the surface searches only
+//   where it crosses that box;
+// - within it, most of a ray lies in bricks stored as constant inside/outside: where phiFast
+//   gives the first sample's constant up to the brick's far side, those samples are jumped
+//   (8 lookups per sample in the seams between bricks, one per brick elsewhere).
 float firstCrossing(vec3 origin, vec3 dir, float t, float tEnd) {
-    float first = phiFast(origin + t * dir);
+    ivec3 bandLo = ivec3(bounds[0], bounds[1], bounds[2]);
+    ivec3 bandHi = ivec3(bounds[3], bounds[4], bounds[5]);
+    if (any(lessThan(bandHi, bandLo))) {
+        return -1.0; // every brick outside: no surface
+    }
+    // A cell touches the box from one voxel before its first brick; the volume's faces clamp.
+    vec3 boxLo = mix(vec3(bandLo * BRICK_SIZE) - 1.0, vec3(-2.0), equal(bandLo, ivec3(0)));
+    vec3 boxHi = mix(vec3(bandHi * BRICK_SIZE + BRICK_SIZE), vec3(volumeDims) + 1.0,
+                     equal(bandHi, brickGrid - 1));
+    bool firstInside = phiFast(origin + t * dir) <= 0.0;
+    if (!firstInside) {
+        vec2 box = boxHits(origin, dir, boxLo, boxHi);
+        if (box.x > box.y) {
+            return -1.0;
+        }
+        // Outside the box until box.x and again after box.y: search from the first sample at
+        // or after box.x, and no further than box.y.
+        t += max(0.0, ceil((box.x - t) / stepMm)) * stepMm;
+        tEnd = min(tEnd, box.y);
+    }
     for (int guard = 0; guard < 16384 && t < tEnd; ++guard) {
-        if ((phiFast(origin + t * dir) <= 0.0) != (first <= 0.0)) {
+        vec3 p = origin + t * dir;
+        ivec3 brick;
+        bool inside;
+        if (!constantBrickAt(p, brick, inside)) {
+            inside = phiTrilinear(p) <= 0.0;
+        } else if (inside == firstInside) {
+            // The positions where constantBrickAt gives this brick: 8b <= p < 8b + 7 per axis,
+            // reaching past the volume's faces at the first and last bricks (clamped corners).
+            vec3 lo = mix(vec3(brick * BRICK_SIZE), vec3(-1.0), equal(brick, ivec3(0)));
+            vec3 hi = mix(vec3(brick * BRICK_SIZE + BRICK_SIZE - 1), vec3(volumeDims),
+                          equal(brick, brickGrid - 1));
+            t += max(0.0, ceil(boxExit(p, dir, lo, hi) / stepMm) - 1.0) * stepMm;
+        }
+        if (inside != firstInside) {
             return t;
         }
         t += stepMm;

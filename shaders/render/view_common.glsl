@@ -25,19 +25,25 @@ float windowed(float v) {
     return clamp((v - windowRange.x) * windowRange.y, 0.0, 1.0);
 }
 
-// phi, with a shortcut for constant bricks: when every corner of the trilinear cell lies in
-// one brick stored as inside/outside, no pool read is needed.
-float phiFast(vec3 p) {
-    ivec3 lo = clamp(ivec3(floor(p)), ivec3(0), volumeDims - 1) / BRICK_SIZE;
+// Whether phi is constant around p without a pool read: every corner of p's trilinear cell
+// lies in one brick stored as inside/outside. That brick in `brick`, its sign in `inside`.
+bool constantBrickAt(vec3 p, out ivec3 brick, out bool inside) {
+    brick = clamp(ivec3(floor(p)), ivec3(0), volumeDims - 1) / BRICK_SIZE;
     ivec3 hi = clamp(ivec3(floor(p)) + 1, ivec3(0), volumeDims - 1) / BRICK_SIZE;
-    if (lo == hi) {
-        uint slot = pageTable[brickIndex(lo)];
-        if (slot == BRICK_INSIDE) {
-            return -PHI_FAR;
-        }
-        if (slot == BRICK_OUTSIDE) {
-            return PHI_FAR;
-        }
+    if (brick != hi) {
+        return false;
+    }
+    uint slot = pageTable[brickIndex(brick)];
+    inside = slot == BRICK_INSIDE;
+    return slot == BRICK_INSIDE || slot == BRICK_OUTSIDE;
+}
+
+// phi, with a shortcut for constant bricks (constantBrickAt).
+float phiFast(vec3 p) {
+    ivec3 brick;
+    bool inside;
+    if (constantBrickAt(p, brick, inside)) {
+        return inside ? -PHI_FAR : PHI_FAR;
     }
     return phiTrilinear(p);
 }
