@@ -29,8 +29,8 @@ TEST(SpeedCli, BadSpeedOptionsAreUsageErrors) {
     expectUsageError(te + "--speed edge --kappa -2", "--kappa must be a number > 0");
     expectUsageError(te + "--kappa 5", "--kappa goes with --speed edge");
     expectUsageError(te + "--smooth 5", "--smooth needs --conductance v or --probe");
-    expectUsageError(te + "--speed classify --outside 20,20,20,4",
-                     "--speed classify needs an inside example");
+    expectUsageError(te + "--speed classify --inside 80,56,52,4",
+                     "--speed classify needs an outside example");
     expectUsageError(te + "--speed edge --inside 80,56,52,4 --kappa 5",
                      "--inside and --outside go with --speed classify");
     expectUsageError(te + "--speed classify --probe 80,56,52,4 --outside 900,1,1,3", "--outside");
