@@ -48,7 +48,8 @@ std::optional<SliceFrame> Renderer::render(const ViewParams& params,
     last_ = static_cast<std::size_t>(params.target);
     RenderTarget& target = targets_[last_];
     target.ensureSize(params.size);
-    const RenderInputs in{*scan_, skip_, geometry_, pool, empty_.id(), target, gradient_.texture()};
+    const RenderInputs in{*scan_,      skip_,  geometry_,           pool,
+                          empty_.id(), target, gradient_.texture(), speed_};
     if (params.kind == ViewKind::Volume3d) {
         volume_.draw(in, params);
         return std::nullopt;

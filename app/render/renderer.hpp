@@ -45,6 +45,11 @@ class Renderer {
     // Whether the 3D view reads a precomputed gradient (false: a scan over its budget).
     [[nodiscard]] bool precomputedGradient() const { return gradient_.available(); }
 
+    // The data term the speed view shows (SliceContent::Speed): the solver's own inputs
+    // (LevelSetSolver::setSpeedInputs), borrowed until the next call; the default is the
+    // threshold speed on the raw scan.
+    void setSpeedInputs(const speed::SpeedInputs& inputs) { speed_ = inputs; }
+
     // Default parameters for this scan: MR-style presets, anterior camera, middle slice.
     [[nodiscard]] ViewParams defaultParams(ViewKind kind, const glm::ivec2& size) const;
 
@@ -57,6 +62,7 @@ class Renderer {
     GradientTexture gradient_;
     std::array<RenderTarget, kRenderTargets> targets_;
     std::size_t last_ = 0;
+    speed::SpeedInputs speed_;
     gpu::Buffer empty_;
     VolumeView volume_;
     SliceView slices_;

@@ -1,5 +1,6 @@
 #include "render/slice_view.hpp"
 
+#include "common/bindings.h"
 #include "gpu/gl_error.hpp"
 
 #include <algorithm>
@@ -25,11 +26,19 @@ SliceFrame SliceView::draw(const RenderInputs& in, const ViewParams& params) {
     glUniform3fv(uniform(program, "sliceOrigin"), 1, glm::value_ptr(origin));
     glUniform3fv(uniform(program, "sliceAxisU"), 1, glm::value_ptr(right));
     glUniform3fv(uniform(program, "sliceAxisV"), 1, glm::value_ptr(down));
-    glUniform1i(uniform(program, "showSpeed"), params.content == SliceContent::Speed ? 1 : 0);
-    const double range = in.scan.rangeMax() - in.scan.rangeMin();
-    glUniform2f(uniform(program, "speedParams"),
-                static_cast<float>(in.scan.normalise(params.speed.target)),
-                static_cast<float>(params.speed.epsilon / range));
+    const bool showSpeed = params.content == SliceContent::Speed;
+    glUniform1i(uniform(program, "showSpeed"), showSpeed ? 1 : 0);
+    if (showSpeed) {
+        speed::bindSpeedTextures(in.speed, in.scan.exact(), VIEW_SPEED_INTENSITY_UNIT,
+                                 VIEW_SPEED_FACTOR_UNIT);
+        glUniform1i(uniform(program, "speedKind"), static_cast<int>(in.speed.kind));
+        glUniform1f(uniform(program, "targetT"), static_cast<float>(params.speed.target));
+        glUniform1f(uniform(program, "halfWidth"), static_cast<float>(params.speed.epsilon));
+        // Full colour at |D| = eps for the speeds in the scan's units, at 1 for classify's.
+        const bool unitless = in.speed.kind == speed::SpeedKind::Classify;
+        glUniform1f(uniform(program, "speedScale"),
+                    unitless ? 1.0F : static_cast<float>(std::max(params.speed.epsilon, 1e-6)));
+    }
     glUniform1i(uniform(program, "showContour"), params.contour ? 1 : 0);
     if (params.labels) {
         glUniform4i(uniform(program, "labelGlyphs"), glyphIndex(frame.labels[0]),

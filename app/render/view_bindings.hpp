@@ -8,6 +8,7 @@
 #include "render/render_target.hpp"
 #include "render/skip_grid.hpp"
 #include "solver/brick_pool_view.hpp"
+#include "speed/speed_inputs.hpp"
 
 #include <string>
 
@@ -22,7 +23,8 @@ struct RenderInputs {
     const solver::BrickPoolView* pool;
     GLuint emptyBuffer; // bound in place of the pool when there is none
     const RenderTarget& target;
-    GLuint gradient; // GradientTexture, 0 when the scan has none
+    GLuint gradient;                 // GradientTexture, 0 when the scan has none
+    const speed::SpeedInputs& speed; // what the slice views' speed view shows
 };
 
 // A compute program built for the pool's BRICK_SIZE / PHI_FAR, rebuilt when they change;

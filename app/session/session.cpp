@@ -119,6 +119,7 @@ void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progr
     // Back to the raw scan first: the solver must not hold textures freed below, and a failure
     // half way leaves a consistent (default) speed.
     g.solver.setSpeedInputs({});
+    g.renderer.setSpeedInputs({});
     g.speed = {};
     g.timing = {};
     g.factor.reset();
@@ -167,7 +168,9 @@ void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progr
             progress("training", 1, 1);
         }
     }
-    g.solver.setSpeedInputs({settings.kind, g.smoothed.id(), factor});
+    const speed::SpeedInputs inputs{settings.kind, g.smoothed.id(), factor};
+    g.solver.setSpeedInputs(inputs);
+    g.renderer.setSpeedInputs(inputs); // the speed view shows what moves the front
     g.speed = settings;
 }
 

@@ -5,8 +5,9 @@
 
 namespace steerseg::speed {
 
-// What the data term reads (shaders/speed/data_speed.glsl, included by the solver's passes), as
-// borrowed R32F 3D textures on the scan's grid that must outlive their use:
+// What the data term reads (shaders/speed/data_speed.glsl: the solver's passes, and the slice
+// views' speed view, so that what the operator sees is what moves the front), as borrowed R32F
+// 3D textures on the scan's grid that must outlive their use:
 //   intensity  I in real units: the smoothed scan (smoothScan), or 0 for the raw scan
 //   factor     Edge: g (edgeFactor); Classify: P(inside) - P(outside); unused for Threshold
 struct SpeedInputs {

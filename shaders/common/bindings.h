@@ -40,6 +40,10 @@
 #define VIEW_SKIP_GRID_UNIT 2 // render/raycast.comp: block min/max for empty-space skipping
 #define VIEW_OCCUPANCY_UNIT 3 // render/raycast.comp: occupied transfer-function bins
 #define VIEW_GRADIENT_UNIT 4  // render/raycast.comp: the scan's gradient (render/gradient.comp)
+// render/slice.comp's speed view (speed/data_speed.glsl): the ray caster's units 1 and 2, which
+// the slice views do not read.
+#define VIEW_SPEED_INTENSITY_UNIT 1
+#define VIEW_SPEED_FACTOR_UNIT 2
 
 // Image units.
 #define VIEW_OUT_IMAGE_UNIT 0      // render/view_common.glsl: the rendered picture

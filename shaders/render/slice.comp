@@ -1,17 +1,21 @@
 #version 310 es
-// Slice views: the scan (window/level) or the speed function's data term D = eps - |I - T|
-// (positive green, negative blue) on a plane of constant voxel index, the level set's zero
+// Slice views: the scan (window/level) or the speed function's data term D, the solver's own
+// (speed/data_speed.glsl: threshold, edge or classify; positive green, negative blue), on a
+// plane of constant voxel index, the level set's zero
 // crossing as a yellow contour read live from the brick pool, and orientation letters.
 // Row 0 of the image is the top of the picture.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "render/view_common.glsl"
+#define DATA_SPEED_INTENSITY_UNIT VIEW_SPEED_INTENSITY_UNIT
+#define DATA_SPEED_FACTOR_UNIT VIEW_SPEED_FACTOR_UNIT
+#include "speed/data_speed.glsl"
 
 uniform vec3 sliceOrigin;  // voxel-index position of pixel (0, 0)'s centre
 uniform vec3 sliceAxisU;   // voxel-index step per pixel to the right
 uniform vec3 sliceAxisV;   // voxel-index step per pixel downwards
 uniform int showSpeed;
-uniform vec2 speedParams;  // T and eps, normalised intensity units
+uniform float speedScale;  // |D| at full colour: eps, or 1 for classify's P(in) - P(out)
 uniform int showContour;
 uniform ivec4 labelGlyphs; // left, right, top, bottom: 0..5 = A I L P R S, -1 none
 uniform int labelScale;
@@ -47,6 +51,20 @@ bool labelAt(ivec2 pixel) {
            glyphCovers(labelGlyphs.w, ivec2(mid.x, outSize.y - margin - glyph.y), pixel);
 }
 
+// D between voxel centres: the voxels' values blended as the scan's are (the solver reads D at
+// voxels only).
+float speedAt(vec3 p) {
+    vec3 q = clamp(p, vec3(0.0), vec3(volumeDims - 1));
+    ivec3 b = ivec3(floor(q));
+    ivec3 c = min(b + 1, volumeDims - 1);
+    vec3 f = q - vec3(b);
+    float x00 = mix(dataSpeed(b), dataSpeed(ivec3(c.x, b.y, b.z)), f.x);
+    float x10 = mix(dataSpeed(ivec3(b.x, c.y, b.z)), dataSpeed(ivec3(c.x, c.y, b.z)), f.x);
+    float x01 = mix(dataSpeed(ivec3(b.x, b.y, c.z)), dataSpeed(ivec3(c.x, b.y, c.z)), f.x);
+    float x11 = mix(dataSpeed(ivec3(b.x, c.y, c.z)), dataSpeed(c), f.x);
+    return mix(mix(x00, x10, f.y), mix(x01, x11, f.y), f.z);
+}
+
 bool inVolume(vec3 p) {
     return all(greaterThanEqual(p, vec3(-0.5))) && all(lessThan(p, vec3(volumeDims) - 0.5));
 }
@@ -63,9 +81,8 @@ void main() {
         float grey = windowed(v);
         colour = vec3(grey);
         if (showSpeed != 0) {
-            float eps = max(speedParams.y, 1e-6);
-            float d = eps - abs(v - speedParams.x);
-            float strength = 0.45 + 0.55 * clamp(abs(d) / eps, 0.0, 1.0);
+            float d = speedAt(p);
+            float strength = 0.45 + 0.55 * clamp(abs(d) / speedScale, 0.0, 1.0);
             vec3 tint = d > 0.0 ? vec3(0.1, 0.85, 0.2) : vec3(0.2, 0.3, 0.95);
             colour = mix(vec3(grey), tint * strength, 0.75);
         }

@@ -4,8 +4,10 @@
 #include "session/session.hpp"
 #include "support/gpu_fixture.hpp"
 
+#include <array>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -125,6 +127,58 @@ TEST_F(SessionSpeedTest, TheClassifiedFrontStopsAtTheTextureBorder) {
     const double calmVoxels = kBorderX * kTwoDims.y * kTwoDims.z;
     EXPECT_GT(static_cast<double>(calm) / calmVoxels, 0.9);
     EXPECT_LT(static_cast<double>(beyond) / calmVoxels, 0.02);
+}
+
+// The slice views' speed view shows the data term the solver runs, not the threshold speed of
+// the parameters: on the two textures, the threshold (T 100, eps 60) is positive on both sides,
+// the classifier's P(inside) - P(outside) only on the calm one.
+TEST_F(SessionSpeedTest, TheSpeedViewShowsTheSpeedInForce) {
+    session::Session s(twoTextures(), "test");
+    s.setParams({100.0F, 60.0F, 0.7F});
+    render::ViewParams view;
+    view.kind = render::ViewKind::Axial;
+    view.size = {96, 64};
+    view.content = render::SliceContent::Speed;
+    view.speed = {100.0, 60.0};
+    view.contour = false;
+    view.labels = false;
+    // Fractions of green (the front grows) pixels left and right of the border, 3 voxels clear.
+    const auto greenSides = [&]() {
+        const std::optional<render::SliceFrame> frame = s.render(view);
+        const RgbaImage picture = s.picture();
+        int green[2] = {0, 0};
+        int count[2] = {0, 0};
+        for (int y = 0; y < picture.height; ++y) {
+            for (int x = 0; x < picture.width; ++x) {
+                const double i = (frame->origin + static_cast<double>(x) * frame->stepRight +
+                                  static_cast<double>(y) * frame->stepDown)
+                                     .x;
+                if (std::abs(i - kBorderX) < 3.0 || i < 0.0 || i > kTwoDims.x - 1) {
+                    continue;
+                }
+                const std::uint8_t* px = picture.at(x, y);
+                const int side = i < kBorderX ? 0 : 1;
+                green[side] += px[1] > px[2] ? 1 : 0;
+                ++count[side];
+            }
+        }
+        EXPECT_GT(count[0], 200);
+        EXPECT_GT(count[1], 200);
+        return std::array<double, 2>{static_cast<double>(green[0]) / count[0],
+                                     static_cast<double>(green[1]) / count[1]};
+    };
+    const std::array<double, 2> threshold = greenSides();
+    EXPECT_GT(threshold[0], 0.99);
+    EXPECT_GT(threshold[1], 0.99);
+
+    session::SpeedSettings classify;
+    classify.kind = speed::SpeedKind::Classify;
+    classify.inside = {{{10.0F, 16.0F, 16.0F}, 6.0F}};
+    classify.outside = {{{37.0F, 16.0F, 16.0F}, 6.0F}};
+    s.setSpeed(classify);
+    const std::array<double, 2> classified = greenSides();
+    EXPECT_GT(classified[0], 0.9);
+    EXPECT_LT(classified[1], 0.1);
 }
 
 } // namespace
