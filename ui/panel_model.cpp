@@ -133,7 +133,7 @@ void addSpeed(const workflow::Status& st, PanelModel& m) {
     if (st.speedInForce != speed::SpeedKind::Classify) {
         std::string needs;
         if (inside == 0) {
-            needs = "an inside example (probe)";
+            needs = "an inside example (a probe or a seed)";
         }
         if (outside == 0) {
             needs += std::string(needs.empty() ? "" : " and ") + "an outside example";

@@ -84,9 +84,9 @@ struct Erase {
 struct SetEraseMode { // a tap on a slice seeds, or erases in erase mode
     bool erase = false;
 };
-// The speed function (docs/speed.md). Classify learns from examples: the probes are its inside
-// examples, MarkOutside gives the outside ones (a tap in outside mode); the newest
-// kMaxExamples of each kind count.
+// The speed function (docs/speed.md). Classify learns from examples: the probes and the seeds
+// are its inside examples, MarkOutside gives the outside ones (a tap in outside mode); the
+// newest kMaxExamples of each kind count.
 struct SetSpeed {
     speed::SpeedKind kind = speed::SpeedKind::Threshold;
 };
@@ -98,7 +98,7 @@ struct ClearExamples {};
 struct SetOutsideMode { // a tap on a slice marks an outside example in outside mode
     bool outside = false;
 };
-inline constexpr std::size_t kMaxExamples = 3;
+inline constexpr std::size_t kMaxExamples = 6; // three probes and three seeds, say
 struct Run {};
 struct Pause {};
 struct ToggleRun {}; // run if stopped, pause if running (a PowerMate press, the space bar)

@@ -140,8 +140,10 @@ class Workflow {
 
     // The level set (workflow_edits.cpp).
     Outcome sphereEdit(const glm::dvec3& voxel, double radius, bool seed);
+    // `params`, when given, are applied after the edit and undone and redone with it: a seed's
+    // inside example (a refusal of them leaves the edit standing and says so).
     void editLevelSet(std::string_view what, const std::function<void()>& edit, int seeds,
-                      int erasures);
+                      int erasures, const ParamValues* params = nullptr);
     LevelSetMark markNow(int seeds, int erasures);
     void restoreMark(const LevelSetMark& mark);
     void releaseSnapshot(const std::optional<SnapshotId>& id);

@@ -1,6 +1,7 @@
 // The level set: seed and erase spheres, restart, and undo/redo of every edit. A sphere edit is
 // recorded as snapshots of the level set before and after it (none for an empty level set), so
 // undo and redo are exact whatever evolved in between; the undo stack frees what it drops.
+#include "workflow/one_line.hpp"
 #include "workflow/workflow.hpp"
 
 #include <cmath>
@@ -67,7 +68,7 @@ void Workflow::releaseSnapshot(const std::optional<SnapshotId>& id) {
 }
 
 void Workflow::editLevelSet(std::string_view what, const std::function<void()>& edit, int seeds,
-                            int erasures) {
+                            int erasures, const ParamValues* params) {
     const LevelSetMark before = markNow(status_.seeds, status_.erasures);
     try {
         edit();
@@ -92,6 +93,15 @@ void Workflow::editLevelSet(std::string_view what, const std::function<void()>& 
     e.what = what;
     e.levelSet = true;
     e.paramsBefore = params_;
+    if (params != nullptr) {
+        try {
+            applyParams(clamped(*params));
+        } catch (const std::exception& ex) {
+            // The edit stands; only what came with it (the seed's example) is refused.
+            status_.message = "the seed is placed, but classify did not learn from it: " +
+                              oneLine(ex.what());
+        }
+    }
     e.paramsAfter = params_;
     e.before = before;
     e.after = after;
@@ -141,8 +151,13 @@ Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, b
     const double rad = radius > 0.0 ? clampTo(r, radius) : params_.values[indexOf(Param::Radius)];
     const solver::Sphere sphere{glm::vec3(voxel), static_cast<float>(rad)};
     if (seed) {
+        // The operator puts seeds in the structure, often where no probe was: classify's inside
+        // examples too, as on the command line (docs/speed.md).
+        ParamValues next = params_;
+        addExample(next.speed.inside, sphere);
         editLevelSet(
-            "add_seed", [&] { engine_.addSeed(sphere); }, status_.seeds + 1, status_.erasures);
+            "add_seed", [&] { engine_.addSeed(sphere); }, status_.seeds + 1, status_.erasures,
+            &next);
     } else {
         editLevelSet(
             "erase", [&] { engine_.erase(sphere); }, status_.seeds, status_.erasures + 1);
@@ -230,6 +245,9 @@ Workflow::Outcome Workflow::on(const Undo&) {
     if (e->levelSet) {
         restoreMark(e->before);
         afterLevelSetChange();
+        if (!(e->paramsBefore == params_)) {
+            applyParams(e->paramsBefore); // what came with the edit (a seed's inside example)
+        }
     } else {
         applyParams(e->paramsBefore);
     }
@@ -252,6 +270,9 @@ Workflow::Outcome Workflow::on(const Redo&) {
     if (e->levelSet) {
         restoreMark(e->after);
         afterLevelSetChange();
+        if (!(e->paramsAfter == params_)) {
+            applyParams(e->paramsAfter);
+        }
     } else {
         applyParams(e->paramsAfter);
     }

@@ -1,5 +1,6 @@
 // The speed function and the classifier's examples: the operator's choice of data term, the
-// outside marks (the probes are the inside examples, workflow_params.cpp) and the outside mode.
+// outside marks (the probes and the seeds are the inside examples, workflow_params.cpp and
+// workflow_edits.cpp) and the outside mode.
 // A change travels through changeParams like a parameter's: sent to the engine (which may
 // refuse it) and recorded for undo.
 #include "speed/speed_kind.hpp"
@@ -67,7 +68,8 @@ Workflow::Outcome Workflow::on(const SetSpeed& a) {
     Outcome out = changeParams(std::move(next), "set_speed", std::nullopt);
     if (status_.speed == speed::SpeedKind::Classify &&
         status_.speedInForce != speed::SpeedKind::Classify) {
-        status_.message = "classify needs an inside example (probe) and an outside example; the " +
+        status_.message = "classify needs an inside example (a probe or a seed) and an outside "
+                          "example; the " +
                           std::string(speed::speedKindName(status_.speedInForce)) +
                           " speed runs until then";
     }

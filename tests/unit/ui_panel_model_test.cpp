@@ -214,8 +214,8 @@ TEST(UiPanelModel, ClassifyShowsItsExamplesAndTools) {
     EXPECT_FALSE(std::get<workflow::SetOutsideMode>(m.exampleTools[0].action).outside);
     EXPECT_FALSE(m.exampleTools[1].enabled) << "nothing to clear";
     EXPECT_FALSE(kinds(ui::reachableActions(m)).count(indexOf<workflow::ClearExamples>()));
-    EXPECT_EQ(m.speedNote, "Classify needs an inside example (probe) and an outside example; "
-                           "threshold runs until then.");
+    EXPECT_EQ(m.speedNote, "Classify needs an inside example (a probe or a seed) and an outside "
+                           "example; threshold runs until then.");
 
     st.insideExamples.resize(1);
     st.outsideExamples.resize(3);

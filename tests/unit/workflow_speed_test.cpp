@@ -137,8 +137,8 @@ TEST(WorkflowSpeed, ClassifyWaitsForAnExampleOfEachKind) {
     EXPECT_EQ(rig.status().speed, SpeedKind::Classify);
     EXPECT_EQ(rig.status().speedInForce, SpeedKind::Edge) << "the speed before goes on";
     EXPECT_EQ(rig.engine.speedKind(), SpeedKind::Edge);
-    EXPECT_NE(rig.status().message.find("classify needs an inside example (probe) and an "
-                                        "outside example; the edge speed runs until then"),
+    EXPECT_NE(rig.status().message.find("classify needs an inside example (a probe or a seed) "
+                                        "and an outside example; the edge speed runs until then"),
               std::string::npos)
         << rig.status().message;
 
@@ -191,18 +191,18 @@ TEST(WorkflowSpeed, EdgeAndThresholdIgnoreExamples) {
     EXPECT_TRUE(rig.status().message.empty()) << rig.status().message;
 }
 
-TEST(WorkflowSpeed, TheNewestThreeExamplesOfEachKindCount) {
+TEST(WorkflowSpeed, TheNewestExamplesOfEachKindCount) {
     Rig rig;
     rig.load();
     ASSERT_TRUE(rig.act(SetSpeed{SpeedKind::Classify}).accepted);
-    for (int i = 0; i < 5; ++i) {
+    for (int i = 0; i < static_cast<int>(kMaxExamples) + 2; ++i) {
         ASSERT_TRUE(rig.act(Probe{{2.0 + i, 6.0, 4.0}, 2.0}).accepted);
         ASSERT_TRUE(rig.act(MarkOutside{{2.0 + i, 1.0, 1.0}, 2.0}).accepted);
     }
     ASSERT_EQ(rig.status().insideExamples.size(), kMaxExamples);
     ASSERT_EQ(rig.status().outsideExamples.size(), kMaxExamples);
     EXPECT_EQ(rig.status().insideExamples.front().centre.x, 4.0F) << "the oldest went";
-    EXPECT_EQ(rig.status().insideExamples.back().centre.x, 6.0F);
+    EXPECT_EQ(rig.status().insideExamples.back().centre.x, 3.0F + kMaxExamples);
     EXPECT_EQ(rig.status().outsideExamples.front().centre.x, 4.0F);
     const SpeedChoice& last = rig.engine.speeds.back();
     EXPECT_EQ(last.inside.size(), kMaxExamples);
@@ -237,12 +237,12 @@ TEST(WorkflowSpeed, UndoAndRedoTheSpeedAndTheExamples) {
     ASSERT_TRUE(rig.act(Undo{}).accepted);
     EXPECT_EQ(rig.state(), State::Paused);
     EXPECT_TRUE(rig.status().outsideExamples.empty());
-    EXPECT_EQ(rig.status().insideExamples.size(), 1U);
+    EXPECT_EQ(rig.status().insideExamples.size(), 2U) << "the seed's and the probe's";
     EXPECT_EQ(rig.engine.speedKind(), SpeedKind::Edge);
     EXPECT_EQ(rig.status().speedInForce, SpeedKind::Edge);
-    // Undo of the probe takes its inside example with its T and eps.
+    // Undo of the probe takes its inside example with its T and eps; the seed's stays.
     ASSERT_TRUE(rig.act(Undo{}).accepted);
-    EXPECT_TRUE(rig.status().insideExamples.empty());
+    EXPECT_EQ(rig.status().insideExamples.size(), 1U);
     ASSERT_TRUE(rig.act(Undo{}).accepted);
     EXPECT_EQ(rig.status().speed, SpeedKind::Edge);
     // Redone, the classifier is trained on the same examples again.
@@ -252,6 +252,35 @@ TEST(WorkflowSpeed, UndoAndRedoTheSpeedAndTheExamples) {
     EXPECT_EQ(rig.engine.speedKind(), SpeedKind::Classify);
     EXPECT_EQ(rig.engine.speeds.back().outside.size(), 1U);
     EXPECT_FALSE(rig.status().canRedo);
+    EXPECT_EQ(rig.engine.misuse(), 0) << rig.engine.lastMisuse();
+}
+
+// A seed lies in the structure: an inside example, placed and taken back with the seed.
+TEST(WorkflowSpeed, ASeedIsAnInsideExampleThatUndoTakesBack) {
+    Rig rig;
+    rig.load();
+    ASSERT_TRUE(rig.act(SetSpeed{SpeedKind::Classify}).accepted);
+    ASSERT_TRUE(rig.act(MarkOutside{kOutside, 2.0}).accepted);
+    EXPECT_NE(rig.engine.speedKind(), SpeedKind::Classify) << "no inside example yet";
+    ASSERT_TRUE(rig.act(AddSeed{kInside, 2.0}).accepted);
+    ASSERT_EQ(rig.status().insideExamples.size(), 1U);
+    EXPECT_EQ(glm::dvec3(rig.status().insideExamples[0].centre), kInside);
+    EXPECT_EQ(rig.status().insideExamples[0].radius, 2.0F);
+    EXPECT_EQ(rig.engine.speedKind(), SpeedKind::Classify);
+    EXPECT_EQ(rig.engine.speeds.back().inside.size(), 1U);
+    EXPECT_EQ(rig.status().seeds, 1);
+
+    ASSERT_TRUE(rig.act(Undo{}).accepted);
+    EXPECT_EQ(rig.status().seeds, 0);
+    EXPECT_TRUE(rig.status().insideExamples.empty());
+    EXPECT_NE(rig.engine.speedKind(), SpeedKind::Classify) << "classify waits again";
+    ASSERT_TRUE(rig.act(Redo{}).accepted);
+    EXPECT_EQ(rig.status().seeds, 1);
+    EXPECT_EQ(rig.status().insideExamples.size(), 1U);
+    EXPECT_EQ(rig.engine.speedKind(), SpeedKind::Classify);
+    // An eraser is no example.
+    ASSERT_TRUE(rig.act(Erase{kOutside, 1.0}).accepted);
+    EXPECT_EQ(rig.status().insideExamples.size(), 1U);
     EXPECT_EQ(rig.engine.misuse(), 0) << rig.engine.lastMisuse();
 }
 
