@@ -1,9 +1,8 @@
 #version 310 es
 // Slice views: the scan (window/level) or the speed function's data term D, the solver's own
 // (speed/data_speed.glsl: threshold, edge or classify; positive green, negative blue), on a
-// plane of constant voxel index, the level set's zero
-// crossing as a yellow contour read live from the brick pool, and orientation letters.
-// Row 0 of the image is the top of the picture.
+// plane of constant voxel index, the level set's zero crossing as a yellow contour read live
+// from the brick pool, and orientation letters. Row 0 of the image is the top of the picture.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "render/view_common.glsl"
