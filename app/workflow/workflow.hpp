@@ -144,6 +144,8 @@ class Workflow {
     // inside example (a refusal of them leaves the edit standing and says so).
     void editLevelSet(std::string_view what, const std::function<void()>& edit, int seeds,
                       int erasures, const ParamValues* params = nullptr);
+    // Undo and redo of a level-set edit: the parameters that came with it, when they differ.
+    void applyEditParams(const ParamValues& values);
     LevelSetMark markNow(int seeds, int erasures);
     void restoreMark(const LevelSetMark& mark);
     void releaseSnapshot(const std::optional<SnapshotId>& id);

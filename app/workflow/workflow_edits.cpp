@@ -111,6 +111,18 @@ void Workflow::editLevelSet(std::string_view what, const std::function<void()>& 
     afterLevelSetChange();
 }
 
+void Workflow::applyEditParams(const ParamValues& values) {
+    if (values == params_) {
+        return;
+    }
+    try {
+        applyParams(values);
+    } catch (const std::exception& e) {
+        // The level set has moved already: the undo or redo stands, the speed stays as it was.
+        status_.message = "the surface is back, but the speed stayed: " + oneLine(e.what());
+    }
+}
+
 Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, bool seed) {
     switch (status_.state) {
     case State::Inspect:
@@ -245,9 +257,7 @@ Workflow::Outcome Workflow::on(const Undo&) {
     if (e->levelSet) {
         restoreMark(e->before);
         afterLevelSetChange();
-        if (!(e->paramsBefore == params_)) {
-            applyParams(e->paramsBefore); // what came with the edit (a seed's inside example)
-        }
+        applyEditParams(e->paramsBefore); // what came with the edit (a seed's inside example)
     } else {
         applyParams(e->paramsBefore);
     }
@@ -270,9 +280,7 @@ Workflow::Outcome Workflow::on(const Redo&) {
     if (e->levelSet) {
         restoreMark(e->after);
         afterLevelSetChange();
-        if (!(e->paramsAfter == params_)) {
-            applyParams(e->paramsAfter);
-        }
+        applyEditParams(e->paramsAfter);
     } else {
         applyParams(e->paramsAfter);
     }

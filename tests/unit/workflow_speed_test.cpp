@@ -284,6 +284,38 @@ TEST(WorkflowSpeed, ASeedIsAnInsideExampleThatUndoTakesBack) {
     EXPECT_EQ(rig.engine.misuse(), 0) << rig.engine.lastMisuse();
 }
 
+// A refused speed neither blocks the seed nor its undo: the surface follows, the speed stays
+// and the notice says so.
+TEST(WorkflowSpeed, ARefusedSpeedLeavesTheSeedAndItsUndoStanding) {
+    Rig rig;
+    rig.load();
+    ASSERT_TRUE(rig.act(SetSpeed{SpeedKind::Edge}).accepted);
+    ASSERT_TRUE(rig.act(SetSpeed{SpeedKind::Classify}).accepted); // edge runs until examples
+    ASSERT_TRUE(rig.act(MarkOutside{kOutside, 2.0}).accepted);
+    rig.engine.speedError = "the GPU is busy";
+    ASSERT_TRUE(rig.act(AddSeed{kInside, 2.0}).accepted);
+    EXPECT_EQ(rig.status().seeds, 1);
+    EXPECT_EQ(rig.engine.speedKind(), SpeedKind::Edge);
+    EXPECT_NE(rig.status().message.find("the seed is placed, but classify did not learn from it: "
+                                        "the GPU is busy"),
+              std::string::npos)
+        << rig.status().message;
+    EXPECT_TRUE(rig.status().insideExamples.empty()) << "the refused example is not kept";
+
+    rig.engine.speedError.clear();
+    ASSERT_TRUE(rig.act(AddSeed{kInside + glm::dvec3(1.0, 0.0, 0.0), 2.0}).accepted);
+    ASSERT_EQ(rig.engine.speedKind(), SpeedKind::Classify);
+    rig.engine.speedError = "the GPU is busy";
+    ASSERT_TRUE(rig.act(Undo{}).accepted); // back to edge, which the engine refuses now
+    EXPECT_EQ(rig.status().seeds, 1);
+    EXPECT_EQ(rig.engine.speedKind(), SpeedKind::Classify);
+    EXPECT_NE(rig.status().message.find("the surface is back, but the speed stayed"),
+              std::string::npos)
+        << rig.status().message;
+    EXPECT_TRUE(rig.status().canRedo);
+    EXPECT_EQ(rig.engine.misuse(), 0) << rig.engine.lastMisuse();
+}
+
 TEST(WorkflowSpeed, ARefusalKeepsThePreviousSpeedAndSaysWhy) {
     Rig rig;
     rig.driveTo(State::Paused);
