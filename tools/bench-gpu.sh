@@ -220,20 +220,24 @@ frames, scan = [], ""
 for line in text("render").splitlines():
     if line.startswith("scan: "):
         scan = line[6:]
-    m = re.match(r"(\S+)\s+(\d+)x(\d+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)$", line)
+    # render_frame_bench's rows: view, size, median ms, CPU ms, fps, Mrays/s.
+    m = re.match(r"(\S+)\s+(\d+)x(\d+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)$", line)
     if m:
-        frames.append({"scan": scan, "view": m[1], "size": f"{m[2]}x{m[3]}", "min_ms": float(m[4]),
-                       "median_ms": float(m[5]), "fps": float(m[6])})
+        frames.append({"scan": scan, "view": m[1], "size": f"{m[2]}x{m[3]}",
+                       "median_ms": float(m[4]), "cpu_ms": float(m[5]), "fps": float(m[6]),
+                       "mrays_per_s": float(m[7])})
 cases, case = [], None
 for line in text("segment").splitlines():
     m = re.match(r"case (\S+) itk_seconds (\S+) time (\S+)", line)
     if m:
         case = {"case": m[1], "itk_seconds": float(m[2]), "evolved_time": float(m[3]), "runs": []}
         cases.append(case)
-    m = re.match(r"run \d+: (\d+) iterations, t = ([\d.]+), ([\d.]+) s, (\d+) voxels inside(?:, Dice ([\d.]+))?", line)
+    # segment_bench's "run N: I iterations, t = T, S s (R it/s), V voxels inside, ..., Dice D".
+    m = re.match(r"run \d+: (\d+) iterations, t = ([\d.]+), ([\d.]+) s(?: \([\d.]+ it/s\))?, (\d+) voxels inside", line)
     if m and case is not None:
+        dice = re.search(r"Dice ([\d.]+)", line)
         case["runs"].append({"iterations": int(m[1]), "seconds": float(m[3]), "inside": int(m[4]),
-                             "dice_expert": float(m[5]) if m[5] else None})
+                             "dice_expert": float(dice[1]) if dice else None})
     m = re.match(r"median solve seconds: ([\d.]+)", line)
     if m and case is not None:
         case["median_seconds"] = float(m[1])
@@ -261,8 +265,10 @@ for t in report["solver"]:
     md += [f"## Solver: {t['table']}", "", "| " + " | ".join(t["rows"][0]) + " |", "|" + "---|" * len(t["rows"][0])]
     md += ["| " + " | ".join(r.values()) + " |" for r in t["rows"]] + [""]
 if frames:
-    md += ["## Renderer", "", "| scan | view | size | median ms | fps |", "|---|---|---|---|---|"]
-    md += [f"| {f['scan']} | {f['view']} | {f['size']} | {f['median_ms']} | {f['fps']} |" for f in frames] + [""]
+    md += ["## Renderer", "", "| scan | view | size | median ms | CPU ms | fps | Mrays/s |",
+           "|---|---|---|---|---|---|---|"]
+    md += [f"| {f['scan']} | {f['view']} | {f['size']} | {f['median_ms']} | {f['cpu_ms']} | {f['fps']} "
+           f"| {f['mrays_per_s']} |" for f in frames] + [""]
 if cases:
     md += ["## Time to ITK's evolved time (ITK: one core of the development VM)", "",
            "| case | t | median s | ITK s | speed-up | same mask every run | inside voxels | Dice vs expert |", "|---|---|---|---|---|---|---|---|"]

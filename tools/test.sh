@@ -173,7 +173,8 @@ r = json.load(open(sys.argv[1]))
 missing = [k for k in ("solver", "render", "kiosk") if not r.get(k)]
 if missing or r["sample_lesion"] is None:
     sys.exit(f"bench-gpu.json lacks {missing or 'the sample lesion'}")
-ran = [c for c in r["segment"] if c.get("median_seconds") is not None]
+# A case ran when its runs were read too: a change of segment_bench's line would leave them out.
+ran = [c for c in r["segment"] if c.get("median_seconds") is not None and c.get("runs")]
 if len(ran) < 2 and os.environ.get("STEERSEG_REQUIRE_DATA") == "1":
     sys.exit("bench-gpu.json: the real cases did not run (STEERSEG_DATA_DIR)")
 print(f"bench-gpu --small: {len(r['solver'])} solver tables, {len(r['render'])} frame rows, "
