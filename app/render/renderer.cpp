@@ -39,7 +39,8 @@ Renderer::Renderer(const Volume& scan, std::size_t gradientBudget)
       skip_(scan, *scan_), gradient_(*scan_, gradientBudget), empty_(makeEmptyBuffer()) {}
 
 std::optional<SliceFrame> Renderer::render(const ViewParams& params,
-                                           const solver::BrickPoolView* pool) {
+                                           const solver::BrickPoolView* pool,
+                                           const speed::SpeedInputs& speed) {
     if (params.target < 0 || params.target >= kRenderTargets) {
         throw std::invalid_argument("render target " + std::to_string(params.target) +
                                     " is not 0.." + std::to_string(kRenderTargets - 1));
@@ -49,7 +50,7 @@ std::optional<SliceFrame> Renderer::render(const ViewParams& params,
     RenderTarget& target = targets_[last_];
     target.ensureSize(params.size);
     const RenderInputs in{*scan_,      skip_,  geometry_,           pool,
-                          empty_.id(), target, gradient_.texture(), speed_};
+                          empty_.id(), target, gradient_.texture(), speed};
     if (params.kind == ViewKind::Volume3d) {
         volume_.draw(in, params);
         return std::nullopt;

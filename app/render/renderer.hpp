@@ -33,8 +33,11 @@ class Renderer {
                       std::size_t gradientBudget = GradientTexture::kDefaultBudget);
 
     // Draws one view into target(); `pool` is the level set (the solver's poolView(), valid
-    // for this call) or null for the scan alone. Returns the slice frame for slice views.
-    std::optional<SliceFrame> render(const ViewParams& params, const solver::BrickPoolView* pool);
+    // for this call) or null for the scan alone; `speed` what the speed view shows (the solver's
+    // speedInputs(), so that it is what moves the front; the default: the threshold speed on the
+    // raw scan). Returns the slice frame for slice views.
+    std::optional<SliceFrame> render(const ViewParams& params, const solver::BrickPoolView* pool,
+                                     const speed::SpeedInputs& speed = {});
 
     // The picture the last render() drew into, or picture `index` (ViewParams::target).
     [[nodiscard]] const RenderTarget& target() const { return targets_[last_]; }
@@ -44,11 +47,6 @@ class Renderer {
     [[nodiscard]] const gpu::ScanTexture& scan() const { return *scan_; }
     // Whether the 3D view reads a precomputed gradient (false: a scan over its budget).
     [[nodiscard]] bool precomputedGradient() const { return gradient_.available(); }
-
-    // The data term the speed view shows (SliceContent::Speed): the solver's own inputs
-    // (LevelSetSolver::setSpeedInputs), borrowed until the next call; the default is the
-    // threshold speed on the raw scan.
-    void setSpeedInputs(const speed::SpeedInputs& inputs) { speed_ = inputs; }
 
     // Default parameters for this scan: MR-style presets, anterior camera, middle slice.
     [[nodiscard]] ViewParams defaultParams(ViewKind kind, const glm::ivec2& size) const;
@@ -62,7 +60,6 @@ class Renderer {
     GradientTexture gradient_;
     std::array<RenderTarget, kRenderTargets> targets_;
     std::size_t last_ = 0;
-    speed::SpeedInputs speed_;
     gpu::Buffer empty_;
     VolumeView volume_;
     SliceView slices_;

@@ -119,7 +119,6 @@ void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progr
     // Back to the raw scan first: the solver must not hold textures freed below, and a failure
     // half way leaves a consistent (default) speed.
     g.solver.setSpeedInputs({});
-    g.renderer.setSpeedInputs({});
     g.speed = {};
     g.timing = {};
     g.factor.reset();
@@ -168,9 +167,7 @@ void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progr
             progress("training", 1, 1);
         }
     }
-    const speed::SpeedInputs inputs{settings.kind, g.smoothed.id(), factor};
-    g.solver.setSpeedInputs(inputs);
-    g.renderer.setSpeedInputs(inputs); // the speed view shows what moves the front
+    g.solver.setSpeedInputs({settings.kind, g.smoothed.id(), factor});
     g.speed = settings;
 }
 
@@ -250,11 +247,13 @@ render::ViewParams Session::defaultView(render::ViewKind kind, const glm::ivec2&
 }
 
 std::optional<render::SliceFrame> Session::render(const render::ViewParams& params) {
+    // The speed view shows the solver's own data term: what moves the front.
+    const speed::SpeedInputs& speed = gpu_->solver.speedInputs();
     if (!hasLevelSet_) {
-        return gpu_->renderer.render(params, nullptr);
+        return gpu_->renderer.render(params, nullptr, speed);
     }
     const solver::BrickPoolView pool = gpu_->solver.poolView();
-    return gpu_->renderer.render(params, &pool);
+    return gpu_->renderer.render(params, &pool, speed);
 }
 
 RgbaImage Session::picture() const {

@@ -141,10 +141,11 @@ class Workflow {
     // The level set (workflow_edits.cpp).
     Outcome sphereEdit(const glm::dvec3& voxel, double radius, bool seed);
     // `params`, when given, are applied after the edit and undone and redone with it: a seed's
-    // inside example (a refusal of them leaves the edit standing and says so).
+    // inside example (applyEditParams).
     void editLevelSet(std::string_view what, const std::function<void()>& edit, int seeds,
                       int erasures, const ParamValues* params = nullptr);
-    // Undo and redo of a level-set edit: the parameters that came with it, when they differ.
+    // A level-set edit's parameters, on the edit, its undo and its redo, when they differ from
+    // those in force; a refusal leaves the level set as it now is and says so.
     void applyEditParams(const ParamValues& values);
     LevelSetMark markNow(int seeds, int erasures);
     void restoreMark(const LevelSetMark& mark);

@@ -94,13 +94,7 @@ void Workflow::editLevelSet(std::string_view what, const std::function<void()>& 
     e.levelSet = true;
     e.paramsBefore = params_;
     if (params != nullptr) {
-        try {
-            applyParams(clamped(*params));
-        } catch (const std::exception& ex) {
-            // The edit stands; only what came with it (the seed's example) is refused.
-            status_.message = "the seed is placed, but classify did not learn from it: " +
-                              oneLine(ex.what());
-        }
+        applyEditParams(clamped(*params));
     }
     e.paramsAfter = params_;
     e.before = before;
@@ -118,8 +112,9 @@ void Workflow::applyEditParams(const ParamValues& values) {
     try {
         applyParams(values);
     } catch (const std::exception& e) {
-        // The level set has moved already: the undo or redo stands, the speed stays as it was.
-        status_.message = "the surface is back, but the speed stayed: " + oneLine(e.what());
+        // The level set has moved already: the edit, undo or redo stands, the speed stays as it
+        // was (classify did not learn from a seed, say).
+        status_.message = "the surface changed, but the speed stayed: " + oneLine(e.what());
     }
 }
 

@@ -60,14 +60,6 @@ vec2 boxHits(vec3 o, vec3 d, vec3 lo, vec3 hi) {
     return vec2(max(max(tmin.x, tmin.y), tmin.z), min(min(tmax.x, tmax.y), tmax.z));
 }
 
-// How far along d (in units of d) a ray at p inside the box [lo, hi] goes before it leaves it.
-float boxExit(vec3 p, vec3 d, vec3 lo, vec3 hi) {
-    vec3 toFace = (mix(lo, hi, greaterThan(d, vec3(0.0))) - p) / d;
-    // An axis the ray does not move along never ends the box (and 0 / 0 is not a number).
-    toFace = mix(toFace, vec3(1e30), equal(d, vec3(0.0)));
-    return min(min(toFace.x, toFace.y), toFace.z);
-}
-
 // Any occupied transfer-function texel in intensity bins lo..hi, gradient bins 0..gHi
 // (occupancyTable() in app/render/transfer_function.cpp).
 bool occupiedIn(int lo, int hi, int gHi) {
@@ -215,7 +207,8 @@ float firstCrossing(vec3 origin, vec3 dir, float t, float tEnd) {
             vec3 lo = mix(vec3(brick * BRICK_SIZE), vec3(-1.0), equal(brick, ivec3(0)));
             vec3 hi = mix(vec3(brick * BRICK_SIZE + BRICK_SIZE - 1), vec3(volumeDims),
                           equal(brick, brickGrid - 1));
-            t += max(0.0, ceil(boxExit(p, dir, lo, hi) / stepMm) - 1.0) * stepMm;
+            float exit = boxHits(origin, dir, lo, hi).y;
+            t += max(0.0, ceil((exit - t) / stepMm) - 1.0) * stepMm;
         }
         if (inside != firstInside) {
             return t;

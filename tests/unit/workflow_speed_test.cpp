@@ -296,7 +296,7 @@ TEST(WorkflowSpeed, ARefusedSpeedLeavesTheSeedAndItsUndoStanding) {
     ASSERT_TRUE(rig.act(AddSeed{kInside, 2.0}).accepted);
     EXPECT_EQ(rig.status().seeds, 1);
     EXPECT_EQ(rig.engine.speedKind(), SpeedKind::Edge);
-    EXPECT_NE(rig.status().message.find("the seed is placed, but classify did not learn from it: "
+    EXPECT_NE(rig.status().message.find("the surface changed, but the speed stayed: "
                                         "the GPU is busy"),
               std::string::npos)
         << rig.status().message;
@@ -309,7 +309,7 @@ TEST(WorkflowSpeed, ARefusedSpeedLeavesTheSeedAndItsUndoStanding) {
     ASSERT_TRUE(rig.act(Undo{}).accepted); // back to edge, which the engine refuses now
     EXPECT_EQ(rig.status().seeds, 1);
     EXPECT_EQ(rig.engine.speedKind(), SpeedKind::Classify);
-    EXPECT_NE(rig.status().message.find("the surface is back, but the speed stayed"),
+    EXPECT_NE(rig.status().message.find("the surface changed, but the speed stayed"),
               std::string::npos)
         << rig.status().message;
     EXPECT_TRUE(rig.status().canRedo);
