@@ -200,6 +200,9 @@ int runRender(std::span<const std::string> words) {
     p.window = defaults.window;
     applyCamera(args, g, p);
     applyIntensityOptions(args, session.scan(), p);
+    if (p.content == render::SliceContent::Speed) {
+        session.completeSpeed(); // the whole slice, not only where the front went
+    }
     session.render(p);
     io::writeImage(output, session.picture());
     return 0;

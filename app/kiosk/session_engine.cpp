@@ -241,7 +241,23 @@ void SessionEngine::setSpeed(const workflow::SpeedChoice& choice) {
     settings.outside = choice.outside;
     // Preprocessing and training run here, on the frame loop (a blocking step: docs/speed.md).
     s.setSpeed(settings);
+    speedComplete_ = false;
     changed();
+}
+
+bool SessionEngine::fillSpeedAhead(double seconds) {
+    if (!session_ || speedComplete_ || !(seconds > 0.0)) {
+        return false;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    speedComplete_ = session_->evaluateSpeedAhead(aheadBricks_) == 0;
+    glFinish(); // the piece's cost sizes the next one
+    const double spent =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double next = static_cast<double>(aheadBricks_) * seconds / std::max(spent, 1e-5);
+    aheadBricks_ = static_cast<std::uint32_t>(std::clamp(next, 1.0, 4096.0));
+    ++speedVersion_;
+    return true;
 }
 
 solver::StepResult SessionEngine::step(int iterations) {

@@ -64,6 +64,11 @@ class SessionEngine final : public workflow::Engine {
     [[nodiscard]] std::uint64_t levelSetVersion() const { return version_; }
     // Counts the scans attached so far: what was drawn of an earlier one is stale.
     [[nodiscard]] std::uint64_t scansAttached() const { return attached_; }
+    // The classify speed is evaluated where the front goes; for the speed view, the rest of
+    // the scan is filled in a piece per frame, each sized to take about `seconds` (from the
+    // last piece's cost). Returns whether a piece was filled; speedVersion() counts them.
+    bool fillSpeedAhead(double seconds);
+    [[nodiscard]] std::uint64_t speedVersion() const { return speedVersion_; }
 
   private:
     session::Session& requireSession() const;
@@ -88,6 +93,9 @@ class SessionEngine final : public workflow::Engine {
     workflow::SnapshotId nextSnapshot_ = 1;
     std::uint64_t version_ = 0;
     std::uint64_t attached_ = 0;
+    std::uint64_t speedVersion_ = 0;
+    bool speedComplete_ = true;     // the speed view's texture is whole
+    std::uint32_t aheadBricks_ = 1; // the next piece of fillSpeedAhead
     // The volume is counted on a mask read back from the GPU: at most a few times a second
     // while the front moves, and at once after an edit.
     mutable std::optional<double> volumeMl_;

@@ -3,6 +3,7 @@
 #include "kiosk/view_setup.hpp"
 
 #include <chrono>
+#include <optional>
 #include <sstream>
 
 namespace steerseg::kiosk {
@@ -31,13 +32,13 @@ std::string volumeSignature(const workflow::Status& s, std::uint64_t version,
 }
 
 std::string sliceSignature(const workflow::Status& s, std::uint64_t version, const glm::ivec2& size,
-                           workflow::SliceAxis axis, bool speed) {
+                           workflow::SliceAxis axis, std::optional<std::uint64_t> speedVersion) {
     std::ostringstream o;
     o << size.x << 'x' << size.y << ' ' << static_cast<int>(axis) << ' '
       << s.view.slice[static_cast<int>(axis)] << ' ' << s.view.windowLevel << ' '
       << s.view.windowWidth << ' ' << s.hasLevelSet << ' ' << version;
-    if (speed) {
-        o << ' ' << s.params.T << ' ' << s.params.eps;
+    if (speedVersion) {
+        o << ' ' << s.params.T << ' ' << s.params.eps << ' ' << *speedVersion;
     }
     return o.str();
 }
@@ -116,8 +117,9 @@ void ViewPainter::paintView(View& view, session::Session& session, render::ViewP
 }
 
 ui::ScreenState ViewPainter::paint(session::Session& session, const workflow::Status& status,
-                                   std::uint64_t levelSetVersion, const ui::Layout& layout,
-                                   double seconds, ScreenCompositor& screen) {
+                                   std::uint64_t levelSetVersion, std::uint64_t speedVersion,
+                                   const ui::Layout& layout, double seconds,
+                                   ScreenCompositor& screen) {
     const std::array<ui::Rect, 3> rects{layout.view3d, layout.slice1, layout.slice2};
     const std::array<workflow::SliceAxis, 2> axes{status.view.first, status.view.second};
     for (std::size_t n = 0; n < views_.size(); ++n) {
@@ -132,7 +134,8 @@ ui::ScreenState ViewPainter::paint(session::Session& session, const workflow::St
             const bool speed = n == kSecond;
             const workflow::SliceAxis axis = axes[n - 1];
             paintView(views_[n], session, sliceViewParams(session, status, axis, speed, size),
-                      sliceSignature(status, levelSetVersion, size, axis, speed),
+                      sliceSignature(status, levelSetVersion, size, axis,
+                                     speed ? std::optional(speedVersion) : std::nullopt),
                       seconds * kShare[n]);
         }
     }

@@ -25,10 +25,11 @@ class ViewPainter {
     explicit ViewPainter(double interactiveScale);
 
     // Draws what is due within `seconds`, then every view's latest picture into its rect.
-    // Returns where the slice views are and which slice frames their pictures show.
+    // Returns where the slice views are and which slice frames their pictures show. A change
+    // of levelSetVersion redraws every view, of speedVersion the speed view.
     ui::ScreenState paint(session::Session& session, const workflow::Status& status,
-                          std::uint64_t levelSetVersion, const ui::Layout& layout, double seconds,
-                          ScreenCompositor& screen);
+                          std::uint64_t levelSetVersion, std::uint64_t speedVersion,
+                          const ui::Layout& layout, double seconds, ScreenCompositor& screen);
     // Every view shows its full-resolution picture of the current state.
     [[nodiscard]] bool settled() const;
     // A new scan: nothing drawn is valid any more.

@@ -17,6 +17,14 @@
 
 namespace steerseg::session {
 
+namespace {
+
+// Bricks per dispatch when completing the speed: within the 65535 groups of one dispatch, and
+// a bounded piece of work for a GPU watchdog.
+constexpr std::uint32_t kAheadBricksPerCall = 4096;
+
+} // namespace
+
 // Everything that lives in the GL context, in the order it must be built and torn down: the
 // scan texture outlives the solver and the renderer that borrow it.
 struct Session::Gpu {
@@ -158,8 +166,12 @@ void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progr
             }
             return out;
         };
-        g.classifier.emplace(intensity, dims, examples(settings.inside),
-                             examples(settings.outside));
+        // Evaluated where the front goes: the whole scan costs about 30 s on llvmpipe at 256^3,
+        // and would stop the kiosk's screen for that long (docs/speed.md).
+        speed::ClassifierParams params;
+        params.evaluation = speed::ClassifierEvaluation::OnDemand;
+        g.classifier.emplace(intensity, dims, examples(settings.inside), examples(settings.outside),
+                             params);
         factor = g.classifier->texture();
         g.timing.trainingSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - prepared).count();
@@ -167,8 +179,19 @@ void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progr
             progress("training", 1, 1);
         }
     }
-    g.solver.setSpeedInputs({settings.kind, g.smoothed.id(), factor});
+    g.solver.setSpeedInputs(
+        {settings.kind, g.smoothed.id(), factor,
+         g.classifier ? g.classifier->onDemandForest() : speed::OnDemandForest{}});
     g.speed = settings;
+}
+
+std::uint32_t Session::evaluateSpeedAhead(std::uint32_t maxBricks) {
+    return gpu_->solver.evaluateSpeedAhead(maxBricks);
+}
+
+void Session::completeSpeed() {
+    while (evaluateSpeedAhead(kAheadBricksPerCall) > 0) {
+    }
 }
 
 const SpeedSettings& Session::speed() const {

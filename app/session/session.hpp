@@ -83,6 +83,11 @@ class Session {
     void setSpeed(const SpeedSettings& settings, const SpeedProgress& progress = {});
     [[nodiscard]] const SpeedSettings& speed() const;
     [[nodiscard]] const SpeedTiming& speedTiming() const;
+    // The classify speed is evaluated where the front goes (docs/speed.md); these compute it
+    // further, for a view of the speed: up to maxBricks more bricks (returns how many remain,
+    // 0 once complete, and at once for the other speeds), or the rest of the scan.
+    std::uint32_t evaluateSpeedAhead(std::uint32_t maxBricks);
+    void completeSpeed();
     solver::StepResult step(int iterations);
     RunOutcome run(const RunMode& mode);
     [[nodiscard]] bool converged() const;

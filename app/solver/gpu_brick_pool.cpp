@@ -2,6 +2,7 @@
 
 #include "common/bindings.h"
 #include "core/volume.hpp"
+#include "gpu/buffer_io.hpp"
 #include "gpu/gl_error.hpp"
 #include "solver/control_block.hpp"
 #include "solver/level_set_params.hpp"
@@ -36,41 +37,6 @@ void copyBuffer(const gpu::Buffer& from, const gpu::Buffer& to, std::size_t from
     glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER,
                         static_cast<GLintptr>(fromOffset), static_cast<GLintptr>(toOffset),
                         static_cast<GLsizeiptr>(bytes));
-}
-
-void writeBuffer(const gpu::Buffer& b, std::size_t offset, const void* data, std::size_t bytes) {
-    if (bytes == 0) {
-        return;
-    }
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, b.id());
-    glBufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(offset),
-                    static_cast<GLsizeiptr>(bytes), data);
-}
-
-template <typename T> std::vector<T> readBuffer(const gpu::Buffer& b, std::size_t count) {
-    std::vector<T> out(count);
-    if (count == 0) {
-        return out;
-    }
-    const auto bytes = static_cast<GLsizeiptr>(count * sizeof(T));
-    // Read through a staging copy: on the H100's driver a buffer mapped directly after the
-    // shaders' last dispatch lacked that dispatch's atomics (requestCount read 0 where the next
-    // iteration served requests), even after GL_BUFFER_UPDATE_BARRIER_BIT and glFinish.
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    const gpu::Buffer staging =
-        gpu::createBuffer(GL_COPY_WRITE_BUFFER, bytes, nullptr, GL_STREAM_READ);
-    glBindBuffer(GL_COPY_READ_BUFFER, b.id());
-    glBindBuffer(GL_COPY_WRITE_BUFFER, staging.id());
-    glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, bytes);
-    const void* mapped = glMapBufferRange(GL_COPY_WRITE_BUFFER, 0, bytes, GL_MAP_READ_BIT);
-    if (mapped == nullptr) {
-        gpu::checkGl("mapping a solver buffer");
-        throw gpu::GlError("mapping a solver buffer failed");
-    }
-    std::memcpy(out.data(), mapped, count * sizeof(T));
-    glUnmapBuffer(GL_COPY_WRITE_BUFFER);
-    return out;
 }
 
 } // namespace
@@ -253,10 +219,10 @@ void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
     for (std::uint32_t s = capacity; s > used; --s) {
         freeList.push_back(s - 1);
     }
-    writeBuffer(phi_, 0, pool.data(), pool.size() * sizeof(float));
-    writeBuffer(slotBrick_, 0, slotBrick.data(), slotBrick.size() * 4);
-    writeBuffer(freeList_, 0, freeList.data(), freeList.size() * 4);
-    writeBuffer(pageTable_, 0, page.data(), page.size() * 4);
+    gpu::writeBuffer(phi_, 0, pool.data(), pool.size() * sizeof(float));
+    gpu::writeBuffer(slotBrick_, 0, slotBrick.data(), slotBrick.size() * 4);
+    gpu::writeBuffer(freeList_, 0, freeList.data(), freeList.size() * 4);
+    gpu::writeBuffer(pageTable_, 0, page.data(), page.size() * 4);
 
     ControlBlock ctrl = readControl();
     ctrl.requestCount = 0;
@@ -269,9 +235,9 @@ void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
 }
 
 std::vector<float> GpuBrickPool::download() const {
-    const auto page = readBuffer<std::uint32_t>(pageTable_, brickCount_);
+    const auto page = gpu::readBuffer<std::uint32_t>(pageTable_, brickCount_, "a solver buffer");
     const std::size_t bv = brickBytes() / sizeof(float);
-    const auto pool = readBuffer<float>(phi_, capacity_ * bv);
+    const auto pool = gpu::readBuffer<float>(phi_, capacity_ * bv, "a solver buffer");
     std::vector<float> phi(static_cast<std::size_t>(dims_.x) * static_cast<std::size_t>(dims_.y) *
                            static_cast<std::size_t>(dims_.z));
     const int b = brickSize_;
@@ -313,12 +279,12 @@ void GpuBrickPool::grow(std::uint32_t newCapacity, const ControlBlock& ctrl) {
     copyBuffer(oldFront, slotFront_, 0, 0, old * 8); // a sleeping brick's time-step bound
     copyBuffer(oldFree, freeList_, 0, 0, ctrl.freeCount * 4);
     const std::vector<std::uint32_t> none(newCapacity - old, kNoBrick);
-    writeBuffer(slotBrick_, old * 4, none.data(), none.size() * 4);
+    gpu::writeBuffer(slotBrick_, old * 4, none.data(), none.size() * 4);
     std::vector<std::uint32_t> added;
     for (std::uint32_t s = newCapacity; s > old; --s) {
         added.push_back(s - 1);
     }
-    writeBuffer(freeList_, ctrl.freeCount * 4, added.data(), added.size() * 4);
+    gpu::writeBuffer(freeList_, ctrl.freeCount * 4, added.data(), added.size() * 4);
     ControlBlock next = ctrl;
     next.freeCount += static_cast<std::uint32_t>(added.size());
     next.stalled = 0;
@@ -333,10 +299,12 @@ void GpuBrickPool::shrink(std::uint32_t newCapacity, const ControlBlock& ctrl) {
         return;
     }
     // Plan on the CPU from the small slot map; the bricks themselves move on the GPU.
-    auto slotBrick = readBuffer<std::uint32_t>(slotBrick_, capacity_);
-    auto state = readBuffer<std::uint32_t>(slotState_, capacity_); // sleep bits move with it
-    auto front = readBuffer<std::uint32_t>(slotFront_, 2 * static_cast<std::size_t>(capacity_));
-    auto page = readBuffer<std::uint32_t>(pageTable_, brickCount_);
+    auto slotBrick = gpu::readBuffer<std::uint32_t>(slotBrick_, capacity_, "a solver buffer");
+    auto state = gpu::readBuffer<std::uint32_t>(slotState_, capacity_,
+                                                "a solver buffer"); // sleep bits move with it
+    auto front = gpu::readBuffer<std::uint32_t>(slotFront_, 2 * static_cast<std::size_t>(capacity_),
+                                                "a solver buffer");
+    auto page = gpu::readBuffer<std::uint32_t>(pageTable_, brickCount_, "a solver buffer");
     std::vector<std::uint32_t> lowFree;
     for (std::uint32_t s = 0; s < newCapacity; ++s) {
         if (slotBrick[s] == kNoBrick) {
@@ -361,11 +329,11 @@ void GpuBrickPool::shrink(std::uint32_t newCapacity, const ControlBlock& ctrl) {
     gpu::Buffer oldPhi = std::move(phi_);
     allocateSlotBuffers(newCapacity);
     copyBuffer(oldPhi, phi_, 0, 0, newCapacity * brickBytes());
-    writeBuffer(slotBrick_, 0, slotBrick.data(), newCapacity * 4);
-    writeBuffer(slotState_, 0, state.data(), newCapacity * 4);
-    writeBuffer(slotFront_, 0, front.data(), newCapacity * 8);
-    writeBuffer(freeList_, 0, freeList.data(), freeList.size() * 4);
-    writeBuffer(pageTable_, 0, page.data(), page.size() * 4);
+    gpu::writeBuffer(slotBrick_, 0, slotBrick.data(), newCapacity * 4);
+    gpu::writeBuffer(slotState_, 0, state.data(), newCapacity * 4);
+    gpu::writeBuffer(slotFront_, 0, front.data(), newCapacity * 8);
+    gpu::writeBuffer(freeList_, 0, freeList.data(), freeList.size() * 4);
+    gpu::writeBuffer(pageTable_, 0, page.data(), page.size() * 4);
     ControlBlock next = ctrl;
     next.freeCount = static_cast<std::uint32_t>(freeList.size());
     writeControl(next);
@@ -389,14 +357,15 @@ void GpuBrickPool::bind() const {
 }
 
 ControlBlock GpuBrickPool::readControl() const {
-    const auto words = readBuffer<std::uint32_t>(control_, sizeof(ControlBlock) / 4);
+    const auto words =
+        gpu::readBuffer<std::uint32_t>(control_, sizeof(ControlBlock) / 4, "a solver buffer");
     ControlBlock ctrl{};
     std::memcpy(&ctrl, words.data(), sizeof ctrl);
     return ctrl;
 }
 
 void GpuBrickPool::writeControl(const ControlBlock& ctrl) {
-    writeBuffer(control_, 0, &ctrl, sizeof ctrl);
+    gpu::writeBuffer(control_, 0, &ctrl, sizeof ctrl);
 }
 
 BrickPoolView GpuBrickPool::view() const {

@@ -7,6 +7,7 @@
 #include "solver/gpu_brick_pool.hpp"
 #include "solver/phi_init.hpp"
 #include "solver/solver_programs.hpp"
+#include "solver/speed_on_demand.hpp"
 
 #include <algorithm>
 #include <cfloat>
@@ -134,12 +135,43 @@ void LevelSetSolver::wakeAll() {
 void LevelSetSolver::setSpeedInputs(const speed::SpeedInputs& inputs) {
     speed::validateSpeedInputs(inputs);
     gpu::GlStateGuard guard;
+    if (inputs.onDemand.nodes != 0) {
+        if (!onDemand_) {
+            onDemand_ = std::make_unique<detail::SpeedOnDemand>(
+                dims_, pool_->brickGrid(), options_.brickSize, programs_->localSize);
+        }
+        onDemand_->reset();
+    }
     speedInputs_ = inputs;
     for (GLuint p : {programs_->measureSpeed.id(), programs_->updatePhi.id()}) {
         glProgramUniform1i(p, glGetUniformLocation(p, "speedKind"),
                            static_cast<GLint>(inputs.kind));
     }
     noteChange();
+}
+
+bool LevelSetSolver::speedOnDemand() const {
+    return speedInputs_.onDemand.nodes != 0;
+}
+
+// The textures and buffers the data speed's passes read, before a run of them.
+void LevelSetSolver::bindSpeed() const {
+    speed::bindSpeedTextures(speedInputs_, scan_->exact(), SOLVER_SCAN_UNIT, SOLVER_FACTOR_UNIT);
+    if (speedOnDemand()) {
+        onDemand_->bind(speedInputs_);
+    }
+}
+
+std::uint32_t LevelSetSolver::evaluateSpeedAhead(std::uint32_t maxBricks) {
+    if (!speedOnDemand()) {
+        return 0;
+    }
+    gpu::GlStateGuard guard;
+    pool_->bind();
+    bindSpeed();
+    const std::uint32_t left = onDemand_->evaluateAhead(maxBricks);
+    gpu::checkGl("evaluating the speed ahead of the front");
+    return left;
 }
 
 void LevelSetSolver::requireParams() const {
@@ -193,6 +225,9 @@ void LevelSetSolver::settle() {
 void LevelSetSolver::iterate(float timeLimit) {
     auto& p = *programs_;
     allocateAndList();
+    if (speedOnDemand()) {
+        onDemand_->evaluateActive(kBrickArgs);
+    }
     dispatchIndirect(p.measureSpeed.id(), kBrickArgs);
     setUniform(p.chooseTimeStep.id(), "timeLimit", timeLimit);
     dispatch(p.chooseTimeStep.id(), 1);
@@ -223,8 +258,8 @@ bool LevelSetSolver::converged() const {
 StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool untilConverged) {
     requireParams();
     gpu::GlStateGuard guard;
-    speed::bindSpeedTextures(speedInputs_, scan_->exact(), SOLVER_SCAN_UNIT, SOLVER_FACTOR_UNIT);
     pool_->bind();
+    bindSpeed();
     // The block as the last call left it: no GPU sync before the first chunk, so a caller that
     // steps a few iterations per frame pays one readback per call (after its chunk).
     ControlBlock ctrl = known_ ? *known_ : pool_->readControl();
@@ -378,6 +413,10 @@ SolverStats LevelSetSolver::stats() const {
     s.levelSetBytes = pool_->levelSetBytes();
     s.bookkeepingBytes = pool_->bookkeepingBytes();
     s.barriers = static_cast<int>(barriers_.size());
+    if (speedOnDemand()) {
+        gpu::GlStateGuard guard;
+        s.speedBricksEvaluated = onDemand_->evaluatedBricks();
+    }
     s.visitedVoxelsPerIteration =
         lastIteration_ > 0 ? static_cast<double>(s.visitedVoxels) / lastIteration_ : 0.0;
     return s;

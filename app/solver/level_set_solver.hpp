@@ -22,6 +22,7 @@ namespace steerseg::solver {
 namespace detail {
 class GpuBrickPool;
 struct SolverPrograms;
+class SpeedOnDemand;
 } // namespace detail
 
 // The sparse packed-brick level-set solver (GLES 3.1 compute). Needs a current GL context for
@@ -53,6 +54,11 @@ class LevelSetSolver {
     // setParams does. std::invalid_argument for inputs speed::validateSpeedInputs refuses.
     void setSpeedInputs(const speed::SpeedInputs& inputs);
     [[nodiscard]] const speed::SpeedInputs& speedInputs() const { return speedInputs_; }
+    // With a speed evaluated on demand (inputs.onDemand): evaluates up to maxBricks more bricks
+    // ahead of the front, in index order, so that a view of the speed fills in over a few
+    // frames; returns how many bricks remain (0: the factor texture is complete, as it is at
+    // once for any other speed).
+    std::uint32_t evaluateSpeedAhead(std::uint32_t maxBricks);
     // Sphere edits (voxel indices, radius in voxels), between any two iterations.
     void addSphere(const Sphere& sphere);
     void removeSphere(const Sphere& sphere);
@@ -91,6 +97,8 @@ class LevelSetSolver {
                    const SolverOptions& options);
     StepResult advance(int maxIterations, float timeLimit, bool untilConverged);
     void iterate(float timeLimit);
+    [[nodiscard]] bool speedOnDemand() const;
+    void bindSpeed() const;
     void allocateAndList();
     void settle();
     void editSphere(const Sphere& sphere, bool add);
@@ -111,6 +119,7 @@ class LevelSetSolver {
     SolverOptions options_;
     std::unique_ptr<detail::SolverPrograms> programs_;
     std::unique_ptr<detail::GpuBrickPool> pool_;
+    std::unique_ptr<detail::SpeedOnDemand> onDemand_; // built by the first on-demand speed
     LevelSetParams params_;
     speed::SpeedInputs speedInputs_;
     bool haveParams_ = false;

@@ -8,9 +8,7 @@
 
 namespace steerseg::solver::detail {
 
-namespace {
-
-gpu::Defines definesFor(int brickSize, int localSize) {
+gpu::Defines solverDefines(int brickSize, int localSize) {
     char far[32];
     std::snprintf(far, sizeof far, "%.1f", static_cast<double>(kPhiFar));
     char rescale[32];
@@ -22,10 +20,8 @@ gpu::Defines definesFor(int brickSize, int localSize) {
             {"MAX_BARRIERS", std::to_string(kMaxBarriers)}};
 }
 
-} // namespace
-
-SolverPrograms::SolverPrograms(int brickSize, int localSize) {
-    const gpu::Defines d = definesFor(brickSize, localSize);
+SolverPrograms::SolverPrograms(int brickSize, int groupSize) : localSize(groupSize) {
+    const gpu::Defines d = solverDefines(brickSize, groupSize);
     beginIteration = gpu::buildComputeProgram("solver/begin_iteration.comp", d);
     allocateBricks = gpu::buildComputeProgram("solver/allocate_bricks.comp", d);
     buildActiveList = gpu::buildComputeProgram("solver/build_active_list.comp", d);

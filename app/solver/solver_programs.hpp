@@ -1,8 +1,12 @@
 #pragma once
 
 #include "gpu/gl_handle.hpp"
+#include "gpu/program.hpp"
 
 namespace steerseg::solver::detail {
+
+// The constants every solver pass is compiled with (brick size, work-group size, PHI_FAR...).
+gpu::Defines solverDefines(int brickSize, int localSize);
 
 // The solver's compute passes (shaders/solver/*.comp), compiled for one brick size. Binding
 // points and the control block layout are shared with shaders/solver/solver_common.glsl.
@@ -20,6 +24,7 @@ struct SolverPrograms {
     gpu::Program markWantedBricks;
     gpu::Program requestEditBricks;
     gpu::Program applySphere;
+    int localSize; // invocations per group of the per-brick passes
 
     SolverPrograms(int brickSize, int localSize);
 

@@ -2,13 +2,13 @@
 
 #include "common/bindings.h"
 #include "core/volume.hpp"
+#include "gpu/buffer_io.hpp"
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_handle.hpp"
 #include "gpu/gl_state_guard.hpp"
 #include "gpu/program.hpp"
 #include "speed/classifier_layout.h"
 
-#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -86,16 +86,8 @@ std::vector<float> gatherClassifierFeatures(GLuint intensity, glm::ivec3 dims,
         glUniform1i(countAt, static_cast<GLint>(count));
         glDispatchCompute(static_cast<GLuint>((count + kGroupSize - 1) / kGroupSize), 1, 1);
     }
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, out.id());
-    const auto bytes = static_cast<GLsizeiptr>(features.size() * sizeof(float));
-    const void* mapped = glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, bytes, GL_MAP_READ_BIT);
-    if (mapped == nullptr) {
-        gpu::checkGl("mapping the classifier's sample features");
-        throw gpu::GlError("mapping the classifier's sample features failed");
-    }
-    std::memcpy(features.data(), mapped, static_cast<std::size_t>(bytes));
-    glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+    gpu::readBufferBytes(out, 0, features.data(), features.size() * sizeof(float),
+                         "the classifier's sample features");
     gpu::checkGl("gathering the classifier's sample features");
     return features;
 }

@@ -40,7 +40,7 @@ ForestParams forestParams(const ClassifierParams& p) {
 
 ClassifierSpeed::ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<const Example> inside,
                                  std::span<const Example> outside, const ClassifierParams& params)
-    : dims_(dims), maxDepth_(params.maxDepth) {
+    : dims_(dims), maxDepth_(params.maxDepth), evaluation_(params.evaluation) {
     const ForestParams forestSettings = forestParams(params);
     if (forestSettings.trees < 1 || forestSettings.trees > 256 || forestSettings.maxDepth < 1 ||
         forestSettings.maxDepth > 16) {
@@ -72,32 +72,69 @@ ClassifierSpeed::ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<co
     training_.trainSeconds = secondsSince(start);
     training_.outOfBagAccuracy = forest_.outOfBagAccuracy();
 
+    upload();
+    texture_ = createVolumeTexture(dims_, "classifier speed");
+    if (evaluation_ == ClassifierEvaluation::OnDemand) {
+        clear();
+        return;
+    }
     start = std::chrono::steady_clock::now();
     evaluate(intensity);
     training_.evaluateSeconds = secondsSince(start);
 }
 
-void ClassifierSpeed::evaluate(GLuint intensity) {
-    gpu::Texture texture = createVolumeTexture(dims_, "classifier speed");
+OnDemandForest ClassifierSpeed::onDemandForest() const {
+    if (evaluation_ != ClassifierEvaluation::OnDemand) {
+        return {};
+    }
+    return gpuForest();
+}
 
+OnDemandForest ClassifierSpeed::gpuForest() const {
+    return {nodes_.id(), roots_.id(), static_cast<int>(forest_.roots().size()), maxDepth_};
+}
+
+void bindClassifierForest(GLuint program, const OnDemandForest& forest, const glm::ivec3& dims) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFIER_NODES_BINDING, forest.nodes);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFIER_ROOTS_BINDING, forest.roots);
+    glProgramUniform3i(program, glGetUniformLocation(program, "classifierDims"), dims.x, dims.y,
+                       dims.z);
+    glProgramUniform1i(program, glGetUniformLocation(program, "treeCount"), forest.trees);
+    glProgramUniform1i(program, glGetUniformLocation(program, "maxDepth"), forest.maxDepth);
+}
+
+void ClassifierSpeed::upload() {
     const std::vector<ForestNode>& nodes = forest_.nodes();
     const std::vector<std::int32_t>& roots = forest_.roots();
-    const gpu::Buffer nodeBuffer = gpu::createBuffer(
-        GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(nodes.size() * sizeof(ForestNode)),
-        nodes.data(), GL_STATIC_DRAW);
-    const gpu::Buffer rootBuffer = gpu::createBuffer(
-        GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(roots.size() * sizeof(std::int32_t)),
-        roots.data(), GL_STATIC_DRAW);
+    nodes_ = gpu::createBuffer(GL_SHADER_STORAGE_BUFFER,
+                               static_cast<GLsizeiptr>(nodes.size() * sizeof(ForestNode)),
+                               nodes.data(), GL_STATIC_DRAW);
+    roots_ = gpu::createBuffer(GL_SHADER_STORAGE_BUFFER,
+                               static_cast<GLsizeiptr>(roots.size() * sizeof(std::int32_t)),
+                               roots.data(), GL_STATIC_DRAW);
+}
+
+// 0 is "no preference" to a speed view; a slice at a time keeps the host's zeros small.
+void ClassifierSpeed::clear() {
+    const std::vector<float> zeros(static_cast<std::size_t>(dims_.x) *
+                                   static_cast<std::size_t>(dims_.y));
+    glActiveTexture(GL_TEXTURE0 + SPEED_SOURCE_UNIT);
+    glBindTexture(GL_TEXTURE_3D, texture_.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    for (int z = 0; z < dims_.z; ++z) {
+        glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, z, dims_.x, dims_.y, 1, GL_RED, GL_FLOAT,
+                        zeros.data());
+    }
+    gpu::checkGl("clearing the classifier speed");
+}
+
+void ClassifierSpeed::evaluate(GLuint intensity) {
     const gpu::Program program = gpu::buildComputeProgram("speed/classifier_evaluate.comp");
     glUseProgram(program.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFIER_NODES_BINDING, nodeBuffer.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFIER_ROOTS_BINDING, rootBuffer.id());
+    bindClassifierForest(program.id(), gpuForest(), dims_);
     glActiveTexture(GL_TEXTURE0 + SPEED_SOURCE_UNIT);
     glBindTexture(GL_TEXTURE_3D, intensity);
-    glBindImageTexture(SPEED_OUT_IMAGE_UNIT, texture.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-    glUniform3i(glGetUniformLocation(program.id(), "classifierDims"), dims_.x, dims_.y, dims_.z);
-    glUniform1i(glGetUniformLocation(program.id(), "treeCount"), static_cast<GLint>(roots.size()));
-    glUniform1i(glGetUniformLocation(program.id(), "maxDepth"), maxDepth_);
+    glBindImageTexture(SPEED_OUT_IMAGE_UNIT, texture_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
     auto groups = [](int n) {
         return static_cast<GLuint>((n + kEvaluateGroup - 1) / kEvaluateGroup);
     };
@@ -113,7 +150,6 @@ void ClassifierSpeed::evaluate(GLuint intensity) {
     // on nothing.
     glFinish();
     gpu::checkGl("evaluating the classifier speed");
-    texture_ = std::move(texture);
 }
 
 } // namespace steerseg::speed

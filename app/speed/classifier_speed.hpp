@@ -7,6 +7,7 @@
 #include "gpu/gl_handle.hpp"
 #include "speed/example_voxels.hpp"
 #include "speed/random_forest.hpp"
+#include "speed/speed_inputs.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -15,7 +16,14 @@
 
 namespace steerseg::speed {
 
+// Everywhere: the forest at every voxel now (its cost follows the scan: about 30 s at 256^3 on
+// llvmpipe). OnDemand: the texture starts at 0 (no preference) and the solver evaluates each
+// brick as the front first reaches it (onDemandForest(), solver/evaluate_speed.comp), so the
+// cost follows the region the surface sweeps.
+enum class ClassifierEvaluation { Everywhere, OnDemand };
+
 struct ClassifierParams {
+    ClassifierEvaluation evaluation = ClassifierEvaluation::Everywhere;
     int trees = 32;
     int maxDepth = 10;
     int maxSamplesPerClass = 20000; // in [1, 2^20]
@@ -26,7 +34,7 @@ struct ClassifierParams {
 struct ClassifierTraining {
     double featureSeconds = 0.0;  // choosing the sample voxels and gathering their features
     double trainSeconds = 0.0;    // the forest on the CPU
-    double evaluateSeconds = 0.0; // the forest at every voxel on the GPU
+    double evaluateSeconds = 0.0; // the forest at every voxel on the GPU (0 when on demand)
     std::size_t insideSamples = 0;
     std::size_t outsideSamples = 0;
     std::size_t insideCovered = 0; // voxels of the scan the inside examples hold
@@ -42,20 +50,33 @@ class ClassifierSpeed {
     ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<const Example> inside,
                     std::span<const Example> outside, const ClassifierParams& params = {});
 
-    // R32F 3D texture of dims(): P(inside) - P(outside) per voxel.
+    // R32F 3D texture of dims(): P(inside) - P(outside) per voxel (on demand: where evaluated).
     [[nodiscard]] GLuint texture() const { return texture_.id(); }
+    // The forest for the solver to evaluate on demand; no forest (nodes 0) when the texture was
+    // filled everywhere.
+    [[nodiscard]] OnDemandForest onDemandForest() const;
     [[nodiscard]] glm::ivec3 dims() const { return dims_; }
     [[nodiscard]] const ClassifierTraining& training() const { return training_; }
     [[nodiscard]] const RandomForest& forest() const { return forest_; }
 
   private:
+    [[nodiscard]] OnDemandForest gpuForest() const;
+    void upload();
     void evaluate(GLuint intensity);
+    void clear();
 
     glm::ivec3 dims_;
     int maxDepth_;
+    ClassifierEvaluation evaluation_;
     RandomForest forest_;
     ClassifierTraining training_;
+    gpu::Buffer nodes_; // forest_ flattened for the GPU (classifier_forest.glsl)
+    gpu::Buffer roots_;
     gpu::Texture texture_;
 };
+
+// Binds the forest's buffers and sets the uniforms of speed/classifier_forest.glsl on a program
+// that includes it, for a scan of `dims` (the caller binds the intensity at SPEED_SOURCE_UNIT).
+void bindClassifierForest(GLuint program, const OnDemandForest& forest, const glm::ivec3& dims);
 
 } // namespace steerseg::speed

@@ -11,6 +11,12 @@ void validateSpeedInputs(const SpeedInputs& inputs) {
                                     std::string(speedKindName(inputs.kind)) +
                                     " needs its factor texture");
     }
+    const OnDemandForest& f = inputs.onDemand;
+    if (f.nodes != 0 &&
+        (inputs.kind != SpeedKind::Classify || f.roots == 0 || f.trees < 1 || f.maxDepth < 1)) {
+        throw std::invalid_argument(
+            "a speed evaluated on demand needs the classify kind and a whole forest");
+    }
 }
 
 void bindSpeedTextures(const SpeedInputs& inputs, GLuint rawScan, int intensityUnit,

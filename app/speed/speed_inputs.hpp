@@ -10,13 +10,26 @@ namespace steerseg::speed {
 // 3D textures on the scan's grid that must outlive their use:
 //   intensity  I in real units: the smoothed scan (smoothScan), or 0 for the raw scan
 //   factor     Edge: g (edgeFactor); Classify: P(inside) - P(outside); unused for Threshold
+//   onDemand   Classify only: when it names a forest, `factor` holds the speed only where the
+//              solver has evaluated it (ClassifierSpeed's Evaluation::OnDemand), and the solver
+//              evaluates each brick with this forest, over the features of I, before it first
+//              reads it
+struct OnDemandForest {
+    GLuint nodes = 0; // SSBO of speed::ForestNode; 0: no forest, the factor is complete
+    GLuint roots = 0; // SSBO of each tree's root node index
+    int trees = 0;
+    int maxDepth = 0;
+};
+
 struct SpeedInputs {
     SpeedKind kind = SpeedKind::Threshold;
     GLuint intensity = 0;
     GLuint factor = 0;
+    OnDemandForest onDemand;
 };
 
-// Throws std::invalid_argument when a kind that reads the factor texture has none.
+// Throws std::invalid_argument when a kind that reads the factor texture has none, and for a
+// forest given with another kind than classify or without its roots, trees or depth.
 void validateSpeedInputs(const SpeedInputs& inputs);
 
 // Binds I (inputs.intensity, or `rawScan`, the exact scan texture, when 0) and the factor to

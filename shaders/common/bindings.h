@@ -30,6 +30,10 @@
 #define CLASSIFIER_FEATURES_BINDING 13 // their feature vectors, read back once
 #define CLASSIFIER_NODES_BINDING 14    // the forest's nodes
 #define CLASSIFIER_ROOTS_BINDING 15    // each tree's root node
+// The solver's evaluation of the classifier where the front goes (solver/evaluate_speed.comp):
+// a count, then one word per brick, non-zero once its speed is stored. The training's gather,
+// which has the same number, runs alone.
+#define SPEED_READY_BINDING 12
 
 // Texture units of the samplers (glActiveTexture(GL_TEXTURE0 + unit)).
 #define SOLVER_SCAN_UNIT 0    // speed/data_speed.glsl, solver: I (scan or smoothed copy)
@@ -49,5 +53,6 @@
 #define VIEW_OUT_IMAGE_UNIT 0      // render/view_common.glsl: the rendered picture
 #define VIEW_GRADIENT_IMAGE_UNIT 0 // render/gradient.comp (runs alone): the gradient it fills
 #define SPEED_OUT_IMAGE_UNIT 0     // speed/*.comp (each runs alone): the R32F texture it fills
+#define SOLVER_SPEED_IMAGE_UNIT 0  // solver/evaluate_speed.comp: the classifier speed it fills
 
 #endif

@@ -4,7 +4,9 @@
 #include "io/scan_reader.hpp"
 #include "kiosk/screen_compositor.hpp"
 #include "kiosk/session_engine.hpp"
+#include "speed/speed_kind.hpp"
 #include "support/gpu_fixture.hpp"
+#include "support/two_textures.hpp"
 
 #include <chrono>
 #include <filesystem>
@@ -12,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace steerseg::test {
 namespace {
@@ -55,6 +58,45 @@ TEST_F(KioskEngine, TheEdgeSpeedNeedsAProbeAndFollowsItsNoise) {
     EXPECT_FLOAT_EQ(s.speed().smoothing.conductance, 3.0F * s.speed().kappa);
     engine.setSpeed(workflow::SpeedChoice{});
     EXPECT_EQ(s.speed().kind, speed::SpeedKind::Threshold);
+}
+
+// With classify the solver evaluates the speed where the front goes; the speed view's texture
+// is filled ahead of it in pieces that follow the time given, until it is whole.
+TEST_F(KioskEngine, FillsTheClassifySpeedAheadInPieces) {
+    const auto dir = std::filesystem::path(::testing::TempDir()) / "kiosk_fill_ahead";
+    std::filesystem::create_directories(dir);
+    const auto scan = dir / "two_textures.nrrd";
+    {
+        // 32x32x24 floats: the calm texture for i < 16, the rough one beyond.
+        const std::vector<float> v = twoTextureIntensities({32, 32, 24}, 16, 99U);
+        std::ofstream out(scan, std::ios::binary);
+        out << "NRRD0004\ntype: float\ndimension: 3\nsizes: 32 32 24\nendian: little\n"
+               "encoding: raw\n\n";
+        out.write(reinterpret_cast<const char*>(v.data()),
+                  static_cast<std::streamsize>(v.size() * sizeof(float)));
+    }
+    SessionEngine engine(solver::SolverOptions{}, {2, 3.0, 1.0});
+    engine.beginLoad(scan.string());
+    ASSERT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
+    EXPECT_FALSE(engine.fillSpeedAhead(0.01)); // the threshold speed is whole from the start
+
+    workflow::SpeedChoice classify;
+    classify.kind = speed::SpeedKind::Classify;
+    classify.inside = {{{6.0F, 16.0F, 12.0F}, 4.0F}};
+    classify.outside = {{{26.0F, 16.0F, 12.0F}, 4.0F}};
+    engine.setSpeed(classify);
+    EXPECT_EQ(engine.stats().speedBricksEvaluated, 0U);
+    const std::uint64_t before = engine.speedVersion();
+    int pieces = 0;
+    while (engine.fillSpeedAhead(0.002) && pieces < 1000) {
+        ++pieces;
+    }
+    EXPECT_GT(pieces, 1); // 48 bricks, each a few milliseconds on llvmpipe, far less on a GPU
+    EXPECT_LT(pieces, 1000);
+    EXPECT_EQ(engine.speedVersion(), before + static_cast<std::uint64_t>(pieces));
+    const solver::SolverStats stats = engine.stats();
+    EXPECT_EQ(stats.speedBricksEvaluated, stats.totalBricks);
+    EXPECT_FALSE(engine.fillSpeedAhead(0.01));
 }
 
 TEST_F(KioskEngine, LoadsSeedsStepsUndoesAndExports) {

@@ -3,7 +3,9 @@
 #include "io/scan_reader.hpp"
 #include "session/session.hpp"
 #include "support/gpu_fixture.hpp"
+#include "support/two_textures.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <gtest/gtest.h>
@@ -82,17 +84,8 @@ Volume twoTextures() {
     Geometry g;
     g.dims = kTwoDims;
     Volume v(VoxelType::Float32, g);
-    std::uint32_t state = 12345U;
-    std::size_t n = 0;
-    for (int k = 0; k < kTwoDims.z; ++k) {
-        for (int j = 0; j < kTwoDims.y; ++j) {
-            for (int i = 0; i < kTwoDims.x; ++i) {
-                state = state * 1664525U + 1013904223U; // the same numbers on every platform
-                const float u = static_cast<float>(state >> 8U) / 8388608.0F - 1.0F;
-                v.voxels<float>()[n++] = 100.0F + (i < kBorderX ? 8.0F : 40.0F) * u;
-            }
-        }
-    }
+    const std::vector<float> values = twoTextureIntensities(kTwoDims, kBorderX, 12345U);
+    std::copy(values.begin(), values.end(), v.voxels<float>().begin());
     v.invalidateStats();
     return v;
 }
@@ -176,6 +169,10 @@ TEST_F(SessionSpeedTest, TheSpeedViewShowsTheSpeedInForce) {
     classify.inside = {{{10.0F, 16.0F, 16.0F}, 6.0F}};
     classify.outside = {{{37.0F, 16.0F, 16.0F}, 6.0F}};
     s.setSpeed(classify);
+    // Evaluated where the front goes (no front here), and for the view the rest of the scan.
+    EXPECT_GT(s.evaluateSpeedAhead(1), 0U);
+    s.completeSpeed();
+    EXPECT_EQ(s.evaluateSpeedAhead(1), 0U);
     const std::array<double, 2> classified = greenSides();
     EXPECT_GT(classified[0], 0.9);
     EXPECT_LT(classified[1], 0.1);

@@ -100,7 +100,7 @@ TEST_F(SpeedSeamTest, EdgeSpeedOnTheSmoothedScanStopsAtTheSeam) {
     const gpu::Texture smoothed =
         speed::smoothScan(solver.scan().exact(), kDims, {10, 3.0F * kNoise});
     const gpu::Texture factor = speed::edgeFactor(smoothed.id(), kDims, kNoise);
-    solver.setSpeedInputs({speed::SpeedKind::Edge, smoothed.id(), factor.id()});
+    solver.setSpeedInputs({speed::SpeedKind::Edge, smoothed.id(), factor.id(), {}});
     solver.addSphere(kSeed);
     solver.setParams({kHigh, 2.0F * kNoise, 0.9F});
     const StepResult r = solver.runUntilConverged(kMaxIterations);
@@ -112,8 +112,9 @@ TEST_F(SpeedSeamTest, EdgeSpeedOnTheSmoothedScanStopsAtTheSeam) {
 
 TEST_F(SpeedSeamTest, SpeedInputsWithoutTheirFactorAreRefused) {
     LevelSetSolver solver(twoSpheres(), kDims);
-    EXPECT_THROW(solver.setSpeedInputs({speed::SpeedKind::Edge, 0, 0}), std::invalid_argument);
-    EXPECT_THROW(solver.setSpeedInputs({speed::SpeedKind::Classify, 0, 0}), std::invalid_argument);
+    EXPECT_THROW(solver.setSpeedInputs({speed::SpeedKind::Edge, 0, 0, {}}), std::invalid_argument);
+    EXPECT_THROW(solver.setSpeedInputs({speed::SpeedKind::Classify, 0, 0, {}}),
+                 std::invalid_argument);
 }
 
 // A factor field on the ball case of the agreement test: the edge factor in [0.2, 1], the
@@ -144,7 +145,7 @@ TEST_F(SpeedSeamTest, EdgeAndClassifySpeedsMatchTheReference) {
         const std::vector<float> field = factorField(d, kind);
         const gpu::ScanTexture factor(field, d); // an R32F texture of the field
         LevelSetSolver gpu(volume, d);
-        gpu.setSpeedInputs({kind, 0, factor.exact()});
+        gpu.setSpeedInputs({kind, 0, factor.exact(), {}});
         gpu.addSphere(seed);
         gpu.setParams(params);
         ReferenceSolver cpu(volume, d);

@@ -1,0 +1,38 @@
+// The classifier speed at one voxel: its features (speed/classifier_features.glsl), then the mean
+// over the forest's trees of the leaf's P(inside) - P(outside). One code for the evaluation over
+// the whole scan (speed/classifier_evaluate.comp) and for the solver's evaluation of the bricks
+// the front reaches (solver/evaluate_speed.comp), so both give the same number at a voxel.
+#include "speed/classifier_features.glsl"
+
+// A split sends f[feature] < threshold to `left`, the rest to left + 1; a leaf (feature < 0)
+// holds its value. The same layout as speed::ForestNode.
+struct ForestNode {
+    int feature;
+    float threshold;
+    int left;
+    float value;
+};
+layout(std430, binding = CLASSIFIER_NODES_BINDING) readonly buffer Nodes {
+    ForestNode nodes[];
+};
+layout(std430, binding = CLASSIFIER_ROOTS_BINDING) readonly buffer Roots {
+    int roots[];
+};
+uniform int treeCount;
+uniform int maxDepth; // bounds each walk, whatever the buffer holds
+
+// A walk written as an unbounded while over the node buffer was miscompiled by llvmpipe (only the
+// first tree counted, and 50 times slower): the bounded for is what runs.
+float classifierSpeedAt(ivec3 v) {
+    float f[CLASSIFIER_FEATURE_COUNT];
+    classifierFeatures(v, f);
+    float sum = 0.0;
+    for (int t = 0; t < treeCount; ++t) {
+        ForestNode node = nodes[roots[t]];
+        for (int depth = 0; depth < maxDepth && node.feature >= 0; ++depth) {
+            node = nodes[node.left + (f[node.feature] < node.threshold ? 0 : 1)];
+        }
+        sum += node.value;
+    }
+    return sum / float(treeCount);
+}

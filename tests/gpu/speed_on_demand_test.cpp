@@ -1,0 +1,129 @@
+// The classifier speed evaluated where the front goes (docs/speed.md): the solver's run with the
+// speed computed brick by brick on demand is the run with the speed computed everywhere first,
+// it evaluates only part of the scan, and filling ahead completes the same texture.
+#include "gpu/scan_texture.hpp"
+#include "solver/level_set_solver.hpp"
+#include "speed/classifier_speed.hpp"
+#include "speed_texture_readback.hpp"
+#include "support/gpu_fixture.hpp"
+#include "support/two_textures.hpp"
+
+#include <cstdint>
+#include <gtest/gtest.h>
+#include <vector>
+
+namespace steerseg::test {
+namespace {
+
+using solver::LevelSetParams;
+using solver::LevelSetSolver;
+using solver::Sphere;
+using speed::ClassifierEvaluation;
+using speed::ClassifierParams;
+using speed::ClassifierSpeed;
+
+class SpeedOnDemandTest : public GpuTest {};
+
+// Calm noise (amplitude 8) for i < 24, rough (40) beyond, one mean: the classifier's two
+// textures, the rough side three times the calm one, where the front stops.
+constexpr glm::ivec3 kDims{96, 32, 32};
+constexpr int kBorderX = 24;
+
+std::vector<float> twoTextures() {
+    return twoTextureIntensities(kDims, kBorderX, 777U);
+}
+
+constexpr int kIterations = 300;
+const std::vector<speed::Example> kInside{{{10.0F, 16.0F, 16.0F}, 6.0F}};
+const std::vector<speed::Example> kOutside{{{40.0F, 16.0F, 16.0F}, 6.0F}};
+
+ClassifierSpeed classifier(const gpu::ScanTexture& scan, ClassifierEvaluation evaluation) {
+    ClassifierParams params;
+    params.evaluation = evaluation;
+    return {scan.exact(), kDims, kInside, kOutside, params};
+}
+
+// kIterations from a seed in the calm texture, with the classifier's texture and forest.
+std::vector<float> run(LevelSetSolver& solver, const ClassifierSpeed& c) {
+    solver.setSpeedInputs({speed::SpeedKind::Classify, 0, c.texture(), c.onDemandForest()});
+    solver.setParams(LevelSetParams{100.0F, 30.0F, 0.5F});
+    solver.addSphere(Sphere{{10.0F, 16.0F, 16.0F}, 3.0F});
+    solver.step(kIterations);
+    return solver.readPhi();
+}
+
+TEST_F(SpeedOnDemandTest, TheFrontMovesAsWithTheSpeedComputedEverywhere) {
+    const std::vector<float> scan = twoTextures();
+    const gpu::ScanTexture texture(scan, kDims);
+    const ClassifierSpeed everywhere = classifier(texture, ClassifierEvaluation::Everywhere);
+    const ClassifierSpeed onDemand = classifier(texture, ClassifierEvaluation::OnDemand);
+    EXPECT_EQ(everywhere.onDemandForest().nodes, 0U);
+    EXPECT_NE(onDemand.onDemandForest().nodes, 0U);
+
+    LevelSetSolver a(texture);
+    const std::vector<float> expected = run(a, everywhere);
+    LevelSetSolver b(texture);
+    const std::vector<float> phi = run(b, onDemand);
+    ASSERT_EQ(phi.size(), expected.size());
+    std::size_t inside = 0;
+    std::size_t differ = 0;
+    for (std::size_t n = 0; n < phi.size(); ++n) {
+        inside += phi[n] < 0.0F ? 1 : 0;
+        differ += phi[n] != expected[n] ? 1 : 0;
+    }
+    EXPECT_EQ(differ, 0U) << "of " << phi.size() << " voxels";
+    EXPECT_GT(inside, 15000U); // most of the calm side's 24576 voxels, from the seed's 123
+
+    // Only the bricks the front reached hold the speed; the rest of the texture is still 0.
+    const solver::SolverStats stats = b.stats();
+    EXPECT_EQ(a.stats().speedBricksEvaluated, 0U);
+    EXPECT_GT(stats.speedBricksEvaluated, 0U);
+    EXPECT_LT(stats.speedBricksEvaluated, stats.totalBricks / 2);
+    const std::vector<float> full = readVolumeTexture(everywhere.texture(), kDims);
+    std::vector<float> partial = readVolumeTexture(onDemand.texture(), kDims);
+    std::size_t evaluated = 0;
+    for (std::size_t n = 0; n < partial.size(); ++n) {
+        if (partial[n] != 0.0F) {
+            ++evaluated;
+            ASSERT_EQ(partial[n], full[n]) << "voxel " << n;
+        }
+    }
+    EXPECT_GT(evaluated, 0U);
+    EXPECT_LT(evaluated, partial.size() / 2);
+
+    // Ahead of the front, in a few calls, the rest: the texture computed everywhere.
+    std::uint32_t left = b.evaluateSpeedAhead(16);
+    EXPECT_GT(left, 0U);
+    while (left > 0) {
+        left = b.evaluateSpeedAhead(64);
+    }
+    EXPECT_EQ(b.stats().speedBricksEvaluated, stats.totalBricks);
+    partial = readVolumeTexture(onDemand.texture(), kDims);
+    EXPECT_EQ(partial, full);
+    EXPECT_EQ(a.evaluateSpeedAhead(16), 0U); // complete from the start
+}
+
+// A new speed forgets what the last one evaluated: its bricks are evaluated again.
+TEST_F(SpeedOnDemandTest, ANewSpeedIsEvaluatedAfresh) {
+    const std::vector<float> scan = twoTextures();
+    const gpu::ScanTexture texture(scan, kDims);
+    const ClassifierSpeed first = classifier(texture, ClassifierEvaluation::OnDemand);
+    LevelSetSolver solver(texture);
+    run(solver, first);
+    const std::uint32_t once = solver.stats().speedBricksEvaluated;
+    ASSERT_GT(once, 0U);
+    const ClassifierSpeed second = classifier(texture, ClassifierEvaluation::OnDemand);
+    solver.setSpeedInputs(
+        {speed::SpeedKind::Classify, 0, second.texture(), second.onDemandForest()});
+    EXPECT_EQ(solver.stats().speedBricksEvaluated, 0U);
+    solver.step(1);
+    EXPECT_GT(solver.stats().speedBricksEvaluated, 0U);
+    solver.setSpeedInputs({});
+    EXPECT_EQ(solver.stats().speedBricksEvaluated, 0U);
+    EXPECT_THROW(solver.setSpeedInputs(
+                     {speed::SpeedKind::Edge, 0, second.texture(), second.onDemandForest()}),
+                 std::invalid_argument);
+}
+
+} // namespace
+} // namespace steerseg::test
