@@ -128,15 +128,20 @@ void parseSliceOptions(const Args& args, render::ViewParams& p) {
     }
 }
 
-void parseSpeedOptions(const Args& args, render::ViewParams& p) {
+// The view shows the speed in force: with a segmentation, its own (T and eps from --probe, or
+// classify's, which reads neither); without one, the threshold speed of --T and --eps.
+void parseSpeedOptions(const Args& args, bool segment, render::ViewParams& p) {
     const auto target = args.number("T");
     const auto eps = args.number("eps");
     if (args.flag("speed-view")) {
-        if (!target || !eps || !(*eps > 0.0)) {
-            throw UsageError("--speed-view needs --T and a positive --eps");
+        if (!segment && (!target || !eps || !(*eps > 0.0))) {
+            throw UsageError("--speed-view needs --T and a positive --eps, or a segmentation "
+                             "whose speed it shows");
         }
         p.content = render::SliceContent::Speed;
-        p.speed = {*target, *eps};
+        if (target && eps) {
+            p.speed = {*target, *eps};
+        }
     }
 }
 
@@ -175,7 +180,7 @@ int runRender(std::span<const std::string> words) {
 
     parseDisplayOptions(args, p);
     parseSliceOptions(args, p);
-    parseSpeedOptions(args, p);
+    parseSpeedOptions(args, segment, p);
 
     // The scan first: a bad file is reported before the GPU is brought up.
     io::LoadedScan scan = io::readScan(input);
@@ -183,6 +188,7 @@ int runRender(std::span<const std::string> words) {
     checkSliceRange(g, p);
     if (request) {
         completeWithScan(*request, scan.volume);
+        p.speed = {request->params.T, request->params.eps}; // --T and --eps, or the probe's
     }
     auto context = platform::createOffscreenContext();
     // The level set comes from the solver's brick pool; the renderer never copies phi.

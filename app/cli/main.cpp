@@ -31,8 +31,8 @@ constexpr Command kCommands[] = {
      "render --input SCAN --view 3d|axial|coronal|sagittal [--slice N] [--clip nx,ny,nz,d] [--roi "
      "inside|dim|off] [--surface opaque|translucent|hidden] [--preset bone|soft|mr] [--window L,W] "
      "[--camera anterior|lateral|superior] [--orbit YAW,PITCH] [--zoom F] [--pan R,U] "
-     "[--speed-view --T "
-     "T --eps E] [--no-labels] [--mask MASK | --seed ... ] [--size WxH] --output PNG: draw one "
+     "[--speed-view [--T T --eps E]] [--no-labels] [--mask MASK | --seed ... ] [--size WxH] "
+     "--output PNG: draw one "
      "view to an image",
      steerseg::cli::runRender},
     {"segment",

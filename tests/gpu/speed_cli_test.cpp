@@ -1,8 +1,10 @@
 // `steerseg segment --speed ...` end to end: usage errors for the speed options, the edge speed
 // with --probe on the built-in sample and the report's speed fields.
+#include "io/image_file.hpp"
 #include "support/cli_run.hpp"
 #include "support/test_data.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -99,6 +101,28 @@ TEST(SpeedCli, RenderTakesTheSpeedViewAsSpeedView) {
     EXPECT_EQ(noEps.exitCode, 2);
     EXPECT_NE(noEps.err.find("--speed-view needs --T and a positive --eps"), std::string::npos)
         << noEps.err;
+    // With a segmentation the view shows its speed: classify's needs no --T or --eps, and the
+    // whole slice is evaluated, not only where the front went.
+    const auto classify = out.parent_path() / "classify.png";
+    const CliRun c = runSteerseg(
+        "render --input builtin:sample --view axial --speed-view --size 64x64 --seed 80,56,52,4 "
+        "--speed classify --probe 80,56,52,4 --outside 30,30,52,4 --alpha 0.5 --iterations 1 "
+        "--output " +
+        classify.string());
+    ASSERT_EQ(c.exitCode, 0) << c.err;
+    const RgbaImage picture = io::readImage(classify);
+    int green = 0;
+    int blue = 0;
+    for (int y = 0; y < picture.height; ++y) {
+        for (int x = 0; x < picture.width; ++x) {
+            const std::uint8_t* px = picture.at(x, y);
+            // Saturated: the scan's own grey, tinted, lies within a few levels of neutral.
+            green += px[1] > px[2] + 60 ? 1 : 0;
+            blue += px[2] > px[1] + 60 ? 1 : 0;
+        }
+    }
+    EXPECT_GT(green, 0);
+    EXPECT_GT(blue, picture.width * picture.height / 4); // the background, far from any front
 }
 
 } // namespace
