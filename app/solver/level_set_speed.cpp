@@ -1,0 +1,57 @@
+// The data term's inputs: which textures the speed passes read, and the classify speed
+// evaluated where the front goes (solver/speed_on_demand.hpp, docs/speed.md).
+#include "common/bindings.h"
+#include "gpu/gl_error.hpp"
+#include "gpu/gl_state_guard.hpp"
+#include "solver/gpu_brick_pool.hpp"
+#include "solver/level_set_solver.hpp"
+#include "solver/solver_programs.hpp"
+#include "solver/speed_on_demand.hpp"
+
+#include <memory>
+
+namespace steerseg::solver {
+
+void LevelSetSolver::setSpeedInputs(const speed::SpeedInputs& inputs) {
+    speed::validateSpeedInputs(inputs);
+    gpu::GlStateGuard guard;
+    if (inputs.onDemand.nodes != 0) {
+        if (!onDemand_) {
+            onDemand_ = std::make_unique<detail::SpeedOnDemand>(
+                dims_, pool_->brickGrid(), options_.brickSize, programs_->localSize);
+        }
+        onDemand_->reset();
+    }
+    speedInputs_ = inputs;
+    for (GLuint p : {programs_->measureSpeed.id(), programs_->updatePhi.id()}) {
+        glProgramUniform1i(p, glGetUniformLocation(p, "speedKind"),
+                           static_cast<GLint>(inputs.kind));
+    }
+    noteChange();
+}
+
+bool LevelSetSolver::speedOnDemand() const {
+    return speedInputs_.onDemand.nodes != 0;
+}
+
+// The textures and buffers the data speed's passes read, before a run of them.
+void LevelSetSolver::bindSpeed() const {
+    speed::bindSpeedTextures(speedInputs_, scan_->exact(), SOLVER_SCAN_UNIT, SOLVER_FACTOR_UNIT);
+    if (speedOnDemand()) {
+        onDemand_->bind(speedInputs_);
+    }
+}
+
+std::uint32_t LevelSetSolver::evaluateSpeedAhead(std::uint32_t maxBricks) {
+    if (!speedOnDemand()) {
+        return 0;
+    }
+    gpu::GlStateGuard guard;
+    pool_->bind();
+    bindSpeed();
+    const std::uint32_t left = onDemand_->evaluateAhead(maxBricks);
+    gpu::checkGl("evaluating the speed ahead of the front");
+    return left;
+}
+
+} // namespace steerseg::solver
