@@ -188,7 +188,9 @@ int runRender(std::span<const std::string> words) {
     checkSliceRange(g, p);
     if (request) {
         completeWithScan(*request, scan.volume);
-        p.speed = {request->params.T, request->params.eps}; // --T and --eps, or the probe's
+        // --T and --eps, or the probe's
+        p.speed = {static_cast<double>(request->params.T),
+                   static_cast<double>(request->params.eps)};
     }
     auto context = platform::createOffscreenContext();
     // The level set comes from the solver's brick pool; the renderer never copies phi.
