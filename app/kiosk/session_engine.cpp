@@ -241,16 +241,16 @@ void SessionEngine::setSpeed(const workflow::SpeedChoice& choice) {
     settings.outside = choice.outside;
     // Preprocessing and training run here, on the frame loop (a blocking step: docs/speed.md).
     s.setSpeed(settings);
-    speedComplete_ = false;
     changed();
 }
 
 bool SessionEngine::fillSpeedAhead(double seconds) {
-    if (!session_ || speedComplete_ || !(seconds > 0.0)) {
+    // Asking with 0 bricks costs no GL work: whole speeds stop here every frame.
+    if (!session_ || !(seconds > 0.0) || session_->evaluateSpeedAhead(0) == 0) {
         return false;
     }
     const auto start = std::chrono::steady_clock::now();
-    speedComplete_ = session_->evaluateSpeedAhead(aheadBricks_) == 0;
+    session_->evaluateSpeedAhead(aheadBricks_);
     glFinish(); // the piece's cost sizes the next one
     const double spent =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -94,7 +94,6 @@ class SessionEngine final : public workflow::Engine {
     std::uint64_t version_ = 0;
     std::uint64_t attached_ = 0;
     std::uint64_t speedVersion_ = 0;
-    bool speedComplete_ = true;     // the speed view's texture is whole
     std::uint32_t aheadBricks_ = 1; // the next piece of fillSpeedAhead
     // The volume is counted on a mask read back from the GPU: at most a few times a second
     // while the front moves, and at once after an edit.

@@ -38,7 +38,7 @@ std::string segmentReport(const Session& session, const RunOutcome& run,
     j["training_seconds"] = session.speedTiming().trainingSeconds;
     if (speed.kind == speed::SpeedKind::Classify) {
         // Evaluated where the front went: its share of the scan is the saving (docs/speed.md).
-        j["speed_bricks_evaluated"] = stats.speedBricksEvaluated;
+        j["speed_bricks_evaluated"] = session.speedBricksEvaluated();
     }
     j["mode"] = options.dense ? "dense" : "sparse";
     j["brick_size"] = options.brickSize == 0 ? solver::defaultBrickSize() : options.brickSize;

@@ -189,6 +189,10 @@ std::uint32_t Session::evaluateSpeedAhead(std::uint32_t maxBricks) {
     return gpu_->solver.evaluateSpeedAhead(maxBricks);
 }
 
+std::uint32_t Session::speedBricksEvaluated() const {
+    return gpu_->solver.speedBricksEvaluated();
+}
+
 void Session::completeSpeed() {
     while (evaluateSpeedAhead(kAheadBricksPerCall) > 0) {
     }

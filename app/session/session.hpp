@@ -85,9 +85,11 @@ class Session {
     [[nodiscard]] const SpeedTiming& speedTiming() const;
     // The classify speed is evaluated where the front goes (docs/speed.md); these compute it
     // further, for a view of the speed: up to maxBricks more bricks (returns how many remain,
-    // 0 once complete, and at once for the other speeds), or the rest of the scan.
+    // 0 once complete, and at once for the other speeds; 0 bricks only asks), or the rest of
+    // the scan. speedBricksEvaluated() reads back how many bricks hold it (for reports).
     std::uint32_t evaluateSpeedAhead(std::uint32_t maxBricks);
     void completeSpeed();
+    [[nodiscard]] std::uint32_t speedBricksEvaluated() const;
     solver::StepResult step(int iterations);
     RunOutcome run(const RunMode& mode);
     [[nodiscard]] bool converged() const;

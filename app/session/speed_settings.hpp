@@ -30,8 +30,8 @@ void validateSpeedSettings(const SpeedSettings& settings, const glm::ivec3& dims
 // Seconds spent making the speed's textures (GPU work finished).
 struct SpeedTiming {
     double preprocessingSeconds = 0.0; // smoothing and the edge factor
-    double trainingSeconds =
-        0.0; // the classifier's training (its evaluation is the solver's, where the front goes)
+    // The classifier's training (its evaluation is the solver's, where the front goes).
+    double trainingSeconds = 0.0;
 };
 
 // Progress of Session::setSpeed: the stage ("smoothing", "edge factor", "training") and its

@@ -371,10 +371,6 @@ SolverStats LevelSetSolver::stats() const {
     s.levelSetBytes = pool_->levelSetBytes();
     s.bookkeepingBytes = pool_->bookkeepingBytes();
     s.barriers = static_cast<int>(barriers_.size());
-    if (speedOnDemand()) {
-        gpu::GlStateGuard guard;
-        s.speedBricksEvaluated = onDemand_->evaluatedBricks();
-    }
     s.visitedVoxelsPerIteration =
         lastIteration_ > 0 ? static_cast<double>(s.visitedVoxels) / lastIteration_ : 0.0;
     return s;

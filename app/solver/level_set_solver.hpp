@@ -59,6 +59,10 @@ class LevelSetSolver {
     // frames; returns how many bricks remain (0: the factor texture is complete, as it is at
     // once for any other speed).
     std::uint32_t evaluateSpeedAhead(std::uint32_t maxBricks);
+    // With a speed evaluated on demand: the bricks whose speed has been computed since it was
+    // set (where the front went, and any filled ahead); 0 for a speed computed everywhere. One
+    // word read back from the GPU: for reports, not per frame (stats() reads nothing back).
+    [[nodiscard]] std::uint32_t speedBricksEvaluated() const;
     // Sphere edits (voxel indices, radius in voxels), between any two iterations.
     void addSphere(const Sphere& sphere);
     void removeSphere(const Sphere& sphere);

@@ -46,12 +46,23 @@ std::uint32_t LevelSetSolver::evaluateSpeedAhead(std::uint32_t maxBricks) {
     if (!speedOnDemand()) {
         return 0;
     }
+    if (maxBricks == 0 || onDemand_->aheadLeft() == 0) {
+        return onDemand_->aheadLeft(); // no GL work: a frame loop may ask every frame
+    }
     gpu::GlStateGuard guard;
     pool_->bind();
     bindSpeed();
     const std::uint32_t left = onDemand_->evaluateAhead(maxBricks);
     gpu::checkGl("evaluating the speed ahead of the front");
     return left;
+}
+
+std::uint32_t LevelSetSolver::speedBricksEvaluated() const {
+    if (!speedOnDemand()) {
+        return 0;
+    }
+    gpu::GlStateGuard guard;
+    return onDemand_->evaluatedBricks();
 }
 
 } // namespace steerseg::solver

@@ -89,9 +89,6 @@ struct SolverStats {
     std::uint64_t visitedVoxels = 0;
     double visitedVoxelsPerIteration = 0.0;
     std::uint32_t frontVoxels = 0;
-    // With a speed evaluated on demand: the bricks whose speed has been computed since it was
-    // set (where the front went, and any filled ahead); 0 for a speed computed everywhere.
-    std::uint32_t speedBricksEvaluated = 0;
 };
 
 } // namespace steerseg::solver

@@ -49,7 +49,7 @@ void SpeedOnDemand::evaluateActive(GLintptr argsOffset) const {
 
 std::uint32_t SpeedOnDemand::evaluateAhead(std::uint32_t maxBricks) {
     // One group per brick along x, within the 65535 groups GLES 3.1 guarantees.
-    const std::uint32_t count = std::min({maxBricks, bricks_ - aheadCursor_, 65535U});
+    const std::uint32_t count = std::min({maxBricks, aheadLeft(), 65535U});
     if (count > 0) {
         const GLuint p = program_.id();
         glUseProgram(p);
@@ -59,7 +59,7 @@ std::uint32_t SpeedOnDemand::evaluateAhead(std::uint32_t maxBricks) {
         finishPass();
         aheadCursor_ += count;
     }
-    return bricks_ - aheadCursor_;
+    return aheadLeft();
 }
 
 // The data speed's readers fetch the texture, and the next pass reads the ready words.

@@ -28,6 +28,7 @@ class SpeedOnDemand {
     // Up to maxBricks further bricks in index order, whatever the front does (a speed view of
     // the whole scan, filled a little per frame); returns the bricks not yet visited this way.
     std::uint32_t evaluateAhead(std::uint32_t maxBricks);
+    [[nodiscard]] std::uint32_t aheadLeft() const { return bricks_ - aheadCursor_; }
     // Bricks evaluated since the last reset, either way (one word read back).
     [[nodiscard]] std::uint32_t evaluatedBricks() const;
 

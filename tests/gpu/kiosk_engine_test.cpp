@@ -85,7 +85,7 @@ TEST_F(KioskEngine, FillsTheClassifySpeedAheadInPieces) {
     classify.inside = {{{6.0F, 16.0F, 12.0F}, 4.0F}};
     classify.outside = {{{26.0F, 16.0F, 12.0F}, 4.0F}};
     engine.setSpeed(classify);
-    EXPECT_EQ(engine.stats().speedBricksEvaluated, 0U);
+    EXPECT_EQ(engine.session()->speedBricksEvaluated(), 0U);
     const std::uint64_t before = engine.speedVersion();
     int pieces = 0;
     while (engine.fillSpeedAhead(0.002) && pieces < 1000) {
@@ -95,7 +95,7 @@ TEST_F(KioskEngine, FillsTheClassifySpeedAheadInPieces) {
     EXPECT_LT(pieces, 1000);
     EXPECT_EQ(engine.speedVersion(), before + static_cast<std::uint64_t>(pieces));
     const solver::SolverStats stats = engine.stats();
-    EXPECT_EQ(stats.speedBricksEvaluated, stats.totalBricks);
+    EXPECT_EQ(engine.session()->speedBricksEvaluated(), stats.totalBricks);
     EXPECT_FALSE(engine.fillSpeedAhead(0.01));
 }
 
