@@ -2,8 +2,10 @@
 
 #include "solver/solver_types.hpp"
 
+#include <array>
 #include <cstdint>
 #include <optional>
+#include <utility>
 
 namespace steerseg::solver {
 
@@ -23,9 +25,13 @@ struct GrowthSample {
 // rule is tested on series. Thresholds, relative to the peak rate so that they hold for any
 // scan size and speed scale:
 // - slowed: the rate fell to kSlowedFraction of the peak or below;
-// - jump: after that, a rate of at least the lowest since plus kJumpFraction of the peak and at
-//   least kJumpFactor times that lowest, in kJumpChecks checks in a row (one noisy check is
-//   not a leak).
+// - floor: the lowest rate since, each taken over the last kFloorChecks calm checks (a slow
+//   front gains a few voxels per check, and one quiet check among them is noise, not its pace:
+//   the liver's threshold front, creeping at 20 +- 6 voxels a check, read one check of 8 as its
+//   floor and tripped on its ordinary checks; tests/data/growth);
+// - jump: after that, a rate of at least the floor plus kJumpFraction of the peak and at least
+//   kJumpFactor times the floor, in kJumpChecks checks in a row (one noisy check is not a
+//   leak).
 class LeakWatch {
   public:
     static constexpr double kSlowedFraction = 0.2;
@@ -33,6 +39,7 @@ class LeakWatch {
     static constexpr double kJumpFactor = 3.0;
     static constexpr int kJumpChecks = 2;
     static constexpr int kWarmupChecks = 1; // a new seed's first check sets no peak
+    static constexpr int kFloorChecks = 4;
 
     // The leak's site when this sample completes a jump, else nothing.
     std::optional<LeakSite> observe(const GrowthSample& sample);
@@ -41,6 +48,9 @@ class LeakWatch {
     [[nodiscard]] double lastRate() const { return lastRate_; }
 
   private:
+    // Adds a calm check and returns the rate over the last kFloorChecks of them.
+    double calmRate(double elapsed, double net);
+
     int samples_ = 0;
     bool said_ = false;
     bool haveTime_ = false;
@@ -49,6 +59,9 @@ class LeakWatch {
     double peak_ = 0.0;
     bool slowed_ = false;
     double floor_ = 0.0;
+    // The last calm checks since the slowdown (evolved time, net voxels), oldest overwritten.
+    std::array<std::pair<double, double>, kFloorChecks> calm_{};
+    int calmCount_ = 0;
     int jumpRun_ = 0;
     bool haveBox_ = false;
     glm::ivec3 boxLo_{0};

@@ -1,7 +1,10 @@
 // The leak watch's rule on growth series (no GPU): what must and must not read as a leak.
 #include "solver/leak_watch.hpp"
 
+#include <fstream>
 #include <gtest/gtest.h>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace steerseg::test {
@@ -66,6 +69,62 @@ TEST(LeakWatch, ALeakIsSaidOnceUntilTheOperatorActs) {
     EXPECT_FALSE(watch.observe(more));
     watch.reset();
     EXPECT_TRUE(feed(watch, leak));
+}
+
+// A recorded run's checks (tests/data/growth): iteration, evolved time, net voxels.
+std::vector<GrowthSample> recorded(const std::string& name) {
+    std::ifstream in(std::string(STEERSEG_GROWTH_DATA_DIR) + "/" + name);
+    std::vector<GrowthSample> out;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#') {
+            continue;
+        }
+        std::istringstream fields(line);
+        GrowthSample s;
+        long net = 0;
+        fields >> s.iteration >> s.time >> net;
+        s.net = net;
+        s.anyGained = net > 0;
+        s.gainHi = {1, 1, 1};
+        out.push_back(s);
+    }
+    return out;
+}
+
+TEST(LeakWatch, AFrontCreepingAFewVoxelsACheckIsNoLeak) {
+    const std::vector<GrowthSample> run = recorded("liver_threshold_creep.txt");
+    ASSERT_EQ(run.size(), 403U);
+    LeakWatch watch;
+    for (const GrowthSample& s : run) {
+        // Read as a leak at its last check (iteration 6460) while one quiet check of 8 voxels
+        // stood as the floor; the floor over four calm checks holds at the creep's own pace.
+        EXPECT_FALSE(watch.observe(s)) << "at iteration " << s.iteration;
+    }
+}
+
+TEST(LeakWatch, ABreakThroughAfterTheCreepIsALeak) {
+    std::vector<GrowthSample> run = recorded("liver_threshold_creep.txt");
+    ASSERT_FALSE(run.empty());
+    LeakWatch watch;
+    for (const GrowthSample& s : run) {
+        watch.observe(s);
+    }
+    // The creep's checks span about 0.04 units of time; the front then breaks through.
+    GrowthSample next = run.back();
+    int jumpChecks = 0;
+    for (const long net : {25L, 90L, 160L}) {
+        next.iteration += 16;
+        next.time += 0.04F;
+        next.net = net;
+        ++jumpChecks;
+        if (const auto site = watch.observe(next)) {
+            EXPECT_EQ(jumpChecks, 3); // 25 is the creep's pace; 90 and 160 are the jump
+            EXPECT_EQ(site->iteration, next.iteration);
+            return;
+        }
+    }
+    FAIL() << "a growth of 4x and 6x the creep's pace was not read as a leak";
 }
 
 TEST(LeakWatch, NoTimeElapsedGivesNoRate) {
