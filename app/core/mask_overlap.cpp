@@ -8,13 +8,17 @@ namespace steerseg {
 
 namespace {
 
+bool inReference(const Volume& reference, std::size_t n, int label) {
+    const double ref = reference.rescale().apply(reference.storedAt(n));
+    return label < 0 ? ref != 0.0 : std::lround(ref) == label;
+}
+
 template <typename InsideAt>
 MaskOverlap countOverlap(std::size_t count, InsideAt insideAt, const Volume& reference, int label) {
     MaskOverlap o;
     for (std::size_t n = 0; n < count; ++n) {
         const bool maskIn = insideAt(n);
-        const double ref = reference.rescale().apply(reference.storedAt(n));
-        const bool refIn = label < 0 ? ref != 0.0 : std::lround(ref) == label;
+        const bool refIn = inReference(reference, n, label);
         o.mask += maskIn ? 1 : 0;
         o.reference += refIn ? 1 : 0;
         o.both += maskIn && refIn ? 1 : 0;
@@ -43,6 +47,14 @@ MaskOverlap maskOverlap(const Volume& mask, const Volume& reference, int label) 
         mask.geometry().voxelCount(),
         [&](std::size_t n) { return mask.rescale().apply(mask.storedAt(n)) != 0.0; }, reference,
         label);
+}
+
+std::vector<std::uint8_t> referenceVoxels(const Volume& reference, int label) {
+    std::vector<std::uint8_t> out(reference.geometry().voxelCount());
+    for (std::size_t n = 0; n < out.size(); ++n) {
+        out[n] = inReference(reference, n, label) ? 1 : 0;
+    }
+    return out;
 }
 
 } // namespace steerseg

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace steerseg {
 
@@ -27,5 +28,7 @@ struct MaskOverlap {
 // Throws std::invalid_argument with one line when the grids differ in size.
 MaskOverlap maskOverlap(std::span<const std::uint8_t> mask, const Volume& reference, int label);
 MaskOverlap maskOverlap(const Volume& mask, const Volume& reference, int label);
+// The reference's voxels by the same rule: 1 where it counts as inside, else 0.
+std::vector<std::uint8_t> referenceVoxels(const Volume& reference, int label);
 
 } // namespace steerseg

@@ -9,6 +9,11 @@ Writes accuracy.json (every report) and accuracy.md (the table) to --out.
 
   run_accuracy.py --steerseg BIN [--data DIR] [--out DIR] [--cases FILE]
                   [--only NAME[,NAME]] [--speeds threshold,edge,classify] [--max-iterations N]
+                  [--bound BIN] [--bound-only]
+
+--bound BIN (bench/accuracy_bound) adds, per case, what each speed's ingredient reaches when
+fitted to the case's own label (bounds.md, and "bounds" in accuracy.json): the figure a goal is
+read against. --bound-only runs that alone.
 """
 import argparse
 import datetime
@@ -88,6 +93,41 @@ def run_one(binary, case, speed, data, out, max_iterations):
     }
 
 
+def bound_one(binary, case, data, out, max_iterations):
+    report = out / f"{case['name']}-bound.json"
+    cmd = [str(binary), "--scan", str(data / case["scan"]), "--label", str(data / case["label"]),
+           "--max-iterations", str(max_iterations), "--json", str(report)]
+    if "label_value" in case:
+        cmd += ["--label-value", str(case["label_value"])]
+    for s in case["seeds"]:
+        cmd += ["--seed", s]
+    print(f"accuracy: {case['name']} bound: {' '.join(cmd)}", file=sys.stderr, flush=True)
+    done = subprocess.run(cmd, capture_output=True, text=True)
+    if done.returncode != 0:
+        return {"case": case["name"], "error": done.stderr.strip()[-400:]}
+    return {"case": case["name"], **json.loads(report.read_text())}
+
+
+def bound_table(cases, bounds):
+    by = {b["case"]: b for b in bounds}
+    lines = ["| case | goal | interval | classifier (voxels) | classifier + level set |",
+             "|---|---|---|---|---|"]
+    for case in cases:
+        b = by.get(case["name"])
+        goal = GOALS[case["goal"]]
+        if b is None or "error" in b:
+            cells = ["error" if b else "-"] * 3
+        else:
+            def cell(d):
+                return f"**{d:.3f}**" if d >= goal else f"{d:.3f}"
+            iv, cl, ls = b["interval"], b["classifier"], b["level_set"]
+            cells = [f"{cell(iv['dice'])} [{iv['lo']:.0f}, {iv['hi']:.0f}]",
+                     f"{cell(cl['dice_connected'])} (out-of-bag {cl['out_of_bag']:.3f})",
+                     f"{cell(ls['dice'])} ({ls['stop']})"]
+        lines.append(f"| {case['what']} | {goal:.2f} | " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
 def table(cases, rows, speeds):
     by = {(r["case"], r["speed"]): r for r in rows}
     lines = ["| case | goal | " + " | ".join(speeds) + " |",
@@ -119,7 +159,11 @@ def main():
     ap.add_argument("--only", default="")
     ap.add_argument("--speeds", default="threshold,edge,classify")
     ap.add_argument("--max-iterations", type=int, default=5000)
+    ap.add_argument("--bound", type=Path, help="bench/accuracy_bound: add the label-fitted bounds")
+    ap.add_argument("--bound-only", action="store_true", help="the bounds alone, no segmentation")
     a = ap.parse_args()
+    if a.bound_only and not a.bound:
+        sys.exit("accuracy: --bound-only needs --bound BIN")
 
     cases = tomllib.loads(a.cases.read_text())["case"]
     for case in cases:
@@ -144,6 +188,25 @@ def main():
         cases = [c for c in cases if c["name"] not in missing]
 
     a.out.mkdir(parents=True, exist_ok=True)
+    bounds = []
+    if a.bound:
+        for case in cases:
+            b = bound_one(a.bound, case, a.data, a.out, a.max_iterations)
+            bounds.append(b)
+            shown = b.get("error") or (f"interval {b['interval']['dice']:.3f}, classifier "
+                                       f"{b['classifier']['dice_connected']:.3f}, with the level "
+                                       f"set {b['level_set']['dice']:.3f}")
+            print(f"accuracy: {case['name']} bound: {shown}", file=sys.stderr, flush=True)
+        md = bound_table(cases, bounds)
+        (a.out / "bounds.md").write_text(
+            f"Dice against the label of each speed's ingredient fitted to that label "
+            f"(bench/accuracy_bound; bold: at or above the goal), "
+            f"{datetime.date.today().isoformat()}.\n\n{md}\n")
+        print(md)
+    if a.bound_only:
+        (a.out / "accuracy.json").write_text(json.dumps(
+            {"date": datetime.date.today().isoformat(), "bounds": bounds}, indent=1))
+        return 1 if any("error" in b for b in bounds) else 0
     rows = []
     for case in cases:
         for speed in speeds:
@@ -154,7 +217,7 @@ def main():
             print(f"accuracy: {case['name']} {speed}: {shown}", file=sys.stderr, flush=True)
             # Written after each run, so an interrupted benchmark keeps what it measured.
             result = {"date": datetime.date.today().isoformat(), "rules": RULES,
-                      "max_iterations": a.max_iterations, "rows": rows}
+                      "max_iterations": a.max_iterations, "rows": rows, "bounds": bounds}
             (a.out / "accuracy.json").write_text(json.dumps(result, indent=1))
     md = table(cases, rows, speeds)
     renderer = next((r["renderer"] for r in rows if "renderer" in r), "?")
@@ -162,9 +225,10 @@ def main():
         f"Dice against the label (bold: the goal met), the solver's stop and the command's wall "
         f"time; {renderer}, {datetime.date.today().isoformat()}.\n\n{md}\n")
     print(md)
-    errors = [r for r in rows if "error" in r]
+    errors = [r for r in rows + bounds if "error" in r]
     for r in errors:
-        print(f"accuracy: {r['case']} {r['speed']} failed: {r['error']}", file=sys.stderr)
+        print(f"accuracy: {r['case']} {r.get('speed', 'bound')} failed: {r['error']}",
+              file=sys.stderr)
     return 1 if errors else 0
 
 

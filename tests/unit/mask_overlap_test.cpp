@@ -38,5 +38,17 @@ TEST(MaskOverlap, CountsTheLabelsVoxelsAndAgreement) {
     EXPECT_DOUBLE_EQ(maskOverlap(ref, ref, -1).dice(), 1.0);
 }
 
+TEST(MaskOverlap, TheReferencesVoxelsAreTheOnesItCounts) {
+    Volume ref = labels({4, 2, 1});
+    const std::uint8_t values[] = {0, 0, 1, 1, 2, 2, 2, 0};
+    std::copy(std::begin(values), std::end(values), ref.voxels<std::uint8_t>().begin());
+    ref.setRescale({2.0, 0.0}); // real values 0 0 2 2 4 4 4 0
+    EXPECT_EQ(referenceVoxels(ref, 4), (std::vector<std::uint8_t>{0, 0, 0, 0, 1, 1, 1, 0}));
+    EXPECT_EQ(referenceVoxels(ref, -1), (std::vector<std::uint8_t>{0, 0, 1, 1, 1, 1, 1, 0}));
+    EXPECT_EQ(referenceVoxels(ref, 1), std::vector<std::uint8_t>(8, 0));
+    // A mask of exactly those voxels agrees with the reference completely.
+    EXPECT_DOUBLE_EQ(maskOverlap(referenceVoxels(ref, 2), ref, 2).dice(), 1.0);
+}
+
 } // namespace
 } // namespace steerseg::test
