@@ -15,6 +15,7 @@
 //   curvature term's smoothing gains. Curvature can also lift an interval's figure (it cuts
 //   thin bridges), so the interval is no strict ceiling for the threshold speed; the level set
 //   on the fitted classifier is the figure a goal for the classification speed is read against.
+#include "bench/accuracy/voxel_regions.hpp"
 #include "bench/bench_scan.hpp"
 #include "core/mask_overlap.hpp"
 #include "gpu/gl_state_guard.hpp"
@@ -41,6 +42,9 @@
 #include <vector>
 
 using namespace steerseg;
+using steerseg::bench::connectedToSeeds;
+using steerseg::bench::dilated;
+using steerseg::bench::Grid;
 
 namespace {
 
@@ -100,88 +104,6 @@ Options parse(int argc, char** argv) {
         throw std::runtime_error("--ring must be in [1, 64] voxels");
     }
     return o;
-}
-
-// The grid's voxels as flat indices and back, and their 6 face neighbours.
-struct Grid {
-    glm::ivec3 d;
-    [[nodiscard]] std::size_t count() const {
-        return static_cast<std::size_t>(d.x) * static_cast<std::size_t>(d.y) *
-               static_cast<std::size_t>(d.z);
-    }
-    [[nodiscard]] glm::ivec3 at(std::size_t v) const {
-        const auto sx = static_cast<std::size_t>(d.x);
-        const auto sxy = sx * static_cast<std::size_t>(d.y);
-        return {static_cast<int>(v % sx),
-                static_cast<int>((v / sx) % static_cast<std::size_t>(d.y)),
-                static_cast<int>(v / sxy)};
-    }
-    template <typename F> void forEachNeighbour(std::size_t v, F&& f) const {
-        const glm::ivec3 p = at(v);
-        const auto sx = static_cast<std::size_t>(d.x);
-        const auto sxy = sx * static_cast<std::size_t>(d.y);
-        if (p.x > 0)
-            f(v - 1);
-        if (p.x + 1 < d.x)
-            f(v + 1);
-        if (p.y > 0)
-            f(v - sx);
-        if (p.y + 1 < d.y)
-            f(v + sx);
-        if (p.z > 0)
-            f(v - sxy);
-        if (p.z + 1 < d.z)
-            f(v + sxy);
-    }
-};
-
-// The voxels of `allowed` 6-connected to a seed voxel that is itself allowed.
-std::vector<std::uint8_t> connectedToSeeds(const Grid& g, const std::vector<std::uint8_t>& allowed,
-                                           const std::vector<glm::ivec3>& seedVoxels) {
-    std::vector<std::uint8_t> out(g.count(), 0);
-    std::vector<std::size_t> stack;
-    for (const glm::ivec3& s : seedVoxels) {
-        const std::size_t v = linearIndex(g.d, s.x, s.y, s.z);
-        if (allowed[v] != 0 && out[v] == 0) {
-            out[v] = 1;
-            stack.push_back(v);
-        }
-    }
-    while (!stack.empty()) {
-        const std::size_t v = stack.back();
-        stack.pop_back();
-        g.forEachNeighbour(v, [&](std::size_t n) {
-            if (allowed[n] != 0 && out[n] == 0) {
-                out[n] = 1;
-                stack.push_back(n);
-            }
-        });
-    }
-    return out;
-}
-
-// The label's voxels grown by `ring` 6-neighbour steps (a city-block ball).
-std::vector<std::uint8_t> dilated(const Grid& g, const std::vector<std::uint8_t>& mask, int ring) {
-    std::vector<std::uint8_t> out = mask;
-    std::vector<std::size_t> front;
-    for (std::size_t v = 0; v < mask.size(); ++v) {
-        if (mask[v] != 0) {
-            front.push_back(v);
-        }
-    }
-    for (int step = 0; step < ring; ++step) {
-        std::vector<std::size_t> next;
-        for (const std::size_t v : front) {
-            g.forEachNeighbour(v, [&](std::size_t n) {
-                if (out[n] == 0) {
-                    out[n] = 1;
-                    next.push_back(n);
-                }
-            });
-        }
-        front = std::move(next);
-    }
-    return out;
 }
 
 double secondsSince(std::chrono::steady_clock::time_point t) {
