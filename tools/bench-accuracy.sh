@@ -41,7 +41,7 @@ build_missing() {
 
 if [[ -z $bin ]]; then
   bin=$root/build/release/steerseg
-  build_missing steerseg "$bin"
+  [[ $bounds == only ]] || build_missing steerseg "$bin"
 fi
 if [[ -n $bounds ]]; then
   bound=$root/build/release/bench/accuracy_bound
