@@ -2,7 +2,7 @@
 // (docs/speed.md "What the labels allow"): what the accuracy benchmark's figures are read
 // against. Not a segmentation and not a test: it looks at the answer.
 //   accuracy_bound --scan PATH --label PATH [--label-value N] --seed i,j,k,r [--seed ...]
-//                  [--ring R] [--max-iterations N] [--json FILE]
+//                  [--ring R] [--alpha a] [--max-iterations N] [--json FILE]
 // - interval: the intensity interval [lo, hi] (lo and hi from the label's own quantiles) whose
 //   6-connected region around the seeds agrees best with the label: what a threshold speed
 //   holding exactly that interval would fill, before curvature. "anywhere": the same interval
@@ -55,6 +55,7 @@ struct Options {
     std::vector<speed::Example> seeds;
     int ring = 10;
     int maxIterations = 5000;
+    float alpha = 0.5F; // the accuracy benchmark's classify rule
     std::string json;
 };
 
@@ -87,6 +88,8 @@ Options parse(int argc, char** argv) {
             o.seeds.push_back(parseSphere(v));
         } else if (a == "--ring") {
             o.ring = std::stoi(v);
+        } else if (a == "--alpha") {
+            o.alpha = std::stof(v);
         } else if (a == "--max-iterations") {
             o.maxIterations = std::stoi(v);
         } else if (a == "--json") {
@@ -98,7 +101,10 @@ Options parse(int argc, char** argv) {
     if (o.scan.empty() || o.label.empty() || o.seeds.empty()) {
         throw std::runtime_error("usage: accuracy_bound --scan PATH --label PATH [--label-value N] "
                                  "--seed i,j,k,r [--seed ...] [--ring R] [--max-iterations N] "
-                                 "[--json FILE]");
+                                 "[--alpha a] [--json FILE]");
+    }
+    if (!(o.alpha >= 0.0F && o.alpha <= 1.0F)) {
+        throw std::runtime_error("--alpha must be in [0, 1]");
     }
     if (o.ring < 1 || o.ring > 64) {
         throw std::runtime_error("--ring must be in [1, 64] voxels");
@@ -247,13 +253,15 @@ struct LevelSetBound {
 };
 
 // The product's level set with the fitted classifier as its speed, as the accuracy benchmark
-// runs the classify speed (alpha 0.5, to convergence or a leak), started from the classifier's
+// runs the classify speed (alpha 0.5 unless --alpha, to convergence or a leak), started from the
+// classifier's
 // positive voxels connected to the seeds: what the curvature term's smoothing adds to the
 // voxelwise figure. (Started from the seeds alone, a 3-voxel seed shrinks away wherever the
 // fitted speed is below the curvature of its sphere, which says nothing about the labels.)
 LevelSetBound levelSetBound(const gpu::ScanTexture& scan, const Volume& label, int labelValue,
                             const std::vector<float>& speedField,
-                            const std::vector<std::uint8_t>& start, int maxIterations) {
+                            const std::vector<std::uint8_t>& start, float alpha,
+                            int maxIterations) {
     const auto t0 = std::chrono::steady_clock::now();
     const glm::ivec3 d = scan.dims();
     const gpu::Texture field = speed::createVolumeTexture(d, "fitted classifier speed");
@@ -267,7 +275,7 @@ LevelSetBound levelSetBound(const gpu::ScanTexture& scan, const Volume& label, i
     solver::SolverOptions options;
     options.stopOnLeak = true;
     solver::LevelSetSolver solver(scan, options);
-    solver.setParams({0.0F, 0.0F, 0.5F});
+    solver.setParams({0.0F, 0.0F, alpha});
     solver.setSpeedInputs({speed::SpeedKind::Classify, 0, field.id(), {}});
     solver.initFromMask(start);
     const solver::StepResult r = solver.runUntilConverged(maxIterations);
@@ -309,8 +317,8 @@ int main(int argc, char** argv) {
         const ClassifierBound cb =
             classifierBound(g, texture.exact(), label, o.labelValue, inLabel, seedVoxels, o.ring);
 
-        const LevelSetBound ls =
-            levelSetBound(texture, label, o.labelValue, cb.speed, cb.connected, o.maxIterations);
+        const LevelSetBound ls = levelSetBound(texture, label, o.labelValue, cb.speed, cb.connected,
+                                               o.alpha, o.maxIterations);
         std::printf("label voxels %zu\n", labelled);
         std::printf("interval [%.1f, %.1f]: Dice %.3f connected to the seeds (%zu voxels), %.3f "
                     "anywhere\n",
@@ -318,9 +326,10 @@ int main(int argc, char** argv) {
         std::printf("classifier fitted on the label (ring %d, %zu samples, out-of-bag %.3f): Dice "
                     "%.3f, %.3f connected to the seeds (%.1f s)\n",
                     o.ring, cb.samples, cb.outOfBag, cb.dice, cb.diceConnected, cb.seconds);
-        std::printf("level set on the fitted classifier (alpha 0.5): Dice %.3f (%zu voxels, %s "
+        std::printf("level set on the fitted classifier (alpha %.2f): Dice %.3f (%zu voxels, %s "
                     "after %d iterations, %.1f s)\n",
-                    ls.dice, ls.voxels, ls.stop.c_str(), ls.iterations, ls.seconds);
+                    static_cast<double>(o.alpha), ls.dice, ls.voxels, ls.stop.c_str(),
+                    ls.iterations, ls.seconds);
         if (!o.json.empty()) {
             std::ofstream j(o.json);
             j << "{\"label_voxels\": " << labelled << ", \"interval\": {\"lo\": " << iv.lo
@@ -329,8 +338,9 @@ int main(int argc, char** argv) {
               << "}, \"classifier\": {\"ring\": " << o.ring << ", \"samples\": " << cb.samples
               << ", \"out_of_bag\": " << cb.outOfBag << ", \"dice\": " << cb.dice
               << ", \"dice_connected\": " << cb.diceConnected
-              << "}, \"level_set\": {\"dice\": " << ls.dice << ", \"voxels\": " << ls.voxels
-              << ", \"iterations\": " << ls.iterations << ", \"stop\": \"" << ls.stop << "\"}}\n";
+              << "}, \"level_set\": {\"alpha\": " << o.alpha << ", \"dice\": " << ls.dice
+              << ", \"voxels\": " << ls.voxels << ", \"iterations\": " << ls.iterations
+              << ", \"stop\": \"" << ls.stop << "\"}}\n";
             if (!j) {
                 throw std::runtime_error("cannot write " + o.json);
             }
