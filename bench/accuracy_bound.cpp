@@ -272,16 +272,16 @@ LevelSetBound levelSetBound(const gpu::ScanTexture& scan, const Volume& label, i
         glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, d.x, d.y, d.z, GL_RED, GL_FLOAT,
                         speedField.data());
     }
-    solver::SolverOptions options;
+    model::SolverOptions options;
     options.stopOnLeak = true;
     solver::LevelSetSolver solver(scan, options);
     solver.setParams({0.0F, 0.0F, alpha});
-    solver.setSpeedInputs({speed::SpeedKind::Classify, 0, field.id(), {}});
+    solver.setSpeedInputs({model::SpeedKind::Classify, 0, field.id(), {}});
     solver.initFromMask(start);
-    const solver::StepResult r = solver.runUntilConverged(maxIterations);
+    const model::StepResult r = solver.runUntilConverged(maxIterations);
     const std::vector<std::uint8_t> mask = solver.readMask();
     const MaskOverlap o = maskOverlap(mask, label, labelValue);
-    return {o.dice(), o.mask, solver.stats().iterations, solver::stopReasonName(r.stopReason),
+    return {o.dice(), o.mask, solver.stats().iterations, model::stopReasonName(r.stopReason),
             secondsSince(t0)};
 }
 

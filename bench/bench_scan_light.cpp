@@ -1,6 +1,6 @@
 #include "bench/bench_scan.hpp"
 #include "core/sample_phantom.hpp"
-#include "io/readers.hpp"
+#include "scan/readers.hpp"
 
 #include <fstream>
 #include <stdexcept>
@@ -15,7 +15,7 @@ Volume loadScan(const std::string& path) {
     }
     if (path.ends_with(".nii") || path.ends_with(".nii.gz")) {
         std::string format;
-        return io::readNifti(path, io::ReadLimits{}, format);
+        return scan::readNifti(path, scan::ReadLimits{}, format);
     }
     throw std::runtime_error(path + ": this benchmark was built with the light reader set "
                                     "(STEERSEG_BENCH_IO=OFF): builtin:sample and NIfTI only");

@@ -16,9 +16,9 @@
 #include "bench/proc_status.hpp"
 #include "gpu/gl.hpp"
 #include "gpu/scan_texture.hpp"
-#include "io/scan_reader.hpp"
 #include "platform/egl/offscreen_context.hpp"
 #include "render/renderer.hpp"
+#include "scan/scan_reader.hpp"
 #include "solver/level_set_solver.hpp"
 
 #include <algorithm>
@@ -61,7 +61,7 @@ LoadFigures loadInChild(const std::filesystem::path& dir) {
         const double before = bench::statusBytes("VmRSS");
         const auto start = Clock::now();
         try {
-            const io::LoadedScan scan = io::readScan(dir);
+            const scan::LoadedScan scan = scan::readScan(dir);
             f.seconds = secondsSince(start);
             f.peakBytes = bench::statusBytes("VmHWM") - before;
             const Volume& v = scan.volume;
@@ -229,7 +229,7 @@ int main(int argc, char** argv) {
             out["peak_over_voxel_bytes"] = peak / voxelBytes;
             out["sum"] = runs.front().sum;
         };
-        report("steerseg (io::readScan)", ours, j["load"]["steerseg"]);
+        report("steerseg (scan::readScan)", ours, j["load"]["steerseg"]);
         if (withItk) {
             report("ITK (GDCM series)", theirs, j["load"]["itk"]);
             const double ratio = j["load"]["itk"]["best_seconds"].get<double>() /
@@ -249,7 +249,7 @@ int main(int argc, char** argv) {
             return 0;
         }
 
-        io::LoadedScan scan = io::readScan(dir);
+        scan::LoadedScan scan = scan::readScan(dir);
         auto context = platform::createOffscreenContext();
         std::printf("GL_RENDERER: %s\n", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
         j["renderer"] = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
@@ -276,9 +276,9 @@ int main(int argc, char** argv) {
         solver.setParams({120.0F, 45.0F, 0.8F});
         solver.addSphere({glm::vec3(ct.lesionCentre), 3.0F});
         start = Clock::now();
-        const solver::StepResult r = solver.runUntilConverged(5000);
+        const model::StepResult r = solver.runUntilConverged(5000);
         const double solveSeconds = secondsSince(start);
-        const solver::SolverStats st = solver.stats();
+        const model::SolverStats st = solver.stats();
         std::size_t inside = 0;
         for (const std::uint8_t m : solver.readMask()) {
             inside += m;
@@ -341,9 +341,9 @@ int main(int argc, char** argv) {
             body.addSphere({glm::vec3(ct.dims) * 0.5F, radius});
             body.step(16); // the band settles and the pool finds its size
             start = Clock::now();
-            const solver::StepResult b = body.step(bodyIterations);
+            const model::StepResult b = body.step(bodyIterations);
             const double bodySeconds = secondsSince(start);
-            const solver::SolverStats bs = body.stats();
+            const model::SolverStats bs = body.stats();
             std::printf("solver, large front (sphere r = %.0f voxels in the body): %d iterations "
                         "in %.1f s (%.1f it/s), %u of %u bricks active (%.2f%%), pool %.1f MiB "
                         "(peak %.1f MiB) = %.2fx the active bricks' phi + page table\n",

@@ -184,7 +184,7 @@ int main(int argc, char** argv) {
                      (glm::dvec3(g.dims - 1) / glm::dvec3(127, 127, 95));
             solver.addSphere({glm::vec3(centre), 5.0F * static_cast<float>(scale)});
             solver.setParams({static_cast<float>(kPhantomLesion.intensity), 100.0F, 0.8F});
-            const solver::StepResult r = solver.runUntilConverged(2000);
+            const model::StepResult r = solver.runUntilConverged(2000);
             std::size_t inside = 0;
             for (const std::uint8_t m : solver.readMask()) {
                 inside += m;

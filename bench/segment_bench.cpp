@@ -34,20 +34,20 @@ using namespace steerseg;
 
 struct Options {
     std::string scan;
-    std::vector<solver::Sphere> seeds;
-    solver::LevelSetParams params;
+    std::vector<model::Sphere> seeds;
+    model::LevelSetParams params;
     float time = -1.0F;
     int maxIterations = 100000;
     int repeat = 3;
     std::string compare;
     int trace = 0;
-    solver::SolverOptions solver;
+    model::SolverOptions solver;
     std::string dumpPhi;
     bool againstAwake = false;
 };
 
-solver::Sphere parseSeed(const std::string& text) {
-    solver::Sphere s;
+model::Sphere parseSeed(const std::string& text) {
+    model::Sphere s;
     if (std::sscanf(text.c_str(), "%f,%f,%f,%f", &s.centre.x, &s.centre.y, &s.centre.z,
                     &s.radius) != 4) {
         throw std::invalid_argument("--seed expects i,j,k,r (got '" + text + "')");
@@ -118,19 +118,19 @@ int main(int argc, char** argv) {
         const gpu::ScanTexture texture(volume);
         if (o.trace > 0) {
             solver::LevelSetSolver solver(texture, o.solver);
-            for (const solver::Sphere& s : o.seeds) {
+            for (const model::Sphere& s : o.seeds) {
                 solver.addSphere(s);
             }
             solver.setParams(o.params);
             for (int n = 0; n < o.trace; ++n) {
-                const solver::StepResult r = solver.step(1);
+                const model::StepResult r = solver.step(1);
                 double sum = 0.0;
                 std::size_t inside = 0;
                 for (const float v : solver.readPhi()) {
                     sum += static_cast<double>(v);
                     inside += v < 0.0F ? 1 : 0;
                 }
-                const solver::SolverStats st = solver.stats();
+                const model::SolverStats st = solver.stats();
                 std::printf("trace %d: t %.9g phi-sum %.9g inside %zu active %u capacity %u "
                             "growths %d stalls %d\n",
                             n + 1, static_cast<double>(r.evolvedTime), sum, inside, st.activeBricks,
@@ -149,16 +149,16 @@ int main(int argc, char** argv) {
         const int runs = o.repeat + (o.againstAwake ? 1 : 0);
         for (int run = 0; run < runs; ++run) {
             const bool awakeRun = run == o.repeat;
-            solver::SolverOptions options = o.solver;
+            model::SolverOptions options = o.solver;
             options.sleep = options.sleep && !awakeRun;
             solver::LevelSetSolver solver(texture, options);
-            for (const solver::Sphere& s : o.seeds) {
+            for (const model::Sphere& s : o.seeds) {
                 solver.addSphere(s);
             }
             solver.setParams(o.params);
             glFinish();
             const auto start = std::chrono::steady_clock::now();
-            const solver::StepResult r = solver.evolveUntil(o.time, o.maxIterations);
+            const model::StepResult r = solver.evolveUntil(o.time, o.maxIterations);
             glFinish();
             const double elapsed =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -177,7 +177,7 @@ int main(int argc, char** argv) {
                     overlap += (in && mask[n] != 0) ? 1 : 0;
                 }
             }
-            const solver::SolverStats st = solver.stats();
+            const model::SolverStats st = solver.stats();
             std::printf("run %d%s: %d iterations, t = %.4f, %.4f s (%.1f it/s), %zu voxels "
                         "inside, %.0f voxels visited per iteration, %u front voxels, %u of %u "
                         "bricks awake at the end",

@@ -21,14 +21,14 @@ namespace {
 
 struct Measurement {
     double iterationsPerSecond = 0.0;
-    solver::SolverStats stats;
+    model::SolverStats stats;
 };
 
 // `iterations` steps timed with the GPU's work finished on both sides; the rate and the stats.
 Measurement timedSteps(solver::LevelSetSolver& solver, int iterations) {
     glFinish();
     const auto start = std::chrono::steady_clock::now();
-    const solver::StepResult r = solver.step(iterations);
+    const model::StepResult r = solver.step(iterations);
     glFinish();
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -37,7 +37,7 @@ Measurement timedSteps(solver::LevelSetSolver& solver, int iterations) {
 
 // A static-ish workload: a sphere of radius r under a zero data speed (T = intensity) and a
 // little curvature, so the active set stays the same while every pass does its full work.
-Measurement measure(int size, float radius, const solver::SolverOptions& options, int iterations) {
+Measurement measure(int size, float radius, const model::SolverOptions& options, int iterations) {
     const glm::ivec3 d(size);
     const std::vector<float> volume(static_cast<std::size_t>(size) * size * size, 100.0F);
     solver::LevelSetSolver solver(volume, d, options);
@@ -63,13 +63,13 @@ Measurement measureStopped(int size, bool sleep, int iterations) {
             }
         }
     }
-    solver::SolverOptions options;
+    model::SolverOptions options;
     options.sleep = sleep;
     solver::LevelSetSolver solver(volume, d, options);
     solver.addSphere({centre, 3.0F});
     solver.setParams({100.0F, 50.0F, 0.8F});
     solver.step(8 * size); // the fill: ~0.5 voxel per iteration
-    const solver::SolverStats before = solver.stats();
+    const model::SolverStats before = solver.stats();
     Measurement m = timedSteps(solver, iterations);
     // Over the timed iterations only.
     m.stats.visitedVoxelsPerIteration =
@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
     std::printf("| brick | active bricks | active voxels | iterations/s | voxel-updates/s (M) |\n");
     std::printf("|---|---|---|---|---|\n");
     for (const int b : {4, 8, 16}) {
-        solver::SolverOptions o;
+        model::SolverOptions o;
         o.brickSize = b;
         o.sleep = false;
         const Measurement m = measure(size, static_cast<float>(size) / 4.0F, o, iterations);
@@ -114,21 +114,21 @@ int main(int argc, char** argv) {
                     m.iterationsPerSecond, voxels * m.iterationsPerSecond / 1e6);
     }
 
-    std::printf("\n## Sparse vs dense (brick %d)\n\n", solver::defaultBrickSize());
+    std::printf("\n## Sparse vs dense (brick %d)\n\n", model::defaultBrickSize());
     std::printf("| sphere r | active bricks | active %% | sparse it/s | dense it/s | speed-up | "
                 "level-set MiB | active bricks' MiB + page table | ratio | dense phi MiB |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
-    solver::SolverOptions denseOptions;
+    model::SolverOptions denseOptions;
     denseOptions.dense = true;
     const Measurement dense =
         measure(size, static_cast<float>(size) / 8.0F, denseOptions, iterations);
-    solver::SolverOptions awake;
+    model::SolverOptions awake;
     awake.sleep = false;
     for (const float fraction : {0.06F, 0.12F, 0.25F, 0.4F}) {
         const float r = fraction * static_cast<float>(size);
         const Measurement m = measure(size, r, awake, iterations);
-        const std::size_t brickBytes = static_cast<std::size_t>(solver::defaultBrickSize()) *
-                                       solver::defaultBrickSize() * solver::defaultBrickSize() * 4;
+        const std::size_t brickBytes = static_cast<std::size_t>(model::defaultBrickSize()) *
+                                       model::defaultBrickSize() * model::defaultBrickSize() * 4;
         const std::size_t activeBytes =
             m.stats.activeBricks * brickBytes + static_cast<std::size_t>(m.stats.totalBricks) * 4;
         std::printf("| %.0f | %u | %.1f | %.1f | %.2f | %.1fx | %.2f | %.2f | %.2f | %.1f |\n",

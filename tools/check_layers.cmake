@@ -1,30 +1,40 @@
 # The layering rule of docs/architecture.md, checked on every build: a module includes only
 # itself and the modules below it. Fails listing each include that points the wrong way.
 #   cmake -DROOT=<source root> [-DSTAMP=<file>] -P check_layers.cmake
-# Modules (a folder's first path component in an include, relative to app/ or the root):
-#   core  <- io, gpu  <- speed  <- solver  <- render  <- session  <- ui  <- kiosk  <- cli
-#   core, solver's and speed's plain types  <- workflow  <- config, ui, kiosk
+# Modules (a folder's first path component in an include, relative to app/ or the root), each
+# allowed itself and the modules listed for it, no more (docs/architecture.md draws them):
+#   model  <-  core  <-  files  <-  scan  <-  exports
+#   core  <-  gpu  <-  speed  <-  solver  <-  render  <-  session  (session: scan, exports too)
+#   model, core  <-  workflow  <-  config  <-  input
+#   workflow  <-  script, autosave;  workflow, session  <-  engine
+#   everything  <-  ui  <-  kiosk  <-  cli
 # ui/ sits at the root beside app/ (the design's top level) and is the module "ui".
-# platform/ is beside and below them all: only the composition roots (cli, kiosk) and ui may
-# include it, and it includes nothing of app/.
+# platform/ is beside and below them all: it includes nothing of app/; the console's input and
+# scripts, the UI and the composition roots (kiosk, cli) may include it.
 cmake_minimum_required(VERSION 3.25)
 
-set(allowed_core "core")
-set(allowed_io "core;io")
-set(allowed_gpu "core;gpu")
-set(allowed_speed "core;gpu;speed")
-set(allowed_solver "core;gpu;speed;solver")
-set(allowed_render "core;gpu;speed;solver;render")
-set(allowed_session "core;io;gpu;speed;solver;render;session")
-# workflow may name solver's and speed's GL-free structs (level_set_params.hpp, solver_types.hpp,
-# speed_kind.hpp); its library links no solver code, so anything more fails its link.
-set(allowed_workflow "core;speed;solver;workflow")
-set(allowed_config "core;speed;workflow;config")
-set(allowed_ui "core;gpu;speed;render;session;workflow;ui;platform")
-set(allowed_kiosk "core;io;gpu;speed;solver;render;session;workflow;config;ui;kiosk;platform")
-set(allowed_cli "core;io;gpu;speed;solver;render;session;workflow;config;kiosk;cli;platform")
+set(allowed_model "model")
+set(allowed_core "model;core")
+set(allowed_files "model;core;files")
+set(allowed_scan "model;core;files;scan")
+set(allowed_exports "model;core;files;scan;exports")
+set(allowed_gpu "model;core;gpu")
+set(allowed_speed "model;core;gpu;speed")
+set(allowed_solver "model;core;gpu;speed;solver")
+set(allowed_render "model;core;gpu;speed;solver;render")
+set(allowed_session "model;core;files;scan;exports;gpu;speed;solver;render;session")
+set(allowed_workflow "model;core;workflow")
+set(allowed_config "model;core;workflow;config")
+set(allowed_input "model;core;workflow;config;input;platform")
+set(allowed_script "model;core;files;scan;workflow;script;platform")
+set(allowed_autosave "model;core;files;workflow;autosave")
+set(allowed_engine "model;core;files;scan;exports;gpu;speed;solver;render;session;workflow;engine")
+set(allowed_ui "model;core;gpu;speed;render;session;workflow;ui;platform")
+set(allowed_kiosk "model;core;files;scan;exports;gpu;speed;solver;render;session;workflow;config;input;script;autosave;engine;ui;kiosk;platform")
+set(allowed_cli "model;core;files;scan;exports;gpu;speed;solver;render;session;workflow;config;input;script;autosave;engine;ui;kiosk;cli;platform")
 set(allowed_platform "platform")
-set(modules core io gpu speed solver render session workflow config ui cli kiosk platform)
+set(modules model core files scan exports gpu speed solver render session workflow config input
+  script autosave engine ui kiosk cli platform)
 
 if(NOT ROOT)
   message(FATAL_ERROR "check_layers: give -DROOT=<source root>")

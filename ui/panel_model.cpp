@@ -1,6 +1,6 @@
 #include "ui/panel_model.hpp"
 
-#include "speed/speed_kind.hpp"
+#include "model/speed_kind.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -117,10 +117,10 @@ void addReadouts(const workflow::Status& st, PanelModel& m) {
 // The speed is steered like a parameter: the same states, live while evolving. The examples
 // matter only to classify, so its tools appear only when it is chosen.
 void addSpeed(const workflow::Status& st, PanelModel& m) {
-    for (speed::SpeedKind k : speed::kSpeedKinds) {
+    for (model::SpeedKind k : model::kSpeedKinds) {
         m.speeds.push_back({speedLabel(k) + "##speed", workflow::SetSpeed{k}, st.speed == k});
     }
-    if (st.speed != speed::SpeedKind::Classify) {
+    if (st.speed != model::SpeedKind::Classify) {
         return;
     }
     const std::size_t inside = st.insideExamples.size();
@@ -130,7 +130,7 @@ void addSpeed(const workflow::Status& st, PanelModel& m) {
                               workflow::SetOutsideMode{!st.outsideMode}, st.outsideMode});
     m.exampleTools.push_back(
         {"Clear examples", workflow::ClearExamples{}, false, inside + outside > 0});
-    if (st.speedInForce != speed::SpeedKind::Classify) {
+    if (st.speedInForce != model::SpeedKind::Classify) {
         std::string needs;
         if (inside == 0) {
             needs = "an inside example (a probe or a seed)";
@@ -139,7 +139,7 @@ void addSpeed(const workflow::Status& st, PanelModel& m) {
             needs += std::string(needs.empty() ? "" : " and ") + "an outside example";
         }
         m.speedNote = "Classify needs " + needs + "; " +
-                      std::string(speed::speedKindName(st.speedInForce)) + " runs until then.";
+                      std::string(model::speedKindName(st.speedInForce)) + " runs until then.";
     }
 }
 
@@ -185,13 +185,13 @@ std::string paramLabel(Param p) {
     return "?";
 }
 
-std::string speedLabel(speed::SpeedKind kind) {
+std::string speedLabel(model::SpeedKind kind) {
     switch (kind) {
-    case speed::SpeedKind::Threshold:
+    case model::SpeedKind::Threshold:
         return "Threshold";
-    case speed::SpeedKind::Edge:
+    case model::SpeedKind::Edge:
         return "Edge";
-    case speed::SpeedKind::Classify:
+    case model::SpeedKind::Classify:
         return "Classify";
     }
     return "?";

@@ -80,7 +80,7 @@ std::vector<workflow::Action> reachableActions(const PanelModel& model);
 std::string stateLabel(workflow::State state);
 std::string paramLabel(workflow::Param param);
 // "Threshold", "Edge", "Classify": the speed buttons' words.
-std::string speedLabel(speed::SpeedKind kind);
+std::string speedLabel(model::SpeedKind kind);
 std::string proceedLabel(workflow::State state);
 // A scan's name for its button: the file or folder name, "Sample" for builtin:sample.
 std::string scanLabel(const std::string& path);

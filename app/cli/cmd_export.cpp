@@ -3,9 +3,9 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "core/volume.hpp"
-#include "io/export_writer.hpp"
-#include "io/file_name.hpp"
-#include "io/scan_reader.hpp"
+#include "exports/export_writer.hpp"
+#include "model/file_name.hpp"
+#include "scan/scan_reader.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -16,11 +16,11 @@ namespace steerseg::cli {
 
 namespace {
 
-// The format from --format or the output's extension (io::exportFormatFor); a wrong choice is
+// The format from --format or the output's extension (model::exportFormatFor); a wrong choice is
 // a usage error.
-io::ExportFormat chooseFormat(const Args& args, const std::string& output) {
+model::ExportFormat chooseFormat(const Args& args, const std::string& output) {
     try {
-        return io::exportFormatFor(output, args.value("format"));
+        return model::exportFormatFor(output, args.value("format"));
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
@@ -28,8 +28,8 @@ io::ExportFormat chooseFormat(const Args& args, const std::string& output) {
 
 // --segment-name, --segment-color r,g,b (0..1) and --segment-label (1..255): what 3D Slicer
 // shows for a .seg.nrrd.
-io::SegmentInfo segmentFrom(const Args& args) {
-    io::SegmentInfo segment;
+exports::SegmentInfo segmentFrom(const Args& args) {
+    exports::SegmentInfo segment;
     if (const auto name = args.value("segment-name")) {
         if (name->empty() || name->find_first_of("|\r\n") != std::string::npos) {
             throw UsageError("--segment-name: give a name without '|' or line breaks");
@@ -61,19 +61,20 @@ io::SegmentInfo segmentFrom(const Args& args) {
 // The mask as 0/1 on the scan's grid. It must be on that grid: the same dimensions and, within
 // what a file header's float precision leaves, the same placement in the patient.
 std::vector<std::uint8_t> readMaskFor(const std::string& path, const Geometry& scan) {
-    const io::LoadedScan mask = io::readScan(path);
+    const scan::LoadedScan mask = scan::readScan(path);
     const Geometry& g = mask.volume.geometry();
     if (g.dims != scan.dims) {
-        throw io::ScanError(path, "the mask is " + dimsText(g.dims) + " voxels but the scan is " +
-                                      dimsText(scan.dims));
+        throw scan::ScanError(path, "the mask is " + dimsText(g.dims) + " voxels but the scan is " +
+                                        dimsText(scan.dims));
     }
     const double far = glm::length(scan.indexToWorld(glm::dvec3(scan.dims - 1)) -
                                    g.indexToWorld(glm::dvec3(g.dims - 1)));
     const double near = glm::length(scan.origin - g.origin);
     const double tolerance = 0.01 * std::min({scan.spacing.x, scan.spacing.y, scan.spacing.z});
     if (std::max(near, far) > tolerance) {
-        throw io::ScanError(path, "the mask is not on the scan's grid (its corner voxels lie " +
-                                      std::to_string(std::max(near, far)) + " mm from the scan's)");
+        throw scan::ScanError(path, "the mask is not on the scan's grid (its corner voxels lie " +
+                                        std::to_string(std::max(near, far)) +
+                                        " mm from the scan's)");
     }
     std::vector<std::uint8_t> inside(g.voxelCount());
     for (std::size_t n = 0; n < inside.size(); ++n) {
@@ -95,10 +96,10 @@ int runExport(std::span<const std::string> words) {
     const std::string input = args.required("input");
     const std::string maskPath = args.required("mask");
     const std::string output = args.required("output");
-    const io::ExportFormat format = chooseFormat(args, output);
-    const io::SegmentInfo segment = segmentFrom(args);
+    const model::ExportFormat format = chooseFormat(args, output);
+    const exports::SegmentInfo segment = segmentFrom(args);
 
-    const io::LoadedScan scan = io::readScan(input);
+    const scan::LoadedScan scan = scan::readScan(input);
     const Geometry& geometry = scan.volume.geometry();
     const std::vector<std::uint8_t> mask = readMaskFor(maskPath, geometry);
     const auto insideVoxels = std::count(mask.begin(), mask.end(), std::uint8_t{1});
@@ -108,11 +109,11 @@ int runExport(std::span<const std::string> words) {
     report["input"] = input;
     report["mask"] = maskPath;
     report["output"] = output;
-    report["format"] = io::exportFormatName(format);
+    report["format"] = model::exportFormatName(format);
     report["mask_volume_mm3"] = static_cast<double>(insideVoxels) * voxelVolume;
-    const io::ExportSummary written =
-        io::writeExport(output, format, {geometry, mask, {}, segment, scan.dicom.get()});
-    if (io::isSurfaceFormat(format)) {
+    const exports::ExportSummary written =
+        exports::writeExport(output, format, {geometry, mask, {}, segment, scan.dicom.get()});
+    if (model::isSurfaceFormat(format)) {
         report["triangles"] = written.triangles;
         report["vertices"] = written.vertices;
         report["surface_volume_mm3"] = written.surfaceVolumeMm3;
@@ -120,7 +121,7 @@ int runExport(std::span<const std::string> words) {
     if (!written.note.empty()) {
         report["note"] = written.note;
     }
-    report["world"] = format == io::ExportFormat::Tiff ? "none (voxel order)" : "LPS";
+    report["world"] = format == model::ExportFormat::Tiff ? "none (voxel order)" : "LPS";
     std::printf("%s\n", report.dump(2).c_str());
     return 0;
 }

@@ -1,6 +1,6 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
-#include "io/scan_reader.hpp"
+#include "scan/scan_reader.hpp"
 
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -12,7 +12,7 @@ int runInfo(std::span<const std::string> words) {
     if (args.positional().size() != 1) {
         throw UsageError("expected exactly one scan PATH");
     }
-    const io::LoadedScan scan = io::readScan(args.positional().front());
+    const scan::LoadedScan scan = scan::readScan(args.positional().front());
     const Geometry& g = scan.volume.geometry();
     const IntensityStats& s = scan.volume.stats();
     nlohmann::ordered_json j;

@@ -7,11 +7,11 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "config/config_loader.hpp"
-#include "io/scan_reader.hpp"
-#include "kiosk/input_backend.hpp"
-#include "kiosk/input_hub.hpp"
+#include "input/input_backend.hpp"
+#include "input/input_hub.hpp"
 #include "platform/input/recording.hpp"
 #include "platform/input/sources.hpp"
+#include "scan/scan_reader.hpp"
 
 #include <atomic>
 #include <chrono>
@@ -170,7 +170,7 @@ config::LoadedConfig readConfig(const std::optional<std::string>& file, std::ost
 class Printer {
   public:
     explicit Printer(std::ostream& out) : out_(out) {}
-    void attach(kiosk::InputHub& hub) {
+    void attach(input::InputHub& hub) {
         hub.setObserver(
             [this, &hub](const ControlEvent& e, const std::vector<workflow::Action>& a) {
                 out_ << seconds(e.time) << ' ' << describe(e) << " -> "
@@ -178,7 +178,7 @@ class Printer {
                 observed_ += a.size();
             });
     }
-    void poll(kiosk::InputHub& hub, double now) {
+    void poll(input::InputHub& hub, double now) {
         actions_.clear();
         observed_ = 0;
         hub.poll(now, actions_);
@@ -203,10 +203,10 @@ int replay(const std::string& file, const config::KioskConfig& cfg) {
         throw std::runtime_error(file + ": no records to replay");
     }
     std::cout << "replaying " << recording.records.size() << " records of " << file << '\n';
-    kiosk::InputHubLimits limits;
-    kiosk::InputHub hub(kiosk::deviceSpecs(cfg.input.devices),
-                        kiosk::ControlBindings(cfg.bindings.knobs, cfg.bindings.buttons),
-                        kiosk::replayInputBackend(), false, std::cout, limits);
+    input::InputHubLimits limits;
+    input::InputHub hub(input::deviceSpecs(cfg.input.devices),
+                        input::ControlBindings(cfg.bindings.knobs, cfg.bindings.buttons),
+                        input::replayInputBackend(), false, std::cout, limits);
     Printer printer(std::cout);
     printer.attach(hub);
     // On the recording's own clock, in monitor frames: as fast as the machine goes.
@@ -221,19 +221,19 @@ int replay(const std::string& file, const config::KioskConfig& cfg) {
 
 int live(const config::KioskConfig& cfg, std::optional<double> maxSeconds,
          const std::optional<std::string>& recordFile) {
-    const std::vector<DeviceSpec> specs = kiosk::deviceSpecs(cfg.input.devices);
+    const std::vector<DeviceSpec> specs = input::deviceSpecs(cfg.input.devices);
     listAttached(specs, std::cout);
     std::ofstream record;
     if (recordFile) {
         record.open(*recordFile, std::ios::binary | std::ios::trunc);
         if (!record) {
-            throw io::WriteError(*recordFile, "cannot write the recording");
+            throw files::WriteError(*recordFile, "cannot write the recording");
         }
         record << "# steerseg input recording 1\n";
     }
-    kiosk::InputHubLimits limits;
-    kiosk::InputHub hub(specs, kiosk::ControlBindings(cfg.bindings.knobs, cfg.bindings.buttons),
-                        kiosk::liveInputBackend(std::cout, ""), true, std::cout, limits);
+    input::InputHubLimits limits;
+    input::InputHub hub(specs, input::ControlBindings(cfg.bindings.knobs, cfg.bindings.buttons),
+                        input::liveInputBackend(std::cout, ""), true, std::cout, limits);
     Printer printer(std::cout);
     printer.attach(hub);
     if (record.is_open()) {
@@ -262,7 +262,7 @@ int live(const config::KioskConfig& cfg, std::optional<double> maxSeconds,
     if (record.is_open()) {
         record.flush();
         if (!record) {
-            throw io::WriteError(*recordFile, "writing the recording failed");
+            throw files::WriteError(*recordFile, "writing the recording failed");
         }
         std::cout << "recorded to " << *recordFile << '\n';
     }

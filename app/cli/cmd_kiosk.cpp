@@ -1,7 +1,7 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
-#include "io/scan_reader.hpp"
 #include "kiosk/kiosk_app.hpp"
+#include "scan/scan_reader.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -21,12 +21,12 @@ void requireWritableFolder(const std::filesystem::path& dir, const char* option)
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) {
-        throw io::WriteError(dir, std::string("cannot create the ") + option + " folder (" +
-                                      ec.message() + ")");
+        throw files::WriteError(dir, std::string("cannot create the ") + option + " folder (" +
+                                         ec.message() + ")");
     }
     if (::access(dir.c_str(), W_OK | X_OK) != 0) {
-        throw io::WriteError(dir, std::string("cannot write in the ") + option + " folder (" +
-                                      std::strerror(errno) + ")");
+        throw files::WriteError(dir, std::string("cannot write in the ") + option + " folder (" +
+                                         std::strerror(errno) + ")");
     }
 }
 
@@ -35,13 +35,13 @@ void requireWritableFolder(const std::filesystem::path& dir, const char* option)
 void requireWritableFile(const std::filesystem::path& file, const char* option) {
     std::error_code ec;
     if (std::filesystem::is_directory(file, ec)) {
-        throw io::WriteError(file, std::string(option) + " names a folder, not a file");
+        throw files::WriteError(file, std::string(option) + " names a folder, not a file");
     }
     const bool existed = std::filesystem::exists(file, ec);
     errno = 0;
     if (!std::ofstream(file, std::ios::app)) {
-        throw io::WriteError(file, std::string("cannot write the ") + option + " file (" +
-                                       std::strerror(errno != 0 ? errno : EIO) + ")");
+        throw files::WriteError(file, std::string("cannot write the ") + option + " file (" +
+                                          std::strerror(errno != 0 ? errno : EIO) + ")");
     }
     if (!existed) {
         std::filesystem::remove(file, ec);

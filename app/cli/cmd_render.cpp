@@ -2,12 +2,12 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "cli/segmentation_options.hpp"
-#include "io/image_file.hpp"
-#include "io/scan_reader.hpp"
+#include "exports/image_file.hpp"
 #include "platform/egl/offscreen_context.hpp"
 #include "render/render_names.hpp"
 #include "render/renderer.hpp"
 #include "render/slice_frame.hpp"
+#include "scan/scan_reader.hpp"
 #include "session/session.hpp"
 
 #include <cstdio>
@@ -183,7 +183,7 @@ int runRender(std::span<const std::string> words) {
     parseSpeedOptions(args, segment, p);
 
     // The scan first: a bad file is reported before the GPU is brought up.
-    io::LoadedScan scan = io::readScan(input);
+    scan::LoadedScan scan = scan::readScan(input);
     const Geometry g = scan.volume.geometry();
     checkSliceRange(g, p);
     if (request) {
@@ -195,7 +195,7 @@ int runRender(std::span<const std::string> words) {
     auto context = platform::createOffscreenContext();
     // The level set comes from the solver's brick pool; the renderer never copies phi.
     session::Session session(std::move(scan.volume), std::move(scan.format),
-                             request ? request->options : solver::SolverOptions{});
+                             request ? request->options : model::SolverOptions{});
     if (const auto mask = args.value("mask")) {
         session.startFromMask(*mask);
     } else if (request) {
@@ -212,7 +212,7 @@ int runRender(std::span<const std::string> words) {
         session.completeSpeed(); // the whole slice, not only where the front went
     }
     session.render(p);
-    io::writeImage(output, session.picture());
+    exports::writeImage(output, session.picture());
     return 0;
 }
 

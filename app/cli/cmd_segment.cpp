@@ -4,9 +4,9 @@
 #include "cli/segmentation_options.hpp"
 #include "core/mask_overlap.hpp"
 #include "gpu/gpu_info.hpp"
-#include "io/export_format.hpp"
-#include "io/scan_reader.hpp"
+#include "model/export_format.hpp"
 #include "platform/egl/offscreen_context.hpp"
+#include "scan/scan_reader.hpp"
 #include "session/segment_report.hpp"
 #include "session/session.hpp"
 
@@ -28,15 +28,15 @@ int runSegment(std::span<const std::string> words) {
     const std::string input = args.required("input");
     const std::string output = args.required("output");
     SegmentationRequest request = parseSegmentation(args);
-    io::ExportFormat format{};
+    model::ExportFormat format{};
     try {
-        format = io::exportFormatFor(output, args.value("format"));
+        format = model::exportFormatFor(output, args.value("format"));
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
 
     // The scan first, then the reference: a bad file is reported before the GPU is brought up.
-    io::LoadedScan scan = io::readScan(input);
+    scan::LoadedScan scan = scan::readScan(input);
     completeWithScan(request, scan.volume);
     const auto referenceFile = args.value("reference");
     int referenceLabel = -1;
@@ -46,7 +46,7 @@ int runSegment(std::span<const std::string> words) {
         if (const auto label = args.value("reference-label")) {
             referenceLabel = static_cast<int>(parseNumber(*label, "--reference-label"));
         }
-        referenceLabels = io::readScan(file).volume;
+        referenceLabels = scan::readScan(file).volume;
         if (referenceLabels->dims() != scan.volume.dims()) {
             throw UsageError("--reference " + file + " is not on the scan's grid (" +
                              dimsText(referenceLabels->dims()) + " voxels, the scan " +
@@ -62,7 +62,7 @@ int runSegment(std::span<const std::string> words) {
 
     const std::vector<std::uint8_t> mask = session.mask();
     // Surfaces come from the level set's zero crossing (Session::exportAs), not the mask.
-    const io::ExportSummary written = session.exportAs(output, format);
+    const exports::ExportSummary written = session.exportAs(output, format);
     if (!written.note.empty()) {
         std::fprintf(stderr, "steerseg: note: %s\n", written.note.c_str());
     }
@@ -78,7 +78,7 @@ int runSegment(std::span<const std::string> words) {
         std::ofstream out(*report);
         out << text << "\n";
         if (!out) {
-            throw io::WriteError(*report, "cannot write the report");
+            throw files::WriteError(*report, "cannot write the report");
         }
     }
     std::printf("%s\n", text.c_str());

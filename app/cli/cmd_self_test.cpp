@@ -8,11 +8,11 @@
 #include "gpu/gpu_info.hpp"
 #include "gpu/program.hpp"
 #include "gpu/shader_library.hpp"
-#include "kiosk/input_hub.hpp"
+#include "input/input_hub.hpp"
+#include "model/level_set_params.hpp"
+#include "model/solver_types.hpp"
 #include "platform/egl/offscreen_context.hpp"
 #include "platform/input/sources.hpp"
-#include "solver/level_set_params.hpp"
-#include "solver/solver_types.hpp"
 #include "workflow/action.hpp"
 
 #include <algorithm>
@@ -29,7 +29,7 @@ namespace {
 // console may run on touch alone), so a missing one warns.
 CheckResult checkConfiguredControllers(const config::KioskConfig& cfg) {
     CheckResult r{"configured controllers", CheckLevel::Ok, "", {}};
-    const auto specs = kiosk::deviceSpecs(cfg.input.devices);
+    const auto specs = input::deviceSpecs(cfg.input.devices);
     if (specs.empty()) {
         r.detail = "none configured ([[input.devices]])";
         return r;
@@ -84,11 +84,11 @@ CheckResult checkGl(const std::string& backend) {
 // defines, the default brick size), so a driver that rejects one fails here, not mid-session.
 // A .vert pairs with the .frag of the same name.
 CheckResult checkShaders() {
-    const int brick = solver::defaultBrickSize();
+    const int brick = model::defaultBrickSize();
     char far[32];
-    std::snprintf(far, sizeof far, "%.1f", static_cast<double>(solver::kPhiFar));
+    std::snprintf(far, sizeof far, "%.1f", static_cast<double>(model::kPhiFar));
     char rescale[32];
-    std::snprintf(rescale, sizeof rescale, "%.4f", static_cast<double>(solver::kRescaleWeight));
+    std::snprintf(rescale, sizeof rescale, "%.4f", static_cast<double>(model::kRescaleWeight));
     const gpu::Defines defines{{"BRICK_SIZE", std::to_string(brick)},
                                {"PHI_FAR", far},
                                {"RESCALE_WEIGHT", rescale},

@@ -11,10 +11,10 @@ namespace steerseg::cli {
 // follows with the command's usage. `steerseg --help` lists them; README's "Exit status" too.
 enum ExitStatus : int {
     kExitOk = 0,
-    kExitFailure = 1, // the scan (or --mask) cannot be read (io::ScanError), or another failure
+    kExitFailure = 1, // the scan (or --mask) cannot be read (scan::ScanError), or another failure
     kExitUsage = 2,   // a bad or missing option (UsageError), or --seed/--erase outside the scan
     kExitGpu = 3,     // no GPU context (platform::GpuContextError) or a GL error (gpu::GlError)
-    kExitWrite = 4,   // an output cannot be written (io::WriteError)
+    kExitWrite = 4,   // an output cannot be written (files::WriteError)
 };
 
 // The exit status for an exception thrown by a command.

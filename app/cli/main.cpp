@@ -3,10 +3,10 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "gpu/gl_error.hpp"
-#include "io/scan_reader.hpp"
-#include "kiosk/script.hpp"
 #include "platform/display.hpp"
 #include "platform/gpu_context.hpp"
+#include "scan/scan_reader.hpp"
+#include "script/script.hpp"
 
 #include <cstdio>
 #include <exception>
@@ -87,10 +87,10 @@ ExitStatus exitStatusOf(const std::exception& e) {
     if (dynamic_cast<const UsageError*>(&e) != nullptr) {
         return kExitUsage;
     }
-    if (dynamic_cast<const io::WriteError*>(&e) != nullptr) {
+    if (dynamic_cast<const files::WriteError*>(&e) != nullptr) {
         return kExitWrite;
     }
-    if (dynamic_cast<const kiosk::ScriptError*>(&e) != nullptr) {
+    if (dynamic_cast<const script::ScriptError*>(&e) != nullptr) {
         return kExitUsage;
     }
     if (dynamic_cast<const platform::GpuContextError*>(&e) != nullptr ||

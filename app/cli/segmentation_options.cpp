@@ -10,7 +10,7 @@ namespace steerseg::cli {
 
 namespace {
 
-solver::Sphere parseSphere(const std::string& text, const std::string& what) {
+model::Sphere parseSphere(const std::string& text, const std::string& what) {
     const std::vector<double> v = parseNumberList(text, 4, what);
     // Spheres are float; a double past float's range would not convert (undefined behaviour).
     // What fits the scan is checked once it is read (checkSpheresInside).
@@ -54,11 +54,11 @@ session::RunMode parseRunMode(const Args& args) {
     return mode;
 }
 
-void checkInside(const std::vector<solver::Sphere>& spheres, const glm::ivec3& dims,
+void checkInside(const std::vector<model::Sphere>& spheres, const glm::ivec3& dims,
                  const char* what) {
-    for (const solver::Sphere& s : spheres) {
+    for (const model::Sphere& s : spheres) {
         try {
-            solver::validateSphere(s, dims);
+            model::validateSphere(s, dims);
         } catch (const std::invalid_argument& e) {
             throw UsageError(std::string(what) + ": " + e.what());
         }
@@ -77,7 +77,7 @@ float positiveOption(const Args& args, const char* name) {
 // completeWithScan.
 void parseSpeed(const Args& args, SegmentationRequest& r) {
     const std::string name = args.value("speed").value_or("threshold");
-    const auto kind = speed::parseSpeedKind(name);
+    const auto kind = model::parseSpeedKind(name);
     if (!kind) {
         throw UsageError("--speed must be threshold, edge or classify (got '" + name + "')");
     }
@@ -93,7 +93,7 @@ void parseSpeed(const Args& args, SegmentationRequest& r) {
         r.explicitConductance = true;
     }
     if (args.value("kappa")) {
-        if (*kind != speed::SpeedKind::Edge) {
+        if (*kind != model::SpeedKind::Edge) {
             throw UsageError("--kappa goes with --speed edge");
         }
         r.speed.kappa = positiveOption(args, "kappa");
@@ -105,7 +105,7 @@ void parseSpeed(const Args& args, SegmentationRequest& r) {
     for (const std::string& s : args.values("outside")) {
         r.speed.outside.push_back(parseSphere(s, "--outside"));
     }
-    if (*kind != speed::SpeedKind::Classify &&
+    if (*kind != model::SpeedKind::Classify &&
         (!r.speed.inside.empty() || !r.speed.outside.empty())) {
         throw UsageError("--inside and --outside go with --speed classify");
     }
@@ -116,11 +116,11 @@ void parseSpeed(const Args& args, SegmentationRequest& r) {
     if (smooth > 0 && !r.explicitConductance && !probe) {
         throw UsageError("--smooth needs --conductance v or --probe i,j,k,r");
     }
-    if (*kind == speed::SpeedKind::Edge && !r.explicitKappa && !probe) {
+    if (*kind == model::SpeedKind::Edge && !r.explicitKappa && !probe) {
         throw UsageError("--speed edge needs --kappa v or --probe i,j,k,r");
     }
     // Its inside examples need no option: every seed is one (completeWithScan).
-    if (*kind == speed::SpeedKind::Classify && r.speed.outside.empty()) {
+    if (*kind == model::SpeedKind::Classify && r.speed.outside.empty()) {
         throw UsageError("--speed classify needs an outside example (--outside i,j,k,r); the "
                          "seeds, --probe and --inside are the inside examples");
     }
@@ -128,7 +128,7 @@ void parseSpeed(const Args& args, SegmentationRequest& r) {
 
 void validateRequest(const SegmentationRequest& r, const glm::ivec3* dims) {
     try {
-        solver::validateParams(r.params);
+        model::validateParams(r.params);
         if (dims != nullptr) {
             session::validateSpeedSettings(r.speed, *dims);
         }
@@ -179,8 +179,8 @@ SegmentationRequest parseSegmentation(const Args& args) {
     for (const std::string& s : args.values("barrier")) {
         r.barriers.push_back(parseSphere(s, "--barrier"));
     }
-    if (r.barriers.size() > solver::kMaxBarriers) {
-        throw UsageError("at most " + std::to_string(solver::kMaxBarriers) + " --barrier spheres");
+    if (r.barriers.size() > model::kMaxBarriers) {
+        throw UsageError("at most " + std::to_string(model::kMaxBarriers) + " --barrier spheres");
     }
     if (r.seeds.empty()) {
         throw UsageError("give at least one --seed i,j,k,r");
@@ -221,14 +221,14 @@ void completeWithScan(SegmentationRequest& request, const Volume& scan) {
         if (!request.explicitConductance) {
             request.speed.smoothing.conductance = static_cast<float>(p.conductance);
         }
-        if (request.speed.kind == speed::SpeedKind::Edge && !request.explicitKappa) {
+        if (request.speed.kind == model::SpeedKind::Edge && !request.explicitKappa) {
             request.speed.kappa = static_cast<float>(p.kappa);
         }
-        if (request.speed.kind == speed::SpeedKind::Classify) {
+        if (request.speed.kind == model::SpeedKind::Classify) {
             request.speed.inside.push_back(*request.probe);
         }
     }
-    if (request.speed.kind == speed::SpeedKind::Classify) {
+    if (request.speed.kind == model::SpeedKind::Classify) {
         // An operator's seeds lie in the structure, often in parts the probe does not reach:
         // inside examples too (docs/speed.md, "Accuracy": the liver's Dice 0.72 -> 0.80).
         request.speed.inside.insert(request.speed.inside.end(), request.seeds.begin(),
@@ -238,13 +238,13 @@ void completeWithScan(SegmentationRequest& request, const Volume& scan) {
 }
 
 void applySegmentation(session::Session& session, const SegmentationRequest& request) {
-    for (const solver::Sphere& s : request.seeds) {
+    for (const model::Sphere& s : request.seeds) {
         session.addSeed(s);
     }
-    for (const solver::Sphere& s : request.erases) {
+    for (const model::Sphere& s : request.erases) {
         session.erase(s);
     }
-    for (const solver::Sphere& s : request.barriers) {
+    for (const model::Sphere& s : request.barriers) {
         session.addBarrier(s);
     }
     session.setParams(request.params);

@@ -15,18 +15,18 @@ namespace steerseg::cli {
 
 struct SegmentationRequest {
     // T and eps are final once completeWithScan has applied --probe.
-    solver::LevelSetParams params;
+    model::LevelSetParams params;
     session::SpeedSettings speed; // --speed, --smooth, --conductance, --kappa, --inside, --outside
-    std::optional<solver::Sphere> probe;
+    std::optional<model::Sphere> probe;
     bool explicitT = false;
     bool explicitEps = false;
     bool explicitConductance = false;
     bool explicitKappa = false;
-    std::vector<solver::Sphere> seeds;
-    std::vector<solver::Sphere> erases;
-    std::vector<solver::Sphere> barriers;
+    std::vector<model::Sphere> seeds;
+    std::vector<model::Sphere> erases;
+    std::vector<model::Sphere> barriers;
     session::RunMode mode; // exactly one of --iterations, --time, --converge
-    solver::SolverOptions options;
+    model::SolverOptions options;
 };
 
 // Option names to declare to Args.

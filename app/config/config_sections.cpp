@@ -1,6 +1,6 @@
 #include "config/config_sections.hpp"
 
-#include "speed/speed_kind.hpp"
+#include "model/speed_kind.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -177,10 +177,10 @@ void readProbe(TableReader& t, ProbeConfig& p) {
 
 void readSpeed(TableReader& t, SpeedConfig& s) {
     if (auto v = t.text("kind", [](std::string_view word) {
-            return speed::parseSpeedKind(word) ? ""
+            return model::parseSpeedKind(word) ? ""
                                                : "must be \"threshold\", \"edge\" or \"classify\"";
         })) {
-        s.kind = *speed::parseSpeedKind(*v);
+        s.kind = *model::parseSpeedKind(*v);
     }
     if (auto v = t.integer("smooth_iterations", {0, 1000})) {
         s.smoothIterations = static_cast<int>(*v);

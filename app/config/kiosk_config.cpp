@@ -39,7 +39,7 @@ std::optional<InputDeviceKind> parseInputDeviceKind(std::string_view word) {
 }
 
 const std::vector<std::string_view>& exportFormats() {
-    // io::exportFormatName's names (config may not include io: a test keeps them equal).
+    // model::exportFormatName's names (config may not include io: a test keeps them equal).
     static const std::vector<std::string_view> formats{"nii.gz", "nii", "nrrd", "seg.nrrd",
                                                        "dcm",    "stl", "ply",  "tif"};
     return formats;

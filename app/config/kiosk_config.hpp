@@ -2,7 +2,7 @@
 
 // The kiosk's settings as one plain value. The defaults here are the shipped file
 // config/steerseg.toml, which documents every key; a unit test keeps the two equal.
-#include "speed/speed_kind.hpp" // the enum only: config links no speed code
+#include "model/speed_kind.hpp" // the enum only: config links no speed code
 
 #include <filesystem>
 #include <functional>
@@ -67,7 +67,7 @@ struct BrushConfig {
 // units there; here they are fractions of the scan's value range (max - min), so one file
 // serves CT in HU and MR in arbitrary units.
 struct SpeedConfig {
-    speed::SpeedKind kind = speed::SpeedKind::Threshold;
+    model::SpeedKind kind = model::SpeedKind::Threshold;
     // The edge speed's preprocessing, from the noise the last probe measured (as segment
     // --probe: session/speed_probe.hpp), so one file serves CT and MR.
     int smoothIterations = 5;       // anisotropic diffusion steps before the edge factor, 0 = none
@@ -81,7 +81,7 @@ struct ExportConfig {
     std::vector<std::string> formats{"nii.gz"}; // one mask file per format
     bool operator==(const ExportConfig&) const = default;
 };
-// The export formats the kiosk may write, in the order the docs list them (io::ExportFormat's
+// The export formats the kiosk may write, in the order the docs list them (model::ExportFormat's
 // names; config links no io, so the list is kept here). DICOM SEG ("dcm") joins once its
 // writer is wired.
 const std::vector<std::string_view>& exportFormats();

@@ -1,25 +1,25 @@
 #include "kiosk/kiosk_app.hpp"
 
 #include "config/config_loader.hpp"
-#include "io/image_file.hpp"
-#include "io/scan_reader.hpp"
+#include "engine/session_engine.hpp"
+#include "exports/image_file.hpp"
+#include "input/input_backend.hpp"
+#include "input/input_hub.hpp"
+#include "input/key_bindings.hpp"
 #include "kiosk/frame_stats.hpp"
-#include "kiosk/input_backend.hpp"
-#include "kiosk/input_hub.hpp"
 #include "kiosk/iteration_budget.hpp"
-#include "kiosk/key_bindings.hpp"
 #include "kiosk/kiosk_script_sink.hpp"
 #include "kiosk/kiosk_startup.hpp"
-#include "kiosk/mask_dice.hpp"
 #include "kiosk/screen_compositor.hpp"
-#include "kiosk/script_player.hpp"
 #include "kiosk/service_status.hpp"
 #include "kiosk/session_autosave.hpp"
-#include "kiosk/session_engine.hpp"
 #include "kiosk/settings_from_config.hpp"
 #include "kiosk/view_painter.hpp"
 #include "platform/display_choice.hpp"
 #include "platform/input/recording.hpp"
+#include "scan/scan_reader.hpp"
+#include "script/mask_dice.hpp"
+#include "script/script_player.hpp"
 #include "ui/layout.hpp"
 #include "ui/screen_rotation.hpp"
 #include "ui/touch_ui.hpp"
@@ -49,7 +49,7 @@ class Kiosk {
     // `liveDevices`: open the configured input devices (not offscreen, where a script's raw
     // records are the only device input).
     Kiosk(const KioskOptions& options, const config::KioskConfig& cfg,
-          std::unique_ptr<ScriptPlayer> player, std::unique_ptr<platform::Display> display,
+          std::unique_ptr<script::ScriptPlayer> player, std::unique_ptr<platform::Display> display,
           bool liveDevices, std::ostream& err)
         : options_(options), cfg_(cfg), err_(err), player_(std::move(player)),
           display_(std::move(display)), info_(display_->info()),
@@ -57,17 +57,17 @@ class Kiosk {
           physical_(info_.width, info_.height),
           rotation_(cfg.display.rotation, physical_.x, physical_.y),
           screen_(physical_, cfg.display.rotation),
-          engine_(solver::SolverOptions{},
+          engine_(model::SolverOptions{},
                   {cfg.speed.smoothIterations, cfg.speed.conductanceFactor, cfg.speed.kappaFactor}),
           autosave_(cfg.autosave, cfg.audit.path, options.resume, err), audit_(cfg.audit.path),
           flow_(engine_, workflowSettings(cfg), &audit_),
           touch_({dpi_, cfg.ui.touchTargetMm, cfg.ui.fontScale, cfg.probe.radiusMm,
                   static_cast<double>(cfg.ui.longPressMs), "", scanList(options)}),
           keys_(cfg.bindings.keys),
-          hub_(kiosk::deviceSpecs(cfg.input.devices),
-               ControlBindings(cfg.bindings.knobs, cfg.bindings.buttons),
-               liveDevices ? liveInputBackend(err, kLogPrefix) : replayInputBackend(), liveDevices,
-               err, hubLimits()),
+          hub_(input::deviceSpecs(cfg.input.devices),
+               input::ControlBindings(cfg.bindings.knobs, cfg.bindings.buttons),
+               liveDevices ? input::liveInputBackend(err, kLogPrefix) : input::replayInputBackend(),
+               liveDevices, err, hubLimits()),
           budget_(cfg.frame.solverShare, cfg.frame.budgetMs * 1e-3, cfg.frame.minIterations,
                   cfg.frame.maxIterations),
           painter_(cfg.frame.interactiveScale), frameBudget_(cfg.frame.budgetMs * 1e-3),
@@ -113,7 +113,7 @@ class Kiosk {
 
   private:
     static std::vector<std::string> scanList(const KioskOptions& options) {
-        std::vector<std::string> scans{io::kBuiltinSample};
+        std::vector<std::string> scans{scan::kBuiltinSample};
         if (!options.scan.empty()) {
             scans.push_back(options.scan);
         }
@@ -185,8 +185,8 @@ class Kiosk {
         return !events_.empty() || !actions_.empty() || hub_.busy();
     }
 
-    static InputHubLimits hubLimits() {
-        InputHubLimits limits;
+    static input::InputHubLimits hubLimits() {
+        input::InputHubLimits limits;
         limits.logPrefix = kLogPrefix;
         return limits;
     }
@@ -214,7 +214,7 @@ class Kiosk {
         }
         actions_.clear();
         flow_.update();
-        hub_.setIndicator(indicatorFor(flow_.state()));
+        hub_.setIndicator(input::indicatorFor(flow_.state()));
         // What the panel's message line says goes to the log too: a headless run has no panel.
         if (const std::string& message = flow_.status().message; message != lastMessage_) {
             lastMessage_ = message;
@@ -238,7 +238,7 @@ class Kiosk {
         }
         if (const int n = budget_.next(lastFrameSeconds_); n > 0) {
             const Clock::time_point t = Clock::now();
-            const solver::StepResult r = flow_.evolve(n);
+            const model::StepResult r = flow_.evolve(n);
             const double evolved = secondsSince(t);
             solverSeconds_ += evolved;
             budget_.record(r.iterations, evolved);
@@ -316,7 +316,7 @@ class Kiosk {
         }
         const RgbaImage picture = screen_.capture();
         for (const auto& path : pendingFrames_) {
-            io::writeImage(path, picture);
+            exports::writeImage(path, picture);
         }
         pendingFrames_.clear();
     }
@@ -356,7 +356,7 @@ class Kiosk {
     const KioskOptions& options_;
     const config::KioskConfig& cfg_;
     std::ostream& err_;
-    std::unique_ptr<ScriptPlayer> player_;
+    std::unique_ptr<script::ScriptPlayer> player_;
     // The display owns the GL context: declared before everything that holds GL objects, so it
     // goes after them.
     std::unique_ptr<platform::Display> display_;
@@ -365,13 +365,13 @@ class Kiosk {
     glm::ivec2 physical_;
     ui::ScreenRotation rotation_;
     ScreenCompositor screen_;
-    SessionEngine engine_;
+    engine::SessionEngine engine_;
     SessionAutosave autosave_; // before the audit log: a resume reads it before it reopens
     workflow::AuditLog audit_;
     workflow::Workflow flow_;
     ui::TouchUi touch_;
-    KeyBindings keys_;
-    InputHub hub_;
+    input::KeyBindings keys_;
+    input::InputHub hub_;
     IterationBudget budget_;
     ViewPainter painter_;
     FrameStats stats_;
@@ -402,7 +402,7 @@ class Kiosk {
 int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) {
     const config::LoadedConfig loaded = readConfig(options, err);
     const config::KioskConfig& cfg = loaded.config;
-    std::unique_ptr<ScriptPlayer> player = makePlayer(options); // before a window opens
+    std::unique_ptr<script::ScriptPlayer> player = makePlayer(options); // before a window opens
     if (options.frames) {
         std::filesystem::create_directories(*options.frames);
     }

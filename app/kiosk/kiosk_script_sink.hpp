@@ -2,10 +2,10 @@
 
 // What a script does to the running kiosk: actions, input events and raw device records join
 // the frame's queues, frames are written once drawn, the resume offer gets its answer.
-#include "kiosk/mask_dice.hpp"
-#include "kiosk/script_player.hpp"
 #include "platform/input/raw_record.hpp"
 #include "platform/input_event.hpp"
+#include "script/mask_dice.hpp"
+#include "script/script_player.hpp"
 #include "workflow/action.hpp"
 
 #include <filesystem>
@@ -14,7 +14,7 @@
 
 namespace steerseg::kiosk {
 
-class KioskScriptSink final : public ScriptSink {
+class KioskScriptSink final : public script::ScriptSink {
   public:
     std::vector<workflow::Action> actions;
     std::vector<platform::InputEvent> events;
@@ -31,7 +31,7 @@ class KioskScriptSink final : public ScriptSink {
     std::optional<bool> resumeAnswer;
     double maskDice(const std::filesystem::path& mask, const std::filesystem::path& reference,
                     int label) override {
-        return kiosk::maskDice(mask, reference, label);
+        return script::maskDice(mask, reference, label);
     }
 };
 

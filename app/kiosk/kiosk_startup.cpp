@@ -68,11 +68,11 @@ std::unique_ptr<platform::Display> openDisplay(const std::string& platform,
                                  "' (kms, window, offscreen)");
 }
 
-std::unique_ptr<ScriptPlayer> makePlayer(const KioskOptions& options) {
+std::unique_ptr<script::ScriptPlayer> makePlayer(const KioskOptions& options) {
     if (!options.script) {
         return nullptr;
     }
-    Variables vars;
+    script::Variables vars;
     if (!options.scan.empty()) {
         vars["SCAN"] = options.scan;
     }
@@ -81,7 +81,8 @@ std::unique_ptr<ScriptPlayer> makePlayer(const KioskOptions& options) {
     }
     vars["OUT"] =
         options.frames ? options.frames->string() : std::filesystem::current_path().string();
-    return std::make_unique<ScriptPlayer>(loadScript(*options.script), std::move(vars));
+    return std::make_unique<script::ScriptPlayer>(script::loadScript(*options.script),
+                                                  std::move(vars));
 }
 
 } // namespace steerseg::kiosk

@@ -4,8 +4,8 @@
 // (its problems logged), the display of the chosen platform, the script's player.
 #include "config/config_loader.hpp"
 #include "kiosk/kiosk_options.hpp"
-#include "kiosk/script_player.hpp"
 #include "platform/display.hpp"
+#include "script/script_player.hpp"
 
 #include <memory>
 #include <ostream>
@@ -39,6 +39,6 @@ std::unique_ptr<platform::Display> openDisplay(const std::string& platform,
                                                const platform::DisplayOptions& options);
 
 // The --script's player with SCAN, DATA and OUT set; nullptr without a script.
-std::unique_ptr<ScriptPlayer> makePlayer(const KioskOptions& options);
+std::unique_ptr<script::ScriptPlayer> makePlayer(const KioskOptions& options);
 
 } // namespace steerseg::kiosk

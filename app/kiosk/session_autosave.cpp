@@ -1,6 +1,6 @@
 #include "kiosk/session_autosave.hpp"
 
-#include "kiosk/session_engine.hpp"
+#include "engine/session_engine.hpp"
 #include "workflow/param_ranges.hpp"
 #include "workflow/utc_time.hpp"
 
@@ -37,16 +37,17 @@ SessionAutosave::SessionAutosave(const config::AutosaveConfig& config,
                                  const std::filesystem::path& auditLog, ResumeChoice choice,
                                  std::ostream& err)
     : config_(config), auditLog_(auditLog), err_(err),
-      store_(std::make_unique<AutosaveStore>(config.folder, config.keep)) {
+      store_(std::make_unique<autosave::AutosaveStore>(config.folder, config.keep)) {
     if (choice != ResumeChoice::No) {
         std::vector<std::string> problems;
-        std::optional<AutosaveStore::Found> found = store_->newest(problems);
+        std::optional<autosave::AutosaveStore::Found> found = store_->newest(problems);
         for (const std::string& p : problems) {
             err_ << "steerseg kiosk: autosave: " << p << '\n';
         }
         if (found && !found->clean && resumable(found->snapshot.state)) {
-            const ScanReference& saved = found->snapshot.scan;
-            if (const std::string diff = differenceBetween(saved, referenceOf(saved.path));
+            const autosave::ScanReference& saved = found->snapshot.scan;
+            if (const std::string diff =
+                    autosave::differenceBetween(saved, autosave::referenceOf(saved.path));
                 !diff.empty()) {
                 err_ << "steerseg kiosk: autosave: " << found->file.string()
                      << " not offered: " << diff << '\n';
@@ -65,7 +66,7 @@ SessionAutosave::SessionAutosave(const config::AutosaveConfig& config,
             }
         }
     }
-    writer_ = std::make_unique<AutosaveWriter>(*store_);
+    writer_ = std::make_unique<autosave::AutosaveWriter>(*store_);
 }
 
 SessionAutosave::~SessionAutosave() = default;
@@ -74,9 +75,9 @@ std::string SessionAutosave::offerText() const {
     if (!offer_) {
         return {};
     }
-    const AutosaveSnapshot& s = offer_->snapshot;
-    return scanShortName(s.scan.path) + ", " + std::string(workflow::stateName(s.state)) + ", " +
-           std::to_string(s.seeds) + (s.seeds == 1 ? " seed" : " seeds") + ", saved " +
+    const autosave::AutosaveSnapshot& s = offer_->snapshot;
+    return engine::scanShortName(s.scan.path) + ", " + std::string(workflow::stateName(s.state)) +
+           ", " + std::to_string(s.seeds) + (s.seeds == 1 ? " seed" : " seeds") + ", saved " +
            utcOf(s.savedAtMs);
 }
 
@@ -92,7 +93,7 @@ void SessionAutosave::answer(bool resume) {
     resuming_ = true;
 }
 
-void SessionAutosave::frame(workflow::Workflow& flow, SessionEngine& engine,
+void SessionAutosave::frame(workflow::Workflow& flow, engine::SessionEngine& engine,
                             std::vector<workflow::Action>& actions) {
     reportWriteError();
     if (resuming_) {
@@ -119,11 +120,11 @@ void SessionAutosave::frame(workflow::Workflow& flow, SessionEngine& engine,
     }
 }
 
-void SessionAutosave::finishResume(workflow::Workflow& flow, SessionEngine& engine) {
+void SessionAutosave::finishResume(workflow::Workflow& flow, engine::SessionEngine& engine) {
     if (flow.state() == workflow::State::Loading) {
         return;
     }
-    const AutosaveSnapshot& s = offer_->snapshot;
+    const autosave::AutosaveSnapshot& s = offer_->snapshot;
     std::string failure;
     if (engine.scansAttached() == scansAtResume_ || flow.state() != workflow::State::Inspect) {
         failure = flow.status().message.empty() ? "its scan did not load" : flow.status().message;
@@ -157,7 +158,8 @@ void SessionAutosave::finishResume(workflow::Workflow& flow, SessionEngine& engi
     }
 }
 
-bool SessionAutosave::due(const workflow::Status& status, const SessionEngine& engine) const {
+bool SessionAutosave::due(const workflow::Status& status,
+                          const engine::SessionEngine& engine) const {
     using workflow::State;
     const State state = status.state;
     if (state == State::NoScan || state == State::Loading || state == State::Exporting) {
@@ -170,20 +172,20 @@ bool SessionAutosave::due(const workflow::Status& status, const SessionEngine& e
         return std::chrono::duration<double>(SteadyClock::now() - savedAt_).count() >=
                config_.intervalSeconds;
     }
-    const solver::LevelSetParams& p = status.params;
+    const model::LevelSetParams& p = status.params;
     return engine.levelSetVersion() != savedVersion_ || p.T != savedParams_.T ||
            p.eps != savedParams_.eps || p.alpha != savedParams_.alpha ||
            status.radius != savedRadius_;
 }
 
-void SessionAutosave::save(const workflow::Status& status, SessionEngine& engine) {
+void SessionAutosave::save(const workflow::Status& status, engine::SessionEngine& engine) {
     const SteadyClock::time_point start = SteadyClock::now();
     if (engine.scansAttached() != referenceScans_) {
         // A stat (a DICOM folder's listing) once per scan, not once per snapshot.
-        scanReference_ = referenceOf(engine.scanPath());
+        scanReference_ = autosave::referenceOf(engine.scanPath());
         referenceScans_ = engine.scansAttached();
     }
-    AutosaveSnapshot s;
+    autosave::AutosaveSnapshot s;
     s.scan = scanReference_;
     s.dims = status.scan.dims;
     s.savedAtMs = std::chrono::duration_cast<std::chrono::milliseconds>(
@@ -201,9 +203,9 @@ void SessionAutosave::save(const workflow::Status& status, SessionEngine& engine
     s.params.speed = {status.speed, status.insideExamples, status.outsideExamples};
     // While classify waits, the speed that runs is the one it falls back to; once it runs, what
     // it fell back to is not shown and the threshold speed stands in.
-    s.params.fallback = status.speedInForce != speed::SpeedKind::Classify
+    s.params.fallback = status.speedInForce != model::SpeedKind::Classify
                             ? status.speedInForce
-                            : speed::SpeedKind::Threshold;
+                            : model::SpeedKind::Threshold;
     s.seeds = status.seeds;
     s.erasures = status.erasures;
     s.iterations = status.iterations;
@@ -249,7 +251,7 @@ void SessionAutosave::reportWriteError() {
     }
 }
 
-void SessionAutosave::finish(const workflow::Workflow& flow, SessionEngine& engine) {
+void SessionAutosave::finish(const workflow::Workflow& flow, engine::SessionEngine& engine) {
     if (!offering() && !resuming_) {
         const workflow::Status& status = flow.status();
         if (due(status, engine)) {

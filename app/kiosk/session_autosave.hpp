@@ -7,9 +7,9 @@
 // AutosaveWriter's thread. At start it looks for an unfinished session and, once the operator
 // (or --resume, or a script) says so, loads its scan and puts its surface, parameters, counts
 // and state back.
+#include "autosave/autosave_store.hpp"
+#include "autosave/autosave_writer.hpp"
 #include "config/kiosk_config.hpp"
-#include "kiosk/autosave_store.hpp"
-#include "kiosk/autosave_writer.hpp"
 #include "kiosk/kiosk_options.hpp"
 #include "workflow/workflow.hpp"
 
@@ -21,9 +21,11 @@
 #include <string>
 #include <vector>
 
-namespace steerseg::kiosk {
-
+namespace steerseg::engine {
 class SessionEngine;
+} // namespace steerseg::engine
+
+namespace steerseg::kiosk {
 
 class SessionAutosave {
   public:
@@ -46,36 +48,37 @@ class SessionAutosave {
     [[nodiscard]] bool resuming() const { return resuming_; }
 
     // Each frame, after the solver: finishes a resume whose scan is in, then saves if due.
-    void frame(workflow::Workflow& flow, SessionEngine& engine,
+    void frame(workflow::Workflow& flow, engine::SessionEngine& engine,
                std::vector<workflow::Action>& actions);
     // On a clean exit: the last state written; the manifest says the session ended cleanly
     // unless unexported work is left (then the next start offers it).
-    void finish(const workflow::Workflow& flow, SessionEngine& engine);
+    void finish(const workflow::Workflow& flow, engine::SessionEngine& engine);
 
   private:
-    void finishResume(workflow::Workflow& flow, SessionEngine& engine);
-    [[nodiscard]] bool due(const workflow::Status& status, const SessionEngine& engine) const;
-    void save(const workflow::Status& status, SessionEngine& engine);
+    void finishResume(workflow::Workflow& flow, engine::SessionEngine& engine);
+    [[nodiscard]] bool due(const workflow::Status& status,
+                           const engine::SessionEngine& engine) const;
+    void save(const workflow::Status& status, engine::SessionEngine& engine);
     void reportWriteError();
     void readAuditLogBeforeItOpens();
 
     config::AutosaveConfig config_;
     std::filesystem::path auditLog_;
     std::ostream& err_;
-    std::unique_ptr<AutosaveStore> store_;
-    std::unique_ptr<AutosaveWriter> writer_;
-    std::optional<AutosaveStore::Found> offer_;
+    std::unique_ptr<autosave::AutosaveStore> store_;
+    std::unique_ptr<autosave::AutosaveWriter> writer_;
+    std::optional<autosave::AutosaveStore::Found> offer_;
     bool resuming_ = false;
     bool loadQueued_ = false;
     std::vector<std::string> auditNotes_; // said when a resume starts
     std::uint64_t scansAtResume_ = 0;
-    ScanReference scanReference_; // of the attached scan, taken once per scan
+    autosave::ScanReference scanReference_; // of the attached scan, taken once per scan
     std::uint64_t referenceScans_ = 0;
 
     // What the last snapshot saw, to tell when the next one is due.
     std::optional<workflow::State> savedState_;
     std::uint64_t savedVersion_ = 0;
-    solver::LevelSetParams savedParams_;
+    model::LevelSetParams savedParams_;
     double savedRadius_ = 0.0;
     std::chrono::steady_clock::time_point savedAt_{};
     // The frame thread's share: reading the mask back and encoding its runs.

@@ -1,6 +1,6 @@
 #include "kiosk/view_painter.hpp"
 
-#include "kiosk/view_setup.hpp"
+#include "engine/view_setup.hpp"
 
 #include <chrono>
 #include <optional>
@@ -128,12 +128,13 @@ ui::ScreenState ViewPainter::paint(session::Session& session, const workflow::St
             continue;
         }
         if (n == kVolume) {
-            paintView(views_[n], session, volumeViewParams(session, status, size),
+            paintView(views_[n], session, engine::volumeViewParams(session, status, size),
                       volumeSignature(status, levelSetVersion, size), seconds * kShare[n]);
         } else {
             const bool speed = n == kSecond;
             const workflow::SliceAxis axis = axes[n - 1];
-            paintView(views_[n], session, sliceViewParams(session, status, axis, speed, size),
+            paintView(views_[n], session,
+                      engine::sliceViewParams(session, status, axis, speed, size),
                       sliceSignature(status, levelSetVersion, size, axis,
                                      speed ? std::optional(speedVersion) : std::nullopt),
                       seconds * kShare[n]);

@@ -35,7 +35,7 @@ SliceFrame SliceView::draw(const RenderInputs& in, const ViewParams& params) {
         glUniform1f(uniform(program, "targetT"), static_cast<float>(params.speed.target));
         glUniform1f(uniform(program, "halfWidth"), static_cast<float>(params.speed.epsilon));
         // Full colour at |D| = eps for the speeds in the scan's units, at 1 for classify's.
-        const bool unitless = in.speed.kind == speed::SpeedKind::Classify;
+        const bool unitless = in.speed.kind == model::SpeedKind::Classify;
         glUniform1f(uniform(program, "speedScale"),
                     unitless ? 1.0F : static_cast<float>(std::max(params.speed.epsilon, 1e-6)));
     }

@@ -7,14 +7,14 @@ namespace steerseg::session {
 std::string segmentReport(const Session& session, const RunOutcome& run,
                           std::span<const std::uint8_t> mask, const ReportContext& context) {
     const Geometry& geometry = session.scan().geometry();
-    const solver::LevelSetParams& params = context.params;
-    const solver::SolverOptions& options = session.options();
+    const model::LevelSetParams& params = context.params;
+    const model::SolverOptions& options = session.options();
     const double seconds = run.solveSeconds;
     std::size_t inside = 0;
     for (const std::uint8_t m : mask) {
         inside += m;
     }
-    const solver::SolverStats stats = session.stats();
+    const model::SolverStats stats = session.stats();
     nlohmann::ordered_json j;
     j["input"] = context.input;
     j["output"] = context.output;
@@ -23,25 +23,25 @@ std::string segmentReport(const Session& session, const RunOutcome& run,
     j["alpha"] = params.alpha;
     const SpeedSettings& speed = session.speed();
     nlohmann::ordered_json sp;
-    sp["name"] = std::string(speed::speedKindName(speed.kind));
+    sp["name"] = std::string(model::speedKindName(speed.kind));
     sp["smoothing_iterations"] = speed.smoothing.iterations;
     sp["conductance"] = speed.smoothing.conductance;
-    if (speed.kind == speed::SpeedKind::Edge) {
+    if (speed.kind == model::SpeedKind::Edge) {
         sp["kappa"] = speed.kappa;
     }
-    if (speed.kind == speed::SpeedKind::Classify) {
+    if (speed.kind == model::SpeedKind::Classify) {
         sp["inside_examples"] = speed.inside.size();
         sp["outside_examples"] = speed.outside.size();
     }
     j["speed"] = sp;
     j["preprocessing_seconds"] = session.speedTiming().preprocessingSeconds;
     j["training_seconds"] = session.speedTiming().trainingSeconds;
-    if (speed.kind == speed::SpeedKind::Classify) {
+    if (speed.kind == model::SpeedKind::Classify) {
         // Evaluated where the front went: its share of the scan is the saving (docs/speed.md).
         j["speed_bricks_evaluated"] = session.speedBricksEvaluated();
     }
     j["mode"] = options.dense ? "dense" : "sparse";
-    j["brick_size"] = options.brickSize == 0 ? solver::defaultBrickSize() : options.brickSize;
+    j["brick_size"] = options.brickSize == 0 ? model::defaultBrickSize() : options.brickSize;
     j["iterations"] = stats.iterations;
     j["evolved_time"] = stats.evolvedTime;
     j["solve_seconds"] = seconds;
@@ -52,7 +52,7 @@ std::string segmentReport(const Session& session, const RunOutcome& run,
     j["front_voxels"] = stats.frontVoxels;
     j["band_bricks"] = stats.bandBricks;
     j["converged"] = session.converged();
-    j["stop_reason"] = solver::stopReasonName(run.result.stopReason);
+    j["stop_reason"] = model::stopReasonName(run.result.stopReason);
     if (const auto& leak = run.result.leak) {
         // Where the surface broke through: voxel indices and the scanner's millimetres.
         const glm::vec3 c = leak->centre();

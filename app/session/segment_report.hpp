@@ -25,7 +25,7 @@ struct ReportContext {
     std::string input;
     std::string output;
     std::string renderer; // GL_RENDERER
-    solver::LevelSetParams params;
+    model::LevelSetParams params;
     std::optional<ReferenceOverlap> reference;
 };
 // `mask`: session.mask() as exported (read back once by the caller).

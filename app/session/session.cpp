@@ -1,10 +1,10 @@
 #include "session/session.hpp"
 
+#include "exports/export_writer.hpp"
 #include "gpu/gl.hpp"
 #include "gpu/scan_texture.hpp"
-#include "io/export_writer.hpp"
-#include "io/scan_reader.hpp"
 #include "render/renderer.hpp"
+#include "scan/scan_reader.hpp"
 #include "solver/level_set_solver.hpp"
 #include "speed/classifier_speed.hpp"
 #include "speed/edge_factor.hpp"
@@ -28,7 +28,7 @@ constexpr std::uint32_t kAheadBricksPerCall = 4096;
 // Everything that lives in the GL context, in the order it must be built and torn down: the
 // scan texture outlives the solver and the renderer that borrow it.
 struct Session::Gpu {
-    Gpu(const Volume& scan, const solver::SolverOptions& options)
+    Gpu(const Volume& scan, const model::SolverOptions& options)
         : texture(scan), solver(texture, options), renderer(scan, texture) {}
     gpu::ScanTexture texture;
     solver::LevelSetSolver solver;
@@ -42,16 +42,16 @@ struct Session::Gpu {
     SpeedTiming timing;
 };
 
-Session Session::open(const std::filesystem::path& path, const solver::SolverOptions& options) {
-    return Session(io::readScan(path), options);
+Session Session::open(const std::filesystem::path& path, const model::SolverOptions& options) {
+    return Session(scan::readScan(path), options);
 }
 
-Session::Session(io::LoadedScan scan, const solver::SolverOptions& options)
+Session::Session(scan::LoadedScan scan, const model::SolverOptions& options)
     : Session(std::move(scan.volume), std::move(scan.format), options) {
     dicom_ = std::move(scan.dicom);
 }
 
-Session::Session(Volume scan, std::string format, const solver::SolverOptions& options)
+Session::Session(Volume scan, std::string format, const model::SolverOptions& options)
     : scan_(std::move(scan)), format_(std::move(format)), options_(options),
       gpu_(std::make_unique<Gpu>(scan_, options_)) {}
 
@@ -67,16 +67,16 @@ const std::string& Session::format() const {
     return format_;
 }
 
-void Session::addSeed(const solver::Sphere& sphere) {
+void Session::addSeed(const model::Sphere& sphere) {
     gpu_->solver.addSphere(sphere);
     hasLevelSet_ = true;
 }
 
-void Session::erase(const solver::Sphere& sphere) {
+void Session::erase(const model::Sphere& sphere) {
     gpu_->solver.removeSphere(sphere);
 }
 
-void Session::addBarrier(const solver::Sphere& sphere) {
+void Session::addBarrier(const model::Sphere& sphere) {
     gpu_->solver.addBarrier(sphere);
 }
 
@@ -85,7 +85,7 @@ void Session::clearBarriers() {
 }
 
 void Session::startFromMask(const std::filesystem::path& path) {
-    const io::LoadedScan mask = io::readScan(path);
+    const scan::LoadedScan mask = scan::readScan(path);
     if (mask.volume.dims() != scan_.dims()) {
         throw std::runtime_error(path.string() + ": mask is " + dimsText(mask.volume.dims()) +
                                  " but the scan is " + dimsText(scan_.dims()));
@@ -116,7 +116,7 @@ bool Session::hasLevelSet() const {
     return hasLevelSet_;
 }
 
-void Session::setParams(const solver::LevelSetParams& params) {
+void Session::setParams(const model::LevelSetParams& params) {
     gpu_->solver.setParams(params);
 }
 
@@ -144,7 +144,7 @@ void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progr
         g.smoothedWith = settings.smoothing;
     }
     const GLuint intensity = g.smoothed ? g.smoothed.id() : g.texture.exact();
-    if (settings.kind == speed::SpeedKind::Edge) {
+    if (settings.kind == model::SpeedKind::Edge) {
         g.factor = speed::edgeFactor(intensity, dims, settings.kappa);
         if (progress) {
             progress("edge factor", 1, 1);
@@ -154,14 +154,14 @@ void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progr
     const auto prepared = std::chrono::steady_clock::now();
     g.timing.preprocessingSeconds = std::chrono::duration<double>(prepared - start).count();
     GLuint factor = g.factor.id();
-    if (settings.kind == speed::SpeedKind::Classify) {
+    if (settings.kind == model::SpeedKind::Classify) {
         if (progress) {
             progress("training", 0, 1);
         }
-        const auto examples = [](const std::vector<solver::Sphere>& spheres) {
+        const auto examples = [](const std::vector<model::Sphere>& spheres) {
             std::vector<speed::Example> out;
             out.reserve(spheres.size());
-            for (const solver::Sphere& s : spheres) {
+            for (const model::Sphere& s : spheres) {
                 out.push_back({s.centre, s.radius});
             }
             return out;
@@ -206,7 +206,7 @@ const SpeedTiming& Session::speedTiming() const {
     return gpu_->timing;
 }
 
-solver::StepResult Session::step(int iterations) {
+model::StepResult Session::step(int iterations) {
     return gpu_->solver.step(iterations);
 }
 
@@ -234,11 +234,11 @@ bool Session::converged() const {
     return gpu_->solver.converged();
 }
 
-solver::SolverStats Session::stats() const {
+model::SolverStats Session::stats() const {
     return gpu_->solver.stats();
 }
 
-const solver::SolverOptions& Session::options() const {
+const model::SolverOptions& Session::options() const {
     return options_;
 }
 
@@ -250,21 +250,23 @@ std::vector<float> Session::phi() const {
     return gpu_->solver.readPhi();
 }
 
-io::ExportSummary Session::exportAs(const std::filesystem::path& path, io::ExportFormat format,
-                                    const io::SegmentInfo& segment) const {
+exports::ExportSummary Session::exportAs(const std::filesystem::path& path,
+                                         model::ExportFormat format,
+                                         const exports::SegmentInfo& segment) const {
     const std::vector<std::uint8_t> inside = mask();
     std::vector<float> field;
-    if (io::isSurfaceFormat(format)) {
+    if (model::isSurfaceFormat(format)) {
         field = phi();
     }
-    return io::writeExport(path, format, {scan_.geometry(), inside, field, segment, dicom_.get()});
+    return exports::writeExport(path, format,
+                                {scan_.geometry(), inside, field, segment, dicom_.get()});
 }
 
 void Session::exportMask(const std::filesystem::path& path) const {
-    const auto format = io::exportFormatOfFile(path);
+    const auto format = model::exportFormatOfFile(path);
     if (!format) {
-        throw io::WriteError(path, "cannot tell the export format from the name (" +
-                                       io::exportFormatNames() + ")");
+        throw files::WriteError(path, "cannot tell the export format from the name (" +
+                                          model::exportFormatNames() + ")");
     }
     exportAs(path, *format);
 }

@@ -6,14 +6,14 @@
 // platform/) for the session's whole life, and speak in voxel indices and real units.
 #include "core/rgba_image.hpp"
 #include "core/volume.hpp"
-#include "io/export_writer.hpp"
-#include "io/scan_reader.hpp"
+#include "exports/export_writer.hpp"
+#include "model/level_set_params.hpp"
+#include "model/solver_types.hpp"
 #include "render/render_params.hpp"
 #include "render/slice_frame.hpp"
+#include "scan/scan_reader.hpp"
 #include "session/probe.hpp"
 #include "session/speed_settings.hpp"
-#include "solver/level_set_params.hpp"
-#include "solver/solver_types.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -34,18 +34,18 @@ struct RunMode {
 };
 
 struct RunOutcome {
-    solver::StepResult result;
+    model::StepResult result;
     double solveSeconds = 0.0; // solver only, GPU work finished
 };
 
 class Session {
   public:
-    // Reads a scan (a file, a DICOM folder or "builtin:sample"; io::readScan's errors).
+    // Reads a scan (a file, a DICOM folder or "builtin:sample"; scan::readScan's errors).
     static Session open(const std::filesystem::path& path,
-                        const solver::SolverOptions& options = {});
-    Session(Volume scan, std::string format, const solver::SolverOptions& options = {});
+                        const model::SolverOptions& options = {});
+    Session(Volume scan, std::string format, const model::SolverOptions& options = {});
     // A scan as read, keeping its DICOM source (if any) for DICOM SEG export.
-    explicit Session(io::LoadedScan scan, const solver::SolverOptions& options = {});
+    explicit Session(scan::LoadedScan scan, const model::SolverOptions& options = {});
     ~Session();
     Session(Session&&) noexcept;
     Session& operator=(Session&&) noexcept;
@@ -56,11 +56,11 @@ class Session {
     // Seeds grow the level set, erasers cut it; voxel-index centre, radius in voxels. A sphere
     // whose centre is outside the scan or whose radius is not a positive finite number is
     // refused (std::invalid_argument naming the problem).
-    void addSeed(const solver::Sphere& sphere);
-    void erase(const solver::Sphere& sphere);
+    void addSeed(const model::Sphere& sphere);
+    void erase(const model::Sphere& sphere);
     // A barrier: an erase that stays a no-go region for the rest of the run (a leak's neck).
-    // At most solver::kMaxBarriers; std::invalid_argument beyond.
-    void addBarrier(const solver::Sphere& sphere);
+    // At most model::kMaxBarriers; std::invalid_argument beyond.
+    void addBarrier(const model::Sphere& sphere);
     void clearBarriers();
     // A mask on the scan's grid (inside where > 0.5) replaces the level set. Throws
     // std::runtime_error naming the file when it cannot be read or its grid differs.
@@ -73,7 +73,7 @@ class Session {
     [[nodiscard]] bool hasLevelSet() const;
 
     // Validated (std::invalid_argument); may change between any two steps.
-    void setParams(const solver::LevelSetParams& params);
+    void setParams(const model::LevelSetParams& params);
     // The speed that drives the surface (docs/speed.md): smooths the scan (once per smoothing
     // parameters: a change of kind or kappa alone reuses it), computes the edge factor, trains
     // the classifier. Restarts the convergence clock like setParams. std::invalid_argument for
@@ -90,21 +90,22 @@ class Session {
     std::uint32_t evaluateSpeedAhead(std::uint32_t maxBricks);
     void completeSpeed();
     [[nodiscard]] std::uint32_t speedBricksEvaluated() const;
-    solver::StepResult step(int iterations);
+    model::StepResult step(int iterations);
     RunOutcome run(const RunMode& mode);
     [[nodiscard]] bool converged() const;
-    [[nodiscard]] solver::SolverStats stats() const;
-    [[nodiscard]] const solver::SolverOptions& options() const;
+    [[nodiscard]] model::SolverStats stats() const;
+    [[nodiscard]] const model::SolverOptions& options() const;
 
     // 1 inside, i fastest; reads the level set back from the GPU.
     [[nodiscard]] std::vector<std::uint8_t> mask() const;
     // The level set, phi < 0 inside, in voxel units, i fastest; read back from the GPU.
     [[nodiscard]] std::vector<float> phi() const;
-    // The segmentation as `format` (io::writeExport): voxel formats from the mask on the scan's
-    // grid, surfaces (STL, PLY) from the level set's zero crossing. Throws io::WriteError.
-    io::ExportSummary exportAs(const std::filesystem::path& path, io::ExportFormat format,
-                               const io::SegmentInfo& segment = {}) const;
-    // exportAs in the format the file's extension names (io::exportFormatFor).
+    // The segmentation as `format` (exports::writeExport): voxel formats from the mask on the
+    // scan's grid, surfaces (STL, PLY) from the level set's zero crossing. Throws
+    // files::WriteError.
+    exports::ExportSummary exportAs(const std::filesystem::path& path, model::ExportFormat format,
+                                    const exports::SegmentInfo& segment = {}) const;
+    // exportAs in the format the file's extension names (model::exportFormatFor).
     void exportMask(const std::filesystem::path& path) const;
 
     // Presets for this scan (MR-style transfer function, anterior camera, middle slice).
@@ -128,8 +129,8 @@ class Session {
     struct Gpu;
     Volume scan_;
     std::string format_;
-    std::shared_ptr<const io::DicomSource> dicom_; // null unless read from DICOM
-    solver::SolverOptions options_;
+    std::shared_ptr<const scan::DicomSource> dicom_; // null unless read from DICOM
+    model::SolverOptions options_;
     std::unique_ptr<Gpu> gpu_;
     bool hasLevelSet_ = false;
 };

@@ -8,8 +8,8 @@
 
 namespace steerseg::session {
 
-SpeedProbe probeSpeed(const Volume& volume, const solver::Sphere& sphere) {
-    solver::validateSphere(sphere, volume.dims());
+SpeedProbe probeSpeed(const Volume& volume, const model::Sphere& sphere) {
+    model::validateSphere(sphere, volume.dims());
     const glm::dvec3 c(sphere.centre);
     const double r = static_cast<double>(sphere.radius);
     const glm::ivec3 dims = volume.dims();

@@ -3,7 +3,7 @@
 // The command line's --probe (docs/speed.md "How --probe chooses"): the speed's parameters
 // from a region the operator marks as the structure, by rules from the image only.
 #include "core/volume.hpp"
-#include "solver/level_set_params.hpp"
+#include "model/level_set_params.hpp"
 
 #include <cstddef>
 
@@ -37,6 +37,6 @@ inline constexpr double kNoiseFloor = 2.5;
 // Voxels whose centres lie within sphere.radius voxels of sphere.centre (voxel indices, like
 // --seed). std::invalid_argument when the sphere does not fit the scan or holds fewer than 2
 // voxels.
-SpeedProbe probeSpeed(const Volume& volume, const solver::Sphere& sphere);
+SpeedProbe probeSpeed(const Volume& volume, const model::Sphere& sphere);
 
 } // namespace steerseg::session

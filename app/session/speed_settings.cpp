@@ -9,11 +9,11 @@ namespace steerseg::session {
 
 namespace {
 
-void checkExamples(const std::vector<solver::Sphere>& spheres, const glm::ivec3& dims,
+void checkExamples(const std::vector<model::Sphere>& spheres, const glm::ivec3& dims,
                    const char* what) {
-    for (const solver::Sphere& s : spheres) {
+    for (const model::Sphere& s : spheres) {
         try {
-            solver::validateSphere(s, dims);
+            model::validateSphere(s, dims);
         } catch (const std::invalid_argument& e) {
             throw std::invalid_argument(std::string(what) + ": " + e.what());
         }
@@ -24,10 +24,10 @@ void checkExamples(const std::vector<solver::Sphere>& spheres, const glm::ivec3&
 
 void validateSpeedSettings(const SpeedSettings& settings, const glm::ivec3& dims) {
     speed::validateSmoothing(settings.smoothing);
-    if (settings.kind == speed::SpeedKind::Edge) {
+    if (settings.kind == model::SpeedKind::Edge) {
         speed::validateKappa(settings.kappa);
     }
-    if (settings.kind == speed::SpeedKind::Classify &&
+    if (settings.kind == model::SpeedKind::Classify &&
         (settings.inside.empty() || settings.outside.empty())) {
         throw std::invalid_argument(
             "the classify speed needs at least one inside and one outside example");

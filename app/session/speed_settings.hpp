@@ -2,9 +2,9 @@
 
 // Which speed drives the surface and what it needs, as plain data (docs/speed.md): the command
 // line and the kiosk fill it, Session::setSpeed turns it into textures on the GPU.
-#include "solver/level_set_params.hpp"
+#include "model/level_set_params.hpp"
+#include "model/speed_kind.hpp"
 #include "speed/smoothing_params.hpp"
-#include "speed/speed_kind.hpp"
 
 #include <functional>
 #include <glm/glm.hpp>
@@ -14,12 +14,12 @@
 namespace steerseg::session {
 
 struct SpeedSettings {
-    speed::SpeedKind kind = speed::SpeedKind::Threshold;
+    model::SpeedKind kind = model::SpeedKind::Threshold;
     speed::SmoothingParams smoothing; // what the speed's I is: the scan smoothed this way
     float kappa = 0.0F;               // edge: real units per voxel, > 0
     // classify: the operator's examples, voxel indices and radii in voxels.
-    std::vector<solver::Sphere> inside;
-    std::vector<solver::Sphere> outside;
+    std::vector<model::Sphere> inside;
+    std::vector<model::Sphere> outside;
 };
 
 // Throws std::invalid_argument (one line) for settings no speed can run with: smoothing out of

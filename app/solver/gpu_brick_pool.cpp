@@ -4,8 +4,8 @@
 #include "core/volume.hpp"
 #include "gpu/buffer_io.hpp"
 #include "gpu/gl_error.hpp"
+#include "model/level_set_params.hpp"
 #include "solver/control_block.hpp"
-#include "solver/level_set_params.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -151,7 +151,7 @@ void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
     const bool outside = phi.empty();
     auto at = [&](int i, int j, int k) {
         if (outside) {
-            return kPhiFar;
+            return model::kPhiFar;
         }
         i = std::min(i, dims_.x - 1);
         j = std::min(j, dims_.y - 1);
@@ -173,7 +173,7 @@ void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
                 for (int j = o.y; j < std::min(o.y + b, dims_.y); ++j) {
                     for (int i = o.x; i < std::min(o.x + b, dims_.x); ++i) {
                         const float p = at(i, j, k);
-                        live = live || std::abs(p) < kPhiFar;
+                        live = live || std::abs(p) < model::kPhiFar;
                         negative = negative || p < 0.0F;
                         positive = positive || p >= 0.0F;
                     }
@@ -197,7 +197,7 @@ void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
               : std::min(maxCapacity(), std::max(kMinCapacity, poolTarget(used, 0, 0)));
     allocateSlotBuffers(capacity);
 
-    std::vector<float> pool(static_cast<std::size_t>(capacity) * bv, kPhiFar);
+    std::vector<float> pool(static_cast<std::size_t>(capacity) * bv, model::kPhiFar);
     std::vector<std::uint32_t> slotBrick(capacity, kNoBrick);
     for (std::uint32_t s = 0; s < used; ++s) {
         const std::uint32_t n = usedBricks[s];
@@ -247,9 +247,9 @@ std::vector<float> GpuBrickPool::download() const {
                 const auto brick =
                     static_cast<std::size_t>(i / b + grid_.x * (j / b + grid_.y * (k / b)));
                 const std::uint32_t slot = page[brick];
-                float value = kPhiFar;
+                float value = model::kPhiFar;
                 if (slot == kBrickInside) {
-                    value = -kPhiFar;
+                    value = -model::kPhiFar;
                 } else if (slot != kBrickOutside) {
                     value = pool[slot * bv +
                                  static_cast<std::size_t>(i % b + b * (j % b + b * (k % b)))];
@@ -375,7 +375,7 @@ BrickPoolView GpuBrickPool::view() const {
     v.volumeDims = dims_;
     v.brickGrid = grid_;
     v.brickSize = brickSize_;
-    v.phiFar = kPhiFar;
+    v.phiFar = model::kPhiFar;
     return v;
 }
 

@@ -20,7 +20,7 @@ double LeakWatch::calmRate(double elapsed, double net) {
     return voxels / time;
 }
 
-std::optional<LeakSite> LeakWatch::observe(const GrowthSample& sample) {
+std::optional<model::LeakSite> LeakWatch::observe(const GrowthSample& sample) {
     if (!haveTime_ || !(sample.time > lastTime_)) {
         // The first sample, or no evolution since the last (a zero time step): no rate yet.
         haveTime_ = true;
@@ -63,7 +63,7 @@ std::optional<LeakSite> LeakWatch::observe(const GrowthSample& sample) {
     }
     // Once said, the same leak is not said again until the operator acts (reset).
     said_ = true;
-    return LeakSite{boxLo_, boxHi_, sample.iteration};
+    return model::LeakSite{boxLo_, boxHi_, sample.iteration};
 }
 
 } // namespace steerseg::solver

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "solver/solver_types.hpp"
+#include "model/solver_types.hpp"
 
 #include <array>
 #include <cstdint>
@@ -42,7 +42,7 @@ class LeakWatch {
     static constexpr int kFloorChecks = 4;
 
     // The leak's site when this sample completes a jump, else nothing.
-    std::optional<LeakSite> observe(const GrowthSample& sample);
+    std::optional<model::LeakSite> observe(const GrowthSample& sample);
     // After an edit or a parameter change: the growth that follows is the operator's doing.
     void reset();
     [[nodiscard]] double lastRate() const { return lastRate_; }

@@ -42,19 +42,19 @@ void LevelSetSolver::initFromMask(std::span<const std::uint8_t> mask) {
     uploadPhi(maskToPhi(mask, dims_));
 }
 
-void LevelSetSolver::addSphere(const Sphere& sphere) {
+void LevelSetSolver::addSphere(const model::Sphere& sphere) {
     editSphere(sphere, true);
 }
-void LevelSetSolver::removeSphere(const Sphere& sphere) {
+void LevelSetSolver::removeSphere(const model::Sphere& sphere) {
     editSphere(sphere, false);
 }
 
-void LevelSetSolver::editSphere(const Sphere& sphere, bool add) {
-    validateSphere(sphere, dims_);
+void LevelSetSolver::editSphere(const model::Sphere& sphere, bool add) {
+    model::validateSphere(sphere, dims_);
     gpu::GlStateGuard guard;
     wakeAll(); // the sphere may cover sleeping bricks: classify_bricks must see them
     const int b = options_.brickSize;
-    const float reach = sphere.radius + kPhiFar + 1.0F;
+    const float reach = sphere.radius + model::kPhiFar + 1.0F;
     const glm::ivec3 lo = glm::clamp(glm::ivec3(glm::floor(sphere.centre - reach)) / b,
                                      glm::ivec3(0), pool_->brickGrid() - 1);
     const glm::ivec3 hi = glm::clamp(glm::ivec3(glm::ceil(sphere.centre + reach)) / b,
@@ -115,10 +115,10 @@ void LevelSetSolver::noteChange() {
     leakWatch_.reset();
 }
 
-void LevelSetSolver::addBarrier(const Sphere& sphere) {
-    validateSphere(sphere, dims_);
-    if (barriers_.size() >= kMaxBarriers) {
-        throw std::invalid_argument("at most " + std::to_string(kMaxBarriers) +
+void LevelSetSolver::addBarrier(const model::Sphere& sphere) {
+    model::validateSphere(sphere, dims_);
+    if (barriers_.size() >= model::kMaxBarriers) {
+        throw std::invalid_argument("at most " + std::to_string(model::kMaxBarriers) +
                                     " barriers (clear them to place others)");
     }
     barriers_.push_back(sphere);
@@ -136,7 +136,7 @@ void LevelSetSolver::clearBarriers() {
 // Sets the barrier uniforms of the passes that evaluate the speed (barrier_speed.glsl).
 void LevelSetSolver::uploadBarriers() {
     std::vector<float> packed;
-    for (const Sphere& b : barriers_) {
+    for (const model::Sphere& b : barriers_) {
         packed.insert(packed.end(), {b.centre.x, b.centre.y, b.centre.z, b.radius});
     }
     // alpha * hold = 1 + 3 (1 - alpha) outweighs the curvature term's pull (at most a few

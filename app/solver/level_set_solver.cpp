@@ -25,54 +25,31 @@ using detail::kListArgs;
 
 namespace {
 
-// Brick edge, measured with solver_bench on llvmpipe (2 cores, idle, 96^3, sphere r = 24):
-// 4 -> 14.9 it/s (143k active voxels), 8 -> 19.1 it/s (254k), 16 -> 11.0 it/s (569k). 8 is the
-// fastest per iteration with 1.8x 4's voxels, and its apron tile (4 KB) fits the 16 KB
-// shared-memory minimum of GLES 3.1, which 16 (23 KB) does not.
-constexpr int kDefaultBrickSize = 8;
-
 void setUniform(GLuint program, const char* name, float v) {
     glProgramUniform1f(program, glGetUniformLocation(program, name), v);
 }
 
 } // namespace
 
-int defaultBrickSize() {
-    return kDefaultBrickSize;
-}
-
-const char* stopReasonName(StopReason reason) {
-    switch (reason) {
-    case StopReason::IterationLimit:
-        return "iteration_limit";
-    case StopReason::TimeReached:
-        return "time_reached";
-    case StopReason::Converged:
-        return "converged";
-    case StopReason::Leak:
-        return "leak";
-    }
-    return "unknown";
-}
-
-LevelSetSolver::LevelSetSolver(const Volume& volume, const SolverOptions& options)
+LevelSetSolver::LevelSetSolver(const Volume& volume, const model::SolverOptions& options)
     : LevelSetSolver(std::make_unique<gpu::ScanTexture>(volume), nullptr, options) {}
 
 LevelSetSolver::LevelSetSolver(std::span<const float> intensities, const glm::ivec3& dims,
-                               const SolverOptions& options)
+                               const model::SolverOptions& options)
     : LevelSetSolver(std::make_unique<gpu::ScanTexture>(intensities, dims), nullptr, options) {}
 
-LevelSetSolver::LevelSetSolver(const gpu::ScanTexture& scan, const SolverOptions& options)
+LevelSetSolver::LevelSetSolver(const gpu::ScanTexture& scan, const model::SolverOptions& options)
     : LevelSetSolver(nullptr, &scan, options) {}
 
 LevelSetSolver::LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own,
-                               const gpu::ScanTexture* borrowed, const SolverOptions& options)
+                               const gpu::ScanTexture* borrowed,
+                               const model::SolverOptions& options)
     : ownScan_(std::move(own)), scan_(ownScan_ ? ownScan_.get() : borrowed), dims_(scan_->dims()),
       options_(options) {
     gpu::GlStateGuard guard;
     const glm::ivec3 dims = dims_;
     if (options_.brickSize == 0) {
-        options_.brickSize = kDefaultBrickSize;
+        options_.brickSize = model::defaultBrickSize();
     }
     const int b = options_.brickSize;
     if (b != 4 && b != 8 && b != 16) {
@@ -113,8 +90,8 @@ LevelSetSolver::LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own,
 
 LevelSetSolver::~LevelSetSolver() = default;
 
-void LevelSetSolver::setParams(const LevelSetParams& params) {
-    const TimeStepRule rule = timeStepRule(params); // validates
+void LevelSetSolver::setParams(const model::LevelSetParams& params) {
+    const model::TimeStepRule rule = model::timeStepRule(params); // validates
     params_ = params;
     haveParams_ = true;
     for (GLuint p : {programs_->measureSpeed.id(), programs_->updatePhi.id()}) {
@@ -194,18 +171,18 @@ void LevelSetSolver::iterate(float timeLimit) {
     settle();
 }
 
-StepResult LevelSetSolver::step(int n) {
+model::StepResult LevelSetSolver::step(int n) {
     return advance(n, FLT_MAX, false);
 }
 
-StepResult LevelSetSolver::evolveUntil(float time, int maxIterations) {
+model::StepResult LevelSetSolver::evolveUntil(float time, int maxIterations) {
     if (!(time >= 0.0F) || !std::isfinite(time)) {
         throw std::invalid_argument("evolution time must be a finite number >= 0");
     }
     return advance(maxIterations, time, false);
 }
 
-StepResult LevelSetSolver::runUntilConverged(int maxIterations) {
+model::StepResult LevelSetSolver::runUntilConverged(int maxIterations) {
     return advance(maxIterations, FLT_MAX, true);
 }
 
@@ -213,7 +190,7 @@ bool LevelSetSolver::converged() const {
     return converged_;
 }
 
-StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool untilConverged) {
+model::StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool untilConverged) {
     requireParams();
     gpu::GlStateGuard guard;
     pool_->bind();
@@ -234,7 +211,7 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
     }
     const std::uint32_t start = ctrl.iteration;
     int remaining = maxIterations;
-    std::optional<LeakSite> leak;
+    std::optional<model::LeakSite> leak;
     while (remaining > 0) {
         const int chunk = std::min(remaining, options_.checkInterval);
         for (int n = 0; n < chunk; ++n) {
@@ -281,13 +258,13 @@ StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bool unti
     stats_.bandBricks = ctrl.bandCount;
     stats_.frontVoxels = ctrl.frontVoxels;
     known_ = ctrl;
-    StopReason reason = StopReason::IterationLimit;
+    model::StopReason reason = model::StopReason::IterationLimit;
     if (leak) {
-        reason = StopReason::Leak;
+        reason = model::StopReason::Leak;
     } else if (untilConverged && converged_) {
-        reason = StopReason::Converged;
+        reason = model::StopReason::Converged;
     } else if (ctrl.time >= timeLimit) {
-        reason = StopReason::TimeReached;
+        reason = model::StopReason::TimeReached;
     }
     return {static_cast<int>(ctrl.iteration - start), ctrl.time, converged_, reason, leak};
 }
@@ -302,7 +279,7 @@ void LevelSetSolver::takeVisits(ControlBlock& ctrl) {
 
 // The leak watch's check: this interval's growth from update_phi's counters, which are then
 // cleared on the GPU (`ctrl` is fresh and the GPU idle). A leak only when stopOnLeak asks.
-std::optional<LeakSite> LevelSetSolver::watchGrowth(ControlBlock& ctrl) {
+std::optional<model::LeakSite> LevelSetSolver::watchGrowth(ControlBlock& ctrl) {
     GrowthSample sample;
     sample.time = ctrl.time;
     sample.iteration = static_cast<int>(ctrl.iteration);
@@ -318,7 +295,7 @@ std::optional<LeakSite> LevelSetSolver::watchGrowth(ControlBlock& ctrl) {
     }
     detail::clearGrowth(ctrl);
     pool_->writeControl(ctrl);
-    std::optional<LeakSite> leak = leakWatch_.observe(sample);
+    std::optional<model::LeakSite> leak = leakWatch_.observe(sample);
     stats_.growthRate = static_cast<float>(leakWatch_.lastRate());
     return options_.stopOnLeak ? leak : std::nullopt;
 }
@@ -363,8 +340,8 @@ BrickPoolView LevelSetSolver::poolView() const {
     return pool_->view();
 }
 
-SolverStats LevelSetSolver::stats() const {
-    SolverStats s = stats_;
+model::SolverStats LevelSetSolver::stats() const {
+    model::SolverStats s = stats_;
     s.iterations = lastIteration_;
     s.evolvedTime = lastTime_;
     s.capacity = pool_->capacity();

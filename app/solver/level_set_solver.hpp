@@ -3,11 +3,11 @@
 #include "core/volume.hpp"
 #include "gpu/gl_handle.hpp"
 #include "gpu/scan_texture.hpp"
+#include "model/level_set_params.hpp"
+#include "model/solver_types.hpp"
 #include "solver/brick_pool_view.hpp"
 #include "solver/control_block.hpp"
 #include "solver/leak_watch.hpp"
-#include "solver/level_set_params.hpp"
-#include "solver/solver_types.hpp"
 #include "speed/speed_inputs.hpp"
 
 #include <cstddef>
@@ -33,17 +33,17 @@ class SpeedOnDemand;
 class LevelSetSolver {
   public:
     // Borrows the scan on the GPU (shared with the renderer); it must outlive the solver.
-    explicit LevelSetSolver(const gpu::ScanTexture& scan, const SolverOptions& options = {});
+    explicit LevelSetSolver(const gpu::ScanTexture& scan, const model::SolverOptions& options = {});
     // Upload and own the scan's texture (tests, benchmarks, a solver with no renderer).
-    explicit LevelSetSolver(const Volume& volume, const SolverOptions& options = {});
+    explicit LevelSetSolver(const Volume& volume, const model::SolverOptions& options = {});
     LevelSetSolver(std::span<const float> intensities, const glm::ivec3& dims,
-                   const SolverOptions& options = {});
+                   const model::SolverOptions& options = {});
     ~LevelSetSolver();
     LevelSetSolver(const LevelSetSolver&) = delete;
     LevelSetSolver& operator=(const LevelSetSolver&) = delete;
 
     // Validated (std::invalid_argument); may change between any two iterations.
-    void setParams(const LevelSetParams& params);
+    void setParams(const model::LevelSetParams& params);
     // Wakes every sleeping brick at the next iteration. Anything that changes the speed or
     // the level set outside a step must call it (setParams, edits, barriers and uploads do):
     // a sleeping brick's phi and its time-step bound are only valid for the speed it last saw.
@@ -64,26 +64,26 @@ class LevelSetSolver {
     // word read back from the GPU: for reports, not per frame (stats() reads nothing back).
     [[nodiscard]] std::uint32_t speedBricksEvaluated() const;
     // Sphere edits (voxel indices, radius in voxels), between any two iterations.
-    void addSphere(const Sphere& sphere);
-    void removeSphere(const Sphere& sphere);
+    void addSphere(const model::Sphere& sphere);
+    void removeSphere(const model::Sphere& sphere);
     // Barriers: spheres the surface may not enter for the rest of the run (a leak's neck,
     // shaders/solver/barrier_speed.glsl). Adding one also cuts the surface out of it. At most
     // kMaxBarriers (std::invalid_argument beyond, or for a sphere validateSphere refuses).
-    void addBarrier(const Sphere& sphere);
+    void addBarrier(const model::Sphere& sphere);
     void clearBarriers();
-    [[nodiscard]] const std::vector<Sphere>& barriers() const { return barriers_; }
+    [[nodiscard]] const std::vector<model::Sphere>& barriers() const { return barriers_; }
     // Replace the level set.
     // `intensities`: the scan's real-unit values, i fastest (the solver keeps no host copy).
     void initFromThreshold(std::span<const float> intensities, float lo, float hi);
     void initFromMask(std::span<const std::uint8_t> mask);
 
     // n iterations (fewer never: a pool that runs out is grown and the rest re-run).
-    StepResult step(int n);
+    model::StepResult step(int n);
     // Until the summed time step reaches `time` (the last step is cut to land on it) or
     // maxIterations.
-    StepResult evolveUntil(float time, int maxIterations);
+    model::StepResult evolveUntil(float time, int maxIterations);
     // Until converged() or maxIterations.
-    StepResult runUntilConverged(int maxIterations);
+    model::StepResult runUntilConverged(int maxIterations);
     [[nodiscard]] bool converged() const;
 
     // 1 inside (phi < 0), i fastest; reads the level set back (not per iteration).
@@ -93,24 +93,24 @@ class LevelSetSolver {
     // The level set for readers (renderer); valid until the next step or edit.
     [[nodiscard]] BrickPoolView poolView() const;
     [[nodiscard]] const gpu::ScanTexture& scan() const { return *scan_; }
-    [[nodiscard]] SolverStats stats() const;
+    [[nodiscard]] model::SolverStats stats() const;
     [[nodiscard]] const glm::ivec3& dims() const { return dims_; }
 
   private:
     LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own, const gpu::ScanTexture* borrowed,
-                   const SolverOptions& options);
-    StepResult advance(int maxIterations, float timeLimit, bool untilConverged);
+                   const model::SolverOptions& options);
+    model::StepResult advance(int maxIterations, float timeLimit, bool untilConverged);
     void iterate(float timeLimit);
     [[nodiscard]] bool speedOnDemand() const;
     void bindSpeed() const;
     void allocateAndList();
     void settle();
-    void editSphere(const Sphere& sphere, bool add);
+    void editSphere(const model::Sphere& sphere, bool add);
     // A dense phi, or empty: everything outside.
     void uploadPhi(std::span<const float> phi);
     void noteChange();
     void uploadBarriers();
-    std::optional<LeakSite> watchGrowth(detail::ControlBlock& ctrl);
+    std::optional<model::LeakSite> watchGrowth(detail::ControlBlock& ctrl);
     void takeVisits(detail::ControlBlock& ctrl);
     bool managePool(const detail::ControlBlock& ctrl);
     void dispatch(GLuint program, GLuint x, GLuint y = 1, GLuint z = 1);
@@ -120,22 +120,22 @@ class LevelSetSolver {
     std::unique_ptr<gpu::ScanTexture> ownScan_;
     const gpu::ScanTexture* scan_;
     glm::ivec3 dims_;
-    SolverOptions options_;
+    model::SolverOptions options_;
     std::unique_ptr<detail::SolverPrograms> programs_;
     std::unique_ptr<detail::GpuBrickPool> pool_;
     std::unique_ptr<detail::SpeedOnDemand> onDemand_; // built by the first on-demand speed
-    LevelSetParams params_;
+    model::LevelSetParams params_;
     speed::SpeedInputs speedInputs_;
     bool haveParams_ = false;
     std::uint32_t epoch_ = 1;
-    SolverStats stats_;
+    model::SolverStats stats_;
     float lastTime_ = 0.0F;
     int lastIteration_ = 0;
     std::uint32_t lastUsed_ = 0;                // used slots at the last pool check
     std::optional<detail::ControlBlock> known_; // the GPU's control block, when known
     bool converged_ = false;
     bool wakePending_ = true;
-    std::vector<Sphere> barriers_;
+    std::vector<model::Sphere> barriers_;
     LeakWatch leakWatch_;
 };
 

@@ -26,8 +26,8 @@ std::vector<float> maskToPhi(std::span<const std::uint8_t> mask, const glm::ivec
     }
     // |phi| starts clamped; each boundary voxel (a face neighbour has the other label) lowers
     // |phi| of the other label's voxels within reach. Cost follows the surface, not the volume.
-    std::vector<float> magnitude(mask.size(), kPhiFar);
-    const int reach = static_cast<int>(std::ceil(kPhiFar + 0.5F));
+    std::vector<float> magnitude(mask.size(), model::kPhiFar);
+    const int reach = static_cast<int>(std::ceil(model::kPhiFar + 0.5F));
     auto label = [&](int i, int j, int k) { return mask[linearIndex(d, i, j, k)] != 0; };
     for (int k = 0; k < d.z; ++k) {
         for (int j = 0; j < d.y; ++j) {
@@ -79,11 +79,11 @@ std::vector<std::uint8_t> thresholdMask(std::span<const float> values, float lo,
     return mask;
 }
 
-void applySphere(std::vector<float>& phi, const glm::ivec3& d, const Sphere& s, bool add) {
+void applySphere(std::vector<float>& phi, const glm::ivec3& d, const model::Sphere& s, bool add) {
     for (int k = 0; k < d.z; ++k) {
         for (int j = 0; j < d.y; ++j) {
             for (int i = 0; i < d.x; ++i) {
-                const float sd = sphereDistance(s, glm::vec3(i, j, k));
+                const float sd = model::sphereDistance(s, glm::vec3(i, j, k));
                 float& p = phi[linearIndex(d, i, j, k)];
                 p = clampPhi(add ? std::min(p, sd) : std::max(p, -sd));
             }

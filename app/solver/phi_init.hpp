@@ -2,7 +2,7 @@
 
 // Initial level sets on the CPU (run once, not per iteration): both solvers start from these.
 
-#include "solver/level_set_params.hpp"
+#include "model/level_set_params.hpp"
 
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -21,7 +21,8 @@ std::vector<float> maskToPhi(std::span<const std::uint8_t> mask, const glm::ivec
 std::vector<std::uint8_t> thresholdMask(std::span<const float> values, float lo, float hi);
 
 // Union (add) or difference (remove) of a dense phi with a sphere, clamped.
-void applySphere(std::vector<float>& phi, const glm::ivec3& dims, const Sphere& sphere, bool add);
+void applySphere(std::vector<float>& phi, const glm::ivec3& dims, const model::Sphere& sphere,
+                 bool add);
 
 // 1 where phi < 0.
 std::vector<std::uint8_t> insideMask(std::span<const float> phi);

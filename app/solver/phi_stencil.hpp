@@ -4,8 +4,8 @@
 // shaders/solver/phi_stencil.glsl is the same arithmetic line for line: keep them in step.
 // Unit voxel spacing; neighbours outside the volume repeat the border voxel.
 
-#include "solver/level_set_params.hpp"
-#include "speed/speed_kind.hpp"
+#include "model/level_set_params.hpp"
+#include "model/speed_kind.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -67,11 +67,11 @@ inline float curvatureTimesGradient(const PhiStencil& s) {
 inline bool inNarrowBand(const PhiStencil& s) {
     const float m = std::min({std::abs(s.c), std::abs(s.xm), std::abs(s.xp), std::abs(s.ym),
                               std::abs(s.yp), std::abs(s.zm), std::abs(s.zp)});
-    return m < kPhiFar;
+    return m < model::kPhiFar;
 }
 
 inline float clampPhi(float phi) {
-    return std::clamp(phi, -kPhiFar, kPhiFar);
+    return std::clamp(phi, -model::kPhiFar, model::kPhiFar);
 }
 
 // On the front: the voxel and a face neighbour lie on different sides of the surface (phi < 0
@@ -98,27 +98,27 @@ inline float phiStep(const PhiStencil& s, float dataSpeed, float alpha, float dt
     const float curvature = (1.0F - alpha) * curvatureTimesGradient(s);
     // Rescaling: Godunov |grad phi| taken from the surface's side (information flows outward).
     const float rescale =
-        kRescaleWeight * s.c * (1.0F - upwindGradient(s, s.c >= 0.0F ? 1.0F : -1.0F));
+        model::kRescaleWeight * s.c * (1.0F - upwindGradient(s, s.c >= 0.0F ? 1.0F : -1.0F));
     return clampPhi(moved + dt * (curvature + rescale));
 }
 
 // The paper's threshold speed D(I) = eps - |I - T|. The GPU twin is
 // shaders/speed/data_speed.glsl.
-inline float thresholdSpeed(float intensity, const LevelSetParams& p) {
+inline float thresholdSpeed(float intensity, const model::LevelSetParams& p) {
     return p.eps - std::abs(intensity - p.T);
 }
 
 // The data term of each speed (docs/speed.md) from the voxel's intensity and its precomputed
 // factor (edge: g; classify: P(in) - P(out)). The GPU twin is dataSpeed() in
 // shaders/speed/data_speed.glsl.
-inline float dataSpeed(float intensity, float factor, speed::SpeedKind kind,
-                       const LevelSetParams& p) {
+inline float dataSpeed(float intensity, float factor, model::SpeedKind kind,
+                       const model::LevelSetParams& p) {
     switch (kind) {
-    case speed::SpeedKind::Classify:
+    case model::SpeedKind::Classify:
         return factor;
-    case speed::SpeedKind::Edge:
+    case model::SpeedKind::Edge:
         return factor * thresholdSpeed(intensity, p);
-    case speed::SpeedKind::Threshold:
+    case model::SpeedKind::Threshold:
         break;
     }
     return thresholdSpeed(intensity, p);

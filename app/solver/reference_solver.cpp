@@ -18,18 +18,18 @@ ReferenceSolver::ReferenceSolver(std::vector<float> intensities, const glm::ivec
     if (dims.x <= 0 || dims.y <= 0 || dims.z <= 0 || intensities_.size() != count) {
         throw std::invalid_argument("reference solver: intensities do not match the dimensions");
     }
-    phi_.assign(count, kPhiFar);
+    phi_.assign(count, model::kPhiFar);
     next_ = phi_;
 }
 
-void ReferenceSolver::setParams(const LevelSetParams& params) {
-    validateParams(params);
+void ReferenceSolver::setParams(const model::LevelSetParams& params) {
+    model::validateParams(params);
     params_ = params;
     haveParams_ = true;
 }
 
-void ReferenceSolver::setSpeed(speed::SpeedKind kind, std::vector<float> factor) {
-    if (kind != speed::SpeedKind::Threshold && factor.size() != intensities_.size()) {
+void ReferenceSolver::setSpeed(model::SpeedKind kind, std::vector<float> factor) {
+    if (kind != model::SpeedKind::Threshold && factor.size() != intensities_.size()) {
         throw std::invalid_argument("reference solver: the speed factor has " +
                                     std::to_string(factor.size()) + " voxels, the volume " +
                                     std::to_string(intensities_.size()));
@@ -39,17 +39,17 @@ void ReferenceSolver::setSpeed(speed::SpeedKind kind, std::vector<float> factor)
 }
 
 float ReferenceSolver::speedAt(std::size_t at) const {
-    const float factor = speedKind_ == speed::SpeedKind::Threshold ? 0.0F : factor_[at];
+    const float factor = speedKind_ == model::SpeedKind::Threshold ? 0.0F : factor_[at];
     return dataSpeed(intensities_[at], factor, speedKind_, params_);
 }
 
-void ReferenceSolver::addSphere(const Sphere& sphere) {
-    validateSphere(sphere, dims_);
+void ReferenceSolver::addSphere(const model::Sphere& sphere) {
+    model::validateSphere(sphere, dims_);
     applySphere(phi_, dims_, sphere, true);
 }
 
-void ReferenceSolver::removeSphere(const Sphere& sphere) {
-    validateSphere(sphere, dims_);
+void ReferenceSolver::removeSphere(const model::Sphere& sphere) {
+    model::validateSphere(sphere, dims_);
     applySphere(phi_, dims_, sphere, false);
 }
 
@@ -105,7 +105,7 @@ int ReferenceSolver::step(int n, float timeLimit) {
     if (!haveParams_) {
         throw std::logic_error("reference solver: setParams before step");
     }
-    const TimeStepRule rule = timeStepRule(params_);
+    const model::TimeStepRule rule = model::timeStepRule(params_);
     int done = 0;
     for (; done < n; ++done) {
         // Time step from the fastest data speed on the front (as the GPU's measure pass).
@@ -126,7 +126,7 @@ int ReferenceSolver::step(int n, float timeLimit) {
                 }
             }
         }
-        const float dt = std::min(stableTimeStep(rule, maxRate), timeLimit - time_);
+        const float dt = std::min(model::stableTimeStep(rule, maxRate), timeLimit - time_);
         if (!(dt > 0.0F)) {
             break;
         }

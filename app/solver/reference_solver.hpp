@@ -1,7 +1,7 @@
 #pragma once
 
-#include "solver/level_set_params.hpp"
-#include "speed/speed_kind.hpp"
+#include "model/level_set_params.hpp"
+#include "model/speed_kind.hpp"
 
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -18,14 +18,14 @@ class ReferenceSolver {
     // `intensities`: real-unit values, i fastest. Starts with an empty level set (all outside).
     ReferenceSolver(std::vector<float> intensities, const glm::ivec3& dims);
 
-    void setParams(const LevelSetParams& params);
+    void setParams(const model::LevelSetParams& params);
     // The GPU solver's setSpeedInputs: `factor` per voxel (i fastest; edge: g, classify:
     // P(in) - P(out)), ignored by the threshold speed. The intensities given to the constructor
     // are the speed's I (pass the smoothed scan to mirror a smoothed GPU run).
     // std::invalid_argument when the factor's size differs from the volume's.
-    void setSpeed(speed::SpeedKind kind, std::vector<float> factor);
-    void addSphere(const Sphere& sphere);
-    void removeSphere(const Sphere& sphere);
+    void setSpeed(model::SpeedKind kind, std::vector<float> factor);
+    void addSphere(const model::Sphere& sphere);
+    void removeSphere(const model::Sphere& sphere);
     void initFromMask(std::span<const std::uint8_t> mask);
     void initFromThreshold(float lo, float hi);
 
@@ -50,12 +50,12 @@ class ReferenceSolver {
     [[nodiscard]] float speedAt(std::size_t at) const;
 
     std::vector<float> intensities_;
-    speed::SpeedKind speedKind_ = speed::SpeedKind::Threshold;
+    model::SpeedKind speedKind_ = model::SpeedKind::Threshold;
     std::vector<float> factor_;
     glm::ivec3 dims_;
     std::vector<float> phi_;
     std::vector<float> next_;
-    LevelSetParams params_;
+    model::LevelSetParams params_;
     bool haveParams_ = false;
     int iterations_ = 0;
     int lastChange_ = 0;

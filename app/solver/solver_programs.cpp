@@ -1,7 +1,7 @@
 #include "solver/solver_programs.hpp"
 
 #include "gpu/program.hpp"
-#include "solver/level_set_params.hpp"
+#include "model/level_set_params.hpp"
 
 #include <cstdio>
 #include <string>
@@ -10,14 +10,14 @@ namespace steerseg::solver::detail {
 
 gpu::Defines solverDefines(int brickSize, int localSize) {
     char far[32];
-    std::snprintf(far, sizeof far, "%.1f", static_cast<double>(kPhiFar));
+    std::snprintf(far, sizeof far, "%.1f", static_cast<double>(model::kPhiFar));
     char rescale[32];
-    std::snprintf(rescale, sizeof rescale, "%.4f", static_cast<double>(kRescaleWeight));
+    std::snprintf(rescale, sizeof rescale, "%.4f", static_cast<double>(model::kRescaleWeight));
     return {{"BRICK_SIZE", std::to_string(brickSize)},
             {"PHI_FAR", far},
             {"RESCALE_WEIGHT", rescale},
             {"LOCAL_SIZE", std::to_string(localSize)},
-            {"MAX_BARRIERS", std::to_string(kMaxBarriers)}};
+            {"MAX_BARRIERS", std::to_string(model::kMaxBarriers)}};
 }
 
 SolverPrograms::SolverPrograms(int brickSize, int groupSize) : localSize(groupSize) {

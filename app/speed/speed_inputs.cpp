@@ -6,14 +6,14 @@
 namespace steerseg::speed {
 
 void validateSpeedInputs(const SpeedInputs& inputs) {
-    if (inputs.kind != SpeedKind::Threshold && inputs.factor == 0) {
+    if (inputs.kind != model::SpeedKind::Threshold && inputs.factor == 0) {
         throw std::invalid_argument(std::string("speed ") +
-                                    std::string(speedKindName(inputs.kind)) +
+                                    std::string(model::speedKindName(inputs.kind)) +
                                     " needs its factor texture");
     }
     const OnDemandForest& f = inputs.onDemand;
-    if (f.nodes != 0 &&
-        (inputs.kind != SpeedKind::Classify || f.roots == 0 || f.trees < 1 || f.maxDepth < 1)) {
+    if (f.nodes != 0 && (inputs.kind != model::SpeedKind::Classify || f.roots == 0 || f.trees < 1 ||
+                         f.maxDepth < 1)) {
         throw std::invalid_argument(
             "a speed evaluated on demand needs the classify kind and a whole forest");
     }

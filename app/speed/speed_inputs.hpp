@@ -1,7 +1,7 @@
 #pragma once
 
 #include "gpu/gl.hpp"
-#include "speed/speed_kind.hpp"
+#include "model/speed_kind.hpp"
 
 namespace steerseg::speed {
 
@@ -22,7 +22,7 @@ struct OnDemandForest {
 };
 
 struct SpeedInputs {
-    SpeedKind kind = SpeedKind::Threshold;
+    model::SpeedKind kind = model::SpeedKind::Threshold;
     GLuint intensity = 0;
     GLuint factor = 0;
     OnDemandForest onDemand;

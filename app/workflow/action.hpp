@@ -3,7 +3,7 @@
 // The workflow's vocabulary: the states of the fixed operator workflow and the actions that
 // move it. Devices, gestures, bindings and scripts all end here; nothing in this folder knows
 // where an action came from. No GL, no OS: the workflow runs in unit tests without a GPU.
-#include "speed/speed_kind.hpp" // the enum only
+#include "model/speed_kind.hpp" // the enum only
 
 #include <cstddef>
 #include <glm/glm.hpp>
@@ -88,7 +88,7 @@ struct SetEraseMode { // a tap on a slice seeds, or erases in erase mode
 // are its inside examples, MarkOutside gives the outside ones (a tap in outside mode); the
 // newest kMaxExamples of each kind count.
 struct SetSpeed {
-    speed::SpeedKind kind = speed::SpeedKind::Threshold;
+    model::SpeedKind kind = model::SpeedKind::Threshold;
 };
 struct MarkOutside {
     glm::dvec3 voxel{0.0};

@@ -1,6 +1,6 @@
 #include "workflow/audit_log.hpp"
 
-#include "speed/speed_kind.hpp"
+#include "model/speed_kind.hpp"
 #include "workflow/utc_time.hpp"
 
 #include <cerrno>
@@ -58,7 +58,7 @@ nlohmann::json values(const SetEraseMode& a) {
     return {{"erase", a.erase}};
 }
 nlohmann::json values(const SetSpeed& a) {
-    return {{"speed", speed::speedKindName(a.kind)}};
+    return {{"speed", model::speedKindName(a.kind)}};
 }
 nlohmann::json values(const MarkOutside& a) {
     return {{"voxel", vec(a.voxel)}, {"radius_mm", a.radiusMm}};

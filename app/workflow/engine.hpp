@@ -3,9 +3,9 @@
 // What the workflow needs from the scan, the solver and the writers, and nothing more. The
 // kiosk implements it over session::Session (GL, on the frame loop's thread); tests implement
 // it in memory. Errors are exceptions with one line for the operator (std::exception::what()).
-#include "solver/level_set_params.hpp" // plain structs only: the workflow links no solver code
-#include "solver/solver_types.hpp"
-#include "speed/speed_kind.hpp" // the enum only: the workflow links no speed code
+#include "model/level_set_params.hpp" // plain structs only: the workflow links no solver code
+#include "model/solver_types.hpp"
+#include "model/speed_kind.hpp" // the enum only: the workflow links no speed code
 
 #include <cstdint>
 #include <filesystem>
@@ -44,15 +44,14 @@ struct ProbeResult {
 // from the operator's probes, outside from the outside marks. The workflow passes examples only
 // to Classify, and only when it has both kinds.
 struct SpeedChoice {
-    speed::SpeedKind kind = speed::SpeedKind::Threshold;
-    std::vector<solver::Sphere> inside;
-    std::vector<solver::Sphere> outside;
+    model::SpeedKind kind = model::SpeedKind::Threshold;
+    std::vector<model::Sphere> inside;
+    std::vector<model::Sphere> outside;
     bool operator==(const SpeedChoice& other) const;
 };
 
 inline bool SpeedChoice::operator==(const SpeedChoice& other) const {
-    const auto same = [](const std::vector<solver::Sphere>& a,
-                         const std::vector<solver::Sphere>& b) {
+    const auto same = [](const std::vector<model::Sphere>& a, const std::vector<model::Sphere>& b) {
         if (a.size() != b.size()) {
             return false;
         }
@@ -83,17 +82,17 @@ class Engine {
     [[nodiscard]] virtual ProbeResult probe(const glm::dvec3& voxel, double radiusMm) const = 0;
 
     // Sphere edits; std::invalid_argument for a sphere outside the scan.
-    virtual void addSeed(const solver::Sphere& sphere) = 0;
-    virtual void erase(const solver::Sphere& sphere) = 0;
+    virtual void addSeed(const model::Sphere& sphere) = 0;
+    virtual void erase(const model::Sphere& sphere) = 0;
     virtual void clearLevelSet() = 0;
     [[nodiscard]] virtual bool hasLevelSet() const = 0;
 
-    virtual void setParams(const solver::LevelSetParams& params) = 0;
+    virtual void setParams(const model::LevelSetParams& params) = 0;
     // Switches the data term; may take a while (smoothing, the edge factor, training run
     // inside it). Throws with one line when it cannot (the previous speed stays in force).
     virtual void setSpeed(const SpeedChoice& choice) = 0;
-    virtual solver::StepResult step(int iterations) = 0;
-    [[nodiscard]] virtual solver::SolverStats stats() const = 0;
+    virtual model::StepResult step(int iterations) = 0;
+    [[nodiscard]] virtual model::SolverStats stats() const = 0;
     // Segmented volume in millilitres (counted on the GPU side's mask). While the solver runs
     // it may be up to a fraction of a second old (counting reads the level set back);
     // exactVolumeMl() is the volume now, for a run that stopped and for the record.

@@ -2,7 +2,7 @@
 
 // A probe's sphere in voxels: what the workflow keeps as a classify example and the kiosk's
 // engine as the edge speed's noise region, so both mean the same voxels.
-#include "solver/level_set_params.hpp"
+#include "model/level_set_params.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,9 +13,9 @@ namespace steerseg::workflow {
 // The probe is round in mm, an ellipsoid in voxels: a voxel sphere of the same volume (the
 // spacing's geometric mean), at least `minRadius` voxels and at most the scan's diagonal (the
 // solver's bound on a sphere; a huge probe radius stays finite).
-inline solver::Sphere probeSphere(const glm::dvec3& voxel, double radiusMm,
-                                  const glm::dvec3& spacing, const glm::ivec3& dims,
-                                  double minRadius) {
+inline model::Sphere probeSphere(const glm::dvec3& voxel, double radiusMm,
+                                 const glm::dvec3& spacing, const glm::ivec3& dims,
+                                 double minRadius) {
     const double meanSpacing = std::cbrt(std::abs(spacing.x * spacing.y * spacing.z));
     const double r =
         meanSpacing > 0.0 && std::isfinite(meanSpacing) ? radiusMm / meanSpacing : radiusMm;

@@ -1,6 +1,6 @@
 #include "workflow/settings.hpp"
 
-#include "speed/speed_kind.hpp"
+#include "model/speed_kind.hpp"
 
 #include <cmath>
 #include <set>
@@ -37,7 +37,7 @@ void validateSettings(const Settings& s) {
                 ")");
     require(s.maxUndo >= 1 && s.maxUndo <= 10000,
             "undo depth must be within [1, 10000] (got " + std::to_string(s.maxUndo) + ")");
-    require(speed::validSpeedKind(s.defaultSpeed), "the default speed is not a known speed");
+    require(model::validSpeedKind(s.defaultSpeed), "the default speed is not a known speed");
     require(!s.exportFormats.empty(), "at least one export format is needed");
     for (const std::string& format : s.exportFormats) {
         require(!format.empty() && format.find_first_of("/\\") == std::string::npos &&

@@ -3,7 +3,7 @@
 // What the workflow takes from the configuration: tissue presets, the probe's rules, the brush,
 // the export folder and the depth of undo. Plain data; config/ fills it from TOML and
 // validateSettings() says in one line what is wrong with it.
-#include "speed/speed_kind.hpp" // the enum only
+#include "model/speed_kind.hpp" // the enum only
 
 #include <chrono>
 #include <filesystem>
@@ -43,7 +43,7 @@ struct Settings {
     // The speed after a load. Classify runs the threshold speed until it has an example of
     // each kind; a speed the engine refuses after a load leaves the threshold speed, with a
     // notice.
-    speed::SpeedKind defaultSpeed = speed::SpeedKind::Threshold;
+    model::SpeedKind defaultSpeed = model::SpeedKind::Threshold;
     WallClock clock; // export names' time stamps; empty: the system clock (tests fix it)
 };
 

@@ -42,7 +42,7 @@ struct Status {
     std::string message; // the last error or notice for the operator ("" = none)
     double loadProgress = 0.0;
     ScanInfo scan;
-    solver::LevelSetParams params;
+    model::LevelSetParams params;
     double radius = 3.0; // brush, voxels
     Param selected = Param::Target;
     std::array<ParamRange, kParamCount> ranges{};
@@ -50,10 +50,10 @@ struct Status {
     bool outsideMode = false; // a tap marks an outside example (MarkOutside)
     // The speed the operator chose, and the one the engine runs: they differ while Classify
     // waits for an inside (probe) and an outside example.
-    speed::SpeedKind speed = speed::SpeedKind::Threshold;
-    speed::SpeedKind speedInForce = speed::SpeedKind::Threshold;
-    std::vector<solver::Sphere> insideExamples; // voxels, oldest first (at most kMaxExamples)
-    std::vector<solver::Sphere> outsideExamples;
+    model::SpeedKind speed = model::SpeedKind::Threshold;
+    model::SpeedKind speedInForce = model::SpeedKind::Threshold;
+    std::vector<model::Sphere> insideExamples; // voxels, oldest first (at most kMaxExamples)
+    std::vector<model::Sphere> outsideExamples;
     bool hasLevelSet = false;
     int seeds = 0;
     int erasures = 0;

@@ -23,7 +23,7 @@ struct ParamValues {
     std::array<double, kParamCount> values{};
     std::string preset;
     SpeedChoice speed;
-    speed::SpeedKind fallback = speed::SpeedKind::Threshold;
+    model::SpeedKind fallback = model::SpeedKind::Threshold;
     bool operator==(const ParamValues&) const = default;
 };
 

@@ -52,7 +52,7 @@ class Workflow {
     // Each frame: polls a running load.
     void update();
     // The frame loop calls it while state() == Evolving (elsewhere it does nothing).
-    solver::StepResult evolve(int iterations);
+    model::StepResult evolve(int iterations);
     // Resume after a crash (workflow_resume.cpp): in Inspect, right after the autosave's scan
     // loaded and its level set went back into the engine. A session that was evolving comes
     // back paused: after a crash nothing moves until the operator says so. Undo starts empty.
@@ -132,11 +132,11 @@ class Workflow {
     // fallback; the examples travel only with Classify.
     [[nodiscard]] static SpeedChoice speedFor(const ParamValues& values);
     // An example sphere in voxels for a probe-sized sphere in mm; nullopt outside the scan.
-    [[nodiscard]] std::optional<solver::Sphere> exampleAt(const glm::dvec3& voxel,
-                                                          double radiusMm) const;
-    void showSpeed(const ParamValues& values, speed::SpeedKind inForce);
+    [[nodiscard]] std::optional<model::Sphere> exampleAt(const glm::dvec3& voxel,
+                                                         double radiusMm) const;
+    void showSpeed(const ParamValues& values, model::SpeedKind inForce);
     // Appends, dropping the oldest past kMaxExamples.
-    static void addExample(std::vector<solver::Sphere>& examples, const solver::Sphere& example);
+    static void addExample(std::vector<model::Sphere>& examples, const model::Sphere& example);
 
     // The level set (workflow_edits.cpp).
     Outcome sphereEdit(const glm::dvec3& voxel, double radius, bool seed);

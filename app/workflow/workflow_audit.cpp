@@ -1,6 +1,6 @@
 // What an accepted action changed, for its audit record's "result": the values it set after
 // clamping (the action's own "values" are what was asked for).
-#include "speed/speed_kind.hpp"
+#include "model/speed_kind.hpp"
 #include "workflow/workflow.hpp"
 
 #include <array>
@@ -49,8 +49,8 @@ nlohmann::json Workflow::resultOf(const Action& action) const {
     };
     // The speed as chosen and as the engine runs it (they differ while classify waits).
     const auto speed = [this] {
-        return nlohmann::json{{"speed", speed::speedKindName(status_.speed)},
-                              {"speed_in_force", speed::speedKindName(status_.speedInForce)},
+        return nlohmann::json{{"speed", model::speedKindName(status_.speed)},
+                              {"speed_in_force", model::speedKindName(status_.speedInForce)},
                               {"inside_examples", status_.insideExamples.size()},
                               {"outside_examples", status_.outsideExamples.size()}};
     };

@@ -19,7 +19,7 @@ bool finite(const glm::dvec3& v) {
 
 void Workflow::refreshEngineStatus() {
     status_.hasLevelSet = engine_.hasLevelSet();
-    const solver::SolverStats s = engine_.stats();
+    const model::SolverStats s = engine_.stats();
     status_.iterations = s.iterations;
     status_.evolvedTime = static_cast<double>(s.evolvedTime);
     status_.volumeMl =
@@ -156,7 +156,7 @@ Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, b
     }
     const ParamRange& r = status_.ranges[indexOf(Param::Radius)];
     const double rad = radius > 0.0 ? clampTo(r, radius) : params_.values[indexOf(Param::Radius)];
-    const solver::Sphere sphere{glm::vec3(voxel), static_cast<float>(rad)};
+    const model::Sphere sphere{glm::vec3(voxel), static_cast<float>(rad)};
     if (seed) {
         // The operator puts seeds in the structure, often where no probe was: classify's inside
         // examples too, as on the command line (docs/speed.md).

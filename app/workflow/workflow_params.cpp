@@ -64,10 +64,10 @@ void Workflow::applyParams(const ParamValues& values, bool force) {
         status_.converged = false;
     }
     showSpeed(values, engineSpeed_.kind);
-    const solver::LevelSetParams p{static_cast<float>(values.values[indexOf(Param::Target)]),
-                                   static_cast<float>(values.values[indexOf(Param::Epsilon)]),
-                                   static_cast<float>(values.values[indexOf(Param::Alpha)])};
-    const solver::LevelSetParams& now = status_.params;
+    const model::LevelSetParams p{static_cast<float>(values.values[indexOf(Param::Target)]),
+                                  static_cast<float>(values.values[indexOf(Param::Epsilon)]),
+                                  static_cast<float>(values.values[indexOf(Param::Alpha)])};
+    const model::LevelSetParams& now = status_.params;
     if (force || p.T != now.T || p.eps != now.eps || p.alpha != now.alpha) {
         engine_.setParams(p);
         status_.converged = false; // the front moves again under a new speed
@@ -92,11 +92,11 @@ void Workflow::setDefaultParams() {
     try {
         applyParams(clamped(v), true); // a new scan: the engine hears its parameters
     } catch (const std::exception& e) {
-        if (settings_.defaultSpeed == speed::SpeedKind::Threshold) {
+        if (settings_.defaultSpeed == model::SpeedKind::Threshold) {
             throw;
         }
         // The scan is fine; the operator can still steer with the paper's speed.
-        v.speed.kind = speed::SpeedKind::Threshold;
+        v.speed.kind = model::SpeedKind::Threshold;
         applyParams(clamped(v), true);
         status_.message = "the threshold speed runs: " + oneLine(e.what());
     }

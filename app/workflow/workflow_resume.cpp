@@ -44,12 +44,12 @@ Workflow::Outcome Workflow::restoreSession(const RestoredSession& restored) {
         try {
             applyParams(clamped(restored.params), true);
         } catch (const std::exception& e) {
-            if (restored.params.speed.kind == speed::SpeedKind::Threshold) {
+            if (restored.params.speed.kind == model::SpeedKind::Threshold) {
                 throw;
             }
             // The level set is back; the speed that shaped it can be chosen again.
             ParamValues threshold = restored.params;
-            threshold.speed.kind = speed::SpeedKind::Threshold;
+            threshold.speed.kind = model::SpeedKind::Threshold;
             applyParams(clamped(threshold), true);
             notice = "the threshold speed runs: " + oneLine(e.what());
         }

@@ -9,12 +9,12 @@
 
 namespace steerseg::workflow {
 
-solver::StepResult Workflow::evolve(int iterations) {
+model::StepResult Workflow::evolve(int iterations) {
     if (status_.state != State::Evolving || iterations <= 0) {
         return {};
     }
     cause_ = "evolve";
-    solver::StepResult r;
+    model::StepResult r;
     try {
         r = engine_.step(iterations);
         dirty_ = true;

@@ -3,7 +3,7 @@
 // workflow_edits.cpp) and the outside mode.
 // A change travels through changeParams like a parameter's: sent to the engine (which may
 // refuse it) and recorded for undo.
-#include "speed/speed_kind.hpp"
+#include "model/speed_kind.hpp"
 #include "workflow/probe_sphere.hpp"
 #include "workflow/workflow.hpp"
 
@@ -15,7 +15,7 @@ namespace steerseg::workflow {
 
 SpeedChoice Workflow::speedFor(const ParamValues& values) {
     const SpeedChoice& chosen = values.speed;
-    if (chosen.kind == speed::SpeedKind::Classify) {
+    if (chosen.kind == model::SpeedKind::Classify) {
         if (!chosen.inside.empty() && !chosen.outside.empty()) {
             return chosen;
         }
@@ -24,7 +24,7 @@ SpeedChoice Workflow::speedFor(const ParamValues& values) {
     return SpeedChoice{chosen.kind, {}, {}};
 }
 
-std::optional<solver::Sphere> Workflow::exampleAt(const glm::dvec3& voxel, double radiusMm) const {
+std::optional<model::Sphere> Workflow::exampleAt(const glm::dvec3& voxel, double radiusMm) const {
     const glm::ivec3 dims = status_.scan.dims;
     for (int a = 0; a < 3; ++a) {
         if (!(voxel[a] >= 0.0 && voxel[a] <= static_cast<double>(dims[a] - 1))) {
@@ -35,7 +35,7 @@ std::optional<solver::Sphere> Workflow::exampleAt(const glm::dvec3& voxel, doubl
     return probeSphere(voxel, radiusMm, status_.scan.spacing, dims, 0.5);
 }
 
-void Workflow::addExample(std::vector<solver::Sphere>& examples, const solver::Sphere& example) {
+void Workflow::addExample(std::vector<model::Sphere>& examples, const model::Sphere& example) {
     examples.push_back(example);
     if (examples.size() > kMaxExamples) {
         examples.erase(examples.begin(), examples.begin() + static_cast<std::ptrdiff_t>(
@@ -43,7 +43,7 @@ void Workflow::addExample(std::vector<solver::Sphere>& examples, const solver::S
     }
 }
 
-void Workflow::showSpeed(const ParamValues& values, speed::SpeedKind inForce) {
+void Workflow::showSpeed(const ParamValues& values, model::SpeedKind inForce) {
     status_.speed = values.speed.kind;
     status_.speedInForce = inForce;
     status_.insideExamples = values.speed.inside;
@@ -51,7 +51,7 @@ void Workflow::showSpeed(const ParamValues& values, speed::SpeedKind inForce) {
 }
 
 Workflow::Outcome Workflow::on(const SetSpeed& a) {
-    if (!speed::validSpeedKind(a.kind)) {
+    if (!model::validSpeedKind(a.kind)) {
         return no("unknown speed");
     }
     if (auto why = whyNoParamChange()) {
@@ -61,16 +61,16 @@ Workflow::Outcome Workflow::on(const SetSpeed& a) {
         return ok();
     }
     ParamValues next = params_;
-    if (a.kind == speed::SpeedKind::Classify) {
+    if (a.kind == model::SpeedKind::Classify) {
         next.fallback = engineSpeed_.kind; // what runs until the classifier has its examples
     }
     next.speed.kind = a.kind;
     Outcome out = changeParams(std::move(next), "set_speed", std::nullopt);
-    if (status_.speed == speed::SpeedKind::Classify &&
-        status_.speedInForce != speed::SpeedKind::Classify) {
+    if (status_.speed == model::SpeedKind::Classify &&
+        status_.speedInForce != model::SpeedKind::Classify) {
         status_.message = "classify needs an inside example (a probe or a seed) and an outside "
                           "example; the " +
-                          std::string(speed::speedKindName(status_.speedInForce)) +
+                          std::string(model::speedKindName(status_.speedInForce)) +
                           " speed runs until then";
     }
     return out;
@@ -85,7 +85,7 @@ Workflow::Outcome Workflow::on(const MarkOutside& a) {
         return no("an outside example needs a finite position and radius");
     }
     const double radius = a.radiusMm > 0.0 ? a.radiusMm : settings_.probeRadiusMm;
-    const std::optional<solver::Sphere> example = exampleAt(a.voxel, radius);
+    const std::optional<model::Sphere> example = exampleAt(a.voxel, radius);
     if (!example) {
         return no("outside example outside the scan");
     }
@@ -105,9 +105,9 @@ Workflow::Outcome Workflow::on(const ClearExamples&) {
     next.speed.inside.clear();
     next.speed.outside.clear();
     Outcome out = changeParams(std::move(next), "clear_examples", std::nullopt);
-    if (status_.speed == speed::SpeedKind::Classify) {
+    if (status_.speed == model::SpeedKind::Classify) {
         status_.message = "examples cleared: the " +
-                          std::string(speed::speedKindName(status_.speedInForce)) +
+                          std::string(model::speedKindName(status_.speedInForce)) +
                           " speed runs until classify has new ones";
     }
     return out;

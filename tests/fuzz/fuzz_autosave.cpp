@@ -1,12 +1,12 @@
 // The autosave reader on arbitrary bytes (a file a crash or a bad disk left behind): it decodes
 // or throws AutosaveFormatError, and what it decodes encodes back to the same snapshot.
-#include "kiosk/autosave_snapshot.hpp"
+#include "autosave/autosave_snapshot.hpp"
 
 #include <cstdint>
 #include <span>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    using namespace steerseg::kiosk;
+    using namespace steerseg::autosave;
     AutosaveSnapshot s;
     try {
         s = decodeSnapshot(std::as_bytes(std::span<const std::uint8_t>(data, size)));

@@ -1,4 +1,4 @@
-// libFuzzer target for the DICOM reader: bytes -> temporary file -> io::readDicom. Anything but
+// libFuzzer target for the DICOM reader: bytes -> temporary file -> scan::readDicom. Anything but
 // a result or a ScanError (a crash, hang, other exception or sanitizer report) is a bug.
 #include "fuzz_reader.hpp"
 
@@ -25,9 +25,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
     }
     try {
-        const steerseg::Volume v = steerseg::io::readDicom(file, steerseg::fuzz::fuzzLimits());
+        const steerseg::Volume v = steerseg::scan::readDicom(file, steerseg::fuzz::fuzzLimits());
         (void)v.stats();
-    } catch (const steerseg::io::ScanError&) {
+    } catch (const steerseg::scan::ScanError&) {
     }
     return 0;
 }

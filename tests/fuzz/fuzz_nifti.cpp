@@ -3,6 +3,6 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     return steerseg::fuzz::runReader(data, size, [](auto& source, const auto& limits) {
         std::string format;
-        return steerseg::io::readNiftiFrom("fuzz.nii", source, limits, format);
+        return steerseg::scan::readNiftiFrom("fuzz.nii", source, limits, format);
     });
 }

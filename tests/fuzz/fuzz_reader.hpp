@@ -3,8 +3,8 @@
 // Shared body of the format fuzzers: run one reader over the input bytes in memory. A ScanError
 // is the expected outcome for bad input; anything else (a crash, a sanitizer report, another
 // exception) is a finding.
-#include "io/byte_source.hpp"
-#include "io/readers.hpp"
+#include "scan/byte_source.hpp"
+#include "scan/readers.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -12,8 +12,8 @@
 namespace steerseg::fuzz {
 
 // Small caps keep each run fast and its memory low; the checks are the same at any size.
-inline io::ReadLimits fuzzLimits() {
-    io::ReadLimits limits;
+inline scan::ReadLimits fuzzLimits() {
+    scan::ReadLimits limits;
     limits.maxVoxels = std::size_t{1} << 22;
     limits.maxDimension = 4096;
     limits.maxDataBytes = std::uint64_t{32} << 20;
@@ -21,11 +21,11 @@ inline io::ReadLimits fuzzLimits() {
 }
 
 template <typename Read> int runReader(const std::uint8_t* data, std::size_t size, Read read) {
-    io::MemorySource source({reinterpret_cast<const std::byte*>(data), size});
+    scan::MemorySource source({reinterpret_cast<const std::byte*>(data), size});
     try {
         const Volume v = read(source, fuzzLimits());
         (void)v.stats();
-    } catch (const io::ScanError&) {
+    } catch (const scan::ScanError&) {
     }
     return 0;
 }

@@ -1,15 +1,15 @@
 // The session-script parser and player on arbitrary bytes: a script either parses or throws
 // ScriptError; a parsed one replays against a sink that accepts everything and a status that
 // changes each frame, and must end (finish, fail or time out) within a bounded clock.
-#include "kiosk/script.hpp"
-#include "kiosk/script_player.hpp"
+#include "script/script.hpp"
+#include "script/script_player.hpp"
 
 #include <cstdint>
 #include <string_view>
 
 namespace {
 
-struct NullSink : steerseg::kiosk::ScriptSink {
+struct NullSink : steerseg::script::ScriptSink {
     void action(const steerseg::workflow::Action& /*action*/) override {}
     void input(const steerseg::platform::InputEvent& /*event*/) override {}
     void saveFrame(const std::filesystem::path& /*path*/) override {}
@@ -25,14 +25,14 @@ struct NullSink : steerseg::kiosk::ScriptSink {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace steerseg;
     const std::string_view text(reinterpret_cast<const char*>(data), size);
-    kiosk::Script script;
+    script::Script script;
     try {
-        script = kiosk::parseScript(text, "fuzz.session");
-    } catch (const kiosk::ScriptError&) {
+        script = script::parseScript(text, "fuzz.session");
+    } catch (const script::ScriptError&) {
         return 0;
     }
     try {
-        kiosk::ScriptPlayer player(script, {{"SCAN", "/s.nii"}, {"DATA", "/d"}, {"OUT", "/o"}});
+        script::ScriptPlayer player(script, {{"SCAN", "/s.nii"}, {"DATA", "/d"}, {"OUT", "/o"}});
         NullSink sink;
         workflow::Status status;
         // Frames 1e7 s apart: every time and timeout a script can give (at most 1e6 s) passes
@@ -50,7 +50,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (!player.finished() && !player.failed()) {
             __builtin_trap(); // a script that never ends: the kiosk would hang
         }
-    } catch (const kiosk::ScriptError&) {
+    } catch (const script::ScriptError&) {
         // only the variables check throws
     }
     return 0;

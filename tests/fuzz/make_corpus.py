@@ -246,7 +246,7 @@ def recording():
         "0.030000 pedal gpio 1\n0.040000 pedal unplug\n0.050000 pedal plug\n")
 
 def snapshot(runs, voxels, dims, state="evolving", version=1):
-    """An autosave (app/kiosk/autosave_snapshot.cpp): header, JSON metadata, uint32 runs."""
+    """An autosave (app/autosave/autosave_snapshot.cpp): header, JSON metadata, uint32 runs."""
     meta = ('{"dims":[%d,%d,%d],"erasures":1,"evolved_time":2.5,"iterations":40,'
             '"params":{"T":200.0,"alpha":0.7,"eps":60.0,"preset":"","radius":3.0},'
             '"saved_at":"2026-11-23T13:01:40.000Z","saved_at_ms":1795438900000,'

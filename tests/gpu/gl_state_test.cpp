@@ -12,6 +12,7 @@
 
 namespace steerseg::test {
 using namespace steerseg::solver; // the solver under test
+using namespace steerseg::model;
 namespace {
 
 class GlStatePolicy : public GpuTest {};

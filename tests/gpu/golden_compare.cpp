@@ -1,6 +1,6 @@
 #include "golden_compare.hpp"
 
-#include "io/image_file.hpp"
+#include "exports/image_file.hpp"
 #include "render_scene.hpp"
 
 #include <algorithm>
@@ -88,7 +88,7 @@ GoldenResult compareGolden(const std::string& name, const RgbaImage& actual,
     const char* update = std::getenv("STEERSEG_UPDATE_GOLDEN");
     if (update != nullptr && std::string(update) == "1") {
         std::filesystem::create_directories(golden.parent_path());
-        io::writeImage(golden, actual);
+        exports::writeImage(golden, actual);
         return {true, "rewrote " + golden.string(), {}};
     }
     const std::filesystem::path here =
@@ -96,17 +96,17 @@ GoldenResult compareGolden(const std::string& name, const RgbaImage& actual,
     const std::filesystem::path actualPath = here / (name + ".actual.png");
     const std::filesystem::path diffPath = here / (name + ".diff.png");
     if (!std::filesystem::exists(golden)) {
-        io::writeImage(actualPath, actual);
+        exports::writeImage(actualPath, actual);
         return {false,
                 "no golden " + golden.string() + " (actual written to " + actualPath.string() +
                     "; set STEERSEG_UPDATE_GOLDEN=1 to create it)",
                 {}};
     }
-    GoldenResult r = compareImages(name, io::readImage(golden), actual, tolerance);
+    GoldenResult r = compareImages(name, exports::readImage(golden), actual, tolerance);
     if (!r.ok) {
-        io::writeImage(actualPath, actual);
+        exports::writeImage(actualPath, actual);
         if (!r.diff.pixels.empty()) {
-            io::writeImage(diffPath, r.diff);
+            exports::writeImage(diffPath, r.diff);
         }
         r.message += " actual: " + actualPath.string() + ", diff: " + diffPath.string() +
                      " (STEERSEG_UPDATE_GOLDEN=1 rewrites the golden)";

@@ -16,6 +16,7 @@
 
 namespace steerseg::test {
 using namespace steerseg::solver; // the solver under test
+using namespace steerseg::model;
 namespace {
 
 class GpuLimitsTest : public GpuTest {};

@@ -1,10 +1,10 @@
 // The kiosk's engine on the real session: scans read off the calling thread, sphere edits,
 // steps, undo snapshots, export; and the screen compositor's placement and rotation.
 #include "core/sample_phantom.hpp"
-#include "io/scan_reader.hpp"
+#include "engine/session_engine.hpp"
 #include "kiosk/screen_compositor.hpp"
-#include "kiosk/session_engine.hpp"
-#include "speed/speed_kind.hpp"
+#include "model/speed_kind.hpp"
+#include "scan/scan_reader.hpp"
 #include "support/gpu_fixture.hpp"
 #include "support/two_textures.hpp"
 
@@ -19,7 +19,7 @@
 namespace steerseg::test {
 namespace {
 
-using kiosk::SessionEngine;
+using engine::SessionEngine;
 using workflow::LoadPoll;
 
 LoadPoll waitForLoad(SessionEngine& engine) {
@@ -37,11 +37,11 @@ class KioskEngine : public GpuTest {};
 
 // The edge speed takes its smoothing and kappa from the last probe's noise, as segment --probe.
 TEST_F(KioskEngine, TheEdgeSpeedNeedsAProbeAndFollowsItsNoise) {
-    SessionEngine engine(solver::SolverOptions{}, {2, 3.0, 1.0});
+    SessionEngine engine(model::SolverOptions{}, {2, 3.0, 1.0});
     engine.beginLoad("builtin:sample");
     ASSERT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
     workflow::SpeedChoice edge;
-    edge.kind = speed::SpeedKind::Edge;
+    edge.kind = model::SpeedKind::Edge;
     try {
         engine.setSpeed(edge);
         FAIL() << "the edge speed was accepted before a probe";
@@ -52,12 +52,12 @@ TEST_F(KioskEngine, TheEdgeSpeedNeedsAProbeAndFollowsItsNoise) {
     ASSERT_GT(engine.probe(lesion, 4.0).count, 0U);
     engine.setSpeed(edge);
     const session::Session& s = *engine.session();
-    EXPECT_EQ(s.speed().kind, speed::SpeedKind::Edge);
+    EXPECT_EQ(s.speed().kind, model::SpeedKind::Edge);
     EXPECT_EQ(s.speed().smoothing.iterations, 2);
     EXPECT_GT(s.speed().kappa, 0.0F);
     EXPECT_FLOAT_EQ(s.speed().smoothing.conductance, 3.0F * s.speed().kappa);
     engine.setSpeed(workflow::SpeedChoice{});
-    EXPECT_EQ(s.speed().kind, speed::SpeedKind::Threshold);
+    EXPECT_EQ(s.speed().kind, model::SpeedKind::Threshold);
 }
 
 // With classify the solver evaluates the speed where the front goes; the speed view's texture
@@ -75,13 +75,13 @@ TEST_F(KioskEngine, FillsTheClassifySpeedAheadInPieces) {
         out.write(reinterpret_cast<const char*>(v.data()),
                   static_cast<std::streamsize>(v.size() * sizeof(float)));
     }
-    SessionEngine engine(solver::SolverOptions{}, {2, 3.0, 1.0});
+    SessionEngine engine(model::SolverOptions{}, {2, 3.0, 1.0});
     engine.beginLoad(scan.string());
     ASSERT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
     EXPECT_FALSE(engine.fillSpeedAhead(0.01)); // the threshold speed is whole from the start
 
     workflow::SpeedChoice classify;
-    classify.kind = speed::SpeedKind::Classify;
+    classify.kind = model::SpeedKind::Classify;
     classify.inside = {{{6.0F, 16.0F, 12.0F}, 4.0F}};
     classify.outside = {{{26.0F, 16.0F, 12.0F}, 4.0F}};
     engine.setSpeed(classify);
@@ -94,7 +94,7 @@ TEST_F(KioskEngine, FillsTheClassifySpeedAheadInPieces) {
     EXPECT_GT(pieces, 1); // 48 bricks, each a few milliseconds on llvmpipe, far less on a GPU
     EXPECT_LT(pieces, 1000);
     EXPECT_EQ(engine.speedVersion(), before + static_cast<std::uint64_t>(pieces));
-    const solver::SolverStats stats = engine.stats();
+    const model::SolverStats stats = engine.stats();
     EXPECT_EQ(engine.session()->speedBricksEvaluated(), stats.totalBricks);
     EXPECT_FALSE(engine.fillSpeedAhead(0.01));
 }
@@ -122,7 +122,7 @@ TEST_F(KioskEngine, LoadsSeedsStepsUndoesAndExports) {
     engine.setParams(
         {static_cast<float>(probe.mean), static_cast<float>(3.0 * probe.stddev + 1.0), 1.0F});
     const std::uint64_t before = engine.levelSetVersion();
-    const solver::StepResult r = engine.step(20);
+    const model::StepResult r = engine.step(20);
     EXPECT_EQ(r.iterations, 20);
     EXPECT_GT(engine.levelSetVersion(), before);
 
@@ -140,7 +140,7 @@ TEST_F(KioskEngine, LoadsSeedsStepsUndoesAndExports) {
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     engine.exportMask(dir / "mask.nii.gz");
-    const io::LoadedScan mask = io::readScan(dir / "mask.nii.gz");
+    const scan::LoadedScan mask = scan::readScan(dir / "mask.nii.gz");
     EXPECT_EQ(mask.volume.dims(), info.dims);
     EXPECT_THROW(engine.exportMask(dir / "missing" / "folder" / "mask.nii.gz"), std::exception);
     // Every other format the config may enable goes by the name's extension; DICOM SEG is
@@ -149,9 +149,9 @@ TEST_F(KioskEngine, LoadsSeedsStepsUndoesAndExports) {
         engine.exportMask(dir / name);
         EXPECT_GT(std::filesystem::file_size(dir / name), 100u) << name;
     }
-    EXPECT_EQ(io::readScan(dir / "mask.seg.nrrd").volume.dims(), info.dims);
-    EXPECT_THROW(engine.exportMask(dir / "mask.dcm"), io::WriteError);
-    EXPECT_THROW(engine.exportMask(dir / "mask.obj"), io::WriteError);
+    EXPECT_EQ(scan::readScan(dir / "mask.seg.nrrd").volume.dims(), info.dims);
+    EXPECT_THROW(engine.exportMask(dir / "mask.dcm"), files::WriteError);
+    EXPECT_THROW(engine.exportMask(dir / "mask.obj"), files::WriteError);
     std::filesystem::remove_all(dir);
 }
 
@@ -179,10 +179,10 @@ TEST_F(KioskEngine, AFailedLoadSaysWhyAndKeepsTheScanItHad) {
 }
 
 TEST(KioskScanName, IsShortAndSafeForFileNames) {
-    EXPECT_EQ(kiosk::scanShortName("builtin:sample"), "sample");
-    EXPECT_EQ(kiosk::scanShortName("/data/CT sarcoma.nii.gz"), "CT_sarcoma");
-    EXPECT_EQ(kiosk::scanShortName("/data/series/"), "series");
-    EXPECT_EQ(kiosk::scanShortName("/"), "scan");
+    EXPECT_EQ(engine::scanShortName("builtin:sample"), "sample");
+    EXPECT_EQ(engine::scanShortName("/data/CT sarcoma.nii.gz"), "CT_sarcoma");
+    EXPECT_EQ(engine::scanShortName("/data/series/"), "series");
+    EXPECT_EQ(engine::scanShortName("/"), "scan");
 }
 
 class KioskScreen : public GpuTest {};

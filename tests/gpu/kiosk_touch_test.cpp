@@ -3,8 +3,8 @@
 // screen and its frame, the gesture, the workflow, the audit log. For each orientation in the
 // first slice view and a display mounted upright and a quarter turn.
 #include "core/sample_phantom.hpp"
+#include "engine/view_setup.hpp"
 #include "kiosk/kiosk_app.hpp"
-#include "kiosk/view_setup.hpp"
 #include "render/slice_frame.hpp"
 #include "ui/layout.hpp"
 #include "ui/screen_rotation.hpp"
@@ -59,7 +59,7 @@ TEST_P(KioskTouch, ATapSeedsTheVoxelUnderTheFinger) {
     const Geometry geometry = makeSamplePhantom().geometry();
     const glm::dvec3 target(80.0, 56.0, 52.0);
     render::ViewParams params;
-    params.kind = kiosk::viewKindOf(c.axis);
+    params.kind = engine::viewKindOf(c.axis);
     params.size = {layout.slice1.w, layout.slice1.h};
     const int sliceAxis = render::sliceAxisFor(geometry, params.kind);
     params.slice = static_cast<int>(target[sliceAxis]);

@@ -1,7 +1,7 @@
 // steerseg render end to end: the image is written with the asked size and shows the scan;
 // bad options exit 2 with a one-line reason, runtime failures exit 1.
 #include "core/rgba_image.hpp"
-#include "io/image_file.hpp"
+#include "exports/image_file.hpp"
 #include "support/cli_run.hpp"
 #include "support/test_data.hpp"
 
@@ -24,7 +24,7 @@ TEST(RenderCli, WritesEachViewOfTheSampleAtTheAskedSize) {
         ASSERT_EQ(runSteerseg(std::string("render --input builtin:sample --view ") + view +
                               " --size 48x40 --output " + out.string()),
                   0);
-        const RgbaImage img = io::readImage(out);
+        const RgbaImage img = exports::readImage(out);
         EXPECT_EQ(img.width, 48);
         EXPECT_EQ(img.height, 40);
         int lit = 0;
@@ -86,8 +86,8 @@ TEST(RenderCli, DrawsTheSegmentationFromSeedsOrFromAMask) {
     ASSERT_EQ(runSteerseg("render --input builtin:sample --mask " + mask.string() + view +
                           fromMask.string()),
               0);
-    const RgbaImage a = io::readImage(fromSeeds);
-    const RgbaImage b = io::readImage(fromMask);
+    const RgbaImage a = exports::readImage(fromSeeds);
+    const RgbaImage b = exports::readImage(fromMask);
     EXPECT_GT(yellowPixels(a), 20) << "no contour drawn from the seeds' segmentation";
     EXPECT_GT(yellowPixels(b), 20) << "no contour drawn from the mask";
     EXPECT_NEAR(yellowPixels(a), yellowPixels(b), 0.2 * yellowPixels(a));

@@ -1,13 +1,14 @@
 // Golden images of every view kind, rendered on Mesa llvmpipe from a small synthetic scene.
 // STEERSEG_UPDATE_GOLDEN=1 rewrites tests/golden/*.png (see docs/renderer.md).
+#include "exports/image_file.hpp"
 #include "golden_compare.hpp"
-#include "io/image_file.hpp"
 #include "render/renderer.hpp"
 #include "render_scene.hpp"
 #include "support/gpu_fixture.hpp"
 
 namespace steerseg::test {
 using namespace steerseg::solver; // the solver under test
+using namespace steerseg::model;
 namespace {
 
 using render::ViewKind;
@@ -89,7 +90,7 @@ RgbaImage eraseYellow(RgbaImage image, int& erased) {
 TEST(GoldenComparison, FailsWhenTheContourOrClipLineIsErased) {
     for (const char* name : {"axial_contour", "volume_clip_dim"}) {
         SCOPED_TRACE(name);
-        const RgbaImage golden = io::readImage(goldenPath(name));
+        const RgbaImage golden = exports::readImage(goldenPath(name));
         ASSERT_TRUE(compareImages(name, golden, golden).ok);
         int erased = 0;
         const RgbaImage without = eraseYellow(golden, erased);
@@ -114,7 +115,7 @@ TEST(GoldenComparison, FailsWhenTheContourOrClipLineIsErased) {
 
 // Alpha is compared like the colour channels: a picture gone transparent does not match.
 TEST(GoldenComparison, FailsWhenOnlyAlphaDiffers) {
-    const RgbaImage golden = io::readImage(goldenPath("volume_surface"));
+    const RgbaImage golden = exports::readImage(goldenPath("volume_surface"));
     RgbaImage clear = golden;
     for (int y = 0; y < clear.height / 4; ++y) {
         for (int x = 0; x < clear.width; ++x) {
@@ -128,7 +129,7 @@ TEST(GoldenComparison, FailsWhenOnlyAlphaDiffers) {
 
 // A view without a surface has no yellow; one with a contour keeps it within the tolerance.
 TEST(GoldenComparison, YellowCountTolerance) {
-    const RgbaImage golden = io::readImage(goldenPath("axial_contour"));
+    const RgbaImage golden = exports::readImage(goldenPath("axial_contour"));
     int erased = 0;
     (void)eraseYellow(golden, erased);
     RgbaImage fewer = golden;

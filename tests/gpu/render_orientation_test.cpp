@@ -7,6 +7,7 @@
 
 namespace steerseg::test {
 using namespace steerseg::solver; // the solver under test
+using namespace steerseg::model;
 namespace {
 
 using render::ViewKind;

@@ -1,6 +1,6 @@
 #include "render_scene.hpp"
 
-#include "io/image_file.hpp"
+#include "exports/image_file.hpp"
 
 #include <cmath>
 #include <cstdlib>

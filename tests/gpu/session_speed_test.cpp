@@ -1,6 +1,6 @@
 // Session::setSpeed: validation, the timings, a speed change restarting the convergence clock as
 // a parameter change does, and the classification speed's front stopping at a texture border.
-#include "io/scan_reader.hpp"
+#include "scan/scan_reader.hpp"
 #include "session/session.hpp"
 #include "support/gpu_fixture.hpp"
 #include "support/two_textures.hpp"
@@ -19,12 +19,12 @@ namespace {
 
 class SessionSpeedTest : public GpuTest {};
 
-const solver::Sphere kLesionSeed{{80.0F, 56.0F, 52.0F}, 5.0F};
+const model::Sphere kLesionSeed{{80.0F, 56.0F, 52.0F}, 5.0F};
 
 TEST_F(SessionSpeedTest, RefusesBadSettingsAndKeepsTheLastGoodSpeed) {
-    session::Session s = session::Session::open(io::kBuiltinSample);
+    session::Session s = session::Session::open(scan::kBuiltinSample);
     session::SpeedSettings edge;
-    edge.kind = speed::SpeedKind::Edge;
+    edge.kind = model::SpeedKind::Edge;
     EXPECT_THROW(s.setSpeed(edge), std::invalid_argument); // no kappa
     edge.kappa = NAN;
     EXPECT_THROW(s.setSpeed(edge), std::invalid_argument);
@@ -41,29 +41,29 @@ TEST_F(SessionSpeedTest, RefusesBadSettingsAndKeepsTheLastGoodSpeed) {
         }
     });
     EXPECT_EQ(smoothingSteps, 3);
-    EXPECT_EQ(s.speed().kind, speed::SpeedKind::Edge);
+    EXPECT_EQ(s.speed().kind, model::SpeedKind::Edge);
     EXPECT_GT(s.speedTiming().preprocessingSeconds, 0.0);
     EXPECT_EQ(s.speedTiming().trainingSeconds, 0.0);
 
     session::SpeedSettings classify;
-    classify.kind = speed::SpeedKind::Classify;
+    classify.kind = model::SpeedKind::Classify;
     classify.inside = {kLesionSeed};
     EXPECT_THROW(s.setSpeed(classify), std::invalid_argument); // no outside example
     classify.outside = {{{20.0F, 20.0F, 20.0F}, 4.0F}};
     classify.inside.push_back({{500.0F, 0.0F, 0.0F}, 2.0F}); // outside the scan
     EXPECT_THROW(s.setSpeed(classify), std::invalid_argument);
-    EXPECT_EQ(s.speed().kind, speed::SpeedKind::Edge);
+    EXPECT_EQ(s.speed().kind, model::SpeedKind::Edge);
 }
 
 TEST_F(SessionSpeedTest, ASpeedChangeRestartsTheConvergenceClock) {
-    session::Session s = session::Session::open(io::kBuiltinSample);
+    session::Session s = session::Session::open(scan::kBuiltinSample);
     s.addSeed(kLesionSeed);
     s.setParams({800.0F, 100.0F, 0.8F});
     const session::RunOutcome first = s.run({session::RunMode::Converge, 3000, 0.0F});
     ASSERT_TRUE(first.result.converged);
     const std::vector<std::uint8_t> threshold = s.mask();
     session::SpeedSettings edge;
-    edge.kind = speed::SpeedKind::Edge;
+    edge.kind = model::SpeedKind::Edge;
     edge.kappa = 1e6F; // g = 1 to float precision: the same speed, but a change
     s.setSpeed(edge);
     EXPECT_FALSE(s.converged());
@@ -93,7 +93,7 @@ Volume twoTextures() {
 TEST_F(SessionSpeedTest, TheClassifiedFrontStopsAtTheTextureBorder) {
     session::Session s(twoTextures(), "test");
     session::SpeedSettings classify;
-    classify.kind = speed::SpeedKind::Classify;
+    classify.kind = model::SpeedKind::Classify;
     classify.inside = {{{10.0F, 16.0F, 16.0F}, 6.0F}};
     classify.outside = {{{37.0F, 16.0F, 16.0F}, 6.0F}};
     std::vector<std::string> stages;
@@ -165,7 +165,7 @@ TEST_F(SessionSpeedTest, TheSpeedViewShowsTheSpeedInForce) {
     EXPECT_GT(threshold[1], 0.99);
 
     session::SpeedSettings classify;
-    classify.kind = speed::SpeedKind::Classify;
+    classify.kind = model::SpeedKind::Classify;
     classify.inside = {{{10.0F, 16.0F, 16.0F}, 6.0F}};
     classify.outside = {{{37.0F, 16.0F, 16.0F}, 6.0F}};
     s.setSpeed(classify);

@@ -8,7 +8,7 @@
 #endif
 
 #include "core/sample_phantom.hpp"
-#include "io/scan_reader.hpp"
+#include "scan/scan_reader.hpp"
 #include "support/gpu_fixture.hpp"
 #include "support/test_data.hpp"
 
@@ -17,7 +17,7 @@
 #include <numbers>
 
 namespace steerseg::test {
-using namespace steerseg::solver; // the solver under test
+using namespace steerseg::model;
 namespace {
 
 class SessionTest : public GpuTest {};
@@ -34,7 +34,7 @@ const Sphere kLesionSeed{glm::vec3(kPhantomLesion.i, kPhantomLesion.j, kPhantomL
 const LevelSetParams kLesionParams{static_cast<float>(kPhantomLesion.intensity), 100.0F, 0.8F};
 
 TEST_F(SessionTest, SegmentsTheSampleLesionExportsItAndDrawsIt) {
-    session::Session s = session::Session::open(io::kBuiltinSample);
+    session::Session s = session::Session::open(scan::kBuiltinSample);
     EXPECT_EQ(s.format(), "builtin");
     EXPECT_FALSE(s.hasLevelSet());
     s.addSeed(kLesionSeed);
@@ -51,7 +51,7 @@ TEST_F(SessionTest, SegmentsTheSampleLesionExportsItAndDrawsIt) {
 
     const auto dir = tempDir("session");
     s.exportMask(dir / "lesion.nii.gz");
-    const io::LoadedScan back = io::readScan(dir / "lesion.nii.gz");
+    const scan::LoadedScan back = scan::readScan(dir / "lesion.nii.gz");
     EXPECT_EQ(back.volume.dims(), s.scan().dims());
 
     render::ViewParams axial = s.defaultView(render::ViewKind::Axial, {64, 64});

@@ -15,6 +15,7 @@
 
 namespace steerseg::test {
 using namespace steerseg::solver; // the solver under test
+using namespace steerseg::model;
 namespace {
 
 class SolverBandTest : public GpuTest {};

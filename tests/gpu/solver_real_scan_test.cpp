@@ -7,7 +7,7 @@
 // half the radius of the mask's equivalent ball (so it starts inside the tumour), T = mean HU
 // inside the mask, eps = 2 standard deviations (1 sd leaves a third of the tumour's noisy voxels
 // with a negative speed), alpha = 0.7 (some smoothing against CT noise).
-#include "io/scan_reader.hpp"
+#include "scan/scan_reader.hpp"
 #include "solver/level_set_solver.hpp"
 #include "solver/reference_solver.hpp"
 #include "solver_test_support.hpp"
@@ -20,6 +20,7 @@
 
 namespace steerseg::test {
 using namespace steerseg::solver; // the solver under test
+using namespace steerseg::model;
 namespace {
 
 class SolverRealScanTest : public GpuTest {};
@@ -82,7 +83,7 @@ Case cropAroundMask(const Volume& scan, const Volume& maskVolume, int margin) {
 
 void runCase(const std::filesystem::path& image, const std::filesystem::path& mask,
              const char* name) {
-    const Case c = cropAroundMask(io::readScan(image).volume, io::readScan(mask).volume, 6);
+    const Case c = cropAroundMask(scan::readScan(image).volume, scan::readScan(mask).volume, 6);
     std::printf("%s: crop %d x %d x %d, T %.1f eps %.1f alpha %.2f, seed (%.1f %.1f %.1f) r %.1f\n",
                 name, c.dims.x, c.dims.y, c.dims.z, static_cast<double>(c.params.T),
                 static_cast<double>(c.params.eps), static_cast<double>(c.params.alpha),

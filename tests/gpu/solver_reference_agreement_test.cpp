@@ -8,6 +8,7 @@
 
 namespace steerseg::test {
 using namespace steerseg::solver; // the solver under test
+using namespace steerseg::model;
 namespace {
 
 class SolverAgreementTest : public GpuTest {};

@@ -13,6 +13,7 @@
 
 namespace steerseg::test {
 using namespace steerseg::solver; // the solver under test
+using namespace steerseg::model;
 namespace {
 
 class SolverSleepTest : public GpuTest {};

@@ -2,7 +2,7 @@
 
 // Shared helpers of the solver tests: synthetic volumes and mask comparisons.
 
-#include "solver/level_set_params.hpp"
+#include "model/level_set_params.hpp"
 
 #include <cmath>
 #include <cstdint>

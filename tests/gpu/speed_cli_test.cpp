@@ -1,6 +1,6 @@
 // `steerseg segment --speed ...` end to end: usage errors for the speed options, the edge speed
 // with --probe on the built-in sample and the report's speed fields.
-#include "io/image_file.hpp"
+#include "exports/image_file.hpp"
 #include "support/cli_run.hpp"
 #include "support/test_data.hpp"
 
@@ -110,7 +110,7 @@ TEST(SpeedCli, RenderTakesTheSpeedViewAsSpeedView) {
         "--output " +
         classify.string());
     ASSERT_EQ(c.exitCode, 0) << c.err;
-    const RgbaImage picture = io::readImage(classify);
+    const RgbaImage picture = exports::readImage(classify);
     int green = 0;
     int blue = 0;
     for (int y = 0; y < picture.height; ++y) {

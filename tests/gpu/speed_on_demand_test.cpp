@@ -15,9 +15,9 @@
 namespace steerseg::test {
 namespace {
 
-using solver::LevelSetParams;
+using model::LevelSetParams;
+using model::Sphere;
 using solver::LevelSetSolver;
-using solver::Sphere;
 using speed::ClassifierEvaluation;
 using speed::ClassifierParams;
 using speed::ClassifierSpeed;
@@ -45,7 +45,7 @@ ClassifierSpeed classifier(const gpu::ScanTexture& scan, ClassifierEvaluation ev
 
 // kIterations from a seed in the calm texture, with the classifier's texture and forest.
 std::vector<float> run(LevelSetSolver& solver, const ClassifierSpeed& c) {
-    solver.setSpeedInputs({speed::SpeedKind::Classify, 0, c.texture(), c.onDemandForest()});
+    solver.setSpeedInputs({model::SpeedKind::Classify, 0, c.texture(), c.onDemandForest()});
     solver.setParams(LevelSetParams{100.0F, 30.0F, 0.5F});
     solver.addSphere(Sphere{{10.0F, 16.0F, 16.0F}, 3.0F});
     solver.step(kIterations);
@@ -75,7 +75,7 @@ TEST_F(SpeedOnDemandTest, TheFrontMovesAsWithTheSpeedComputedEverywhere) {
     EXPECT_GT(inside, 15000U); // most of the calm side's 24576 voxels, from the seed's 123
 
     // Only the bricks the front reached hold the speed; the rest of the texture is still 0.
-    const solver::SolverStats stats = b.stats();
+    const model::SolverStats stats = b.stats();
     EXPECT_EQ(a.speedBricksEvaluated(), 0U);
     EXPECT_GT(b.speedBricksEvaluated(), 0U);
     EXPECT_LT(b.speedBricksEvaluated(), stats.totalBricks / 2);
@@ -114,14 +114,14 @@ TEST_F(SpeedOnDemandTest, ANewSpeedIsEvaluatedAfresh) {
     ASSERT_GT(once, 0U);
     const ClassifierSpeed second = classifier(texture, ClassifierEvaluation::OnDemand);
     solver.setSpeedInputs(
-        {speed::SpeedKind::Classify, 0, second.texture(), second.onDemandForest()});
+        {model::SpeedKind::Classify, 0, second.texture(), second.onDemandForest()});
     EXPECT_EQ(solver.speedBricksEvaluated(), 0U);
     solver.step(1);
     EXPECT_GT(solver.speedBricksEvaluated(), 0U);
     solver.setSpeedInputs({});
     EXPECT_EQ(solver.speedBricksEvaluated(), 0U);
     EXPECT_THROW(solver.setSpeedInputs(
-                     {speed::SpeedKind::Edge, 0, second.texture(), second.onDemandForest()}),
+                     {model::SpeedKind::Edge, 0, second.texture(), second.onDemandForest()}),
                  std::invalid_argument);
 }
 

@@ -18,6 +18,7 @@
 
 namespace steerseg::test {
 using namespace steerseg::solver; // the solver under test
+using namespace steerseg::model;
 namespace {
 
 class SpeedSeamTest : public GpuTest {};
@@ -100,7 +101,7 @@ TEST_F(SpeedSeamTest, EdgeSpeedOnTheSmoothedScanStopsAtTheSeam) {
     const gpu::Texture smoothed =
         speed::smoothScan(solver.scan().exact(), kDims, {10, 3.0F * kNoise});
     const gpu::Texture factor = speed::edgeFactor(smoothed.id(), kDims, kNoise);
-    solver.setSpeedInputs({speed::SpeedKind::Edge, smoothed.id(), factor.id(), {}});
+    solver.setSpeedInputs({model::SpeedKind::Edge, smoothed.id(), factor.id(), {}});
     solver.addSphere(kSeed);
     solver.setParams({kHigh, 2.0F * kNoise, 0.9F});
     const StepResult r = solver.runUntilConverged(kMaxIterations);
@@ -112,21 +113,21 @@ TEST_F(SpeedSeamTest, EdgeSpeedOnTheSmoothedScanStopsAtTheSeam) {
 
 TEST_F(SpeedSeamTest, SpeedInputsWithoutTheirFactorAreRefused) {
     LevelSetSolver solver(twoSpheres(), kDims);
-    EXPECT_THROW(solver.setSpeedInputs({speed::SpeedKind::Edge, 0, 0, {}}), std::invalid_argument);
-    EXPECT_THROW(solver.setSpeedInputs({speed::SpeedKind::Classify, 0, 0, {}}),
+    EXPECT_THROW(solver.setSpeedInputs({model::SpeedKind::Edge, 0, 0, {}}), std::invalid_argument);
+    EXPECT_THROW(solver.setSpeedInputs({model::SpeedKind::Classify, 0, 0, {}}),
                  std::invalid_argument);
 }
 
 // A factor field on the ball case of the agreement test: the edge factor in [0.2, 1], the
 // classifier's output in [-1, 1] (positive in the ball, varying along i).
-std::vector<float> factorField(const glm::ivec3& d, speed::SpeedKind kind) {
+std::vector<float> factorField(const glm::ivec3& d, model::SpeedKind kind) {
     std::vector<float> f(countOf(d));
     for (int k = 0; k < d.z; ++k) {
         for (int j = 0; j < d.y; ++j) {
             for (int i = 0; i < d.x; ++i) {
                 const float wave = 0.5F + 0.5F * std::sin(static_cast<float>(i + 2 * j) / 5.0F);
                 const float r = glm::length(glm::vec3(i, j, k) - glm::vec3(24, 22, 20));
-                f[voxelIndex(d, i, j, k)] = kind == speed::SpeedKind::Edge
+                f[voxelIndex(d, i, j, k)] = kind == model::SpeedKind::Edge
                                                 ? 0.2F + 0.8F * wave
                                                 : (r < 15.0F ? 0.3F + 0.7F * wave : -0.8F);
             }
@@ -139,8 +140,8 @@ TEST_F(SpeedSeamTest, EdgeAndClassifySpeedsMatchTheReference) {
     const glm::ivec3 d{48, 44, 40};
     const auto volume = ballVolume(d, 0.0F, 100.0F, {24, 22, 20}, 15.0F);
     const Sphere seed{{22, 20, 19}, 4.0F};
-    for (const speed::SpeedKind kind : {speed::SpeedKind::Edge, speed::SpeedKind::Classify}) {
-        SCOPED_TRACE(speed::speedKindName(kind));
+    for (const model::SpeedKind kind : {model::SpeedKind::Edge, model::SpeedKind::Classify}) {
+        SCOPED_TRACE(model::speedKindName(kind));
         const LevelSetParams params{100.0F, 30.0F, 0.7F};
         const std::vector<float> field = factorField(d, kind);
         const gpu::ScanTexture factor(field, d); // an R32F texture of the field

@@ -1,5 +1,5 @@
+#include "exports/image_file.hpp"
 #include "gpu/gl_handle.hpp"
-#include "io/image_file.hpp"
 #include "render/slice_frame.hpp"
 #include "support/gpu_fixture.hpp"
 #include "ui/imgui_layer.hpp"
@@ -179,8 +179,9 @@ TEST_F(UiPanel, DrawsInsideThePanelForEachState) {
         const std::vector<std::uint8_t> px = screen.read();
         // STEERSEG_UI_SNAPSHOTS=<folder>: the frames as PNG, to look at the panel.
         if (const char* dir = std::getenv("STEERSEG_UI_SNAPSHOTS")) {
-            io::writeImage(std::filesystem::path(dir) / ("panel_" + ui::stateLabel(state) + ".png"),
-                           RgbaImage{kW, kH, px});
+            exports::writeImage(std::filesystem::path(dir) /
+                                    ("panel_" + ui::stateLabel(state) + ".png"),
+                                RgbaImage{kW, kH, px});
         }
         const Counts in = count(px, layout_.panel);
         EXPECT_GT(in.changed, in.total * 9 / 10) << "the panel's background covers its rect";
@@ -450,8 +451,8 @@ TEST_F(UiPanel, PortraitPanelFitsItsControls) {
     if (const char* dir = std::getenv("STEERSEG_UI_SNAPSHOTS")) {
         Screen::clear();
         frame(layer, st);
-        io::writeImage(std::filesystem::path(dir) / "panel_portrait.png",
-                       RgbaImage{kW, kH, screen.read()});
+        exports::writeImage(std::filesystem::path(dir) / "panel_portrait.png",
+                            RgbaImage{kW, kH, screen.read()});
     }
 }
 

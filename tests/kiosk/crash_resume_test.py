@@ -54,7 +54,7 @@ def make_phantom(path):
 
 def read_autosave(path):
     """The metadata and the decoded mask (bytes, 0/1) of an autosave file, checked as the
-    kiosk checks it (app/kiosk/autosave_snapshot.cpp)."""
+    kiosk checks it (app/autosave/autosave_snapshot.cpp)."""
     raw = open(path, "rb").read()
     if raw[:8] != b"STEERSAV":
         fail(path + ": bad magic")

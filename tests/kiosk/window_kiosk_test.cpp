@@ -5,9 +5,9 @@
 // tolerance; then a click and a key injected into the X server with xdotool must reach the
 // workflow as the script's own tap and key at the same pixel do in the offscreen run.
 #include "core/rgba_image.hpp"
+#include "exports/image_file.hpp"
 #include "gpu/golden_compare.hpp"
 #include "gpu/x11_probe.hpp"
-#include "io/image_file.hpp"
 #include "kiosk/child_process.hpp"
 #include "support/test_data.hpp"
 #include "ui/layout.hpp"
@@ -124,7 +124,7 @@ std::optional<RgbaImage> readWhenWritten(const fs::path& path, ChildProcess& kio
         lastSize = ec ? 0 : size;
         if (steady) {
             try {
-                return io::readImage(path); // a wrong size is compareImages' to name
+                return exports::readImage(path); // a wrong size is compareImages' to name
             } catch (const std::exception&) {
                 // still being written
             }
@@ -212,7 +212,7 @@ TEST(KioskWindow, XScreenShowsTheOffscreenFrameAndXInputReachesTheWorkflow) {
         ASSERT_EQ(*rc, 0) << "the offscreen run failed" << describeRun(dir, "offscreen");
     }
     const fs::path frameA = dir / "offscreen" / "window_check.png";
-    const RgbaImage offscreen = io::readImage(frameA);
+    const RgbaImage offscreen = exports::readImage(frameA);
     ASSERT_EQ(offscreen.width, kWidth);
     ASSERT_EQ(offscreen.height, kHeight);
 
@@ -235,8 +235,8 @@ TEST(KioskWindow, XScreenShowsTheOffscreenFrameAndXInputReachesTheWorkflow) {
     if (!match.ok) {
         const fs::path shot = dir / "x-screen.png";
         const fs::path diff = dir / "x-screen.diff.png";
-        io::writeImage(shot, shown);
-        io::writeImage(diff, match.diff);
+        exports::writeImage(shot, shown);
+        exports::writeImage(diff, match.diff);
         ADD_FAILURE() << match.message << " the X screen " << shot << " ("
                       << (shown.pixels == drawn->pixels ? "equal to" : "unlike")
                       << " the window run's own frame " << frameB << "), the offscreen frame "

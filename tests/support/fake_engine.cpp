@@ -119,7 +119,7 @@ workflow::ProbeResult FakeEngine::probe(const glm::dvec3& voxel, double radiusMm
     return r;
 }
 
-void FakeEngine::paint(const solver::Sphere& s, std::uint8_t value) {
+void FakeEngine::paint(const model::Sphere& s, std::uint8_t value) {
     requireScan(value != 0 ? "addSeed" : "erase");
     const glm::ivec3 d = scan_.dims;
     for (int a = 0; a < 3; ++a) {
@@ -139,7 +139,7 @@ void FakeEngine::paint(const solver::Sphere& s, std::uint8_t value) {
     for (int k = lo.z; k <= hi.z; ++k) {
         for (int j = lo.y; j <= hi.y; ++j) {
             for (int i = lo.x; i <= hi.x; ++i) {
-                if (solver::sphereDistance(s, glm::vec3(i, j, k)) > 0.0F) {
+                if (model::sphereDistance(s, glm::vec3(i, j, k)) > 0.0F) {
                     continue;
                 }
                 std::uint8_t& m = mask_[static_cast<std::size_t>(i + d.x * (j + d.y * k))];
@@ -157,11 +157,11 @@ void FakeEngine::paint(const solver::Sphere& s, std::uint8_t value) {
     changed();
 }
 
-void FakeEngine::addSeed(const solver::Sphere& sphere) {
+void FakeEngine::addSeed(const model::Sphere& sphere) {
     paint(sphere, 1);
 }
 
-void FakeEngine::erase(const solver::Sphere& sphere) {
+void FakeEngine::erase(const model::Sphere& sphere) {
     paint(sphere, 0);
 }
 
@@ -174,7 +174,7 @@ void FakeEngine::clearLevelSet() {
     changed();
 }
 
-void FakeEngine::setParams(const solver::LevelSetParams& p) {
+void FakeEngine::setParams(const model::LevelSetParams& p) {
     requireScan("setParams");
     // The solver's own checks (validateParams), which the workflow's clamping must satisfy.
     if (!std::isfinite(p.T) || !std::isfinite(p.eps) || !std::isfinite(p.alpha) || p.eps < 0.0F ||
@@ -188,7 +188,7 @@ void FakeEngine::setParams(const solver::LevelSetParams& p) {
 
 void FakeEngine::setSpeed(const workflow::SpeedChoice& choice) {
     requireScan("setSpeed");
-    const bool classify = choice.kind == speed::SpeedKind::Classify;
+    const bool classify = choice.kind == model::SpeedKind::Classify;
     if (classify && (choice.inside.empty() || choice.outside.empty())) {
         misused("setSpeed classify without an example of each kind");
     }
@@ -196,7 +196,7 @@ void FakeEngine::setSpeed(const workflow::SpeedChoice& choice) {
         misused("setSpeed with examples for a speed that learns nothing");
     }
     for (const auto* list : {&choice.inside, &choice.outside}) {
-        for (const solver::Sphere& s : *list) {
+        for (const model::Sphere& s : *list) {
             for (int a = 0; a < 3; ++a) {
                 if (!std::isfinite(s.centre[a]) || s.centre[a] < 0.0F ||
                     s.centre[a] > static_cast<float>(scan_.dims[a] - 1)) {
@@ -208,7 +208,7 @@ void FakeEngine::setSpeed(const workflow::SpeedChoice& choice) {
             }
         }
     }
-    if (!speedError.empty() && choice.kind != speed::SpeedKind::Threshold) {
+    if (!speedError.empty() && choice.kind != model::SpeedKind::Threshold) {
         throw std::runtime_error(speedError);
     }
     speeds.push_back(choice);
@@ -216,7 +216,7 @@ void FakeEngine::setSpeed(const workflow::SpeedChoice& choice) {
     changed();
 }
 
-solver::StepResult FakeEngine::step(int iterations) {
+model::StepResult FakeEngine::step(int iterations) {
     requireScan("step");
     if (inside_ == 0) {
         misused("step without a level set");
@@ -230,16 +230,16 @@ solver::StepResult FakeEngine::step(int iterations) {
     iterations_ += iterations;
     sinceChange_ += iterations;
     time_ += 0.25F * static_cast<float>(iterations);
-    solver::StepResult r;
+    model::StepResult r;
     r.iterations = iterations;
     r.evolvedTime = time_;
     r.converged = sinceChange_ >= convergeAfter;
-    r.stopReason = solver::StopReason::IterationLimit;
+    r.stopReason = model::StopReason::IterationLimit;
     return r;
 }
 
-solver::SolverStats FakeEngine::stats() const {
-    solver::SolverStats s;
+model::SolverStats FakeEngine::stats() const {
+    model::SolverStats s;
     s.iterations = iterations_;
     s.evolvedTime = time_;
     return s;

@@ -42,8 +42,8 @@ class FakeEngine : public workflow::Engine {
     std::vector<std::filesystem::path> exports; // successful exports
     int setParamsCalls = 0;
     std::vector<workflow::SpeedChoice> speeds; // setSpeed's accepted choices, in order
-    [[nodiscard]] speed::SpeedKind speedKind() const { return speed_.kind; }
-    [[nodiscard]] const solver::LevelSetParams& params() const { return params_; }
+    [[nodiscard]] model::SpeedKind speedKind() const { return speed_.kind; }
+    [[nodiscard]] const model::LevelSetParams& params() const { return params_; }
     [[nodiscard]] std::size_t liveSnapshots() const { return snapshots_.size(); }
     [[nodiscard]] int misuse() const { return misuse_; }
     [[nodiscard]] const std::string& lastMisuse() const { return lastMisuse_; }
@@ -57,14 +57,14 @@ class FakeEngine : public workflow::Engine {
     [[nodiscard]] workflow::ScanInfo scanInfo() const override;
     [[nodiscard]] workflow::ProbeResult probe(const glm::dvec3& voxel,
                                               double radiusMm) const override;
-    void addSeed(const solver::Sphere& sphere) override;
-    void erase(const solver::Sphere& sphere) override;
+    void addSeed(const model::Sphere& sphere) override;
+    void erase(const model::Sphere& sphere) override;
     void clearLevelSet() override;
     [[nodiscard]] bool hasLevelSet() const override { return inside_ > 0; }
-    void setParams(const solver::LevelSetParams& params) override;
+    void setParams(const model::LevelSetParams& params) override;
     void setSpeed(const workflow::SpeedChoice& choice) override;
-    solver::StepResult step(int iterations) override;
-    [[nodiscard]] solver::SolverStats stats() const override;
+    model::StepResult step(int iterations) override;
+    [[nodiscard]] model::SolverStats stats() const override;
     [[nodiscard]] double volumeMl() const override;
     workflow::SnapshotId snapshot() override;
     void restore(workflow::SnapshotId id) override;
@@ -81,7 +81,7 @@ class FakeEngine : public workflow::Engine {
     // Records a call the workflow should not have made, then throws it as std::logic_error.
     [[noreturn]] void misused(const std::string& what) const;
     void requireScan(const char* call) const;
-    void paint(const solver::Sphere& sphere, std::uint8_t value);
+    void paint(const model::Sphere& sphere, std::uint8_t value);
     void changed() { sinceChange_ = 0; }
 
     workflow::ScanInfo scan_;
@@ -93,7 +93,7 @@ class FakeEngine : public workflow::Engine {
     int iterations_ = 0;
     float time_ = 0.0F;
     int sinceChange_ = 0;
-    solver::LevelSetParams params_;
+    model::LevelSetParams params_;
     workflow::SpeedChoice speed_;
     std::map<workflow::SnapshotId, LevelSet> snapshots_;
     workflow::SnapshotId nextId_ = 1;

@@ -1,6 +1,6 @@
-#include "kiosk/autosave_snapshot.hpp"
-#include "kiosk/autosave_store.hpp"
-#include "kiosk/autosave_writer.hpp"
+#include "autosave/autosave_snapshot.hpp"
+#include "autosave/autosave_store.hpp"
+#include "autosave/autosave_writer.hpp"
 #include "workflow/param_ranges.hpp"
 
 #include <filesystem>
@@ -12,7 +12,7 @@
 namespace steerseg::test {
 namespace {
 
-using namespace kiosk;
+using namespace autosave;
 namespace fs = std::filesystem;
 
 fs::path freshDir(const std::string& name) {
@@ -35,10 +35,10 @@ AutosaveSnapshot sampleSnapshot(std::int64_t savedAtMs = 1'700'000'000'123) {
     s.params.values[workflow::indexOf(workflow::Param::Alpha)] = 0.9;
     s.params.values[workflow::indexOf(workflow::Param::Radius)] = 4.5;
     s.params.preset = "CT soft tissue";
-    s.params.speed = {speed::SpeedKind::Classify,
+    s.params.speed = {model::SpeedKind::Classify,
                       {{{1.0F, 2.0F, 3.0F}, 1.5F}},
                       {{{4.0F, 5.0F, 6.0F}, 2.0F}, {{7.0F, 8.0F, 9.0F}, 0.5F}}};
-    s.params.fallback = speed::SpeedKind::Edge;
+    s.params.fallback = model::SpeedKind::Edge;
     s.seeds = 2;
     s.erasures = 1;
     s.iterations = 340;

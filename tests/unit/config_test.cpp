@@ -214,7 +214,7 @@ TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
     other.ui = {12.0, 2.0, 900};
     other.probe = {7.0, 3.0, 20.0};
     other.brush = {9.0};
-    other.speed = {speed::SpeedKind::Classify, 40, 0.5, 0.25};
+    other.speed = {model::SpeedKind::Classify, 40, 0.5, 0.25};
     other.exports = {"elsewhere", {"nrrd"}};
     other.audit = {"elsewhere.jsonl"};
     for (config::Preset& p : other.presets) {
@@ -327,7 +327,7 @@ TEST_F(ConfigTest, Speed) {
                                               "conductance_factor = 0.1\nkappa_factor = 0.5\n");
     const config::LoadedConfig loaded = load({file});
     EXPECT_TRUE(loaded.problems.empty()) << describeAll(loaded.problems);
-    EXPECT_EQ(loaded.config.speed.kind, speed::SpeedKind::Edge);
+    EXPECT_EQ(loaded.config.speed.kind, model::SpeedKind::Edge);
     EXPECT_EQ(loaded.config.speed.smoothIterations, 0);
     EXPECT_EQ(loaded.config.speed.conductanceFactor, 0.1);
     EXPECT_EQ(loaded.config.speed.kappaFactor, 0.5);

@@ -1,7 +1,7 @@
 // Control events -> workflow actions: acceleration, the ring's repeat rate, hold bindings,
 // unbound controls, last touch wins, and a knob driven past a parameter's range.
 #include "config/kiosk_config.hpp"
-#include "kiosk/control_bindings.hpp"
+#include "input/control_bindings.hpp"
 #include "workflow_rig.hpp"
 
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 namespace steerseg::test {
 namespace {
 
-using kiosk::ControlBindings;
+using input::ControlBindings;
 using platform::input::ControlEvent;
 using workflow::Action;
 
@@ -43,12 +43,12 @@ double nudged(const std::vector<Action>& actions) {
 }
 
 TEST(ControlBindings, AccelerationCurve) {
-    EXPECT_EQ(kiosk::stepAcceleration(0.0), 1.0);
-    EXPECT_EQ(kiosk::stepAcceleration(3.0), 1.0);
-    EXPECT_DOUBLE_EQ(kiosk::stepAcceleration(6.0), 2.0);
-    EXPECT_DOUBLE_EQ(kiosk::stepAcceleration(12.0), 4.0);
-    EXPECT_EQ(kiosk::stepAcceleration(1000.0), 10.0);
-    EXPECT_EQ(kiosk::stepAcceleration(std::nan("")), 1.0);
+    EXPECT_EQ(input::stepAcceleration(0.0), 1.0);
+    EXPECT_EQ(input::stepAcceleration(3.0), 1.0);
+    EXPECT_DOUBLE_EQ(input::stepAcceleration(6.0), 2.0);
+    EXPECT_DOUBLE_EQ(input::stepAcceleration(12.0), 4.0);
+    EXPECT_EQ(input::stepAcceleration(1000.0), 10.0);
+    EXPECT_EQ(input::stepAcceleration(std::nan("")), 1.0);
 }
 
 TEST(ControlBindings, SlowJogIsFineStepsAFlickCountsMore) {
@@ -73,9 +73,9 @@ TEST(ControlBindings, SlowJogIsFineStepsAFlickCountsMore) {
 }
 
 TEST(ControlBindings, RingRepeatsAtARateByPositionAndStopsAtRest) {
-    EXPECT_DOUBLE_EQ(kiosk::ringRepeatsPerSecond(1.0), 20.0);
-    EXPECT_DOUBLE_EQ(kiosk::ringRepeatsPerSecond(-0.5), 10.0);
-    EXPECT_EQ(kiosk::ringRepeatsPerSecond(0.0), 0.0);
+    EXPECT_DOUBLE_EQ(input::ringRepeatsPerSecond(1.0), 20.0);
+    EXPECT_DOUBLE_EQ(input::ringRepeatsPerSecond(-0.5), 10.0);
+    EXPECT_EQ(input::ringRepeatsPerSecond(0.0), 0.0);
 
     ControlBindings b = defaults();
     std::vector<Action> out;

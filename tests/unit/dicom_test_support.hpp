@@ -2,7 +2,7 @@
 
 // Helpers shared by the DICOM reader tests: expecting a ScanError, and editing DICOM files
 // through GDCM to build hostile cases.
-#include "io/readers.hpp"
+#include "scan/readers.hpp"
 #include "support/test_data.hpp"
 
 #include <algorithm>
@@ -15,8 +15,8 @@
 namespace steerseg::test {
 
 namespace fs = std::filesystem;
-using io::readDicom;
-using io::ScanError;
+using scan::readDicom;
+using scan::ScanError;
 
 // The message of the ScanError `fn` throws; fails the test if it throws nothing or else.
 inline std::string scanErrorOf(const std::function<void()>& fn) {

@@ -2,8 +2,8 @@
 // scripted live source: unplug in the middle of a turn releases and stops, replug resumes, a
 // flood is capped, garbage is logged (rate-limited) and skipped.
 #include "config/kiosk_config.hpp"
-#include "kiosk/input_backend.hpp"
-#include "kiosk/input_hub.hpp"
+#include "input/input_backend.hpp"
+#include "input/input_hub.hpp"
 #include "platform/input/recording.hpp"
 
 #include <chrono>
@@ -15,18 +15,18 @@
 namespace steerseg::test {
 namespace {
 
-using kiosk::InputHub;
+using input::InputHub;
 using platform::input::RawRecord;
 using platform::input::RawSource;
 using workflow::Action;
 
 const std::string kData = STEERSEG_INPUT_DATA_DIR;
 
-InputHub makeHub(std::ostream& log, InputHub::Backend backend = kiosk::replayInputBackend(),
-                 bool live = false, kiosk::InputHubLimits limits = {}) {
+InputHub makeHub(std::ostream& log, InputHub::Backend backend = input::replayInputBackend(),
+                 bool live = false, input::InputHubLimits limits = {}) {
     const config::KioskConfig c = config::defaultConfig();
-    return InputHub(kiosk::deviceSpecs(c.input.devices),
-                    kiosk::ControlBindings(c.bindings.knobs, c.bindings.buttons),
+    return InputHub(input::deviceSpecs(c.input.devices),
+                    input::ControlBindings(c.bindings.knobs, c.bindings.buttons),
                     std::move(backend), live, log, limits);
 }
 
@@ -136,9 +136,9 @@ TEST(InputHub, RecordsOfNoConfiguredDeviceAreSkippedWithOneLine) {
 
 TEST(InputHub, AReplayedFloodIsCapped) {
     std::ostringstream log;
-    kiosk::InputHubLimits limits;
+    input::InputHubLimits limits;
     limits.recordsPerSecond = 1000;
-    InputHub hub = makeHub(log, kiosk::replayInputBackend(), false, limits);
+    InputHub hub = makeHub(log, input::replayInputBackend(), false, limits);
     // 20000 PowerMate detents in one second (each with its SYN_REPORT).
     std::vector<RawRecord> flood;
     for (int i = 0; i < 20000; ++i) {
@@ -213,7 +213,7 @@ TEST(InputHub, LiveDeviceRetriedUntilPresentThenGoneThenBack) {
     ScriptedSource::Shared shared;
     bool present = false;
     int opens = 0;
-    InputHub::Backend backend = kiosk::replayInputBackend();
+    InputHub::Backend backend = input::replayInputBackend();
     backend.open = [&](const platform::input::DeviceSpec& spec,
                        std::string& problem) -> std::unique_ptr<RawSource> {
         if (spec.name != "powermate") {
@@ -274,7 +274,7 @@ TEST(InputHub, HotplugOpensAtOnce) {
     bool present = false;
     bool changed = false;
     ScriptedSource::Shared shared;
-    InputHub::Backend backend = kiosk::replayInputBackend();
+    InputHub::Backend backend = input::replayInputBackend();
     backend.open = [&](const platform::input::DeviceSpec& spec,
                        std::string& problem) -> std::unique_ptr<RawSource> {
         if (spec.name != "powermate" || !present) {
@@ -299,7 +299,7 @@ TEST(InputHub, HotplugOpensAtOnce) {
 TEST(InputHub, ALiveFloodNeverStallsAFrame) {
     ScriptedSource::Shared shared;
     shared.endless = true;
-    InputHub::Backend backend = kiosk::replayInputBackend();
+    InputHub::Backend backend = input::replayInputBackend();
     backend.open = [&](const platform::input::DeviceSpec& spec,
                        std::string& problem) -> std::unique_ptr<RawSource> {
         if (spec.name != "powermate") {
@@ -326,14 +326,14 @@ TEST(InputHub, ALiveFloodNeverStallsAFrame) {
 }
 
 TEST(InputHub, IndicatorFollowsTheWorkflow) {
-    EXPECT_EQ(kiosk::indicatorFor(workflow::State::Evolving), platform::input::Indicator::Steady);
-    EXPECT_EQ(kiosk::indicatorFor(workflow::State::Paused), platform::input::Indicator::Pulsing);
-    EXPECT_EQ(kiosk::indicatorFor(workflow::State::Inspect), platform::input::Indicator::Off);
-    EXPECT_EQ(kiosk::indicatorFor(workflow::State::NoScan), platform::input::Indicator::Off);
+    EXPECT_EQ(input::indicatorFor(workflow::State::Evolving), platform::input::Indicator::Steady);
+    EXPECT_EQ(input::indicatorFor(workflow::State::Paused), platform::input::Indicator::Pulsing);
+    EXPECT_EQ(input::indicatorFor(workflow::State::Inspect), platform::input::Indicator::Off);
+    EXPECT_EQ(input::indicatorFor(workflow::State::NoScan), platform::input::Indicator::Off);
 }
 
 TEST(InputHub, SpecsFromTheConfig) {
-    const auto specs = kiosk::deviceSpecs(config::defaultConfig().input.devices);
+    const auto specs = input::deviceSpecs(config::defaultConfig().input.devices);
     ASSERT_EQ(specs.size(), 6U);
     EXPECT_EQ(specs[0].kind, platform::input::DeviceSpec::Kind::Shuttle);
     EXPECT_EQ(specs[0].vendorId, 0x0b33);

@@ -244,7 +244,7 @@ TEST(IoDicomCorpusHostile, NonFiniteRescaleAndDeclaredSizePastTheLimit) {
     EXPECT_NE(nan.find("ct.dcm"), std::string::npos) << nan;
     EXPECT_NE(nan.find("RescaleSlope is \"NaN\""), std::string::npos) << nan;
 
-    io::ReadLimits limits;
+    scan::ReadLimits limits;
     limits.maxDataBytes = 64;
     const fs::path plain = fs::path(STEERSEG_DICOM_CORPUS) / "ct_j2k.dcm";
     const std::string big = scanErrorOf([&] { (void)readDicom(plain, limits); });
@@ -327,7 +327,7 @@ TEST_F(IoDicomHostile, ColourImageIsRefused) {
 
 TEST_F(IoDicomHostile, LimitsAreCheckedBeforeAllocating) {
     copyLungSlices(lung_, dir_, 3);
-    io::ReadLimits limits;
+    scan::ReadLimits limits;
     limits.maxVoxels = 1000;
     const std::string msg = scanErrorOf([&] { (void)readDicom(dir_, limits); });
     EXPECT_NE(msg.find("exceed the limit"), std::string::npos) << msg;

@@ -2,8 +2,8 @@
 // oblique, an enhanced multi-frame file) and real series are read by steerseg, a mask written as
 // SEG, then validated by dciodvfy and read back by an independent reader
 // (tests/tools/read_dicom_seg.py, pydicom).
-#include "io/dicom_seg_writer.hpp"
-#include "io/scan_reader.hpp"
+#include "exports/dicom_seg_writer.hpp"
+#include "scan/scan_reader.hpp"
 #include "support/test_data.hpp"
 
 #include <array>
@@ -243,17 +243,17 @@ void roundTrip(const std::string& name, const SeriesSpec& spec) {
     const fs::path source = dir / "series";
     fs::create_directories(source);
     const std::vector<SourceSlice> slices = writeSeries(source, spec);
-    const io::LoadedScan scan = io::readScan(source);
+    const scan::LoadedScan scan = scan::readScan(source);
     ASSERT_NE(scan.dicom, nullptr);
     const Geometry& g = scan.volume.geometry();
     ASSERT_EQ(g.dims, glm::ivec3(spec.columns, spec.rows, spec.slices));
     const std::vector<std::uint8_t> mask = makeMask(g.dims);
     const fs::path seg = dir / "seg.dcm";
-    io::DicomSegOptions options;
+    exports::DicomSegOptions options;
     options.label = "Lesion";
-    options.category = io::kCodeMorphologicallyAbnormalStructure;
-    options.type = io::kCodeMass;
-    io::writeDicomSeg(seg, g, mask, scan.dicom.get(), options);
+    options.category = exports::kCodeMorphologicallyAbnormalStructure;
+    options.type = exports::kCodeMass;
+    exports::writeDicomSeg(seg, g, mask, scan.dicom.get(), options);
     expectValid(seg);
     const auto found = readBack(seg, source);
     const auto want = expected(g, mask, slices);
@@ -346,13 +346,13 @@ TEST(DicomSeg, EnhancedMultiFrameSource) {
                               static_cast<unsigned long>(pixels.size()));
     ASSERT_TRUE(file.saveFile((source / "mf.dcm").c_str(), EXS_LittleEndianExplicit).good());
 
-    const io::LoadedScan scan = io::readScan(source / "mf.dcm");
+    const scan::LoadedScan scan = scan::readScan(source / "mf.dcm");
     ASSERT_NE(scan.dicom, nullptr);
     const Geometry& g = scan.volume.geometry();
     ASSERT_EQ(g.dims, glm::ivec3(columns, rows, 3));
     const std::vector<std::uint8_t> mask = makeMask(g.dims);
     const fs::path seg = dir / "seg.dcm";
-    io::writeDicomSeg(seg, g, mask, scan.dicom.get());
+    exports::writeDicomSeg(seg, g, mask, scan.dicom.get());
     expectValid(seg);
     std::vector<SourceSlice> slices;
     for (std::size_t f = 0; f < z.size(); ++f) {
@@ -367,9 +367,9 @@ TEST(DicomSeg, RefusesAScanNotReadFromDicom) {
     g.dims = {4, 4, 2};
     const std::vector<std::uint8_t> mask(32, 1);
     try {
-        io::writeDicomSeg(tempDir("seg-nodicom") / "seg.dcm", g, mask, nullptr);
+        exports::writeDicomSeg(tempDir("seg-nodicom") / "seg.dcm", g, mask, nullptr);
         FAIL() << "no error";
-    } catch (const io::WriteError& e) {
+    } catch (const files::WriteError& e) {
         EXPECT_NE(std::string(e.what()).find("DICOM SEG needs a scan read from a DICOM series"),
                   std::string::npos)
             << e.what();
@@ -380,20 +380,20 @@ TEST(DicomSeg, RefusesAnEmptyMaskAndAMismatchedOne) {
     const fs::path dir = tempDir("seg-refuse");
     fs::create_directories(dir / "series");
     writeSeries(dir / "series", SeriesSpec{});
-    const io::LoadedScan scan = io::readScan(dir / "series");
+    const scan::LoadedScan scan = scan::readScan(dir / "series");
     const Geometry& g = scan.volume.geometry();
     const std::vector<std::uint8_t> empty(g.voxelCount(), 0);
     const fs::path seg = dir / "seg.dcm";
     try {
-        io::writeDicomSeg(seg, g, empty, scan.dicom.get());
+        exports::writeDicomSeg(seg, g, empty, scan.dicom.get());
         FAIL() << "no error";
-    } catch (const io::WriteError& e) {
+    } catch (const files::WriteError& e) {
         EXPECT_NE(std::string(e.what()).find("the mask is empty"), std::string::npos) << e.what();
     }
     try {
-        io::writeDicomSeg(seg, g, std::vector<std::uint8_t>(5, 1), scan.dicom.get());
+        exports::writeDicomSeg(seg, g, std::vector<std::uint8_t>(5, 1), scan.dicom.get());
         FAIL() << "no error";
-    } catch (const io::WriteError& e) {
+    } catch (const files::WriteError& e) {
         EXPECT_NE(std::string(e.what()).find("the mask has 5 voxels"), std::string::npos)
             << e.what();
     }
@@ -403,7 +403,7 @@ TEST(DicomSeg, RefusesAnEmptyMaskAndAMismatchedOne) {
 
 // Real series: a sphere in the middle of the scan, written, validated and read back.
 void realRoundTrip(const fs::path& source, const std::string& name) {
-    const io::LoadedScan scan = io::readScan(source);
+    const scan::LoadedScan scan = scan::readScan(source);
     ASSERT_NE(scan.dicom, nullptr);
     const Geometry& g = scan.volume.geometry();
     std::vector<std::uint8_t> mask(g.voxelCount(), 0);
@@ -421,7 +421,7 @@ void realRoundTrip(const fs::path& source, const std::string& name) {
     }
     const fs::path dir = tempDir("seg-real-" + name);
     const fs::path seg = dir / "seg.dcm";
-    io::writeDicomSeg(seg, g, mask, scan.dicom.get());
+    exports::writeDicomSeg(seg, g, mask, scan.dicom.get());
     expectValid(seg);
     const auto found = readBack(seg, source);
     std::size_t frames = 0;
@@ -455,16 +455,16 @@ TEST(DicomSeg, RealCtSeriesImplicitVr) {
 // Instance UIDs (the meta header keeps the last two): a SEG could not be filed with its study.
 TEST(DicomSeg, RefusesARealSeriesWithoutStudyAndSeriesUids) {
     STEERSEG_REQUIRE_DATA(series, "abdomen-ct-totalseg/example_ct_dicom");
-    const io::LoadedScan scan = io::readScan(series);
+    const scan::LoadedScan scan = scan::readScan(series);
     ASSERT_NE(scan.dicom, nullptr);
     EXPECT_FALSE(scan.dicom->slices.front().sopInstanceUid.empty()); // from the meta header
     EXPECT_EQ(scan.dicom->slices.front().sopClassUid, "1.2.840.10008.5.1.4.1.1.2");
     const std::vector<std::uint8_t> mask(scan.volume.geometry().voxelCount(), 1);
     const fs::path seg = tempDir("seg-real-totalseg") / "seg.dcm";
     try {
-        io::writeDicomSeg(seg, scan.volume.geometry(), mask, scan.dicom.get());
+        exports::writeDicomSeg(seg, scan.volume.geometry(), mask, scan.dicom.get());
         FAIL() << "no error";
-    } catch (const io::WriteError& e) {
+    } catch (const files::WriteError& e) {
         EXPECT_NE(std::string(e.what()).find("no StudyInstanceUID or SeriesInstanceUID"),
                   std::string::npos)
             << e.what();

@@ -236,7 +236,7 @@ TEST(IoDicom, LungIbsiDicomMatchesNiftiInWorld) {
     STEERSEG_REQUIRE_DATA(dir, "lung-ct-ibsi/dicom/image");
     STEERSEG_REQUIRE_DATA(nii, "lung-ct-ibsi/nifti/image.nii.gz");
     const Volume dicom = readDicom(dir, {});
-    const Volume nifti = io::readScan(nii).volume;
+    const Volume nifti = scan::readScan(nii).volume;
     EXPECT_EQ(nifti.dims(), dicom.dims());
     expectSameValuesAtSameWorld(dicom, nifti, 3);
 }
@@ -245,7 +245,7 @@ TEST(IoDicom, TotalsegDicomMatchesHuNiftiInWorld) {
     STEERSEG_REQUIRE_DATA(dir, "abdomen-ct-totalseg/example_ct_dicom");
     STEERSEG_REQUIRE_DATA(nii, "abdomen-ct-totalseg/totalseg_example_ct_dicom_HU.nii.gz");
     const Volume dicom = readDicom(dir, {});
-    const Volume nifti = io::readScan(nii).volume;
+    const Volume nifti = scan::readScan(nii).volume;
     EXPECT_EQ(nifti.dims(), dicom.dims());
     // The NIfTI's j axis runs against the DICOM rows: same world, flipped index.
     EXPECT_LT(glm::dot(nifti.geometry().direction[1], dicom.geometry().direction[1]), 0.0);

@@ -1,7 +1,7 @@
 // `steerseg export` end to end: a mask on an oblique scan's grid out as STL, PLY and NRRD, and
 // the mistakes a user makes each answered with one line and the documented exit status.
-#include "io/mask_writer.hpp"
-#include "io/scan_reader.hpp"
+#include "exports/mask_writer.hpp"
+#include "scan/scan_reader.hpp"
 #include "support/cli_run.hpp"
 #include "support/test_data.hpp"
 
@@ -54,8 +54,8 @@ Files makeFiles(const std::string& name) {
         }
     }
     f.maskCentroid /= inside;
-    io::writeMask(f.scan, g, std::vector<std::uint8_t>(g.voxelCount(), 1));
-    io::writeMask(f.mask, g, mask);
+    exports::writeMask(f.scan, g, std::vector<std::uint8_t>(g.voxelCount(), 1));
+    exports::writeMask(f.mask, g, mask);
     return f;
 }
 
@@ -117,8 +117,8 @@ TEST(CliExport, MaskFormatsRoundTripOnTheScansGrid) {
     const Files f = makeFiles("export-mask");
     const CliRun r = runExport(f, "m.nrrd");
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    const io::LoadedScan back = io::readScan(f.dir / "m.nrrd");
-    const io::LoadedScan original = io::readScan(f.mask);
+    const scan::LoadedScan back = scan::readScan(f.dir / "m.nrrd");
+    const scan::LoadedScan original = scan::readScan(f.mask);
     ASSERT_EQ(back.volume.dims(), f.geometry.dims);
     EXPECT_LT(glm::distance(back.volume.geometry().origin, f.geometry.origin), 1e-3);
     for (std::size_t n = 0; n < f.geometry.voxelCount(); ++n) {
@@ -130,14 +130,14 @@ TEST(CliExport, MaskFormatsRoundTripOnTheScansGrid) {
 // read back with the mask's voxels; the TIFF's missing geometry is said in the output.
 TEST(CliExport, EveryFormatByExtensionAndByFormat) {
     const Files f = makeFiles("export-every");
-    const io::LoadedScan original = io::readScan(f.mask);
+    const scan::LoadedScan original = scan::readScan(f.mask);
     for (const auto& [out, extra] : std::vector<std::pair<std::string, std::string>>{
              {"m.seg.nrrd", ""}, {"m.nii", ""}, {"m.nii.gz", " --format .NII.GZ"}}) {
         SCOPED_TRACE(out);
         const CliRun r = runExport(f, out, extra);
         ASSERT_EQ(r.exitCode, 0) << r.err;
         EXPECT_EQ(nlohmann::json::parse(r.out).at("world"), "LPS");
-        const io::LoadedScan back = io::readScan(f.dir / out);
+        const scan::LoadedScan back = scan::readScan(f.dir / out);
         ASSERT_EQ(back.volume.dims(), f.geometry.dims);
         EXPECT_LT(glm::distance(back.volume.geometry().origin, f.geometry.origin), 1e-3);
         for (std::size_t n = 0; n < f.geometry.voxelCount(); ++n) {
@@ -197,8 +197,8 @@ TEST(CliExport, MistakesGiveOneLineAndTheirExitStatus) {
         // A mask from another grid (the same size, moved).
         Geometry moved = f.geometry;
         moved.origin += glm::dvec3(5.0, 0.0, 0.0);
-        io::writeMask(f.dir / "moved.nii.gz", moved,
-                      std::vector<std::uint8_t>(moved.voxelCount(), 1));
+        exports::writeMask(f.dir / "moved.nii.gz", moved,
+                           std::vector<std::uint8_t>(moved.voxelCount(), 1));
         const CliRun r = runSteerseg("export --input " + f.scan.string() + " --mask " +
                                      (f.dir / "moved.nii.gz").string() + " --output " +
                                      (f.dir / "x.stl").string());
@@ -207,7 +207,8 @@ TEST(CliExport, MistakesGiveOneLineAndTheirExitStatus) {
     }
     {
         const auto empty = f.dir / "empty.nii.gz";
-        io::writeMask(empty, f.geometry, std::vector<std::uint8_t>(f.geometry.voxelCount(), 0));
+        exports::writeMask(empty, f.geometry,
+                           std::vector<std::uint8_t>(f.geometry.voxelCount(), 0));
         const CliRun r = runSteerseg("export --input " + f.scan.string() + " --mask " +
                                      empty.string() + " --output " + (f.dir / "e.ply").string());
         EXPECT_EQ(r.exitCode, 4);

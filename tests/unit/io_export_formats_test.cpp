@@ -1,12 +1,12 @@
-// Every export format written through io::writeExport and read back by an independent path:
+// Every export format written through exports::writeExport and read back by an independent path:
 // NIfTI, NRRD and .seg.nrrd through the project's readers, TIFF through OpenImageIO. On an
 // oblique, anisotropic, partly flipped grid, one asymmetric blob must land on the same voxels
 // and the same world positions as on the scan.
 #include "config/kiosk_config.hpp"
-#include "io/export_format.hpp"
-#include "io/export_writer.hpp"
-#include "io/scan_reader.hpp"
+#include "exports/export_writer.hpp"
 #include "io_test_files.hpp"
+#include "model/export_format.hpp"
+#include "scan/scan_reader.hpp"
 #include "support/test_data.hpp"
 
 #include <OpenImageIO/imageio.h>
@@ -78,11 +78,12 @@ TEST(ExportFormats, VoxelFormatsLandOnTheScansWorldPositions) {
     const auto dir = tempDir("export-voxels");
     for (const char* name : {"m.nii.gz", "m.nii", "m.nrrd", "m.seg.nrrd"}) {
         SCOPED_TRACE(name);
-        const auto format = io::exportFormatOfFile(name);
+        const auto format = model::exportFormatOfFile(name);
         ASSERT_TRUE(format);
-        const io::ExportSummary s = io::writeExport(dir / name, *format, {g, mask, {}, {}});
+        const exports::ExportSummary s =
+            exports::writeExport(dir / name, *format, {g, mask, {}, {}});
         EXPECT_TRUE(s.note.empty());
-        const io::LoadedScan back = io::readScan(dir / name);
+        const scan::LoadedScan back = scan::readScan(dir / name);
         expectSameGeometry(back.volume.geometry(), g, 1e-5);
         const Volume& v = back.volume;
         expectSameWorld(insideWorld(v.geometry(), [&](std::size_t n) { return v.storedAt(n) > 0; }),
@@ -95,11 +96,11 @@ TEST(ExportFormats, SegNrrdCarriesSlicersSegmentKeys) {
     const Geometry g = obliqueGeometry(kDims);
     const auto mask = blob(kDims);
     const auto dir = tempDir("export-segnrrd");
-    io::SegmentInfo segment;
+    exports::SegmentInfo segment;
     segment.name = "Liver lesion";
     segment.color = {0.25, 0.5, 1.0};
     segment.label = 3;
-    io::writeExport(dir / "m.seg.nrrd", io::ExportFormat::SegNrrd, {g, mask, {}, segment});
+    exports::writeExport(dir / "m.seg.nrrd", model::ExportFormat::SegNrrd, {g, mask, {}, segment});
     const std::string h = headerText(dir / "m.seg.nrrd");
     for (const char* line :
          {"space: left-posterior-superior", "kinds: domain domain domain",
@@ -113,13 +114,13 @@ TEST(ExportFormats, SegNrrdCarriesSlicersSegmentKeys) {
         EXPECT_NE(h.find(std::string("\n") + line + "\n"), std::string::npos) << line << "\n" << h;
     }
     // The voxels hold the label value inside.
-    const Volume v = io::readScan(dir / "m.seg.nrrd").volume;
+    const Volume v = scan::readScan(dir / "m.seg.nrrd").volume;
     for (std::size_t n = 0; n < mask.size(); ++n) {
         ASSERT_EQ(v.storedAt(n), mask[n] != 0 ? 3.0 : 0.0) << n;
     }
     // The defaults, and an empty segment's extent as Slicer writes it.
-    io::writeExport(dir / "e.seg.nrrd", io::ExportFormat::SegNrrd,
-                    {g, std::vector<std::uint8_t>(mask.size(), 0), {}, {}});
+    exports::writeExport(dir / "e.seg.nrrd", model::ExportFormat::SegNrrd,
+                         {g, std::vector<std::uint8_t>(mask.size(), 0), {}, {}});
     const std::string e = headerText(dir / "e.seg.nrrd");
     EXPECT_NE(e.find("\nSegment0_Name:=Segment_1\n"), std::string::npos) << e;
     EXPECT_NE(e.find("\nSegment0_LabelValue:=1\n"), std::string::npos) << e;
@@ -130,18 +131,21 @@ TEST(ExportFormats, SegNrrdRefusesABadSegment) {
     const Geometry g = obliqueGeometry(kDims);
     const auto mask = blob(kDims);
     const auto dir = tempDir("export-segbad");
-    io::SegmentInfo bad;
+    exports::SegmentInfo bad;
     bad.label = 256;
-    EXPECT_THROW(io::writeExport(dir / "a.seg.nrrd", io::ExportFormat::SegNrrd, {g, mask, {}, bad}),
-                 io::WriteError);
+    EXPECT_THROW(
+        exports::writeExport(dir / "a.seg.nrrd", model::ExportFormat::SegNrrd, {g, mask, {}, bad}),
+        files::WriteError);
     bad = {};
     bad.name = "two\nlines";
-    EXPECT_THROW(io::writeExport(dir / "b.seg.nrrd", io::ExportFormat::SegNrrd, {g, mask, {}, bad}),
-                 io::WriteError);
+    EXPECT_THROW(
+        exports::writeExport(dir / "b.seg.nrrd", model::ExportFormat::SegNrrd, {g, mask, {}, bad}),
+        files::WriteError);
     bad = {};
     bad.color.g = 1.5;
-    EXPECT_THROW(io::writeExport(dir / "c.seg.nrrd", io::ExportFormat::SegNrrd, {g, mask, {}, bad}),
-                 io::WriteError);
+    EXPECT_THROW(
+        exports::writeExport(dir / "c.seg.nrrd", model::ExportFormat::SegNrrd, {g, mask, {}, bad}),
+        files::WriteError);
     EXPECT_TRUE(std::filesystem::is_empty(dir));
 }
 
@@ -151,8 +155,8 @@ TEST(ExportFormats, TiffStackReadsBackThroughOpenImageIO) {
     const Geometry g = obliqueGeometry(kDims);
     const auto mask = blob(kDims);
     const auto dir = tempDir("export-tiff");
-    const io::ExportSummary s =
-        io::writeExport(dir / "m.tif", io::ExportFormat::Tiff, {g, mask, {}, {}});
+    const exports::ExportSummary s =
+        exports::writeExport(dir / "m.tif", model::ExportFormat::Tiff, {g, mask, {}, {}});
     EXPECT_NE(s.note.find("no patient position"), std::string::npos);
     auto in = OIIO::ImageInput::open((dir / "m.tif").string());
     ASSERT_TRUE(in) << OIIO::geterror();
@@ -207,8 +211,8 @@ TEST(ExportFormats, SurfacesComeFromTheLevelSet) {
     }
     const auto dir = tempDir("export-surface");
     for (const bool fromPhi : {true, false}) {
-        const io::ExportSummary s = io::writeExport(
-            dir / "s.stl", io::ExportFormat::Stl,
+        const exports::ExportSummary s = exports::writeExport(
+            dir / "s.stl", model::ExportFormat::Stl,
             {g, mask, fromPhi ? std::span<const float>(phi) : std::span<const float>(), {}});
         std::ifstream in(dir / "s.stl", std::ios::binary);
         std::string bytes(std::filesystem::file_size(dir / "s.stl"), '\0');
@@ -241,11 +245,11 @@ TEST(ExportFormats, DicomSegNeedsTheScansDicomSource) {
     const Geometry g = obliqueGeometry(kDims);
     const auto mask = blob(kDims);
     const auto dir = tempDir("export-dcm");
-    EXPECT_EQ(io::exportFormatOfFile("x.DCM"), io::ExportFormat::DicomSeg);
+    EXPECT_EQ(model::exportFormatOfFile("x.DCM"), model::ExportFormat::DicomSeg);
     try {
-        io::writeExport(dir / "x.dcm", io::ExportFormat::DicomSeg, {g, mask, {}, {}});
+        exports::writeExport(dir / "x.dcm", model::ExportFormat::DicomSeg, {g, mask, {}, {}});
         FAIL() << "a DICOM SEG without a DICOM source was written";
-    } catch (const io::WriteError& e) {
+    } catch (const files::WriteError& e) {
         EXPECT_NE(std::string(e.what()).find("DICOM SEG needs a scan read from a DICOM series"),
                   std::string::npos);
     }
@@ -253,7 +257,7 @@ TEST(ExportFormats, DicomSegNeedsTheScansDicomSource) {
 }
 
 TEST(ExportFormats, ChosenByExtensionOrName) {
-    using io::ExportFormat;
+    using model::ExportFormat;
     const std::vector<std::pair<std::string, ExportFormat>> byFile{
         {"a.nii.gz", ExportFormat::NiftiGz}, {"a.NII", ExportFormat::Nifti},
         {"a.nrrd", ExportFormat::Nrrd},      {"a.Seg.Nrrd", ExportFormat::SegNrrd},
@@ -261,30 +265,30 @@ TEST(ExportFormats, ChosenByExtensionOrName) {
         {"a.ply", ExportFormat::Ply},        {"a.tif", ExportFormat::Tiff},
         {"a.tiff", ExportFormat::Tiff}};
     for (const auto& [file, format] : byFile) {
-        EXPECT_EQ(io::exportFormatOfFile(file), format) << file;
-        EXPECT_EQ(io::exportFormatFor(file, std::nullopt), format) << file;
+        EXPECT_EQ(model::exportFormatOfFile(file), format) << file;
+        EXPECT_EQ(model::exportFormatFor(file, std::nullopt), format) << file;
     }
-    EXPECT_FALSE(io::exportFormatOfFile("a.gz"));
-    EXPECT_FALSE(io::exportFormatOfFile(".nrrd"));
-    for (const ExportFormat f : io::exportFormats()) {
-        EXPECT_EQ(io::exportFormatNamed(io::exportFormatName(f)), f);
-        EXPECT_EQ(io::exportFormatOfFile("x." + std::string(io::exportFormatName(f))), f);
+    EXPECT_FALSE(model::exportFormatOfFile("a.gz"));
+    EXPECT_FALSE(model::exportFormatOfFile(".nrrd"));
+    for (const ExportFormat f : model::exportFormats()) {
+        EXPECT_EQ(model::exportFormatNamed(model::exportFormatName(f)), f);
+        EXPECT_EQ(model::exportFormatOfFile("x." + std::string(model::exportFormatName(f))), f);
     }
-    EXPECT_EQ(io::exportFormatNamed(".TIFF"), ExportFormat::Tiff);
+    EXPECT_EQ(model::exportFormatNamed(".TIFF"), ExportFormat::Tiff);
     // A mesh or a TIFF under any name; a voxel format only under its own extension.
-    EXPECT_EQ(io::exportFormatFor("a.mesh", "STL"), ExportFormat::Stl);
-    EXPECT_EQ(io::exportFormatFor("a.out", "tiff"), ExportFormat::Tiff);
-    EXPECT_EQ(io::exportFormatFor("a.seg.nrrd", "nrrd"), ExportFormat::Nrrd);
-    EXPECT_THROW((void)io::exportFormatFor("a.out", "nrrd"), std::invalid_argument);
-    EXPECT_THROW((void)io::exportFormatFor("a.nrrd", "seg.nrrd"), std::invalid_argument);
-    EXPECT_THROW((void)io::exportFormatFor("a.nrrd", "jpeg"), std::invalid_argument);
-    EXPECT_THROW((void)io::exportFormatFor("a.obj", std::nullopt), std::invalid_argument);
+    EXPECT_EQ(model::exportFormatFor("a.mesh", "STL"), ExportFormat::Stl);
+    EXPECT_EQ(model::exportFormatFor("a.out", "tiff"), ExportFormat::Tiff);
+    EXPECT_EQ(model::exportFormatFor("a.seg.nrrd", "nrrd"), ExportFormat::Nrrd);
+    EXPECT_THROW((void)model::exportFormatFor("a.out", "nrrd"), std::invalid_argument);
+    EXPECT_THROW((void)model::exportFormatFor("a.nrrd", "seg.nrrd"), std::invalid_argument);
+    EXPECT_THROW((void)model::exportFormatFor("a.nrrd", "jpeg"), std::invalid_argument);
+    EXPECT_THROW((void)model::exportFormatFor("a.obj", std::nullopt), std::invalid_argument);
 }
 
 // The config validates export.formats against its own copy of the names (config may not
 // include io); the copy must not drift from the writers.
 TEST(ExportFormats, TheConfigKnowsEveryFormatByItsName) {
-    EXPECT_EQ(config::exportFormatList(), io::exportFormatNames());
+    EXPECT_EQ(config::exportFormatList(), model::exportFormatNames());
 }
 
 } // namespace

@@ -1,9 +1,9 @@
-// io::writeFileAtomically's failures, each caused for real: a missing folder, a read-only one
+// files::writeFileAtomically's failures, each caused for real: a missing folder, a read-only one
 // (not deniable as root), a full disk through /dev/full at the write loop's seam, and a file
 // size limit (RLIMIT_FSIZE in a forked child: write() fails with EFBIG) through the whole path.
 // After every failure no temporary file is left and an existing file is unchanged.
-#include "io/file_write.hpp"
-#include "io/scan_reader.hpp"
+#include "files/file_write.hpp"
+#include "scan/scan_reader.hpp"
 #include "support/test_data.hpp"
 #include "support/unprivileged.hpp"
 
@@ -33,14 +33,14 @@ std::size_t entries(const std::filesystem::path& dir) {
 std::string messageOf(const std::function<void()>& write) {
     try {
         write();
-    } catch (const io::WriteError& e) {
+    } catch (const files::WriteError& e) {
         return e.what();
     }
     return "";
 }
 
 void writeText(const std::filesystem::path& path, const std::string& text) {
-    io::writeFileAtomically(path, {std::as_bytes(std::span(text))});
+    files::writeFileAtomically(path, {std::as_bytes(std::span(text))});
 }
 
 TEST(FileWrite, ReplacesTheFileAndLeavesNothingElse) {
@@ -48,8 +48,8 @@ TEST(FileWrite, ReplacesTheFileAndLeavesNothingElse) {
     writeText(dir / "out.bin", "first");
     const std::string second = "second, longer";
     const std::string third = " and a second piece";
-    io::writeFileAtomically(dir / "out.bin",
-                            {std::as_bytes(std::span(second)), std::as_bytes(std::span(third))});
+    files::writeFileAtomically(dir / "out.bin",
+                               {std::as_bytes(std::span(second)), std::as_bytes(std::span(third))});
     EXPECT_EQ(readText(dir / "out.bin"), second + third);
     EXPECT_EQ(entries(dir), 1u);
     // A name with no folder part lands in the working directory.
@@ -101,7 +101,7 @@ TEST(FileWrite, FullDiskSaysHowMuchWasNotWritten) {
     }
     const std::vector<std::byte> bytes(1000);
     const std::string m = messageOf(
-        [&] { io::writeAllTo(fd, "/exports/m.nii.gz", {std::span<const std::byte>(bytes)}); });
+        [&] { files::writeAllTo(fd, "/exports/m.nii.gz", {std::span<const std::byte>(bytes)}); });
     ::close(fd);
     EXPECT_EQ(m, "/exports/m.nii.gz: the disk is full: 1000 bytes could not be written to "
                  "/exports");
@@ -124,8 +124,8 @@ TEST(FileWrite, FailureHalfwayLeavesTheOldFileAndNoTemporary) {
         const rlimit limit{4096, 4096};
         ::setrlimit(RLIMIT_FSIZE, &limit);
         const std::vector<std::byte> big(64 * 1024, std::byte{7});
-        const std::string m =
-            messageOf([&] { io::writeFileAtomically(target, {std::span<const std::byte>(big)}); });
+        const std::string m = messageOf(
+            [&] { files::writeFileAtomically(target, {std::span<const std::byte>(big)}); });
         const ssize_t written = ::write(pipeFds[1], m.data(), m.size());
         ::_exit(written == static_cast<ssize_t>(m.size()) ? 0 : 1);
     }

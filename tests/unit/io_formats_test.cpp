@@ -1,9 +1,9 @@
 // NRRD, MetaImage, MGH/MGZ and image stacks: files written here from a known volume on an
 // oblique grid, read back and compared; plus the real NRRD masks in the shared data.
-#include "io/file_write.hpp"
-#include "io/nrrd_header.hpp"
-#include "io/scan_reader.hpp"
+#include "files/file_write.hpp"
 #include "io_test_files.hpp"
+#include "scan/nrrd_header.hpp"
+#include "scan/scan_reader.hpp"
 #include "support/test_data.hpp"
 
 #include <OpenImageIO/imageio.h>
@@ -79,9 +79,9 @@ TEST(NrrdReader, AttachedRawGzipAsciiBothEndians) {
         {"big.nrrd", nrrdFields(g, "uint16", "RAS") + "encoding: raw\nendian: big\n",
          test::encodeSamples(values, "uint16", true)},
         {"gz.nrrd", nrrdFields(g, "float") + "encoding: gzip\nendian: little\n",
-         io::gzipBytes(test::encodeSamples(values, "float32"))},
+         files::gzipBytes(test::encodeSamples(values, "float32"))},
         {"dbl.nrrd", nrrdFields(g, "double") + "encoding: gz\nendian: big\n",
-         io::gzipBytes(test::encodeSamples(values, "float64", true))},
+         files::gzipBytes(test::encodeSamples(values, "float64", true))},
         {"ascii.nrrd", nrrdFields(g, "unsigned char") + "encoding: ascii\n",
          test::concat(ascii, {})},
     };
@@ -89,7 +89,7 @@ TEST(NrrdReader, AttachedRawGzipAsciiBothEndians) {
         SCOPED_TRACE(c.name);
         test::writeFile(dir / c.name,
                         test::concat("NRRD0004\n# comment\n" + c.header + "\n", c.data));
-        const io::LoadedScan scan = io::readScan(dir / c.name);
+        const scan::LoadedScan scan = scan::readScan(dir / c.name);
         EXPECT_EQ(scan.format, "nrrd");
         test::expectSameGeometry(scan.volume.geometry(), g, 1e-9);
         expectPattern(scan.volume);
@@ -107,7 +107,7 @@ TEST(NrrdReader, DetachedHeaderWithSkips) {
         dir / "vol.nhdr",
         "NRRD0005\n" + nrrdFields(g, "int") +
             "encoding: raw\nendian: little\ndata file: vol.raw\nline skip: 2\nbyte skip: 3\n");
-    const io::LoadedScan scan = io::readScan(dir / "vol.nhdr");
+    const scan::LoadedScan scan = scan::readScan(dir / "vol.nhdr");
     test::expectSameGeometry(scan.volume.geometry(), g, 1e-9);
     EXPECT_EQ(scan.volume.type(), VoxelType::Float32);
     expectPattern(scan.volume);
@@ -116,7 +116,7 @@ TEST(NrrdReader, DetachedHeaderWithSkips) {
     test::writeFile(dir / "tail.nhdr",
                     "NRRD0004\n" + nrrdFields(g, "int") +
                         "encoding: raw\nendian: little\ndata file: vol.raw\nbyte skip: -1\n");
-    expectPattern(io::readScan(dir / "tail.nhdr").volume);
+    expectPattern(scan::readScan(dir / "tail.nhdr").volume);
 }
 
 // A 2D NRRD is one slice; spacings without space directions give an axis-aligned grid.
@@ -128,7 +128,7 @@ TEST(NrrdReader, TwoDimensionalWithSpacings) {
         test::concat(
             "NRRD0001\ntype: uchar\ndimension: 2\nsizes: 4 3\nspacings: 0.5 nan\nencoding: raw\n\n",
             test::encodeSamples(values, "uint8")));
-    const Volume v = io::readScan(dir / "s.nrrd").volume;
+    const Volume v = scan::readScan(dir / "s.nrrd").volume;
     EXPECT_EQ(v.dims(), glm::ivec3(4, 3, 1));
     EXPECT_EQ(v.geometry().spacing, glm::dvec3(0.5, 1.0, 1.0));
     EXPECT_EQ(v.geometry().direction, glm::dmat3(1.0));
@@ -139,7 +139,7 @@ TEST(NrrdReader, TwoDimensionalWithSpacings) {
 TEST(NrrdReader, ParserReportsHeaderEnd) {
     const std::string text =
         "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n\nDATA";
-    const io::RawDataSpec spec = io::parseNrrdHeader("t.nrrd", text, true, {});
+    const scan::RawDataSpec spec = scan::parseNrrdHeader("t.nrrd", text, true, {});
     EXPECT_EQ(spec.headerBytes, text.size() - 4);
     EXPECT_EQ(spec.geometry.dims, glm::ivec3(2));
 }
@@ -149,8 +149,8 @@ TEST(NrrdReader, ParserReportsHeaderEnd) {
 TEST(NrrdReader, RealMaskMatchesNiftiMaskInWorld) {
     STEERSEG_REQUIRE_DATA(nrrd, "head-mr-seg3d/Brain.nrrd");
     STEERSEG_REQUIRE_DATA(nifti, "head-mr-seg3d/seg3d_brain_mask_on_MR.nii.gz");
-    const Volume a = io::readScan(nrrd).volume;
-    const Volume b = io::readScan(nifti).volume;
+    const Volume a = scan::readScan(nrrd).volume;
+    const Volume b = scan::readScan(nifti).volume;
     EXPECT_EQ(a.dims(), glm::ivec3(160, 232, 160));
     const glm::dvec3 d = test::worldCentroid(a) - test::worldCentroid(b);
     EXPECT_LT(glm::length(d), 2.0) << d.x << " " << d.y << " " << d.z;
@@ -202,7 +202,7 @@ TEST(MetaImageReader, LocalRawCompressedAndDetachedBigEndian) {
                         "ElementByteOrderMSB = True\nHeaderSize = 8\nElementDataFile = d.raw\n");
     for (const char* name : {"raw.mha", "z.mha", "d.mhd"}) {
         SCOPED_TRACE(name);
-        const io::LoadedScan scan = io::readScan(dir / name);
+        const scan::LoadedScan scan = scan::readScan(dir / name);
         EXPECT_EQ(scan.format, "metaimage");
         test::expectSameGeometry(scan.volume.geometry(), g, 1e-9);
         expectPattern(scan.volume);
@@ -217,7 +217,7 @@ TEST(MetaImageReader, TransformMatrixIsAxisDirectionsInTurn) {
                     test::concat("NDims = 3\nDimSize = 2 2 2\nElementType = MET_UCHAR\n"
                                  "TransformMatrix = 0 1 0 -1 0 0 0 0 1\nElementDataFile = LOCAL\n",
                                  std::vector<std::byte>(8)));
-    const Geometry g = io::readScan(dir / "r.mha").volume.geometry();
+    const Geometry g = scan::readScan(dir / "r.mha").volume.geometry();
     EXPECT_EQ(g.direction[0], glm::dvec3(0, 1, 0));  // i runs along +y (posterior)
     EXPECT_EQ(g.direction[1], glm::dvec3(-1, 0, 0)); // j runs along -x
 }
@@ -231,9 +231,9 @@ TEST(MgzReader, MghAndMgzOnObliqueGrid) {
         SCOPED_TRACE(type);
         const auto mgh = test::mghFile(g, type, values);
         test::writeFile(dir / "v.mgh", mgh);
-        test::writeFile(dir / "v.mgz", io::gzipBytes(mgh));
+        test::writeFile(dir / "v.mgz", files::gzipBytes(mgh));
         for (const char* name : {"v.mgh", "v.mgz"}) {
-            const io::LoadedScan scan = io::readScan(dir / name);
+            const scan::LoadedScan scan = scan::readScan(dir / name);
             EXPECT_EQ(scan.format, "mgz");
             test::expectSameGeometry(scan.volume.geometry(), g);
             expectPattern(scan.volume);
@@ -270,7 +270,7 @@ TEST(MgzReader, CentreConvention) {
     h.resize(284 + 4 * 6 * 8);
     const auto dir = test::tempDir("mgz-centre");
     test::writeFile(dir / "c.mgh", h);
-    const Geometry g = io::readScan(dir / "c.mgh").volume.geometry();
+    const Geometry g = scan::readScan(dir / "c.mgh").volume.geometry();
     const glm::dvec3 centre = g.indexToWorld(glm::dvec3(2, 3, 4));
     EXPECT_NEAR(centre.x, -10.0, 1e-9); // LPS
     EXPECT_NEAR(centre.y, -20.0, 1e-9);
@@ -307,7 +307,7 @@ TEST(ImageStackReader, FolderOfPngsInNaturalOrder) {
         writeImage(dir / ("s" + std::to_string(k) + ".png"), w, h, 1, slicePixels(w, h, k));
     }
     test::writeFile(dir / "notes.txt", std::string("not an image"));
-    const io::LoadedScan scan = io::readScan(dir);
+    const scan::LoadedScan scan = scan::readScan(dir);
     EXPECT_EQ(scan.format, "image-stack");
     EXPECT_EQ(scan.volume.type(), VoxelType::UInt8);
     EXPECT_EQ(scan.volume.dims(), glm::ivec3(w, h, 12));
@@ -318,7 +318,7 @@ TEST(ImageStackReader, FolderOfPngsInNaturalOrder) {
 TEST(ImageStackReader, RgbBecomesLuminance) {
     const auto dir = test::tempDir("stack-rgb");
     writeImage(dir / "a.png", 2, 1, 3, {255, 0, 0, 0, 0, 255});
-    const Volume v = io::readScan(dir).volume;
+    const Volume v = scan::readScan(dir).volume;
     EXPECT_EQ(v.valueAt(0, 0, 0), std::round(0.2126 * 255));
     EXPECT_EQ(v.valueAt(1, 0, 0), std::round(0.0722 * 255));
 }
@@ -346,7 +346,7 @@ TEST(ImageStackReader, MultiPageTiff) {
         ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT16, p.data()));
     }
     out->close();
-    const io::LoadedScan scan = io::readScan(file);
+    const scan::LoadedScan scan = scan::readScan(file);
     EXPECT_EQ(scan.volume.type(), VoxelType::UInt16);
     EXPECT_EQ(scan.volume.dims(), glm::ivec3(w, h, pages));
     expectPattern(scan.volume);

@@ -1,8 +1,8 @@
 // Hostile and broken files: each must fail with a ScanError naming the file and the problem,
 // without crashing and without allocating what the file does not hold.
-#include "io/file_write.hpp"
-#include "io/scan_reader.hpp"
+#include "files/file_write.hpp"
 #include "io_test_files.hpp"
+#include "scan/scan_reader.hpp"
 #include "support/test_data.hpp"
 
 #include <OpenImageIO/imageio.h>
@@ -16,11 +16,11 @@ namespace {
 
 // Reads `path`, expecting a ScanError whose message names the file and contains `problem`.
 void expectScanError(const std::filesystem::path& path, const std::string& problem,
-                     const io::ReadLimits& limits = {}) {
+                     const scan::ReadLimits& limits = {}) {
     try {
-        (void)io::readScan(path, limits);
+        (void)scan::readScan(path, limits);
         ADD_FAILURE() << path << " was read but should have failed with \"" << problem << "\"";
-    } catch (const io::ScanError& e) {
+    } catch (const scan::ScanError& e) {
         const std::string what = e.what();
         EXPECT_NE(what.find(path.filename().string()), std::string::npos) << what;
         EXPECT_NE(what.find(problem), std::string::npos) << what;
@@ -57,7 +57,7 @@ TEST_F(Hostile, TruncatedNii) {
 }
 
 TEST_F(Hostile, TruncatedNiiGz) {
-    const auto gz = io::gzipBytes(smallNifti());
+    const auto gz = files::gzipBytes(smallNifti());
     test::writeFile(dir / "cut.nii.gz",
                     std::vector<std::byte>(
                         gz.begin(), gz.begin() + static_cast<std::ptrdiff_t>(gz.size() / 2)));
@@ -113,13 +113,13 @@ TEST_F(Hostile, ClaimedSizeNotBackedByCompressedData) {
     g.dims = glm::ivec3(100);
     test::NiftiOptions o;
     o.datatype = NIFTI_TYPE_FLOAT32;
-    test::writeFile(dir / "claim.nii.gz", io::gzipBytes(test::niftiFile(g, noise(4096), o)));
+    test::writeFile(dir / "claim.nii.gz", files::gzipBytes(test::niftiFile(g, noise(4096), o)));
     expectScanError(dir / "claim.nii.gz",
                     "header says 100x100x100 float32 (3.8 MiB) but the data ends after 4.0 KiB");
     test::writeFile(
         dir / "claim.nrrd",
         test::concat("NRRD0004\ntype: float\ndimension: 3\nsizes: 100 100 100\nencoding: gzip\n\n",
-                     io::gzipBytes(noise(4096))));
+                     files::gzipBytes(noise(4096))));
     expectScanError(dir / "claim.nrrd", "but the data ends after 4.0 KiB");
     EXPECT_LT(peakRssMiB(), 512.0);
 }
@@ -130,7 +130,7 @@ TEST_F(Hostile, DeclaredSizeBeyondWhatCompressedDataCanHold) {
     Geometry g;
     g.dims = glm::ivec3(1000); // 954 MiB of uint8: under every size limit
     const std::vector<std::byte> zeros(4096);
-    test::writeFile(dir / "bomb.nii.gz", io::gzipBytes(test::niftiFile(g, zeros)));
+    test::writeFile(dir / "bomb.nii.gz", files::gzipBytes(test::niftiFile(g, zeros)));
     expectScanError(dir / "bomb.nii.gz", "header says 1000x1000x1000 uint8 (954 MiB) but ");
     expectScanError(dir / "bomb.nii.gz", " of compressed data expand to at most ");
     expectScanError(dir / "bomb.nii.gz", "(compression ratio limit 1032:1)");
@@ -138,22 +138,23 @@ TEST_F(Hostile, DeclaredSizeBeyondWhatCompressedDataCanHold) {
         dir / "bomb.nrrd",
         test::concat(
             "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 1000 1000 1000\nencoding: gzip\n\n",
-            io::gzipBytes(zeros)));
+            files::gzipBytes(zeros)));
     expectScanError(dir / "bomb.nrrd", "of compressed data expand to at most");
     test::writeFile(dir / "bomb.mha",
                     test::concat("NDims = 3\nDimSize = 1000 1000 1000\nElementType = MET_UCHAR\n"
                                  "CompressedData = True\nElementDataFile = LOCAL\n",
-                                 io::gzipBytes(zeros)));
+                                 files::gzipBytes(zeros)));
     expectScanError(dir / "bomb.mha", "of compressed data expand to at most");
-    test::writeFile(dir / "bomb.mgz", io::gzipBytes(test::mghFile(g, 0, std::vector<double>(8))));
+    test::writeFile(dir / "bomb.mgz",
+                    files::gzipBytes(test::mghFile(g, 0, std::vector<double>(8))));
     expectScanError(dir / "bomb.mgz", "of compressed data expand to at most");
     // A configured ratio is stated as such: 64^3 zeros compress far better than 10:1.
-    io::ReadLimits strict;
+    scan::ReadLimits strict;
     strict.maxCompressionRatio = 10.0;
     Geometry small;
     small.dims = glm::ivec3(64);
     test::writeFile(dir / "ratio.nii.gz",
-                    io::gzipBytes(test::niftiFile(small, std::vector<std::byte>(64 * 64 * 64))));
+                    files::gzipBytes(test::niftiFile(small, std::vector<std::byte>(64 * 64 * 64))));
     expectScanError(dir / "ratio.nii.gz", "(compression ratio limit 10:1)", strict);
     EXPECT_LT(peakRssMiB(), 256.0);
 }
@@ -164,35 +165,35 @@ TEST_F(Hostile, GenuineHighlyCompressedDataIsRead) {
     Geometry g;
     g.dims = glm::ivec3(128);
     const std::vector<std::byte> zeros(g.voxelCount());
-    const auto gz = io::gzipBytes(test::niftiFile(g, zeros), 9);
+    const auto gz = files::gzipBytes(test::niftiFile(g, zeros), 9);
     ASSERT_GT(static_cast<double>(zeros.size()) / static_cast<double>(gz.size()), 900.0);
     test::writeFile(dir / "zeros.nii.gz", gz);
-    EXPECT_EQ(io::readScan(dir / "zeros.nii.gz").volume.dims(), g.dims);
+    EXPECT_EQ(scan::readScan(dir / "zeros.nii.gz").volume.dims(), g.dims);
 }
 
 // The configurable maximum on declared voxel data, compressed or not, named with the numbers.
 TEST_F(Hostile, DataPastTheConfiguredLimitIsRefused) {
-    io::ReadLimits limits;
+    scan::ReadLimits limits;
     limits.maxDataBytes = 256;
     test::writeFile(dir / "small.nii", smallNifti());
     expectScanError(dir / "small.nii",
                     "header says 8x8x8 uint8 (512 bytes), more than the limit of 256 bytes of scan "
                     "data",
                     limits);
-    test::writeFile(dir / "small.nii.gz", io::gzipBytes(smallNifti()));
+    test::writeFile(dir / "small.nii.gz", files::gzipBytes(smallNifti()));
     expectScanError(dir / "small.nii.gz", "more than the limit of 256 bytes", limits);
     test::writeFile(dir / "small.nrrd",
                     test::concat("NRRD0004\ntype: uchar\ndimension: 3\nsizes: 8 8 8\nencoding: "
                                  "raw\n\n",
                                  std::vector<std::byte>(512)));
     expectScanError(dir / "small.nrrd", "more than the limit of 256 bytes", limits);
-    EXPECT_NO_THROW((void)io::readScan(dir / "small.nrrd"));
+    EXPECT_NO_THROW((void)scan::readScan(dir / "small.nrrd"));
     // The default: 1200^3 float32 (6.4 GiB) is past 4 GiB, refused from the header alone.
     Geometry g;
     g.dims = glm::ivec3(1200);
     test::NiftiOptions o;
     o.datatype = NIFTI_TYPE_FLOAT32;
-    test::writeFile(dir / "big.nii.gz", io::gzipBytes(test::niftiFile(g, noise(4096), o)));
+    test::writeFile(dir / "big.nii.gz", files::gzipBytes(test::niftiFile(g, noise(4096), o)));
     expectScanError(dir / "big.nii.gz",
                     "header says 1200x1200x1200 float32 (6.4 GiB), more than the limit of 4.0 GiB");
     EXPECT_LT(peakRssMiB(), 256.0);
@@ -237,11 +238,11 @@ TEST_F(Hostile, NiftiRescaleNotFiniteOrPastFloat) {
     o.slope = 1e36;
     o.inter = 0.0;
     test::writeFile(dir / "ok.nii", smallNifti(o));
-    EXPECT_FLOAT_EQ(static_cast<float>(io::readScan(dir / "ok.nii").volume.stats().max), 77e36F);
+    EXPECT_FLOAT_EQ(static_cast<float>(scan::readScan(dir / "ok.nii").volume.stats().max), 77e36F);
     o.slope = 0.0;
     o.inter = std::numeric_limits<double>::quiet_NaN();
     test::writeFile(dir / "none.nii", smallNifti(o));
-    EXPECT_EQ(io::readScan(dir / "none.nii").volume.rescale().slope, 1.0);
+    EXPECT_EQ(scan::readScan(dir / "none.nii").volume.rescale().slope, 1.0);
 }
 
 TEST_F(Hostile, HeaderDataSizeMismatch) {
@@ -259,7 +260,7 @@ TEST_F(Hostile, HeaderDataSizeMismatch) {
     expectScanError(dir / "short.mha", "but the file holds only 100 bytes");
     auto mgh = test::mghFile(test::obliqueGeometry({4, 4, 4}), 3, test::patternValues({4, 4, 4}));
     mgh.resize(mgh.size() - 10);
-    test::writeFile(dir / "short.mgz", io::gzipBytes(mgh));
+    test::writeFile(dir / "short.mgz", files::gzipBytes(mgh));
     expectScanError(dir / "short.mgz", "but the data ends after");
 }
 
@@ -304,9 +305,9 @@ TEST_F(Hostile, NonImageFileWithScanExtension) {
     std::filesystem::create_directory(dir / "folder");
     test::writeFile(dir / "folder" / "a.png", text);
     try {
-        (void)io::readScan(dir / "folder");
+        (void)scan::readScan(dir / "folder");
         ADD_FAILURE() << "a folder with a fake image was read";
-    } catch (const io::ScanError& e) {
+    } catch (const scan::ScanError& e) {
         EXPECT_NE(std::string(e.what()).find("a.png: cannot read as an image"), std::string::npos)
             << e.what();
     }
@@ -344,9 +345,9 @@ TEST_F(Hostile, ImageStackWithMixedSizes) {
         out->close();
     }
     try {
-        (void)io::readScan(dir);
+        (void)scan::readScan(dir);
         ADD_FAILURE() << "mixed sizes were read";
-    } catch (const io::ScanError& e) {
+    } catch (const scan::ScanError& e) {
         EXPECT_NE(
             std::string(e.what()).find("a2.png: is 5x3 with 1 channels but the first slice is 4x3"),
             std::string::npos)
@@ -366,12 +367,12 @@ TEST_F(Hostile, ImageStackPastTheConfiguredLimitIsRefused) {
         ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels.data()));
         out->close();
     }
-    io::ReadLimits limits;
+    scan::ReadLimits limits;
     limits.maxDataBytes = 500;
     expectScanError(dir / "stack",
                     "the images make 16x16x2 uint8 (512 bytes), more than the limit of 500 bytes",
                     limits);
-    EXPECT_EQ(io::readScan(dir / "stack").volume.dims(), glm::ivec3(16, 16, 2));
+    EXPECT_EQ(scan::readScan(dir / "stack").volume.dims(), glm::ivec3(16, 16, 2));
 }
 
 TEST_F(Hostile, FourDimensionalNiftiIsRefused) {

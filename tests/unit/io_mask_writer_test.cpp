@@ -1,6 +1,6 @@
-#include "io/mask_writer.hpp"
-#include "io/scan_reader.hpp"
+#include "exports/mask_writer.hpp"
 #include "io_test_files.hpp"
+#include "scan/scan_reader.hpp"
 #include "support/test_data.hpp"
 
 #include <cstring>
@@ -35,8 +35,8 @@ TEST(MaskWriter, RoundTripsEveryFormat) {
         const auto mask = sphereMask(dims);
         const auto dir = test::tempDir("mask-roundtrip");
         const auto file = dir / (std::string("mask") + ext);
-        io::writeMask(file, g, mask);
-        const io::LoadedScan scan = io::readScan(file);
+        exports::writeMask(file, g, mask);
+        const scan::LoadedScan scan = scan::readScan(file);
         EXPECT_EQ(scan.volume.type(), VoxelType::UInt8);
         test::expectSameGeometry(scan.volume.geometry(), g, 1e-5);
         const auto v = scan.volume.voxels<std::uint8_t>();
@@ -53,7 +53,7 @@ TEST(MaskWriter, RoundTripsEveryFormat) {
 TEST(MaskWriter, NiftiHeaderFields) {
     const Geometry g = test::obliqueGeometry({4, 5, 6});
     const auto dir = test::tempDir("mask-header");
-    io::writeMask(dir / "m.nii", g, std::vector<std::uint8_t>(g.voxelCount(), 1));
+    exports::writeMask(dir / "m.nii", g, std::vector<std::uint8_t>(g.voxelCount(), 1));
     std::ifstream in(dir / "m.nii", std::ios::binary);
     nifti_1_header h{};
     in.read(reinterpret_cast<char*>(&h), sizeof h);
@@ -80,7 +80,7 @@ TEST(MaskWriter, NiftiHeaderFields) {
 TEST(MaskWriter, NrrdHeaderIsLps) {
     const Geometry g = test::obliqueGeometry({4, 5, 6});
     const auto dir = test::tempDir("mask-nrrd");
-    io::writeMask(dir / "m.nrrd", g, std::vector<std::uint8_t>(g.voxelCount(), 0));
+    exports::writeMask(dir / "m.nrrd", g, std::vector<std::uint8_t>(g.voxelCount(), 0));
     std::ifstream in(dir / "m.nrrd", std::ios::binary);
     std::string text(4096, '\0');
     in.read(text.data(), static_cast<std::streamsize>(text.size()));
@@ -95,8 +95,8 @@ TEST(MaskWriter, NonZeroBecomesOne) {
     Geometry g;
     g.dims = {3, 1, 1};
     const auto dir = test::tempDir("mask-binary");
-    io::writeMask(dir / "m.nii.gz", g, std::vector<std::uint8_t>{0, 7, 255});
-    const Volume v = io::readScan(dir / "m.nii.gz").volume;
+    exports::writeMask(dir / "m.nii.gz", g, std::vector<std::uint8_t>{0, 7, 255});
+    const Volume v = scan::readScan(dir / "m.nii.gz").volume;
     EXPECT_EQ(v.valueAt(0, 0, 0), 0.0);
     EXPECT_EQ(v.valueAt(1, 0, 0), 1.0);
     EXPECT_EQ(v.valueAt(2, 0, 0), 1.0);
@@ -106,24 +106,27 @@ TEST(MaskWriter, RefusesBadInput) {
     Geometry g;
     g.dims = {2, 2, 2};
     const auto dir = test::tempDir("mask-bad");
-    EXPECT_THROW(io::writeMask(dir / "m.nii.gz", g, std::vector<std::uint8_t>(7)), io::ScanError);
-    EXPECT_THROW(io::writeMask(dir / "m.png", g, std::vector<std::uint8_t>(8)), io::ScanError);
-    EXPECT_THROW(io::writeMask(dir / "missing" / "m.nii", g, std::vector<std::uint8_t>(8)),
-                 io::ScanError);
+    EXPECT_THROW(exports::writeMask(dir / "m.nii.gz", g, std::vector<std::uint8_t>(7)),
+                 files::WriteError);
+    EXPECT_THROW(exports::writeMask(dir / "m.png", g, std::vector<std::uint8_t>(8)),
+                 files::WriteError);
+    EXPECT_THROW(exports::writeMask(dir / "missing" / "m.nii", g, std::vector<std::uint8_t>(8)),
+                 files::WriteError);
     g.spacing.y = 0.0;
-    EXPECT_THROW(io::writeMask(dir / "m.nrrd", g, std::vector<std::uint8_t>(8)), io::ScanError);
+    EXPECT_THROW(exports::writeMask(dir / "m.nrrd", g, std::vector<std::uint8_t>(8)),
+                 files::WriteError);
     EXPECT_TRUE(std::filesystem::is_empty(dir));
 }
 
 // A mask written on a real scan's grid lands where the scan is: same world centroid.
 TEST(MaskWriter, OverlaysRealScan) {
     STEERSEG_REQUIRE_DATA(file, "head-mr-seg3d/seg3d_brain_mask_on_MR.nii.gz");
-    const Volume m = io::readScan(file).volume;
+    const Volume m = scan::readScan(file).volume;
     const auto v = m.voxels<std::uint8_t>();
     const auto dir = test::tempDir("mask-real");
     for (const char* ext : {".nii.gz", ".nrrd"}) {
-        io::writeMask(dir / (std::string("brain") + ext), m.geometry(), {v.data(), v.size()});
-        const Volume back = io::readScan(dir / (std::string("brain") + ext)).volume;
+        exports::writeMask(dir / (std::string("brain") + ext), m.geometry(), {v.data(), v.size()});
+        const Volume back = scan::readScan(dir / (std::string("brain") + ext)).volume;
         const glm::dvec3 d = test::worldCentroid(back) - test::worldCentroid(m);
         EXPECT_LT(glm::length(d), 1e-3) << ext;
     }

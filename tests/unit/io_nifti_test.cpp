@@ -1,7 +1,7 @@
-#include "io/byte_source.hpp"
-#include "io/readers.hpp"
-#include "io/scan_reader.hpp"
 #include "io_test_files.hpp"
+#include "scan/byte_source.hpp"
+#include "scan/readers.hpp"
+#include "scan/scan_reader.hpp"
 #include "support/test_data.hpp"
 
 #include <algorithm>
@@ -84,7 +84,7 @@ TEST(NiftiReader, SharedDataMatchesSources) {
         SCOPED_TRACE(want.file);
         const auto file = test::dataPath(want.file);
         ASSERT_TRUE(file) << "missing " << want.file;
-        const io::LoadedScan scan = io::readScan(*file);
+        const scan::LoadedScan scan = scan::readScan(*file);
         EXPECT_EQ(scan.format, "nifti");
         EXPECT_EQ(scan.volume.dims(), want.dims);
         for (int a = 0; a < 3; ++a) {
@@ -100,8 +100,8 @@ TEST(NiftiReader, SharedDataMatchesSources) {
 TEST(NiftiReader, SclSlopeScalesTissueMeans) {
     STEERSEG_REQUIRE_DATA(image, "brain-mni152/spm152.nii.gz");
     STEERSEG_REQUIRE_DATA(labels, "brain-mni152/mni152_pveseg.nii.gz");
-    const Volume v = io::readScan(image).volume;
-    const Volume l = io::readScan(labels).volume;
+    const Volume v = scan::readScan(image).volume;
+    const Volume l = scan::readScan(labels).volume;
     ASSERT_EQ(v.dims(), l.dims());
     const std::vector<float> real = v.realValues();
     const auto lab = l.voxels<std::uint8_t>();
@@ -126,8 +126,8 @@ TEST(NiftiReader, SclSlopeScalesTissueMeans) {
 TEST(NiftiReader, QformOnlyFileIsPlaced) {
     STEERSEG_REQUIRE_DATA(file, "thigh-sarcoma-sts001/STS_001_CT_image.nii.gz");
     STEERSEG_REQUIRE_DATA(mask, "thigh-sarcoma-sts001/STS_001_CT_mask.nii.gz");
-    const Volume v = io::readScan(file).volume;
-    const Volume m = io::readScan(mask).volume;
+    const Volume v = scan::readScan(file).volume;
+    const Volume m = scan::readScan(mask).volume;
     test::expectSameGeometry(v.geometry(), m.geometry());
     EXPECT_GT(v.stats().max, 1000.0); // HU
 }
@@ -166,7 +166,7 @@ TEST(NiftiReader, AllTypesVersionsAndByteOrders) {
                                                 test::encodeSamples(test::patternValues(dims),
                                                                     tc.sample, bigEndian),
                                                 o));
-                const io::LoadedScan scan = io::readScan(dir / "t.nii");
+                const scan::LoadedScan scan = scan::readScan(dir / "t.nii");
                 EXPECT_EQ(scan.format, version == 2 ? "nifti2" : "nifti");
                 EXPECT_EQ(scan.volume.type(), tc.stored);
                 test::expectSameGeometry(scan.volume.geometry(), g);
@@ -186,7 +186,7 @@ TEST(NiftiReader, AllTypesVersionsAndByteOrders) {
 Geometry readGeometry(const Geometry& g, const test::NiftiOptions& o) {
     const auto dir = test::tempDir("nifti-xform");
     test::writeFile(dir / "x.nii", test::niftiFile(g, std::vector<std::byte>(g.voxelCount()), o));
-    return io::readScan(dir / "x.nii").volume.geometry();
+    return scan::readScan(dir / "x.nii").volume.geometry();
 }
 
 TEST(NiftiReader, QformUsedWithoutSform) {
@@ -219,7 +219,7 @@ TEST(NiftiReader, SclSlopeAndInterBecomeRescale) {
     test::writeFile(
         dir / "s.nii",
         test::niftiFile(g, test::encodeSamples(std::vector<double>(8, 100.0), "int16"), o));
-    const Volume v = io::readScan(dir / "s.nii").volume;
+    const Volume v = scan::readScan(dir / "s.nii").volume;
     EXPECT_DOUBLE_EQ(v.valueAt(1, 1, 1), 50.0 - 1024.0);
 }
 
@@ -232,12 +232,12 @@ TEST(NiftiReader, SingleVolume4DIsAccepted) {
 
 TEST(NiftiReader, GzipAndPlainGiveTheSameVolume) {
     STEERSEG_REQUIRE_DATA(file, "brain-stroke/T2.nii.gz");
-    io::FileSource compressed(file);
-    io::GzipSource gz(file, compressed);
+    scan::FileSource compressed(file);
+    scan::GzipSource gz(file, compressed);
     const auto dir = test::tempDir("nifti-plain");
-    test::writeFile(dir / "T2.nii", io::readUpTo(gz, std::uint64_t{1} << 30));
-    const Volume a = io::readScan(file).volume;
-    const Volume b = io::readScan(dir / "T2.nii").volume;
+    test::writeFile(dir / "T2.nii", scan::readUpTo(gz, std::uint64_t{1} << 30));
+    const Volume a = scan::readScan(file).volume;
+    const Volume b = scan::readScan(dir / "T2.nii").volume;
     ASSERT_EQ(a.bytes().size(), b.bytes().size());
     EXPECT_TRUE(std::equal(a.bytes().begin(), a.bytes().end(), b.bytes().begin()));
     EXPECT_EQ(a.geometry().origin, b.geometry().origin);

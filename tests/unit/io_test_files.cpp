@@ -1,6 +1,6 @@
 #include "io_test_files.hpp"
 
-#include "io/affine.hpp"
+#include "scan/affine.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -123,7 +123,7 @@ template <typename Header> void fillNifti(Header& h, const Geometry& g, const Ni
     h.xyzt_units = NIFTI_UNITS_MM;
     h.sform_code = static_cast<short>(o.sformCode);
     h.qform_code = static_cast<short>(o.qformCode);
-    const io::Affine ras = io::flipRasLps(io::affineOf(g));
+    const scan::Affine ras = scan::flipRasLps(scan::affineOf(g));
     nifti_dmat44 m{};
     for (int r = 0; r < 3; ++r) {
         for (int c = 0; c < 3; ++c) {
@@ -216,7 +216,7 @@ std::vector<std::byte> mghFile(const Geometry& g, int type, const std::vector<do
         append(out, static_cast<std::int32_t>(v), true);
     }
     append(out, static_cast<std::int16_t>(1), true);
-    const io::Affine ras = io::flipRasLps(io::affineOf(g));
+    const scan::Affine ras = scan::flipRasLps(scan::affineOf(g));
     for (int a = 0; a < 3; ++a) {
         append(out, static_cast<float>(g.spacing[a]), true);
     }

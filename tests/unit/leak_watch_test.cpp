@@ -15,8 +15,8 @@ using solver::LeakWatch;
 
 // One check per unit of time; `nets` are the voxels gained per check; every gain lies in a box
 // that moves along i with the check's index.
-std::optional<solver::LeakSite> feed(LeakWatch& watch, const std::vector<long>& nets,
-                                     int* at = nullptr) {
+std::optional<model::LeakSite> feed(LeakWatch& watch, const std::vector<long>& nets,
+                                    int* at = nullptr) {
     watch.observe({0.0F, 0, 0, false, {}, {}});
     for (std::size_t n = 0; n < nets.size(); ++n) {
         const int i = static_cast<int>(n);

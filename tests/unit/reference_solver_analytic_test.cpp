@@ -1,6 +1,6 @@
 // The CPU reference solver (the GPU solver's oracle) against closed-form motions, and the shared
 // parameter checks.
-#include "solver/level_set_params.hpp"
+#include "model/level_set_params.hpp"
 #include "solver/phi_init.hpp"
 #include "solver/reference_solver.hpp"
 
@@ -12,6 +12,7 @@
 
 namespace steerseg::test {
 using namespace steerseg::solver; // the solver under test
+using namespace steerseg::model;
 namespace {
 
 double equivalentRadius(const std::vector<std::uint8_t>& mask) {

@@ -1,11 +1,11 @@
 // Scripted sessions: the parser (every step, every kind of bad line) and the player (timing,
 // waits on the status, checks, timeouts), against a recording sink and hand-made statuses.
 #include "core/volume.hpp"
-#include "io/mask_writer.hpp"
-#include "kiosk/mask_dice.hpp"
-#include "kiosk/script.hpp"
-#include "kiosk/script_condition.hpp"
-#include "kiosk/script_player.hpp"
+#include "exports/mask_writer.hpp"
+#include "script/mask_dice.hpp"
+#include "script/script.hpp"
+#include "script/script_condition.hpp"
+#include "script/script_player.hpp"
 #include "support/test_data.hpp"
 
 #include <cstdlib>
@@ -17,10 +17,10 @@
 namespace steerseg::test {
 namespace {
 
-using kiosk::parseScript;
-using kiosk::Script;
-using kiosk::ScriptError;
-using kiosk::ScriptPlayer;
+using script::parseScript;
+using script::Script;
+using script::ScriptError;
+using script::ScriptPlayer;
 using workflow::State;
 using Kind = platform::InputEvent::Kind;
 
@@ -40,7 +40,7 @@ template <typename T> const T& only(const Script& script) {
 
 template <typename A> A action(const std::string& line) {
     const Script s = parseScript(line, "s");
-    return std::get<A>(only<kiosk::ActionStep>(s).action);
+    return std::get<A>(only<script::ActionStep>(s).action);
 }
 
 TEST(ScriptParse, DeviceEvents) {
@@ -54,29 +54,29 @@ TEST(ScriptParse, DeviceEvents) {
                                  "wheel 100 200 -3\n",
                                  "s");
     ASSERT_EQ(s.steps.size(), 8U);
-    const auto& down = std::get<kiosk::InputStep>(s.steps[0].kind).events;
+    const auto& down = std::get<script::InputStep>(s.steps[0].kind).events;
     ASSERT_EQ(down.size(), 1U);
     EXPECT_EQ(down[0].kind, Kind::PointerDown);
     EXPECT_EQ(down[0].pointer, 1);
     EXPECT_FLOAT_EQ(down[0].x, 640.0F);
     EXPECT_FLOAT_EQ(down[0].y, 400.0F);
-    EXPECT_EQ(std::get<kiosk::InputStep>(s.steps[1].kind).events[0].kind, Kind::PointerMove);
-    EXPECT_FLOAT_EQ(std::get<kiosk::InputStep>(s.steps[1].kind).events[0].x, 650.5F);
-    EXPECT_EQ(std::get<kiosk::InputStep>(s.steps[2].kind).events[0].kind, Kind::PointerUp);
-    const auto& tap = std::get<kiosk::InputStep>(s.steps[3].kind).events;
+    EXPECT_EQ(std::get<script::InputStep>(s.steps[1].kind).events[0].kind, Kind::PointerMove);
+    EXPECT_FLOAT_EQ(std::get<script::InputStep>(s.steps[1].kind).events[0].x, 650.5F);
+    EXPECT_EQ(std::get<script::InputStep>(s.steps[2].kind).events[0].kind, Kind::PointerUp);
+    const auto& tap = std::get<script::InputStep>(s.steps[3].kind).events;
     ASSERT_EQ(tap.size(), 2U);
     EXPECT_EQ(tap[0].kind, Kind::PointerDown);
     EXPECT_EQ(tap[1].kind, Kind::PointerUp);
-    const auto& key = std::get<kiosk::InputStep>(s.steps[4].kind).events;
+    const auto& key = std::get<script::InputStep>(s.steps[4].kind).events;
     ASSERT_EQ(key.size(), 2U);
     EXPECT_EQ(key[0].kind, Kind::KeyDown);
     EXPECT_EQ(key[1].kind, Kind::KeyUp);
     EXPECT_EQ(key[0].key, "z");
     EXPECT_TRUE(key[0].ctrl);
     EXPECT_TRUE(key[0].shift);
-    EXPECT_EQ(std::get<kiosk::InputStep>(s.steps[5].kind).events[0].key, "space");
-    EXPECT_EQ(std::get<kiosk::InputStep>(s.steps[6].kind).events[0].kind, Kind::KeyUp);
-    const auto& wheel = std::get<kiosk::InputStep>(s.steps[7].kind).events[0];
+    EXPECT_EQ(std::get<script::InputStep>(s.steps[5].kind).events[0].key, "space");
+    EXPECT_EQ(std::get<script::InputStep>(s.steps[6].kind).events[0].kind, Kind::KeyUp);
+    const auto& wheel = std::get<script::InputStep>(s.steps[7].kind).events[0];
     EXPECT_EQ(wheel.kind, Kind::Wheel);
     EXPECT_FLOAT_EQ(wheel.wheel, -3.0F);
 }
@@ -157,13 +157,13 @@ TEST(ScriptParse, WaitsChecksFramesDice) {
                                  "dice $EXPORTED $DATA/ref.nii.gz label 3 >= 0.8\n",
                                  "s");
     ASSERT_EQ(s.steps.size(), 14U);
-    using C = kiosk::Condition;
-    const auto wait = [&](int n) { return std::get<kiosk::WaitStep>(s.steps[n].kind); };
-    const auto expect = [&](int n) { return std::get<kiosk::ExpectStep>(s.steps[n].kind); };
+    using C = script::Condition;
+    const auto wait = [&](int n) { return std::get<script::WaitStep>(s.steps[n].kind); };
+    const auto expect = [&](int n) { return std::get<script::ExpectStep>(s.steps[n].kind); };
     EXPECT_EQ(wait(0).condition.kind, C::Converged);
     EXPECT_DOUBLE_EQ(wait(0).timeoutSeconds, 30.0);
     EXPECT_EQ(wait(1).condition.kind, C::Loaded);
-    EXPECT_DOUBLE_EQ(wait(1).timeoutSeconds, kiosk::kDefaultWaitTimeout);
+    EXPECT_DOUBLE_EQ(wait(1).timeoutSeconds, script::kDefaultWaitTimeout);
     EXPECT_EQ(wait(2).condition.state, State::Paused);
     EXPECT_EQ(wait(3).condition.count, 200);
     EXPECT_DOUBLE_EQ(wait(4).condition.value, 1.5);
@@ -176,17 +176,17 @@ TEST(ScriptParse, WaitsChecksFramesDice) {
     EXPECT_EQ(expect(9).condition.kind, C::ExportedHas);
     EXPECT_EQ(expect(10).condition.kind, C::Converged);
     EXPECT_EQ(expect(11).condition.kind, C::Loaded);
-    EXPECT_EQ(std::get<kiosk::FrameStep>(s.steps[12].kind).path, "shots/a.png");
-    const auto& dice = std::get<kiosk::DiceStep>(s.steps[13].kind);
+    EXPECT_EQ(std::get<script::FrameStep>(s.steps[12].kind).path, "shots/a.png");
+    const auto& dice = std::get<script::DiceStep>(s.steps[13].kind);
     EXPECT_EQ(dice.mask, "$EXPORTED");
     EXPECT_EQ(dice.label, 3);
     EXPECT_DOUBLE_EQ(dice.value, 0.8);
 }
 
 TEST(ScriptParse, SpeedVerbsAndChecks) {
-    EXPECT_EQ(action<workflow::SetSpeed>("speed threshold").kind, speed::SpeedKind::Threshold);
-    EXPECT_EQ(action<workflow::SetSpeed>("speed edge").kind, speed::SpeedKind::Edge);
-    EXPECT_EQ(action<workflow::SetSpeed>("speed classify").kind, speed::SpeedKind::Classify);
+    EXPECT_EQ(action<workflow::SetSpeed>("speed threshold").kind, model::SpeedKind::Threshold);
+    EXPECT_EQ(action<workflow::SetSpeed>("speed edge").kind, model::SpeedKind::Edge);
+    EXPECT_EQ(action<workflow::SetSpeed>("speed classify").kind, model::SpeedKind::Classify);
     const auto outside = action<workflow::MarkOutside>("outside 10 20 30 4.5");
     EXPECT_EQ(outside.voxel, glm::dvec3(10, 20, 30));
     EXPECT_DOUBLE_EQ(outside.radiusMm, 4.5);
@@ -203,15 +203,15 @@ TEST(ScriptParse, SpeedVerbsAndChecks) {
                                  "expect outside_mode == 1\n",
                                  "s");
     ASSERT_EQ(s.steps.size(), 5U);
-    using C = kiosk::Condition;
-    const auto& wait = std::get<kiosk::WaitStep>(s.steps[0].kind);
+    using C = script::Condition;
+    const auto& wait = std::get<script::WaitStep>(s.steps[0].kind);
     EXPECT_EQ(wait.condition.kind, C::Speed);
-    EXPECT_EQ(wait.condition.speed, speed::SpeedKind::Classify);
+    EXPECT_EQ(wait.condition.speed, model::SpeedKind::Classify);
     EXPECT_DOUBLE_EQ(wait.timeoutSeconds, 5.0);
-    const auto& expect = std::get<kiosk::ExpectStep>(s.steps[1].kind);
+    const auto& expect = std::get<script::ExpectStep>(s.steps[1].kind);
     EXPECT_EQ(expect.condition.kind, C::Speed);
-    EXPECT_EQ(expect.condition.speed, speed::SpeedKind::Edge);
-    EXPECT_EQ(std::get<kiosk::ExpectStep>(s.steps[2].kind).condition.field, "outside_examples");
+    EXPECT_EQ(expect.condition.speed, model::SpeedKind::Edge);
+    EXPECT_EQ(std::get<script::ExpectStep>(s.steps[2].kind).condition.field, "outside_examples");
 
     const std::string errors = parseError("speed gradient\n"
                                           "speed\n"
@@ -243,19 +243,19 @@ TEST(ScriptParse, SpeedVerbsAndChecks) {
 
 TEST(ScriptPlayer, SpeedConditionsReadTheSpeedInForce) {
     workflow::Status st;
-    st.speed = speed::SpeedKind::Classify;
-    st.speedInForce = speed::SpeedKind::Edge;
+    st.speed = model::SpeedKind::Classify;
+    st.speedInForce = model::SpeedKind::Edge;
     st.insideExamples.resize(2);
-    kiosk::Condition c;
-    c.kind = kiosk::Condition::Speed;
-    c.speed = speed::SpeedKind::Classify;
-    EXPECT_FALSE(kiosk::holds(c, st)) << "chosen, but waiting for examples";
-    EXPECT_EQ(kiosk::observed(c, st), "speed is edge (classify chosen)");
-    st.speedInForce = speed::SpeedKind::Classify;
-    EXPECT_TRUE(kiosk::holds(c, st));
-    EXPECT_EQ(kiosk::observed(c, st), "speed is classify");
-    EXPECT_EQ(kiosk::statusField(st, "inside_examples"), 2.0);
-    EXPECT_EQ(kiosk::statusField(st, "outside_examples"), 0.0);
+    script::Condition c;
+    c.kind = script::Condition::Speed;
+    c.speed = model::SpeedKind::Classify;
+    EXPECT_FALSE(script::holds(c, st)) << "chosen, but waiting for examples";
+    EXPECT_EQ(script::observed(c, st), "speed is edge (classify chosen)");
+    st.speedInForce = model::SpeedKind::Classify;
+    EXPECT_TRUE(script::holds(c, st));
+    EXPECT_EQ(script::observed(c, st), "speed is classify");
+    EXPECT_EQ(script::statusField(st, "inside_examples"), 2.0);
+    EXPECT_EQ(script::statusField(st, "outside_examples"), 0.0);
 }
 
 TEST(ScriptParse, WaitUntilAField) {
@@ -263,16 +263,16 @@ TEST(ScriptParse, WaitUntilAField) {
                                  "wait until volume_ml < 1.5\n",
                                  "s");
     ASSERT_EQ(s.steps.size(), 2U);
-    using C = kiosk::Condition;
-    const auto& seeds = std::get<kiosk::WaitStep>(s.steps[0].kind);
+    using C = script::Condition;
+    const auto& seeds = std::get<script::WaitStep>(s.steps[0].kind);
     EXPECT_EQ(seeds.condition.kind, C::Compare);
     EXPECT_EQ(seeds.condition.field, "seeds");
     EXPECT_EQ(seeds.condition.op, C::Op::GreaterEqual);
     EXPECT_DOUBLE_EQ(seeds.condition.value, 2.0);
     EXPECT_DOUBLE_EQ(seeds.timeoutSeconds, 20.0);
-    const auto& volume = std::get<kiosk::WaitStep>(s.steps[1].kind);
+    const auto& volume = std::get<script::WaitStep>(s.steps[1].kind);
     EXPECT_EQ(volume.condition.op, C::Op::Less);
-    EXPECT_DOUBLE_EQ(volume.timeoutSeconds, kiosk::kDefaultWaitTimeout);
+    EXPECT_DOUBLE_EQ(volume.timeoutSeconds, script::kDefaultWaitTimeout);
 
     EXPECT_NE(parseError("wait until colour == 3\n")
                   .find("s.session:1: wait until 'colour': not a "
@@ -297,12 +297,12 @@ TEST(ScriptParse, TimingCommentsAndLines) {
     ASSERT_EQ(s.steps.size(), 4U);
     EXPECT_EQ(s.steps[0].line, 3);
     EXPECT_EQ(s.steps[0].text, "run");
-    EXPECT_EQ(s.steps[0].timing.kind, kiosk::Timing::Next);
-    EXPECT_EQ(s.steps[1].timing.kind, kiosk::Timing::At);
+    EXPECT_EQ(s.steps[0].timing.kind, script::Timing::Next);
+    EXPECT_EQ(s.steps[1].timing.kind, script::Timing::At);
     EXPECT_DOUBLE_EQ(s.steps[1].timing.seconds, 1.25);
-    EXPECT_EQ(s.steps[2].timing.kind, kiosk::Timing::After);
+    EXPECT_EQ(s.steps[2].timing.kind, script::Timing::After);
     EXPECT_EQ(
-        std::get<workflow::LoadScan>(std::get<kiosk::ActionStep>(s.steps[2].kind).action).path,
+        std::get<workflow::LoadScan>(std::get<script::ActionStep>(s.steps[2].kind).action).path,
         "x # not a comment.nii");
     EXPECT_EQ(s.steps[3].line, 6);
 }
@@ -373,7 +373,7 @@ TEST(ScriptParse, WholeFileProblems) {
         "s.session: not a text file (control characters on 8 lines, the first 0x01 on line 2)");
     EXPECT_NE(parseError("run " + std::string(5000, 'x')).find("s.session:1: the line is 5004"),
               std::string::npos);
-    EXPECT_NE(parseError(std::string(kiosk::kMaxScriptBytes + 1, '#')).find("at most"),
+    EXPECT_NE(parseError(std::string(script::kMaxScriptBytes + 1, '#')).find("at most"),
               std::string::npos);
     // A flood of bad lines is cut, not echoed whole.
     std::string flood;
@@ -389,13 +389,13 @@ TEST(ScriptParse, FilesThatAreNotScripts) {
     const auto dir = std::filesystem::temp_directory_path() / "steerseg_script_test";
     std::filesystem::create_directories(dir);
     try {
-        kiosk::loadScript(dir / "missing.session");
+        script::loadScript(dir / "missing.session");
         FAIL();
     } catch (const ScriptError& e) {
         EXPECT_EQ(std::string(e.what()),
                   (dir / "missing.session").string() + ": no such script file");
     }
-    EXPECT_THROW(kiosk::loadScript(dir), ScriptError);
+    EXPECT_THROW(script::loadScript(dir), ScriptError);
     const auto binary = dir / "binary.session";
     {
         std::ofstream out(binary, std::ios::binary);
@@ -403,20 +403,20 @@ TEST(ScriptParse, FilesThatAreNotScripts) {
         out.write(reinterpret_cast<const char*>(png), sizeof png);
     }
     try {
-        kiosk::loadScript(binary);
+        script::loadScript(binary);
         FAIL();
     } catch (const ScriptError& e) {
         EXPECT_NE(std::string(e.what()).find("not a text file"), std::string::npos) << e.what();
     }
     const auto good = dir / "good.session";
     std::ofstream(good) << "load builtin:sample\nwait loaded\n";
-    EXPECT_EQ(kiosk::loadScript(good).steps.size(), 2U);
+    EXPECT_EQ(script::loadScript(good).steps.size(), 2U);
     std::filesystem::remove_all(dir);
 }
 
 // --- the player ----------------------------------------------------------------------------
 
-struct Recorder : kiosk::ScriptSink {
+struct Recorder : script::ScriptSink {
     std::vector<std::string> log;
     double dice = 0.9;
     void action(const workflow::Action& a) override {
@@ -449,7 +449,7 @@ struct Recorder : kiosk::ScriptSink {
     }
 };
 
-ScriptPlayer player(const std::string& text, kiosk::Variables vars = {}) {
+ScriptPlayer player(const std::string& text, script::Variables vars = {}) {
     return ScriptPlayer(parseScript(text, "t.session"), std::move(vars));
 }
 
@@ -463,8 +463,8 @@ TEST(ScriptPlayer, AnswersTheResumeOffer) {
     EXPECT_EQ(r.log[0], "autosave resume");
     EXPECT_EQ(r.log[1], "autosave discard");
     EXPECT_TRUE(p.finished());
-    EXPECT_THROW((void)kiosk::parseScript("autosave maybe\n", "s"), kiosk::ScriptError);
-    EXPECT_THROW((void)kiosk::parseScript("autosave\n", "s"), kiosk::ScriptError);
+    EXPECT_THROW((void)script::parseScript("autosave maybe\n", "s"), script::ScriptError);
+    EXPECT_THROW((void)script::parseScript("autosave\n", "s"), script::ScriptError);
 }
 
 TEST(ScriptPlayer, EmitsTimedStepsWhenDue) {
@@ -623,9 +623,9 @@ TEST(ScriptPlayer, WaitsTimeOut) {
     // The default timeout, so a script that waits for something that never comes ends.
     ScriptPlayer d = player("wait state review\n");
     d.poll(0.0, st, r);
-    d.poll(kiosk::kDefaultWaitTimeout - 0.1, st, r);
+    d.poll(script::kDefaultWaitTimeout - 0.1, st, r);
     EXPECT_FALSE(d.failed());
-    d.poll(kiosk::kDefaultWaitTimeout, st, r);
+    d.poll(script::kDefaultWaitTimeout, st, r);
     EXPECT_TRUE(d.failed());
 }
 
@@ -732,24 +732,24 @@ TEST(ScriptParse, RawDeviceRecords) {
                                  "replay $DATA/knobs/turn.rec\n",
                                  "scenarios/knobs.session");
     ASSERT_EQ(s.steps.size(), 7U);
-    const auto& first = std::get<kiosk::RawStep>(s.steps[0].kind);
+    const auto& first = std::get<script::RawStep>(s.steps[0].kind);
     ASSERT_TRUE(first.record);
     EXPECT_EQ(first.record->device, "shuttle");
     EXPECT_EQ(first.record->kind, platform::input::RawRecord::Kind::HidReport);
     EXPECT_EQ(first.record->bytes, (std::vector<std::uint8_t>{0, 3, 0, 0, 0}));
-    EXPECT_EQ(s.steps[0].timing.kind, kiosk::Timing::Next);
-    EXPECT_TRUE(std::get<kiosk::RawStep>(s.steps[1].kind).record->active);
-    EXPECT_EQ(s.steps[1].timing.kind, kiosk::Timing::After);
+    EXPECT_EQ(s.steps[0].timing.kind, script::Timing::Next);
+    EXPECT_TRUE(std::get<script::RawStep>(s.steps[1].kind).record->active);
+    EXPECT_EQ(s.steps[1].timing.kind, script::Timing::After);
     // Lines pasted from a recording keep their spacing: the first of the run at once, the
     // others as far after the one before as recorded.
-    EXPECT_EQ(s.steps[2].timing.kind, kiosk::Timing::Next);
-    EXPECT_EQ(s.steps[3].timing.kind, kiosk::Timing::After);
+    EXPECT_EQ(s.steps[2].timing.kind, script::Timing::Next);
+    EXPECT_EQ(s.steps[3].timing.kind, script::Timing::After);
     EXPECT_DOUBLE_EQ(s.steps[3].timing.seconds, 0.25);
     EXPECT_NEAR(s.steps[4].timing.seconds, 0.05, 1e-9);
-    EXPECT_EQ(std::get<kiosk::RawStep>(s.steps[2].kind).record->value, -1);
+    EXPECT_EQ(std::get<script::RawStep>(s.steps[2].kind).record->value, -1);
     // A replay's relative path is the script's folder's.
-    EXPECT_EQ(std::get<kiosk::RawStep>(s.steps[5].kind).recording, "scenarios/knob_turn.rec");
-    EXPECT_EQ(std::get<kiosk::RawStep>(s.steps[6].kind).recording, "$DATA/knobs/turn.rec");
+    EXPECT_EQ(std::get<script::RawStep>(s.steps[5].kind).recording, "scenarios/knob_turn.rec");
+    EXPECT_EQ(std::get<script::RawStep>(s.steps[6].kind).recording, "$DATA/knobs/turn.rec");
 
     for (const char* bad : {"raw", "raw shuttle hid 0g", "raw Shuttle hid 00", "raw pedal gpio 2",
                             "raw 1.0 pedal", "replay"}) {
@@ -802,20 +802,20 @@ TEST(ScriptScenarios, ParseAndNameExistingData) {
         }
         ++count;
         SCOPED_TRACE(entry.path().string());
-        const Script script = kiosk::loadScript(entry.path());
+        const Script script = script::loadScript(entry.path());
         const ScriptPlayer p(
             script,
             {{"SCAN", "/scan.nii"}, {"DATA", data ? data->string() : "/data"}, {"OUT", "/out"}});
         if (!data) {
             continue;
         }
-        for (const kiosk::Step& step : p.script().steps) {
+        for (const script::Step& step : p.script().steps) {
             std::vector<std::string> paths;
-            if (const auto* a = std::get_if<kiosk::ActionStep>(&step.kind)) {
+            if (const auto* a = std::get_if<script::ActionStep>(&step.kind)) {
                 if (const auto* load = std::get_if<workflow::LoadScan>(&a->action)) {
                     paths.push_back(load->path);
                 }
-            } else if (const auto* dice = std::get_if<kiosk::DiceStep>(&step.kind)) {
+            } else if (const auto* dice = std::get_if<script::DiceStep>(&step.kind)) {
                 paths.push_back(dice->reference);
             }
             for (const std::string& path : paths) {
@@ -837,21 +837,21 @@ TEST(MaskDice, CountsOverlapAndRefusesOtherGrids) {
     Geometry g;
     g.dims = {4, 1, 1};
     const auto write = [&](const std::string& name, std::vector<std::uint8_t> v) {
-        io::writeMask(dir / name, g, v);
+        exports::writeMask(dir / name, g, v);
         return dir / name;
     };
     const auto a = write("a.nii.gz", {1, 1, 0, 0});
     const auto b = write("b.nii.gz", {1, 0, 1, 0});
     const auto empty = write("e.nii.gz", {0, 0, 0, 0});
-    EXPECT_DOUBLE_EQ(kiosk::maskDice(a, b, -1), 0.5);
-    EXPECT_DOUBLE_EQ(kiosk::maskDice(a, a, -1), 1.0);
-    EXPECT_DOUBLE_EQ(kiosk::maskDice(a, b, 1), 0.5);
-    EXPECT_DOUBLE_EQ(kiosk::maskDice(a, b, 2), 0.0); // no voxel has label 2
-    EXPECT_DOUBLE_EQ(kiosk::maskDice(empty, b, -1), 0.0);
+    EXPECT_DOUBLE_EQ(script::maskDice(a, b, -1), 0.5);
+    EXPECT_DOUBLE_EQ(script::maskDice(a, a, -1), 1.0);
+    EXPECT_DOUBLE_EQ(script::maskDice(a, b, 1), 0.5);
+    EXPECT_DOUBLE_EQ(script::maskDice(a, b, 2), 0.0); // no voxel has label 2
+    EXPECT_DOUBLE_EQ(script::maskDice(empty, b, -1), 0.0);
     g.dims = {2, 2, 1};
     const auto other = write("o.nii.gz", {1, 1, 1, 1});
-    EXPECT_THROW(kiosk::maskDice(a, other, -1), std::runtime_error);
-    EXPECT_THROW(kiosk::maskDice(dir / "none.nii.gz", b, -1), std::exception);
+    EXPECT_THROW(script::maskDice(a, other, -1), std::runtime_error);
+    EXPECT_THROW(script::maskDice(dir / "none.nii.gz", b, -1), std::exception);
     std::filesystem::remove_all(dir);
 }
 

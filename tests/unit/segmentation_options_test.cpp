@@ -21,7 +21,7 @@ cli::SegmentationRequest parse(const std::string& line) {
     return cli::parseSegmentation(args);
 }
 
-bool same(const solver::Sphere& a, const solver::Sphere& b) {
+bool same(const model::Sphere& a, const model::Sphere& b) {
     return a.centre == b.centre && a.radius == b.radius;
 }
 

@@ -32,7 +32,7 @@ Volume noisyVolume(float noise, float ramp) {
     return v;
 }
 
-const solver::Sphere kProbe{{20.0F, 20.0F, 20.0F}, 6.0F};
+const model::Sphere kProbe{{20.0F, 20.0F, 20.0F}, 6.0F};
 
 TEST(SpeedProbe, NoiseFollowsTheNoiseNotTheStructure) {
     const session::SpeedProbe flat = session::probeSpeed(noisyVolume(20.0F, 0.0F), kProbe);

@@ -1,4 +1,4 @@
-#include "speed/speed_kind.hpp"
+#include "model/speed_kind.hpp"
 #include "ui/panel_model.hpp"
 #include "ui/view_caption.hpp"
 
@@ -165,14 +165,14 @@ TEST(UiPanelModel, ParametersReadoutsAndToggles) {
 TEST(UiPanelModel, TheSpeedsAreOfferedWhereParametersAre) {
     for (State state : {State::Inspect, State::Seeding, State::Evolving, State::Paused}) {
         workflow::Status st = status(state);
-        st.speed = speed::SpeedKind::Edge;
-        st.speedInForce = speed::SpeedKind::Edge;
+        st.speed = model::SpeedKind::Edge;
+        st.speedInForce = model::SpeedKind::Edge;
         const ui::PanelModel m = ui::buildPanelModel(st, kScans);
         ASSERT_EQ(m.speeds.size(), 3U) << ui::stateLabel(state);
         const std::vector<std::string> labels{"Threshold##speed", "Edge##speed", "Classify##speed"};
         for (std::size_t i = 0; i < 3; ++i) {
             EXPECT_EQ(m.speeds[i].label, labels[i]);
-            EXPECT_EQ(std::get<workflow::SetSpeed>(m.speeds[i].action).kind, speed::kSpeedKinds[i]);
+            EXPECT_EQ(std::get<workflow::SetSpeed>(m.speeds[i].action).kind, model::kSpeedKinds[i]);
             EXPECT_EQ(m.speeds[i].active, i == 1) << "the chosen speed is highlighted";
             EXPECT_TRUE(m.speeds[i].enabled);
         }
@@ -189,8 +189,8 @@ TEST(UiPanelModel, TheSpeedsAreOfferedWhereParametersAre) {
 
 TEST(UiPanelModel, ClassifyShowsItsExamplesAndTools) {
     workflow::Status st = status(State::Paused);
-    st.speed = speed::SpeedKind::Classify;
-    st.speedInForce = speed::SpeedKind::Threshold;
+    st.speed = model::SpeedKind::Classify;
+    st.speedInForce = model::SpeedKind::Threshold;
     st.insideExamples.resize(2);
     ui::PanelModel m = ui::buildPanelModel(st, kScans);
     EXPECT_TRUE(m.speeds[2].active);
@@ -219,7 +219,7 @@ TEST(UiPanelModel, ClassifyShowsItsExamplesAndTools) {
 
     st.insideExamples.resize(1);
     st.outsideExamples.resize(3);
-    st.speedInForce = speed::SpeedKind::Classify;
+    st.speedInForce = model::SpeedKind::Classify;
     m = ui::buildPanelModel(st, kScans);
     EXPECT_EQ(m.examples, "1 inside, 3 outside");
     EXPECT_TRUE(m.speedNote.empty()) << "the classifier runs";

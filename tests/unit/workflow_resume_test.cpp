@@ -53,12 +53,12 @@ TEST(WorkflowResume, TheSpeedAndItsExamplesComeBack) {
     rig.engine.addSeed({{8.0, 6.0, 4.0}, 2.0});
     RestoredSession r = restored(State::Paused);
     r.params.speed = {
-        speed::SpeedKind::Classify, {{{8.0F, 6.0F, 4.0F}, 2.0F}}, {{{1.0F, 1.0F, 1.0F}, 1.0F}}};
+        model::SpeedKind::Classify, {{{8.0F, 6.0F, 4.0F}, 2.0F}}, {{{1.0F, 1.0F, 1.0F}, 1.0F}}};
     const auto o = rig.wf->restoreSession(r);
     ASSERT_TRUE(o.accepted) << o.reason;
-    EXPECT_EQ(rig.status().speed, speed::SpeedKind::Classify);
-    EXPECT_EQ(rig.status().speedInForce, speed::SpeedKind::Classify);
-    EXPECT_EQ(rig.engine.speedKind(), speed::SpeedKind::Classify) << "retrained";
+    EXPECT_EQ(rig.status().speed, model::SpeedKind::Classify);
+    EXPECT_EQ(rig.status().speedInForce, model::SpeedKind::Classify);
+    EXPECT_EQ(rig.engine.speedKind(), model::SpeedKind::Classify) << "retrained";
     EXPECT_EQ(rig.status().outsideExamples.size(), 1U);
     EXPECT_EQ(rig.status().message, "resumed the session saved 13:01:40");
 }
@@ -68,12 +68,12 @@ TEST(WorkflowResume, ASpeedTheEngineRefusesLeavesTheThresholdSpeed) {
     rig.load();
     rig.engine.addSeed({{8.0, 6.0, 4.0}, 2.0});
     RestoredSession r = restored(State::Paused);
-    r.params.speed.kind = speed::SpeedKind::Edge;
+    r.params.speed.kind = model::SpeedKind::Edge;
     rig.engine.speedError = "edge speed: not enough GPU memory";
     const auto o = rig.wf->restoreSession(r);
     ASSERT_TRUE(o.accepted) << o.reason;
     EXPECT_EQ(rig.state(), State::Paused) << "the level set is back all the same";
-    EXPECT_EQ(rig.status().speed, speed::SpeedKind::Threshold);
+    EXPECT_EQ(rig.status().speed, model::SpeedKind::Threshold);
     EXPECT_EQ(rig.status().params.T, 120.0F);
     EXPECT_EQ(rig.status().message, "the threshold speed runs: edge speed: not enough GPU memory");
 }

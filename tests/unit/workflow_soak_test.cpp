@@ -131,7 +131,7 @@ class Generator {
         case 39:
             return Quit{};
         case 40:
-            return SetSpeed{static_cast<speed::SpeedKind>(chance(0.01) ? 9 : integer(0, 2))};
+            return SetSpeed{static_cast<model::SpeedKind>(chance(0.01) ? 9 : integer(0, 2))};
         case 41:
         case 42:
             return MarkOutside{voxel(), number(-1.0, 8.0)};
@@ -175,12 +175,12 @@ std::string broken(const Workflow& wf, const FakeEngine& engine, std::size_t max
         if (!within(s.radius, s.ranges[3])) {
             return "brush radius out of range";
         }
-        const solver::LevelSetParams& e = engine.params();
+        const model::LevelSetParams& e = engine.params();
         if (e.T != s.params.T || e.eps != s.params.eps || e.alpha != s.params.alpha) {
             return "parameters differ from the engine's";
         }
         if (engine.speedKind() != s.speedInForce ||
-            (s.speed != speed::SpeedKind::Classify && s.speedInForce != s.speed)) {
+            (s.speed != model::SpeedKind::Classify && s.speedInForce != s.speed)) {
             return "the speed differs from the engine's or the choice";
         }
         if (s.insideExamples.size() > kMaxExamples || s.outsideExamples.size() > kMaxExamples) {

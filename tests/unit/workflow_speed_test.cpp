@@ -1,7 +1,7 @@
 // The speed choice (issue 13): threshold, edge and classify, the classifier's examples (the
 // probes inside, the outside marks), the states that allow them, undo, the engine's refusals
 // and the audit records.
-#include "speed/speed_kind.hpp"
+#include "model/speed_kind.hpp"
 #include "workflow_rig.hpp"
 
 #include <filesystem>
@@ -15,17 +15,17 @@ namespace steerseg::test {
 namespace {
 
 using namespace workflow;
-using speed::SpeedKind;
+using model::SpeedKind;
 namespace fs = std::filesystem;
 
 const glm::dvec3 kInside{8.0, 6.0, 4.0};
 const glm::dvec3 kOutside{1.0, 1.0, 1.0};
 
 TEST(WorkflowSpeed, NamesAndBindings) {
-    for (SpeedKind k : speed::kSpeedKinds) {
-        EXPECT_EQ(speed::parseSpeedKind(speed::speedKindName(k)), k);
+    for (SpeedKind k : model::kSpeedKinds) {
+        EXPECT_EQ(model::parseSpeedKind(model::speedKindName(k)), k);
     }
-    EXPECT_FALSE(speed::parseSpeedKind("gradient"));
+    EXPECT_FALSE(model::parseSpeedKind("gradient"));
     EXPECT_EQ(actionName(SetSpeed{}), "set_speed");
     EXPECT_EQ(actionName(MarkOutside{}), "mark_outside");
     EXPECT_EQ(actionName(ClearExamples{}), "clear_examples");

@@ -1,0 +1,318 @@
+#include "autosave/autosave_snapshot.hpp"
+
+#include "model/speed_kind.hpp"
+#include "workflow/param_ranges.hpp"
+#include "workflow/utc_time.hpp"
+
+#include <array>
+#include <chrono>
+#include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <system_error>
+#include <zlib.h>
+
+namespace steerseg::autosave {
+
+namespace {
+
+constexpr std::array<char, 8> kMagic{'S', 'T', 'E', 'E', 'R', 'S', 'A', 'V'};
+// magic, version, metadata bytes, run count, voxels, CRC32 of everything after the header.
+constexpr std::size_t kHeaderBytes = 8 + 4 + 4 + 8 + 8 + 4;
+// The metadata is a few hundred bytes; more is not one of ours.
+constexpr std::uint32_t kMaxMetaBytes = 1U << 20U;
+// 2048^3: more voxels than any scan the loader accepts.
+constexpr std::uint64_t kMaxVoxels = 1ULL << 33U;
+
+void putLe(std::vector<std::byte>& out, std::uint64_t value, int bytes) {
+    for (int i = 0; i < bytes; ++i) {
+        out.push_back(static_cast<std::byte>((value >> (8 * i)) & 0xFFU));
+    }
+}
+
+std::uint64_t getLe(std::span<const std::byte> in, std::size_t at, int bytes) {
+    std::uint64_t v = 0;
+    for (int i = 0; i < bytes; ++i) {
+        v |= static_cast<std::uint64_t>(in[at + static_cast<std::size_t>(i)]) << (8 * i);
+    }
+    return v;
+}
+
+std::uint32_t crcOf(std::span<const std::byte> bytes) {
+    uLong crc = crc32(0L, Z_NULL, 0);
+    std::size_t at = 0;
+    while (at < bytes.size()) { // zlib takes 32-bit lengths
+        const std::size_t n = std::min<std::size_t>(bytes.size() - at, 1U << 30U);
+        crc = crc32(crc, reinterpret_cast<const Bytef*>(bytes.data() + at), static_cast<uInt>(n));
+        at += n;
+    }
+    return static_cast<std::uint32_t>(crc);
+}
+
+std::optional<workflow::State> stateFromName(const std::string& name) {
+    for (int i = 0; i <= static_cast<int>(workflow::State::Error); ++i) {
+        const auto s = static_cast<workflow::State>(i);
+        if (workflow::stateName(s) == name) {
+            return s;
+        }
+    }
+    return std::nullopt;
+}
+
+nlohmann::json spheres(const std::vector<model::Sphere>& list) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const model::Sphere& e : list) {
+        out.push_back({e.centre.x, e.centre.y, e.centre.z, e.radius});
+    }
+    return out;
+}
+
+std::vector<model::Sphere> readSpheres(const nlohmann::json& params, const char* key) {
+    std::vector<model::Sphere> out;
+    if (!params.contains(key)) {
+        return out;
+    }
+    for (const nlohmann::json& e : params.at(key)) {
+        out.push_back({{e.at(0).get<float>(), e.at(1).get<float>(), e.at(2).get<float>()},
+                       e.at(3).get<float>()});
+    }
+    if (out.size() > workflow::kMaxExamples) {
+        throw AutosaveFormatError(std::string("more ") + key + " examples than a session keeps");
+    }
+    return out;
+}
+
+// Snapshots from before the speed choice have none of these keys: the threshold speed.
+model::SpeedKind readSpeed(const nlohmann::json& params, const char* key) {
+    if (!params.contains(key)) {
+        return model::SpeedKind::Threshold;
+    }
+    const std::string name = params.at(key).get<std::string>();
+    const std::optional<model::SpeedKind> kind = model::parseSpeedKind(name);
+    if (!kind) {
+        throw AutosaveFormatError("unknown speed '" + name + "'");
+    }
+    return *kind;
+}
+
+nlohmann::json metadata(const AutosaveSnapshot& s) {
+    nlohmann::json params{{"preset", s.params.preset},
+                          {"speed", model::speedKindName(s.params.speed.kind)},
+                          {"speed_fallback", model::speedKindName(s.params.fallback)},
+                          {"inside", spheres(s.params.speed.inside)},
+                          {"outside", spheres(s.params.speed.outside)}};
+    for (int i = 0; i < workflow::kParamCount; ++i) {
+        const auto p = static_cast<workflow::Param>(i);
+        params[std::string(workflow::paramName(p))] = s.params.values[workflow::indexOf(p)];
+    }
+    const auto saved =
+        std::chrono::system_clock::time_point(std::chrono::milliseconds(s.savedAtMs));
+    return {
+        {"scan", {{"path", s.scan.path}, {"bytes", s.scan.bytes}, {"mtime_ns", s.scan.mtimeNs}}},
+        {"dims", {s.dims.x, s.dims.y, s.dims.z}},
+        {"saved_at_ms", s.savedAtMs},
+        {"saved_at", workflow::isoUtc(saved)},
+        {"sequence", s.sequence},
+        {"state", workflow::stateName(s.state)},
+        {"params", params},
+        {"seeds", s.seeds},
+        {"erasures", s.erasures},
+        {"iterations", s.iterations},
+        {"evolved_time", s.evolvedTime}};
+}
+
+void readMetadata(const nlohmann::json& j, AutosaveSnapshot& s) {
+    const nlohmann::json& scan = j.at("scan");
+    s.scan.path = scan.at("path").get<std::string>();
+    s.scan.bytes = scan.at("bytes").get<std::uint64_t>();
+    s.scan.mtimeNs = scan.at("mtime_ns").get<std::int64_t>();
+    const nlohmann::json& dims = j.at("dims");
+    s.dims = {dims.at(0).get<int>(), dims.at(1).get<int>(), dims.at(2).get<int>()};
+    s.savedAtMs = j.at("saved_at_ms").get<std::int64_t>();
+    s.sequence = j.at("sequence").get<std::uint64_t>();
+    const auto state = stateFromName(j.at("state").get<std::string>());
+    if (!state) {
+        throw AutosaveFormatError("unknown workflow state '" + j.at("state").get<std::string>() +
+                                  "'");
+    }
+    s.state = *state;
+    const nlohmann::json& params = j.at("params");
+    s.params.preset = params.at("preset").get<std::string>();
+    s.params.speed.kind = readSpeed(params, "speed");
+    s.params.fallback = readSpeed(params, "speed_fallback");
+    s.params.speed.inside = readSpheres(params, "inside");
+    s.params.speed.outside = readSpheres(params, "outside");
+    for (int i = 0; i < workflow::kParamCount; ++i) {
+        const auto p = static_cast<workflow::Param>(i);
+        s.params.values[workflow::indexOf(p)] =
+            params.at(std::string(workflow::paramName(p))).get<double>();
+    }
+    s.seeds = j.at("seeds").get<int>();
+    s.erasures = j.at("erasures").get<int>();
+    s.iterations = j.at("iterations").get<int>();
+    s.evolvedTime = j.at("evolved_time").get<double>();
+}
+
+struct FileStamp {
+    std::uint64_t bytes = 0;
+    std::int64_t mtimeNs = 0;
+};
+
+std::int64_t mtimeNsOf(const std::filesystem::path& p, std::error_code& ec) {
+    const auto t = std::filesystem::last_write_time(p, ec);
+    return ec ? 0
+              : std::chrono::duration_cast<std::chrono::nanoseconds>(t.time_since_epoch()).count();
+}
+
+} // namespace
+
+ScanReference referenceOf(const std::string& path) {
+    ScanReference ref;
+    ref.path = path;
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(path, ec)) {
+        ref.bytes = std::filesystem::file_size(path, ec);
+        ref.mtimeNs = mtimeNsOf(path, ec);
+    } else if (std::filesystem::is_directory(path, ec)) {
+        // A DICOM series: its files' total size and the newest of their times.
+        for (const auto& entry : std::filesystem::directory_iterator(path, ec)) {
+            std::error_code fileEc;
+            if (entry.is_regular_file(fileEc)) {
+                ref.bytes += entry.file_size(fileEc);
+                ref.mtimeNs = std::max(ref.mtimeNs, mtimeNsOf(entry.path(), fileEc));
+            }
+        }
+    }
+    return ref;
+}
+
+std::string differenceBetween(const ScanReference& saved, const ScanReference& now) {
+    if (saved.path != now.path) {
+        return "the autosave is of " + saved.path + ", not " + now.path;
+    }
+    if (saved.bytes != now.bytes) {
+        return saved.path + " changed since the autosave: " + std::to_string(now.bytes) +
+               " bytes, was " + std::to_string(saved.bytes);
+    }
+    if (saved.mtimeNs != now.mtimeNs) {
+        return saved.path + " changed since the autosave: its modification time differs";
+    }
+    return {};
+}
+
+std::vector<std::byte> encodeSnapshot(const AutosaveSnapshot& snapshot) {
+    const std::string meta = metadata(snapshot).dump();
+    std::vector<std::byte> payload;
+    payload.reserve(meta.size() + snapshot.mask.runs.size() * 4);
+    for (const char c : meta) {
+        payload.push_back(static_cast<std::byte>(c));
+    }
+    for (const std::uint32_t run : snapshot.mask.runs) {
+        putLe(payload, run, 4);
+    }
+    std::vector<std::byte> out;
+    out.reserve(kHeaderBytes + payload.size());
+    for (const char c : kMagic) {
+        out.push_back(static_cast<std::byte>(c));
+    }
+    putLe(out, kAutosaveVersion, 4);
+    putLe(out, meta.size(), 4);
+    putLe(out, snapshot.mask.runs.size(), 8);
+    putLe(out, snapshot.mask.voxels, 8);
+    putLe(out, crcOf(payload), 4);
+    out.insert(out.end(), payload.begin(), payload.end());
+    return out;
+}
+
+std::uint32_t snapshotCrc(std::span<const std::byte> encoded) {
+    if (encoded.size() < kHeaderBytes) {
+        throw AutosaveFormatError("truncated: " + std::to_string(encoded.size()) +
+                                  " bytes, shorter than the header");
+    }
+    return static_cast<std::uint32_t>(getLe(encoded, kHeaderBytes - 4, 4));
+}
+
+AutosaveSnapshot decodeSnapshot(std::span<const std::byte> bytes) {
+    if (bytes.size() < kMagic.size() ||
+        std::memcmp(bytes.data(), kMagic.data(), kMagic.size()) != 0) {
+        throw AutosaveFormatError("not a steerseg autosave (bad magic)");
+    }
+    if (bytes.size() < kHeaderBytes) {
+        throw AutosaveFormatError("truncated: " + std::to_string(bytes.size()) +
+                                  " bytes, shorter than the header");
+    }
+    const auto version = static_cast<std::uint32_t>(getLe(bytes, 8, 4));
+    if (version != kAutosaveVersion) {
+        throw AutosaveFormatError("version " + std::to_string(version) + ", this build reads " +
+                                  std::to_string(kAutosaveVersion));
+    }
+    const auto metaBytes = static_cast<std::uint32_t>(getLe(bytes, 12, 4));
+    const std::uint64_t runCount = getLe(bytes, 16, 8);
+    const std::uint64_t voxels = getLe(bytes, 24, 8);
+    const auto crc = static_cast<std::uint32_t>(getLe(bytes, 32, 4));
+    if (metaBytes > kMaxMetaBytes || voxels > kMaxVoxels || runCount > voxels + 1) {
+        throw AutosaveFormatError("implausible sizes in the header");
+    }
+    const std::uint64_t expected = kHeaderBytes + metaBytes + runCount * 4;
+    if (bytes.size() < expected) {
+        throw AutosaveFormatError("truncated: " + std::to_string(bytes.size()) + " bytes of " +
+                                  std::to_string(expected));
+    }
+    if (bytes.size() > expected) {
+        throw AutosaveFormatError(std::to_string(bytes.size() - expected) +
+                                  " bytes past the end of the data");
+    }
+    const std::span<const std::byte> payload = bytes.subspan(kHeaderBytes);
+    if (crcOf(payload) != crc) {
+        throw AutosaveFormatError("CRC mismatch: the file is damaged");
+    }
+    AutosaveSnapshot s;
+    try {
+        const auto* text = reinterpret_cast<const char*>(payload.data());
+        readMetadata(nlohmann::json::parse(text, text + metaBytes), s);
+    } catch (const AutosaveFormatError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw AutosaveFormatError(std::string("bad metadata: ") + e.what());
+    }
+    s.mask.voxels = voxels;
+    s.mask.runs.resize(runCount);
+    std::uint64_t sum = 0;
+    for (std::uint64_t i = 0; i < runCount; ++i) {
+        s.mask.runs[i] = static_cast<std::uint32_t>(getLe(payload, metaBytes + i * 4, 4));
+        sum += s.mask.runs[i];
+    }
+    if (runCount > 0 && sum != voxels) {
+        throw AutosaveFormatError("the mask's runs add up to " + std::to_string(sum) +
+                                  " voxels, not " + std::to_string(voxels));
+    }
+    const std::uint64_t gridVoxels = static_cast<std::uint64_t>(std::max(s.dims.x, 0)) *
+                                     static_cast<std::uint64_t>(std::max(s.dims.y, 0)) *
+                                     static_cast<std::uint64_t>(std::max(s.dims.z, 0));
+    if (runCount > 0 && gridVoxels != voxels) {
+        throw AutosaveFormatError("the mask has " + std::to_string(voxels) +
+                                  " voxels, the scan's grid " + std::to_string(gridVoxels));
+    }
+    return s;
+}
+
+AutosaveSnapshot readSnapshotFile(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (!in || ec) {
+        throw AutosaveFormatError(path.string() + ": cannot open it: " + std::strerror(errno));
+    }
+    std::vector<char> raw(static_cast<std::size_t>(size));
+    in.read(raw.data(), static_cast<std::streamsize>(raw.size()));
+    if (in.gcount() != static_cast<std::streamsize>(raw.size())) {
+        throw AutosaveFormatError(path.string() + ": read failed");
+    }
+    try {
+        return decodeSnapshot(std::as_bytes(std::span<const char>(raw)));
+    } catch (const AutosaveFormatError& e) {
+        throw AutosaveFormatError(path.string() + ": " + e.what());
+    }
+}
+
+} // namespace steerseg::autosave

@@ -1,0 +1,109 @@
+#pragma once
+
+// The workflow's engine on the real thing: scans read by io on a worker thread, then the
+// session (scan texture, solver, renderer) built on the frame loop's thread, which owns the GL
+// context. Level-set snapshots for undo are masks kept in host memory.
+#include "core/mask_runs.hpp"
+#include "session/session.hpp"
+#include "session/speed_probe.hpp"
+#include "workflow/engine.hpp"
+
+#include <chrono>
+#include <future>
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace steerseg::engine {
+
+// How the kiosk sets the edge speed's smoothing and kappa: from the noise of the last probe, as
+// the command line's --probe does (session::probeSpeed), scaled by the config's [speed] factors.
+struct EdgeSpeedRules {
+    int smoothIterations = 5;
+    double conductanceFactor = session::kConductanceFactor; // K = factor * the probe's noise
+    double kappaFactor = session::kKappaFactor;             // kappa = factor * the probe's noise
+};
+
+class SessionEngine final : public workflow::Engine {
+  public:
+    explicit SessionEngine(model::SolverOptions options = {}, EdgeSpeedRules edge = {});
+    ~SessionEngine() override;
+    SessionEngine(const SessionEngine&) = delete;
+    SessionEngine& operator=(const SessionEngine&) = delete;
+
+    void beginLoad(const std::string& path) override;
+    workflow::LoadPoll pollLoad() override;
+    [[nodiscard]] workflow::ScanInfo scanInfo() const override;
+    [[nodiscard]] workflow::ProbeResult probe(const glm::dvec3& voxel,
+                                              double radiusMm) const override;
+    void addSeed(const model::Sphere& sphere) override;
+    void erase(const model::Sphere& sphere) override;
+    void clearLevelSet() override;
+    [[nodiscard]] bool hasLevelSet() const override;
+    void setParams(const model::LevelSetParams& params) override;
+    void setSpeed(const workflow::SpeedChoice& choice) override;
+    model::StepResult step(int iterations) override;
+    [[nodiscard]] model::SolverStats stats() const override;
+    [[nodiscard]] double volumeMl() const override;
+    [[nodiscard]] double exactVolumeMl() const override;
+    workflow::SnapshotId snapshot() override;
+    void restore(workflow::SnapshotId id) override;
+    void drop(workflow::SnapshotId id) override;
+    void exportMask(const std::filesystem::path& path) override;
+
+    // Resume: the level set from an autosave's mask (no runs: none). std::invalid_argument for
+    // a mask of another size.
+    void setMask(const MaskRuns& mask);
+    // The path the attached scan was loaded from ("" before one is).
+    [[nodiscard]] const std::string& scanPath() const { return scanPath_; }
+
+    // The session, once a scan is attached (the kiosk draws through it).
+    [[nodiscard]] session::Session* session() { return session_.get(); }
+    // Counts every change of the level set (edits, steps, restores): the views redraw on it.
+    [[nodiscard]] std::uint64_t levelSetVersion() const { return version_; }
+    // Counts the scans attached so far: what was drawn of an earlier one is stale.
+    [[nodiscard]] std::uint64_t scansAttached() const { return attached_; }
+    // The classify speed is evaluated where the front goes; for the speed view, the rest of
+    // the scan is filled in a piece per frame, each sized to take about `seconds` (from the
+    // last piece's cost). Returns whether a piece was filled; speedVersion() counts them.
+    bool fillSpeedAhead(double seconds);
+    [[nodiscard]] std::uint64_t speedVersion() const { return speedVersion_; }
+
+  private:
+    session::Session& requireSession() const;
+    void changed();
+
+    struct PendingLoad;
+    [[nodiscard]] session::SpeedSettings edgeSettings() const;
+
+    model::SolverOptions options_;
+    EdgeSpeedRules edge_;
+    std::unique_ptr<session::Session> session_;
+    // The last probe (voxels): the edge speed's noise comes from it. A probe changes no level
+    // set and is const to the workflow; remembering where it was is this engine's business.
+    mutable std::optional<model::Sphere> lastProbe_;
+    workflow::ScanInfo info_;
+    std::string scanPath_;
+    std::unique_ptr<PendingLoad> pending_;
+    // Loads replaced before they finished: a read cannot be interrupted, so they are joined on
+    // destruction instead of detached with the scan they are writing into.
+    std::vector<std::unique_ptr<PendingLoad>> abandoned_;
+    std::map<workflow::SnapshotId, MaskRuns> snapshots_; // empty runs: no level set
+    workflow::SnapshotId nextSnapshot_ = 1;
+    std::uint64_t version_ = 0;
+    std::uint64_t attached_ = 0;
+    std::uint64_t speedVersion_ = 0;
+    std::uint32_t aheadBricks_ = 1; // the next piece of fillSpeedAhead
+    // The volume is counted on a mask read back from the GPU: at most a few times a second
+    // while the front moves, and at once after an edit.
+    mutable std::optional<double> volumeMl_;
+    mutable std::uint64_t volumeVersion_ = 0; // the level set's version it was counted on
+    mutable std::chrono::steady_clock::time_point volumeAt_{};
+};
+
+// "CT_sarcoma" from ".../CT_sarcoma.nii.gz", "sample" from "builtin:sample", the folder's
+// name for a DICOM series: what export names and the panel use.
+std::string scanShortName(const std::string& path);
+
+} // namespace steerseg::engine

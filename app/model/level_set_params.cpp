@@ -1,0 +1,64 @@
+#include "model/level_set_params.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace steerseg::model {
+
+void validateParams(const LevelSetParams& p) {
+    if (!std::isfinite(p.T) || !std::isfinite(p.eps) || !std::isfinite(p.alpha)) {
+        throw std::invalid_argument("level-set parameters must be finite numbers (" + describe(p) +
+                                    ")");
+    }
+    if (p.eps < 0.0F) {
+        throw std::invalid_argument("eps must be >= 0 (got " + std::to_string(p.eps) + ")");
+    }
+    if (p.alpha < 0.0F || p.alpha > 1.0F) {
+        throw std::invalid_argument("alpha must be in [0, 1] (got " + std::to_string(p.alpha) +
+                                    ")");
+    }
+}
+
+TimeStepRule timeStepRule(const LevelSetParams& p) {
+    validateParams(p);
+    TimeStepRule rule;
+    rule.fixedRate = kRescaleWeight * kPhiFar / rule.courant + (1.0F - p.alpha) * 6.0F;
+    return rule;
+}
+
+float stableTimeStep(const TimeStepRule& rule, float maxDataRate) {
+    return 1.0F / (maxDataRate / rule.courant + rule.fixedRate);
+}
+
+void validateSphere(const Sphere& s, const glm::ivec3& dims) {
+    if (!std::isfinite(s.radius) || s.radius <= 0.0F) {
+        throw std::invalid_argument("sphere radius must be a positive number of voxels (got " +
+                                    std::to_string(s.radius) + ")");
+    }
+    const float diagonal = glm::length(glm::vec3(dims));
+    if (s.radius > diagonal) {
+        std::ostringstream msg;
+        msg << "sphere radius " << s.radius << " voxels is larger than the volume's diagonal ("
+            << diagonal << " voxels for " << dims.x << " x " << dims.y << " x " << dims.z << ")";
+        throw std::invalid_argument(msg.str());
+    }
+    for (int a = 0; a < 3; ++a) {
+        if (!std::isfinite(s.centre[a]) || s.centre[a] < 0.0F ||
+            s.centre[a] > static_cast<float>(dims[a] - 1)) {
+            std::ostringstream msg;
+            msg << "sphere centre (" << s.centre.x << ", " << s.centre.y << ", " << s.centre.z
+                << ") lies outside the volume (" << dims.x << " x " << dims.y << " x " << dims.z
+                << " voxels)";
+            throw std::invalid_argument(msg.str());
+        }
+    }
+}
+
+std::string describe(const LevelSetParams& p) {
+    std::ostringstream s;
+    s << "T=" << p.T << " eps=" << p.eps << " alpha=" << p.alpha;
+    return s.str();
+}
+
+} // namespace steerseg::model

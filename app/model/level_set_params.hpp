@@ -1,0 +1,74 @@
+#pragma once
+
+#include <cstddef>
+#include <glm/glm.hpp>
+#include <string>
+
+namespace steerseg::model {
+
+// The segmentation speed's parameters (Lefohn et al. 2003):
+//   F = alpha * (eps - |I - T|) - (1 - alpha) * H,   H = div(grad phi / |grad phi|)
+// The surface moves along its outward normal at speed F (phi < 0 inside), so the data term
+// grows the region where I is within T +/- eps and the curvature term smooths it. T and eps are
+// in the scan's real units (HU for CT), everything else in voxel units (unit spacing).
+struct LevelSetParams {
+    float T = 0.0F;
+    float eps = 0.0F;
+    float alpha = 1.0F;
+};
+
+// |phi| is clamped to this many voxels; bricks whose voxels are all at +-kPhiFar hold no storage.
+inline constexpr float kPhiFar = 4.0F;
+
+// Weight of the rescaling term G = w * phi * (1 - |grad phi|), which keeps phi close to a clamped
+// distance without moving the zero level set. Its speed (w * kPhiFar) enters the time step.
+inline constexpr float kRescaleWeight = 0.25F;
+
+// Throws std::invalid_argument with a one-line message for non-finite values, eps < 0 or alpha
+// outside [0, 1]. Used by the GPU solver, the reference solver and the command line.
+void validateParams(const LevelSetParams& params);
+
+// Explicit-Euler stability, shared by both solvers (the GPU evaluates the same expression with
+// these constants as uniforms):
+//   dt = 1 / ((max|alpha * D| + kRescaleWeight * kPhiFar) / courant + (1 - alpha) * 6)
+// with the maximum over the front (onFront, phi_stencil.hpp); fixedRate holds the last two
+// terms. The step obeys, each term alone and together (the rates add):
+// - Courant on the up-wind terms, the data speed |alpha D| and the rescaling term's speed
+//   kRescaleWeight * |phi| <= kRescaleWeight * kPhiFar: dt * speed <= courant = 0.5. The 3D
+//   up-wind scheme needs dt * speed * (|nx| + |ny| + |nz|) <= 1, up to sqrt(3) * dt * speed on a
+//   diagonal front; with 0.9 a growing sphere ran ahead along the diagonals, and with the
+//   rescaling term outside the factor (dt -> 1 at alpha = 1) phi oscillated where the seed's
+//   distance has a kink (SolverTimeStepTest).
+// - the explicit-diffusion limit of the curvature term, (1 - alpha) times a diffusion across the
+//   normal: dt <= h^2 / (2 * dim * (1 - alpha)) = 1 / (6 * (1 - alpha)) at unit spacing h; at
+//   1 / (3 * (1 - alpha)) the cube of SolverTimeStepTest blows up.
+struct TimeStepRule {
+    float courant = 0.5F;
+    float fixedRate = 0.0F;
+};
+TimeStepRule timeStepRule(const LevelSetParams& params);
+float stableTimeStep(const TimeStepRule& rule, float maxDataRate);
+
+// A sphere edit in voxel-index coordinates (i, j, k in storage order; radius in voxels).
+struct Sphere {
+    glm::vec3 centre{0.0F};
+    float radius = 0.0F;
+};
+
+// Throws std::invalid_argument unless the radius is positive, finite and at most the volume's
+// diagonal (dims, in voxels) and the centre lies inside the volume. Every sphere edit (the GPU
+// and reference solvers' addSphere/removeSphere, the command line's --seed/--erase) goes through
+// it: a larger radius adds nothing but overflows the edit's voxel bounds.
+void validateSphere(const Sphere& sphere, const glm::ivec3& dims);
+
+// Signed distance from voxel centre `voxel` to the sphere's surface (negative inside).
+inline float sphereDistance(const Sphere& s, const glm::vec3& voxel) {
+    return glm::length(voxel - s.centre) - s.radius;
+}
+
+std::string describe(const LevelSetParams& params);
+
+// Barrier spheres one run may hold (uniforms of shaders/solver/barrier_speed.glsl).
+inline constexpr std::size_t kMaxBarriers = 16;
+
+} // namespace steerseg::model
