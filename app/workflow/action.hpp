@@ -199,6 +199,7 @@ class ActionKinds {
         }
     }
     constexpr void insert(ActionKind kind) { bits_ |= bit(kind); }
+    constexpr void insert(ActionKinds kinds) { bits_ |= kinds.bits_; }
     [[nodiscard]] constexpr bool contains(ActionKind kind) const {
         return (bits_ & bit(kind)) != 0;
     }
