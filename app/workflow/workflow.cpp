@@ -8,7 +8,7 @@
 #include <utility>
 
 // Which action is allowed in which state, under which guard and to which state, is the table in
-// transition_table.cpp (docs/workflow.md prints it); handle() runs it before an action's effect.
+// transition_table.hpp (docs/workflow.md prints it); handle() runs it before an action's effect.
 
 namespace steerseg::workflow {
 

@@ -1,7 +1,7 @@
 // The run: the solver's steps while evolving (with convergence, a vanished surface and an
 // engine failure as their own transitions) and the run controls (run, pause, finish, resume).
 // Which control is allowed when, and the state it leads to, is the transition table's
-// (transition_table.cpp): the controls themselves have no effect beyond their transition.
+// (transition_table.hpp): the controls themselves have no effect beyond their transition.
 #include "workflow/one_line.hpp"
 #include "workflow/workflow.hpp"
 
