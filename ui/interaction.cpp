@@ -1,5 +1,7 @@
 #include "ui/interaction.hpp"
 
+#include "workflow/transition_table.hpp"
+
 #include <cmath>
 
 namespace steerseg::ui {
@@ -7,14 +9,11 @@ namespace steerseg::ui {
 namespace {
 
 using workflow::Action;
+using workflow::ActionKind;
 using workflow::State;
 
 bool scanShown(State s) {
     return s != State::NoScan && s != State::Loading;
-}
-
-bool editing(State s) {
-    return s == State::Seeding || s == State::Evolving || s == State::Paused;
 }
 
 } // namespace
@@ -78,22 +77,28 @@ std::vector<Action> Interaction::onSlice(const Gesture& g, const SliceView& view
         if (!voxel || !insideScan(*voxel, status.scan.dims)) {
             return {};
         }
-        // Outside mode: a tap is a counter-example for the classify speed, wherever the
-        // parameters may change (the workflow refuses it elsewhere).
+        // What a touch may mean follows the workflow's table for the state; its guards (a
+        // level set to erase from, say) are the workflow's to check and explain.
+        const workflow::ActionKinds offered = workflow::offeredActions(status.state);
+        // Outside mode: a tap is a counter-example for the classify speed.
         if (status.outsideMode && g.kind == Gesture::Kind::Tap &&
-            (status.state == State::Inspect || editing(status.state))) {
+            offered.contains(ActionKind::MarkOutside)) {
             return {workflow::MarkOutside{*voxel, config_.probeRadiusMm}};
         }
+        // Before the first seed a tap looks at the tissue; after it, it places spheres.
         if (status.state == State::Inspect && g.kind == Gesture::Kind::Tap) {
             return {workflow::Probe{*voxel, config_.probeRadiusMm}};
         }
-        if (!editing(status.state)) {
+        if (g.kind == Gesture::Kind::LongPress || status.eraseMode) {
+            if (offered.contains(ActionKind::Erase)) {
+                return {workflow::Erase{*voxel, 0.0}};
+            }
             return {};
         }
-        if (g.kind == Gesture::Kind::LongPress || status.eraseMode) {
-            return {workflow::Erase{*voxel, 0.0}};
+        if (offered.contains(ActionKind::AddSeed)) {
+            return {workflow::AddSeed{*voxel, 0.0}};
         }
-        return {workflow::AddSeed{*voxel, 0.0}};
+        return {};
     }
     case Gesture::Kind::Drag:
         if (g.id != dragId_) {

@@ -1,6 +1,7 @@
 #include "ui/panel_model.hpp"
 
 #include "model/speed_kind.hpp"
+#include "workflow/transition_table.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +13,7 @@ namespace steerseg::ui {
 namespace {
 
 using workflow::Action;
+using workflow::ActionKind;
 using workflow::Param;
 using workflow::SliceAxis;
 using workflow::State;
@@ -20,10 +22,6 @@ std::string fixed(double value, int decimals) {
     char text[64];
     std::snprintf(text, sizeof text, "%.*f", decimals, value);
     return text;
-}
-
-bool editing(State s) {
-    return s == State::Seeding || s == State::Evolving || s == State::Paused;
 }
 
 bool scanLoaded(State s) {
@@ -128,8 +126,8 @@ void addSpeed(const workflow::Status& st, PanelModel& m) {
     m.examples = std::to_string(inside) + " inside, " + std::to_string(outside) + " outside";
     m.exampleTools.push_back({st.outsideMode ? "Outside: on" : "Outside: off",
                               workflow::SetOutsideMode{!st.outsideMode}, st.outsideMode});
-    m.exampleTools.push_back(
-        {"Clear examples", workflow::ClearExamples{}, false, inside + outside > 0});
+    m.exampleTools.push_back({"Clear examples", workflow::ClearExamples{}, false,
+                              st.allowed.contains(workflow::ActionKind::ClearExamples)});
     if (st.speedInForce != model::SpeedKind::Classify) {
         std::string needs;
         if (inside == 0) {
@@ -231,6 +229,11 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
         m.devices.push_back({d.name, d.connected ? "connected" : "disconnected"});
     }
     const State s = st.state;
+    // Which controls a state shows follows the workflow's table (offered: a button such as Run
+    // before a seed is there to explain its refusal); whether one works now, Status::allowed.
+    const workflow::ActionKinds offered = workflow::offeredActions(s);
+    // The brush and the erase toggle belong where a tap on a slice places and erases spheres.
+    const bool spheres = offered.contains(ActionKind::Erase);
     m.banner = stateLabel(s);
     m.hint = hintFor(s);
     // The export screen says what Export will write, as the config enables it.
@@ -254,7 +257,9 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
         addReadouts(st, m);
     }
 
-    if (s == State::NoScan || s == State::Inspect || s == State::Done) {
+    // The start, inspect and done screens list the scans.
+    if (offered.contains(ActionKind::LoadScan) &&
+        (s == State::NoScan || s == State::Inspect || s == State::Done)) {
         for (std::size_t i = 0; i < scans.size(); ++i) {
             // The index keeps two scans of the same file name apart as widgets.
             m.scans.push_back({"Load " + scanLabel(scans[i]) + "##scan" + std::to_string(i),
@@ -262,9 +267,9 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
         }
     }
 
-    if (s == State::Inspect || editing(s)) {
+    if (offered.contains(ActionKind::SetParam)) {
         std::vector<Param> shown{Param::Target, Param::Epsilon, Param::Alpha};
-        if (editing(s)) {
+        if (spheres) {
             shown.push_back(Param::Radius);
         }
         for (Param p : shown) {
@@ -283,7 +288,7 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
         }
     }
 
-    if (s == State::Inspect || editing(s)) {
+    if (offered.contains(ActionKind::SetSpeed)) {
         addSpeed(st, m);
     }
 
@@ -296,7 +301,7 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
         m.window = w;
     }
 
-    if (editing(s)) {
+    if (spheres) {
         // In Seeding the forward button runs (below); one Run button, not two.
         if (s == State::Evolving) {
             m.tools.push_back({"Pause", workflow::Pause{}});
@@ -306,18 +311,20 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
         m.tools.push_back({st.eraseMode ? "Erase: on" : "Erase: off",
                            workflow::SetEraseMode{!st.eraseMode}, st.eraseMode});
     }
-    if (s == State::Inspect || editing(s)) {
-        m.tools.push_back({"Undo", workflow::Undo{}, false, st.canUndo});
-        m.tools.push_back({"Redo", workflow::Redo{}, false, st.canRedo});
+    if (offered.contains(ActionKind::Undo)) {
+        m.tools.push_back({"Undo", workflow::Undo{}, false, st.allowed.contains(ActionKind::Undo)});
+        m.tools.push_back({"Redo", workflow::Redo{}, false, st.allowed.contains(ActionKind::Redo)});
     }
-    if (editing(s)) {
-        m.tools.push_back({"Restart", workflow::Restart{}, false, st.hasLevelSet || st.seeds > 0});
+    if (spheres) {
+        m.tools.push_back(
+            {"Restart", workflow::Restart{}, false, st.allowed.contains(ActionKind::Restart)});
     }
     if (s == State::Done) {
         m.tools.push_back({"Export again", workflow::Export{}});
     }
 
-    if (scanLoaded(s) && s != State::Exporting && s != State::Error) {
+    // The error and export screens keep to their message.
+    if (offered.contains(ActionKind::ShowSlices) && s != State::Exporting && s != State::Error) {
         for (int view = 0; view < 2; ++view) {
             for (SliceAxis a : {SliceAxis::Axial, SliceAxis::Coronal, SliceAxis::Sagittal}) {
                 workflow::ShowSlices show{st.view.first, st.view.second};
@@ -332,15 +339,16 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
     if (s == State::Error) {
         m.nav.push_back({"Dismiss", workflow::Dismiss{}});
     }
-    if (s == State::Seeding) {
-        m.nav.push_back({"Back", workflow::Back{}});
-    } else if (s == State::Review || s == State::Done) {
-        m.nav.push_back({s == State::Review ? "Back: steer" : "Back: review", workflow::Back{}});
+    if (offered.contains(ActionKind::Back)) {
+        const char* label = s == State::Review ? "Back: steer"
+                            : s == State::Done ? "Back: review"
+                                               : "Back";
+        m.nav.push_back({label, workflow::Back{}});
     }
     if (s == State::Seeding) {
         m.nav.push_back({"Run", workflow::Run{}});
-    } else if (const std::string label = proceedLabel(s); !label.empty()) {
-        m.nav.push_back({label + "##proceed", workflow::Proceed{}});
+    } else if (offered.contains(ActionKind::Proceed) && !proceedLabel(s).empty()) {
+        m.nav.push_back({proceedLabel(s) + "##proceed", workflow::Proceed{}});
     }
     return m;
 }

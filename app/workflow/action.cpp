@@ -236,6 +236,65 @@ std::string_view actionName(const Action& action) {
     return std::visit([](const auto& a) { return nameOf<std::decay_t<decltype(a)>>(); }, action);
 }
 
+namespace {
+
+template <ActionKind K>
+using TypeOf = std::variant_alternative_t<static_cast<std::size_t>(K), Action>;
+// A reordered variant or enum would make every table row mean another action.
+static_assert(std::is_same_v<TypeOf<ActionKind::LoadScan>, LoadScan>);
+static_assert(std::is_same_v<TypeOf<ActionKind::Probe>, Probe>);
+static_assert(std::is_same_v<TypeOf<ActionKind::ApplyPreset>, ApplyPreset>);
+static_assert(std::is_same_v<TypeOf<ActionKind::SetParam>, SetParam>);
+static_assert(std::is_same_v<TypeOf<ActionKind::NudgeParam>, NudgeParam>);
+static_assert(std::is_same_v<TypeOf<ActionKind::NudgeSelected>, NudgeSelected>);
+static_assert(std::is_same_v<TypeOf<ActionKind::SelectParam>, SelectParam>);
+static_assert(std::is_same_v<TypeOf<ActionKind::CycleParam>, CycleParam>);
+static_assert(std::is_same_v<TypeOf<ActionKind::SetWindow>, SetWindow>);
+static_assert(std::is_same_v<TypeOf<ActionKind::AddSeed>, AddSeed>);
+static_assert(std::is_same_v<TypeOf<ActionKind::Erase>, Erase>);
+static_assert(std::is_same_v<TypeOf<ActionKind::SetEraseMode>, SetEraseMode>);
+static_assert(std::is_same_v<TypeOf<ActionKind::SetSpeed>, SetSpeed>);
+static_assert(std::is_same_v<TypeOf<ActionKind::MarkOutside>, MarkOutside>);
+static_assert(std::is_same_v<TypeOf<ActionKind::ClearExamples>, ClearExamples>);
+static_assert(std::is_same_v<TypeOf<ActionKind::SetOutsideMode>, SetOutsideMode>);
+static_assert(std::is_same_v<TypeOf<ActionKind::Run>, Run>);
+static_assert(std::is_same_v<TypeOf<ActionKind::Pause>, Pause>);
+static_assert(std::is_same_v<TypeOf<ActionKind::ToggleRun>, ToggleRun>);
+static_assert(std::is_same_v<TypeOf<ActionKind::Finish>, Finish>);
+static_assert(std::is_same_v<TypeOf<ActionKind::Resume>, Resume>);
+static_assert(std::is_same_v<TypeOf<ActionKind::Export>, Export>);
+static_assert(std::is_same_v<TypeOf<ActionKind::Undo>, Undo>);
+static_assert(std::is_same_v<TypeOf<ActionKind::Redo>, Redo>);
+static_assert(std::is_same_v<TypeOf<ActionKind::Restart>, Restart>);
+static_assert(std::is_same_v<TypeOf<ActionKind::Proceed>, Proceed>);
+static_assert(std::is_same_v<TypeOf<ActionKind::Back>, Back>);
+static_assert(std::is_same_v<TypeOf<ActionKind::Dismiss>, Dismiss>);
+static_assert(std::is_same_v<TypeOf<ActionKind::RotateView>, RotateView>);
+static_assert(std::is_same_v<TypeOf<ActionKind::ZoomView>, ZoomView>);
+static_assert(std::is_same_v<TypeOf<ActionKind::PageSlice>, PageSlice>);
+static_assert(std::is_same_v<TypeOf<ActionKind::SetSlice>, SetSlice>);
+static_assert(std::is_same_v<TypeOf<ActionKind::ShowSlices>, ShowSlices>);
+static_assert(std::is_same_v<TypeOf<ActionKind::Quit>, Quit>);
+static_assert(static_cast<std::size_t>(ActionKind::Quit) + 1 == kActionKindCount);
+
+template <std::size_t... I>
+constexpr std::array<std::string_view, kActionKindCount> kindNames(std::index_sequence<I...>) {
+    return {nameOf<std::variant_alternative_t<I, Action>>()...};
+}
+
+constexpr auto kKindNames = kindNames(std::make_index_sequence<kActionKindCount>{});
+
+} // namespace
+
+ActionKind kindOf(const Action& action) {
+    return static_cast<ActionKind>(action.index());
+}
+
+std::string_view actionKindName(ActionKind kind) {
+    const auto i = static_cast<std::size_t>(kind);
+    return i < kKindNames.size() ? kKindNames[i] : std::string_view("?");
+}
+
 std::optional<Action> bindingAction(std::string_view name, double steps) {
     // A NaN or infinite step has no meaning for any control; the caller names the binding.
     if (!std::isfinite(steps)) {

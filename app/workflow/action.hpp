@@ -6,7 +6,9 @@
 #include "model/speed_kind.hpp" // the enum only
 
 #include <cstddef>
+#include <cstdint>
 #include <glm/glm.hpp>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -145,6 +147,72 @@ using Action = std::variant<LoadScan, Probe, ApplyPreset, SetParam, NudgeParam, 
 
 // "load_scan", "probe", ... (snake_case of the type): the audit log's and scripts' names.
 std::string_view actionName(const Action& action);
+
+// An action's type without its arguments, in the variant's order (action.cpp checks each), so
+// the transition table and Status::allowed can name what may happen without a value.
+enum class ActionKind {
+    LoadScan,
+    Probe,
+    ApplyPreset,
+    SetParam,
+    NudgeParam,
+    NudgeSelected,
+    SelectParam,
+    CycleParam,
+    SetWindow,
+    AddSeed,
+    Erase,
+    SetEraseMode,
+    SetSpeed,
+    MarkOutside,
+    ClearExamples,
+    SetOutsideMode,
+    Run,
+    Pause,
+    ToggleRun,
+    Finish,
+    Resume,
+    Export,
+    Undo,
+    Redo,
+    Restart,
+    Proceed,
+    Back,
+    Dismiss,
+    RotateView,
+    ZoomView,
+    PageSlice,
+    SetSlice,
+    ShowSlices,
+    Quit,
+};
+inline constexpr std::size_t kActionKindCount = std::variant_size_v<Action>;
+ActionKind kindOf(const Action& action);
+std::string_view actionKindName(ActionKind kind); // actionName's word for the kind
+
+class ActionKinds {
+  public:
+    constexpr ActionKinds() = default;
+    constexpr ActionKinds(std::initializer_list<ActionKind> kinds) {
+        for (const ActionKind k : kinds) {
+            insert(k);
+        }
+    }
+    constexpr void insert(ActionKind kind) { bits_ |= bit(kind); }
+    constexpr void insert(ActionKinds kinds) { bits_ |= kinds.bits_; }
+    [[nodiscard]] constexpr bool contains(ActionKind kind) const {
+        return (bits_ & bit(kind)) != 0;
+    }
+    [[nodiscard]] constexpr bool empty() const { return bits_ == 0; }
+    friend constexpr bool operator==(ActionKinds, ActionKinds) = default;
+
+  private:
+    static constexpr std::uint64_t bit(ActionKind kind) {
+        return std::uint64_t{1} << static_cast<unsigned>(kind);
+    }
+    std::uint64_t bits_ = 0;
+};
+static_assert(kActionKindCount <= 64, "ActionKinds holds one bit per kind");
 
 // The actions a binding can name (config's [bindings]): the ones without arguments, plus the
 // relative ones with a step ("nudge:T", "nudge_selected", "page:axial", "rotate_yaw", ...).

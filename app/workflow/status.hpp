@@ -55,6 +55,10 @@ struct Status {
     std::vector<model::Sphere> insideExamples; // voxels, oldest first (at most kMaxExamples)
     std::vector<model::Sphere> outsideExamples;
     bool hasLevelSet = false;
+    bool unexported = false; // the level set changed since its last export (a load must wait)
+    // What the workflow would accept now, by the transition table (transition_table.hpp) and
+    // its guards; an action of another kind is refused. Arguments can still be refused.
+    ActionKinds allowed;
     int seeds = 0;
     int erasures = 0;
     int iterations = 0;

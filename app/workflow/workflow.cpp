@@ -7,46 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <utility>
 
-// The transition table (docs/workflow.md says the same for operators and script writers).
-//
-//   state      action                  next        condition / note
-//   ---------  ----------------------  ----------  -----------------------------------------
-//   any        LoadScan                Loading     refused while unexported work exists (a
-//                                                  level set changed since its last export:
-//                                                  "export or restart first") and in Exporting
-//   Loading    update(): Ready         Inspect     ranges from the scan, default parameters,
-//                                                  view reset
-//   Loading    update(): Failed        NoScan      the reader's message in status.message
-//   Inspect    AddSeed                 Seeding     the seed is placed
-//   Inspect    Proceed                 Seeding
-//   Seeding    Back                    Inspect
-//   Seeding    Run, ToggleRun, Proceed Evolving    needs a level set
-//   Paused     Run, ToggleRun          Evolving    needs a level set
-//   Evolving   Pause, ToggleRun        Paused
-//   Evolving   evolve(): converged     Paused      notice "converged after N iterations"
-//   Evolving   evolve(): surface gone  Paused      notice
-//   Evolving   evolve(): engine throws Error       the engine's message
-//   Evolving   Erase empties the set   Paused      notice
-//   Evolving   Undo, Redo              Paused      then the undo or redo
-//   Seeding,   Finish, Proceed*        Review      needs a level set (*not from Seeding)
-//    Evolving, Paused
-//   Inspect..  Restart                 Seeding     clears the level set (undoable); from any
-//    Done                                          state with a scan and a level set
-//   Review     Resume, Back            Paused
-//   Review,    Export, Proceed*        Exporting   (*Review only) then Done, or Review with
-//    Paused                            -> Done     the writer's message (work kept)
-//   Done       Back                    Review
-//   Error      Dismiss                 Paused      with a level set; Inspect with a scan;
-//                                                  NoScan without
-//   any        Quit                    (same)      quitRequested() becomes true
-//
-// Parameters (Probe, ApplyPreset, SetParam, NudgeParam, NudgeSelected) and the speed (SetSpeed,
-// MarkOutside, ClearExamples) change in Inspect, Seeding, Evolving and Paused, live. Spheres:
-// AddSeed in Inspect, Seeding, Evolving, Paused; Erase in Seeding, Evolving, Paused. Undo/Redo
-// in Inspect, Seeding, Evolving, Paused. The view (RotateView, ZoomView, PageSlice, SetSlice,
-// ShowSlices, SetWindow), SelectParam, CycleParam, SetEraseMode and SetOutsideMode in any
-// state with a scan. Dismiss in any state clears the notice. Everything
-// else is refused with a one-line reason and changes nothing.
+// Which action is allowed in which state, under which guard and to which state, is the table in
+// transition_table.hpp (docs/workflow.md prints it); handle() runs it before an action's effect.
 
 namespace steerseg::workflow {
 
@@ -72,12 +34,6 @@ bool keepsNotice(const Action& action) {
            std::holds_alternative<SetWindow>(action) || std::holds_alternative<Quit>(action);
 }
 
-// In Error the operator acknowledges first; only looking around, loading and quitting go on.
-bool allowedInError(const Action& action) {
-    return keepsNotice(action) || std::holds_alternative<Dismiss>(action) ||
-           std::holds_alternative<LoadScan>(action);
-}
-
 } // namespace
 
 Workflow::Workflow(Engine& engine, Settings settings, AuditLog* audit)
@@ -96,6 +52,7 @@ Workflow::Workflow(Engine& engine, Settings settings, AuditLog* audit)
     status_.radius = settings_.defaultRadius;
     params_.values[indexOf(Param::Radius)] = settings_.defaultRadius;
     noteAuditError();
+    refreshAllowed();
 }
 
 Workflow::~Workflow() = default;
@@ -111,9 +68,17 @@ Workflow::Outcome Workflow::handle(const Action& action) {
     }
     Outcome out;
     try {
-        out = before == State::Error && !allowedInError(action)
-                  ? no("dismiss the error first")
-                  : std::visit([this](const auto& a) { return on(a); }, action);
+        const Verdict verdict = decide(before, kindOf(action), facts());
+        if (!verdict.allowed) {
+            out = no(verdict.refusal);
+        } else {
+            out = std::visit([this](const auto& a) { return on(a); }, action);
+            // The effect may have moved the state itself (an export ends in done, or back in
+            // review); the table's next state is for the actions that do not.
+            if (out.accepted && verdict.next && status_.state == before) {
+                enter(*verdict.next);
+            }
+        }
     } catch (const std::exception& e) {
         out = no(oneLine(e.what()));
     } catch (...) {
@@ -124,7 +89,7 @@ Workflow::Outcome Workflow::handle(const Action& action) {
         // In Error the error stays on screen; elsewhere the refusal is the newest notice.
         status_.message = status_.state == State::Error ? std::move(notice) : out.reason;
     }
-    refreshUndoFlags();
+    refreshAllowed();
     record(action, before, out);
     return out;
 }
@@ -156,6 +121,7 @@ void Workflow::update() {
         break;
     }
     noteAuditError();
+    refreshAllowed();
 }
 
 void Workflow::enter(State next, std::string message) {
@@ -186,14 +152,16 @@ bool Workflow::unexportedWork() const {
     return scanLoaded_ && dirty_ && status_.hasLevelSet;
 }
 
-std::optional<std::string> Workflow::whyNoScan() const {
-    if (scanLoaded_) {
-        return std::nullopt;
-    }
-    if (status_.state == State::Loading) {
-        return "a scan is loading";
-    }
-    return "no scan loaded: load one first";
+Facts Workflow::facts() const {
+    return {status_.hasLevelSet, unexportedWork(), undo_.undoTop() != nullptr,
+            undo_.redoTop() != nullptr,
+            !params_.speed.inside.empty() || !params_.speed.outside.empty()};
+}
+
+void Workflow::refreshAllowed() {
+    refreshUndoFlags();
+    status_.unexported = unexportedWork();
+    status_.allowed = allowedActions(status_.state, facts());
 }
 
 void Workflow::noteAuditError() {
@@ -250,15 +218,11 @@ Workflow::Outcome Workflow::on(const LoadScan& a) {
     if (a.path.empty()) {
         return no("no scan path given");
     }
-    if (unexportedWork()) {
-        return no("the segmentation is not exported: export or restart first");
-    }
     // The old scan's snapshots go while the engine still holds it.
     undo_.clear();
     engine_.beginLoad(a.path);
     forgetScan();
     status_.message.clear(); // an error left over from the last scan is not this one's
-    enter(State::Loading);
     return ok();
 }
 
@@ -299,43 +263,13 @@ void Workflow::finishLoad() {
     enter(State::Inspect);
 }
 
+// Proceed and Back are the table's steps; from review the step forward is the export.
 Workflow::Outcome Workflow::on(const Proceed&) {
-    switch (status_.state) {
-    case State::Inspect:
-        enter(State::Seeding);
-        return ok();
-    case State::Seeding:
-        return on(Run{});
-    case State::Evolving:
-    case State::Paused:
-        return on(Finish{});
-    case State::Review:
-        return on(Export{});
-    case State::Done:
-        return no("done: load the next scan");
-    case State::Error:
-        return no("dismiss the error first");
-    default:
-        break;
-    }
-    return no(whyNoScan().value_or("nothing to proceed to"));
+    return status_.state == State::Review ? exportTo({}) : ok();
 }
 
 Workflow::Outcome Workflow::on(const Back&) {
-    switch (status_.state) {
-    case State::Seeding:
-        enter(State::Inspect);
-        return ok();
-    case State::Review:
-        enter(State::Paused);
-        return ok();
-    case State::Done:
-        enter(State::Review);
-        return ok();
-    default:
-        break;
-    }
-    return no("no step back from " + std::string(stateName(status_.state)));
+    return ok();
 }
 
 Workflow::Outcome Workflow::on(const Dismiss&) {

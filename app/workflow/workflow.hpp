@@ -3,13 +3,15 @@
 // The fixed operator workflow: the only place that decides what an action means in the state
 // the console is in. It drives an Engine (the scan, the solver, the writers), keeps the undo
 // history and the view state, writes the audit log and publishes a Status for the screen. It
-// knows actions, not devices, and runs without a GPU. docs/workflow.md has the transition table.
+// knows actions, not devices, and runs without a GPU. Which action may happen in which state,
+// and which state follows, is the transition table's (transition_table.hpp), which this runs.
 #include "workflow/action.hpp"
 #include "workflow/audit_log.hpp"
 #include "workflow/engine.hpp"
 #include "workflow/param_ranges.hpp"
 #include "workflow/settings.hpp"
 #include "workflow/status.hpp"
+#include "workflow/transition_table.hpp"
 #include "workflow/undo_stack.hpp"
 
 #include <cstddef>
@@ -71,8 +73,10 @@ class Workflow {
     static Outcome ok() { return {true, {}}; }
     static Outcome no(std::string reason) { return {false, std::move(reason)}; }
 
-    // One handler per action (workflow.cpp: flow; workflow_params.cpp: parameters and probe;
-    // workflow_edits.cpp: spheres, restart, undo; workflow_view.cpp: the view state).
+    // One handler per action, run once the transition table allowed it: the action's effect
+    // (workflow.cpp: flow; workflow_params.cpp: parameters and probe; workflow_edits.cpp:
+    // spheres, restart, undo; workflow_view.cpp: the view state). A handler may still refuse
+    // the action's arguments.
     Outcome on(const LoadScan& a);
     Outcome on(const Probe& a);
     Outcome on(const ApplyPreset& a);
@@ -111,8 +115,10 @@ class Workflow {
     // States and transitions (workflow.cpp).
     void enter(State next, std::string message = {});
     [[nodiscard]] bool unexportedWork() const;
-    // Why nothing that needs a scan can happen now (nullopt: a scan is there).
-    [[nodiscard]] std::optional<std::string> whyNoScan() const;
+    // What the transition table's guards read.
+    [[nodiscard]] Facts facts() const;
+    // The undo flags and Status::allowed, after anything that may have changed them.
+    void refreshAllowed();
     void finishLoad();
     void forgetScan();
     void noteAuditError();
@@ -120,7 +126,6 @@ class Workflow {
     [[nodiscard]] nlohmann::json resultOf(const Action& action) const; // workflow_audit.cpp
 
     // Parameters (workflow_params.cpp).
-    [[nodiscard]] std::optional<std::string> whyNoParamChange() const;
     Outcome changeParams(ParamValues next, std::string_view what, std::optional<Param> coalesce);
     Outcome setParam(Param param, double value, std::string_view what);
     void applyParams(const ParamValues& values, bool force = false); // the engine, the status
@@ -153,7 +158,6 @@ class Workflow {
     void afterLevelSetChange();
     void refreshEngineStatus();
     void refreshUndoFlags();
-    [[nodiscard]] std::optional<std::string> whyNoUndo() const;
 
     // Export (workflow_export.cpp).
     Outcome exportTo(const std::string& path);

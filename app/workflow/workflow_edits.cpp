@@ -119,25 +119,6 @@ void Workflow::applyEditParams(const ParamValues& values) {
 }
 
 Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, bool seed) {
-    switch (status_.state) {
-    case State::Inspect:
-        if (!seed) {
-            return no("place a seed before erasing");
-        }
-        break;
-    case State::Seeding:
-    case State::Evolving:
-    case State::Paused:
-        break;
-    case State::Review:
-        return no("go back to steering to edit the surface");
-    case State::Done:
-        return no("the result is exported: go back to review, or load the next scan");
-    case State::Error:
-        return no("dismiss the error first");
-    default:
-        return no(whyNoScan().value_or("no surface to edit now"));
-    }
     if (!finite(voxel) || !std::isfinite(radius)) {
         return no("a sphere needs a finite centre and radius");
     }
@@ -169,9 +150,7 @@ Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, b
         editLevelSet(
             "erase", [&] { engine_.erase(sphere); }, status_.seeds, status_.erasures + 1);
     }
-    if (status_.state == State::Inspect) {
-        enter(State::Seeding);
-    } else if (status_.state == State::Evolving && !status_.hasLevelSet) {
+    if (status_.state == State::Evolving && !status_.hasLevelSet) {
         enter(State::Paused, "the level set is empty: add a seed");
     }
     return ok();
@@ -186,9 +165,6 @@ Workflow::Outcome Workflow::on(const Erase& a) {
 }
 
 Workflow::Outcome Workflow::on(const SetEraseMode& a) {
-    if (auto why = whyNoScan()) {
-        return no(*why);
-    }
     status_.eraseMode = a.erase;
     if (a.erase) {
         status_.outsideMode = false; // one meaning per tap
@@ -197,56 +173,15 @@ Workflow::Outcome Workflow::on(const SetEraseMode& a) {
 }
 
 Workflow::Outcome Workflow::on(const Restart&) {
-    switch (status_.state) {
-    case State::Inspect:
-    case State::Seeding:
-    case State::Evolving:
-    case State::Paused:
-    case State::Review:
-    case State::Done:
-        break;
-    case State::Error:
-        return no("dismiss the error first");
-    default:
-        return no(whyNoScan().value_or("nothing to restart"));
-    }
-    if (!status_.hasLevelSet) {
-        return no("nothing to restart: the level set is empty");
-    }
     editLevelSet(
         "restart", [&] { engine_.clearLevelSet(); }, 0, 0);
-    enter(State::Seeding);
     return ok();
 }
 
-std::optional<std::string> Workflow::whyNoUndo() const {
-    switch (status_.state) {
-    case State::Inspect:
-    case State::Seeding:
-    case State::Evolving:
-    case State::Paused:
-        return std::nullopt;
-    case State::Review:
-    case State::Done:
-        return "go back to steering to undo";
-    case State::Error:
-        return "dismiss the error first";
-    default:
-        break;
-    }
-    return whyNoScan().value_or("nothing to undo now");
-}
-
 Workflow::Outcome Workflow::on(const Undo&) {
-    if (auto why = whyNoUndo()) {
-        return no(*why);
-    }
     const UndoEntry* e = undo_.undoTop();
     if (e == nullptr) {
         return no("nothing to undo");
-    }
-    if (status_.state == State::Evolving) {
-        enter(State::Paused); // the operator sees what came back before it moves again
     }
     lastUndone_ = e->what;
     if (e->levelSet) {
@@ -261,15 +196,9 @@ Workflow::Outcome Workflow::on(const Undo&) {
 }
 
 Workflow::Outcome Workflow::on(const Redo&) {
-    if (auto why = whyNoUndo()) {
-        return no(*why);
-    }
     const UndoEntry* e = undo_.redoTop();
     if (e == nullptr) {
         return no("nothing to redo");
-    }
-    if (status_.state == State::Evolving) {
-        enter(State::Paused);
     }
     lastUndone_ = e->what;
     if (e->levelSet) {

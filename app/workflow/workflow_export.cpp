@@ -117,15 +117,6 @@ Workflow::Outcome Workflow::exportTo(const std::string& requested) {
 }
 
 Workflow::Outcome Workflow::on(const Export& a) {
-    if (status_.state != State::Review && status_.state != State::Paused) {
-        if (auto why = whyNoScan()) {
-            return no(*why);
-        }
-        return no("export from review (or paused)");
-    }
-    if (!status_.hasLevelSet) {
-        return no("nothing to export: add a seed first");
-    }
     return exportTo(a.path);
 }
 

@@ -22,27 +22,6 @@ bool speedParam(Param p) {
 
 } // namespace
 
-std::optional<std::string> Workflow::whyNoParamChange() const {
-    switch (status_.state) {
-    case State::Inspect:
-    case State::Seeding:
-    case State::Evolving:
-    case State::Paused:
-        return std::nullopt;
-    case State::Review:
-        return "go back to steering to change parameters";
-    case State::Exporting:
-        return "an export is under way";
-    case State::Done:
-        return "the result is exported: go back to review, or load the next scan";
-    case State::Error:
-        return "dismiss the error first";
-    default:
-        break;
-    }
-    return whyNoScan().value_or("no parameters to change now");
-}
-
 ParamValues Workflow::clamped(ParamValues v) const {
     for (std::size_t i = 0; i < v.values.size(); ++i) {
         const ParamRange& r = status_.ranges[i];
@@ -118,9 +97,6 @@ Workflow::Outcome Workflow::setParam(Param param, double value, std::string_view
     if (!validParam(param)) {
         return no("unknown parameter");
     }
-    if (auto why = whyNoParamChange()) {
-        return no(*why);
-    }
     if (!std::isfinite(value)) {
         return no(std::string(paramName(param)) + " must be a finite number");
     }
@@ -161,17 +137,11 @@ Workflow::Outcome Workflow::on(const SelectParam& a) {
     if (!validParam(a.param)) {
         return no("unknown parameter");
     }
-    if (auto why = whyNoScan()) {
-        return no(*why);
-    }
     status_.selected = a.param;
     return ok();
 }
 
 Workflow::Outcome Workflow::on(const CycleParam& a) {
-    if (auto why = whyNoScan()) {
-        return no(*why);
-    }
     const long long n = kParamCount;
     const long long next = ((static_cast<long long>(status_.selected) + a.delta) % n + n) % n;
     status_.selected = static_cast<Param>(next);
@@ -179,9 +149,6 @@ Workflow::Outcome Workflow::on(const CycleParam& a) {
 }
 
 Workflow::Outcome Workflow::on(const Probe& a) {
-    if (auto why = whyNoParamChange()) {
-        return no(*why);
-    }
     if (!std::isfinite(a.voxel.x) || !std::isfinite(a.voxel.y) || !std::isfinite(a.voxel.z) ||
         !std::isfinite(a.radiusMm)) {
         return no("a probe needs a finite position and radius");
@@ -208,9 +175,6 @@ Workflow::Outcome Workflow::on(const Probe& a) {
 }
 
 Workflow::Outcome Workflow::on(const ApplyPreset& a) {
-    if (auto why = whyNoParamChange()) {
-        return no(*why);
-    }
     const auto it = std::find_if(settings_.presets.begin(), settings_.presets.end(),
                                  [&](const TissuePreset& p) { return p.name == a.name; });
     if (it == settings_.presets.end()) {

@@ -60,13 +60,14 @@ Workflow::Outcome Workflow::restoreSession(const RestoredSession& restored) {
     } catch (const std::exception& e) {
         enter(State::Error, e.what());
         noteAuditError();
+        refreshAllowed();
         return no(e.what());
     }
     // Work that was never exported is still unexported.
     dirty_ = status_.hasLevelSet;
-    refreshUndoFlags();
     enter(resumedState(restored.state, status_.hasLevelSet), notice);
     noteAuditError();
+    refreshAllowed();
     return ok();
 }
 

@@ -1,6 +1,7 @@
 // The run: the solver's steps while evolving (with convergence, a vanished surface and an
 // engine failure as their own transitions) and the run controls (run, pause, finish, resume).
-// The transition table is in workflow.cpp and docs/workflow.md.
+// Which control is allowed when, and the state it leads to, is the transition table's
+// (transition_table.hpp): the controls themselves have no effect beyond their transition.
 #include "workflow/one_line.hpp"
 #include "workflow/workflow.hpp"
 
@@ -23,10 +24,12 @@ model::StepResult Workflow::evolve(int iterations) {
     } catch (const std::exception& e) {
         enter(State::Error, oneLine(e.what()));
         noteAuditError();
+        refreshAllowed();
         return {};
     } catch (...) {
         enter(State::Error, "the solver failed unexpectedly");
         noteAuditError();
+        refreshAllowed();
         return {};
     }
     if (!status_.hasLevelSet) {
@@ -36,78 +39,28 @@ model::StepResult Workflow::evolve(int iterations) {
               "converged after " + std::to_string(status_.iterations) + " iterations");
     }
     noteAuditError();
+    refreshAllowed();
     return r;
 }
 
 Workflow::Outcome Workflow::on(const Run&) {
-    switch (status_.state) {
-    case State::Evolving:
-        return ok(); // already running: a second press is not a mistake
-    case State::Seeding:
-    case State::Paused:
-        if (!status_.hasLevelSet) {
-            return no("no level set to evolve: add a seed first");
-        }
-        enter(State::Evolving);
-        return ok();
-    case State::Inspect:
-        return no("place a seed before running");
-    case State::Review:
-        return no("resume steering before running");
-    default:
-        break;
-    }
-    if (auto why = whyNoScan()) {
-        return no(*why);
-    }
-    return no("nothing to run in " + std::string(stateName(status_.state)));
+    return ok();
 }
 
 Workflow::Outcome Workflow::on(const Pause&) {
-    if (status_.state == State::Evolving) {
-        enter(State::Paused);
-        return ok();
-    }
-    if (status_.state == State::Paused) {
-        return ok();
-    }
-    return no("not running");
+    return ok();
 }
 
 Workflow::Outcome Workflow::on(const ToggleRun&) {
-    if (status_.state == State::Evolving) {
-        return on(Pause{});
-    }
-    return on(Run{});
+    return ok();
 }
 
 Workflow::Outcome Workflow::on(const Finish&) {
-    switch (status_.state) {
-    case State::Seeding:
-    case State::Evolving:
-    case State::Paused:
-        if (!status_.hasLevelSet) {
-            return no("nothing to review: add a seed first");
-        }
-        enter(State::Review);
-        return ok();
-    case State::Review:
-        return ok();
-    default:
-        break;
-    }
-    if (auto why = whyNoScan()) {
-        return no(*why);
-    }
-    return no("nothing to finish in " + std::string(stateName(status_.state)));
+    return ok();
 }
 
 Workflow::Outcome Workflow::on(const Resume&) {
-    if (status_.state == State::Review) {
-        enter(State::Paused);
-        return ok();
-    }
-    return no("resume goes from review back to steering");
+    return ok();
 }
 
 } // namespace steerseg::workflow

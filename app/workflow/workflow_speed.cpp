@@ -54,9 +54,6 @@ Workflow::Outcome Workflow::on(const SetSpeed& a) {
     if (!model::validSpeedKind(a.kind)) {
         return no("unknown speed");
     }
-    if (auto why = whyNoParamChange()) {
-        return no(*why);
-    }
     if (a.kind == params_.speed.kind) {
         return ok();
     }
@@ -77,9 +74,6 @@ Workflow::Outcome Workflow::on(const SetSpeed& a) {
 }
 
 Workflow::Outcome Workflow::on(const MarkOutside& a) {
-    if (auto why = whyNoParamChange()) {
-        return no(*why);
-    }
     if (!std::isfinite(a.voxel.x) || !std::isfinite(a.voxel.y) || !std::isfinite(a.voxel.z) ||
         !std::isfinite(a.radiusMm)) {
         return no("an outside example needs a finite position and radius");
@@ -95,12 +89,6 @@ Workflow::Outcome Workflow::on(const MarkOutside& a) {
 }
 
 Workflow::Outcome Workflow::on(const ClearExamples&) {
-    if (auto why = whyNoParamChange()) {
-        return no(*why);
-    }
-    if (params_.speed.inside.empty() && params_.speed.outside.empty()) {
-        return no("no examples to clear");
-    }
     ParamValues next = params_;
     next.speed.inside.clear();
     next.speed.outside.clear();
@@ -114,9 +102,6 @@ Workflow::Outcome Workflow::on(const ClearExamples&) {
 }
 
 Workflow::Outcome Workflow::on(const SetOutsideMode& a) {
-    if (auto why = whyNoScan()) {
-        return no(*why);
-    }
     status_.outsideMode = a.outside;
     if (a.outside) {
         status_.eraseMode = false; // one meaning per tap

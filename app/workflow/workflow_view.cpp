@@ -20,9 +20,6 @@ bool validAxis(SliceAxis a) {
 } // namespace
 
 Workflow::Outcome Workflow::on(const RotateView& a) {
-    if (auto why = whyNoScan()) {
-        return no(*why);
-    }
     if (!std::isfinite(a.yaw) || !std::isfinite(a.pitch)) {
         return no("a rotation needs finite angles");
     }
@@ -34,9 +31,6 @@ Workflow::Outcome Workflow::on(const RotateView& a) {
 }
 
 Workflow::Outcome Workflow::on(const ZoomView& a) {
-    if (auto why = whyNoScan()) {
-        return no(*why);
-    }
     if (!std::isfinite(a.factor) || a.factor <= 0.0) {
         return no("a zoom needs a finite factor > 0");
     }
@@ -45,9 +39,6 @@ Workflow::Outcome Workflow::on(const ZoomView& a) {
 }
 
 Workflow::Outcome Workflow::on(const PageSlice& a) {
-    if (auto why = whyNoScan()) {
-        return no(*why);
-    }
     if (!validAxis(a.axis)) {
         return no("unknown slice orientation");
     }
@@ -60,9 +51,6 @@ Workflow::Outcome Workflow::on(const PageSlice& a) {
 }
 
 Workflow::Outcome Workflow::on(const SetSlice& a) {
-    if (auto why = whyNoScan()) {
-        return no(*why);
-    }
     if (!validAxis(a.axis)) {
         return no("unknown slice orientation");
     }
@@ -72,9 +60,6 @@ Workflow::Outcome Workflow::on(const SetSlice& a) {
 }
 
 Workflow::Outcome Workflow::on(const ShowSlices& a) {
-    if (auto why = whyNoScan()) {
-        return no(*why);
-    }
     if (!validAxis(a.first) || !validAxis(a.second)) {
         return no("unknown slice orientation");
     }
@@ -87,9 +72,6 @@ Workflow::Outcome Workflow::on(const ShowSlices& a) {
 }
 
 Workflow::Outcome Workflow::on(const SetWindow& a) {
-    if (auto why = whyNoScan()) {
-        return no(*why);
-    }
     if (!std::isfinite(a.level) || !std::isfinite(a.width) || a.width <= 0.0) {
         return no("a window needs a finite level and a finite width > 0");
     }

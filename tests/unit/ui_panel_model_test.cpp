@@ -1,6 +1,7 @@
 #include "model/speed_kind.hpp"
 #include "ui/panel_model.hpp"
 #include "ui/view_caption.hpp"
+#include "workflow/transition_table.hpp"
 
 #include <algorithm>
 #include <gtest/gtest.h>
@@ -44,6 +45,12 @@ workflow::Status status(State state) {
 
 const std::vector<std::string> kScans{"builtin:sample", "/data/ct/CT_sarcoma.nii.gz",
                                       "/data/dicom/head/"};
+
+// The panel of a status as the workflow publishes it: with what its table allows now.
+ui::PanelModel modelOf(workflow::Status st) {
+    st.allowed = workflow::allowedActions(st.state, workflow::factsOf(st));
+    return ui::buildPanelModel(st, kScans);
+}
 
 } // namespace
 
@@ -89,7 +96,7 @@ TEST(UiPanelModel, EveryMeaningfulActionIsReachableByTouch) {
         {State::Error, {dismiss}},
     };
     for (const auto& [state, want] : expected) {
-        const ui::PanelModel m = ui::buildPanelModel(status(state), kScans);
+        const ui::PanelModel m = modelOf(status(state));
         const std::set<std::size_t> got = kinds(ui::reachableActions(m));
         for (std::size_t k : want) {
             EXPECT_TRUE(got.count(k)) << ui::stateLabel(state) << " lacks action #" << k;
@@ -109,12 +116,12 @@ TEST(UiPanelModel, ProceedIsLabelledForTheState) {
     EXPECT_EQ(ui::proceedLabel(State::Paused), "Review");
     EXPECT_EQ(ui::proceedLabel(State::Review), "Export");
     EXPECT_EQ(ui::proceedLabel(State::NoScan), "");
-    const ui::PanelModel seeding = ui::buildPanelModel(status(State::Seeding), kScans);
+    const ui::PanelModel seeding = modelOf(status(State::Seeding));
     const auto run = std::find_if(seeding.nav.begin(), seeding.nav.end(),
                                   [](const ui::PanelButton& b) { return b.label == "Run"; });
     ASSERT_NE(run, seeding.nav.end());
     EXPECT_TRUE(std::holds_alternative<workflow::Run>(run->action));
-    const ui::PanelModel review = ui::buildPanelModel(status(State::Review), kScans);
+    const ui::PanelModel review = modelOf(status(State::Review));
     EXPECT_EQ(review.nav.back().label, "Export##proceed");
 }
 
@@ -130,7 +137,7 @@ TEST(UiPanelModel, ParametersReadoutsAndToggles) {
     st.converged = true;
     st.eraseMode = true;
     st.ranges[static_cast<std::size_t>(workflow::Param::Target)] = {-200.0, 300.0, 1.0};
-    const ui::PanelModel m = ui::buildPanelModel(st, kScans);
+    const ui::PanelModel m = modelOf(st);
     ASSERT_EQ(m.params.size(), 4U);
     EXPECT_EQ(m.params[0].range.min, -200.0);
     EXPECT_EQ(m.params[0].value, 40.0);
@@ -167,7 +174,7 @@ TEST(UiPanelModel, TheSpeedsAreOfferedWhereParametersAre) {
         workflow::Status st = status(state);
         st.speed = model::SpeedKind::Edge;
         st.speedInForce = model::SpeedKind::Edge;
-        const ui::PanelModel m = ui::buildPanelModel(st, kScans);
+        const ui::PanelModel m = modelOf(st);
         ASSERT_EQ(m.speeds.size(), 3U) << ui::stateLabel(state);
         const std::vector<std::string> labels{"Threshold##speed", "Edge##speed", "Classify##speed"};
         for (std::size_t i = 0; i < 3; ++i) {
@@ -182,8 +189,7 @@ TEST(UiPanelModel, TheSpeedsAreOfferedWhereParametersAre) {
     }
     for (State state : {State::NoScan, State::Loading, State::Review, State::Exporting, State::Done,
                         State::Error}) {
-        EXPECT_TRUE(ui::buildPanelModel(status(state), kScans).speeds.empty())
-            << ui::stateLabel(state);
+        EXPECT_TRUE(modelOf(status(state)).speeds.empty()) << ui::stateLabel(state);
     }
 }
 
@@ -192,7 +198,7 @@ TEST(UiPanelModel, ClassifyShowsItsExamplesAndTools) {
     st.speed = model::SpeedKind::Classify;
     st.speedInForce = model::SpeedKind::Threshold;
     st.insideExamples.resize(2);
-    ui::PanelModel m = ui::buildPanelModel(st, kScans);
+    ui::PanelModel m = modelOf(st);
     EXPECT_TRUE(m.speeds[2].active);
     EXPECT_EQ(m.examples, "2 inside, 0 outside");
     EXPECT_EQ(m.speedNote, "Classify needs an outside example; threshold runs until then.");
@@ -208,7 +214,7 @@ TEST(UiPanelModel, ClassifyShowsItsExamplesAndTools) {
 
     st.insideExamples.clear();
     st.outsideMode = true;
-    m = ui::buildPanelModel(st, kScans);
+    m = modelOf(st);
     EXPECT_EQ(m.exampleTools[0].label, "Outside: on");
     EXPECT_TRUE(m.exampleTools[0].active);
     EXPECT_FALSE(std::get<workflow::SetOutsideMode>(m.exampleTools[0].action).outside);
@@ -220,7 +226,7 @@ TEST(UiPanelModel, ClassifyShowsItsExamplesAndTools) {
     st.insideExamples.resize(1);
     st.outsideExamples.resize(3);
     st.speedInForce = model::SpeedKind::Classify;
-    m = ui::buildPanelModel(st, kScans);
+    m = modelOf(st);
     EXPECT_EQ(m.examples, "1 inside, 3 outside");
     EXPECT_TRUE(m.speedNote.empty()) << "the classifier runs";
 }
@@ -228,17 +234,36 @@ TEST(UiPanelModel, ClassifyShowsItsExamplesAndTools) {
 TEST(UiPanelModel, UndoGreyedWithNothingToUndo) {
     workflow::Status st = status(State::Seeding);
     st.canUndo = false;
-    const ui::PanelModel m = ui::buildPanelModel(st, kScans);
+    const ui::PanelModel m = modelOf(st);
     const std::set<std::size_t> got = kinds(ui::reachableActions(m));
     EXPECT_FALSE(got.count(indexOf<workflow::Undo>()));
     EXPECT_TRUE(got.count(indexOf<workflow::Redo>()));
 }
 
+TEST(UiPanelModel, ButtonsWorkAsTheWorkflowAllows) {
+    workflow::Status st = status(State::Paused);
+    st.speed = model::SpeedKind::Classify;
+    st.insideExamples.resize(1);
+    // What the workflow published, not what the panel could derive from the counts.
+    st.allowed = workflow::ActionKinds{workflow::ActionKind::Redo};
+    const ui::PanelModel m = ui::buildPanelModel(st, kScans);
+    const auto enabled = [&](const std::vector<ui::PanelButton>& list, const std::string& label) {
+        const auto b = std::find_if(list.begin(), list.end(),
+                                    [&](const ui::PanelButton& x) { return x.label == label; });
+        EXPECT_NE(b, list.end()) << label;
+        return b != list.end() && b->enabled;
+    };
+    EXPECT_FALSE(enabled(m.tools, "Undo"));
+    EXPECT_TRUE(enabled(m.tools, "Redo"));
+    EXPECT_FALSE(enabled(m.tools, "Restart"));
+    EXPECT_FALSE(enabled(m.exampleTools, "Clear examples"));
+}
+
 TEST(UiPanelModel, ControllersAreListedConnectedOrNot) {
     workflow::Status st = status(State::Paused);
-    EXPECT_TRUE(ui::buildPanelModel(st, kScans).devices.empty());
+    EXPECT_TRUE(modelOf(st).devices.empty());
     st.devices = {{"shuttle", "shuttle", true}, {"pedal", "gpio_input", false}};
-    const ui::PanelModel m = ui::buildPanelModel(st, kScans);
+    const ui::PanelModel m = modelOf(st);
     ASSERT_EQ(m.devices.size(), 2U);
     EXPECT_EQ(m.devices[0].label, "shuttle");
     EXPECT_EQ(m.devices[0].value, "connected");
@@ -247,7 +272,7 @@ TEST(UiPanelModel, ControllersAreListedConnectedOrNot) {
 }
 
 TEST(UiPanelModel, ScansAndViews) {
-    const ui::PanelModel m = ui::buildPanelModel(status(State::NoScan), kScans);
+    const ui::PanelModel m = modelOf(status(State::NoScan));
     ASSERT_EQ(m.scans.size(), 3U);
     EXPECT_EQ(m.scans[0].label, "Load Sample##scan0");
     EXPECT_EQ(std::get<workflow::LoadScan>(m.scans[1].action).path, kScans[1]);
@@ -258,7 +283,7 @@ TEST(UiPanelModel, ScansAndViews) {
     workflow::Status st = status(State::Inspect);
     st.view.first = workflow::SliceAxis::Axial;
     st.view.second = workflow::SliceAxis::Coronal;
-    const ui::PanelModel inspect = ui::buildPanelModel(st, kScans);
+    const ui::PanelModel inspect = modelOf(st);
     ASSERT_EQ(inspect.views.size(), 6U);
     EXPECT_TRUE(inspect.views[0].active);
     const auto sagittalFirst = std::get<workflow::ShowSlices>(inspect.views[2].action);
@@ -270,13 +295,13 @@ TEST(UiPanelModel, ScansAndViews) {
 
     workflow::Status loading = status(State::Loading);
     loading.loadProgress = 0.4;
-    const ui::PanelModel lm = ui::buildPanelModel(loading, kScans);
+    const ui::PanelModel lm = modelOf(loading);
     ASSERT_TRUE(lm.progress);
     EXPECT_EQ(*lm.progress, 0.4);
 
     workflow::Status error = status(State::Error);
     error.message = "CT.nii: not a NIfTI file";
-    const ui::PanelModel em = ui::buildPanelModel(error, kScans);
+    const ui::PanelModel em = modelOf(error);
     EXPECT_TRUE(em.error);
     EXPECT_EQ(em.message, error.message);
 }
@@ -298,13 +323,13 @@ TEST(UiViewCaption, NamesTheViewAndTheSlice) {
 TEST(UiPanelModel, ExportStepNamesTheFormats) {
     workflow::Status st = status(State::Review);
     st.exportFormats = {"nii.gz", "seg.nrrd", "stl"};
-    const ui::PanelModel review = ui::buildPanelModel(st, kScans);
+    const ui::PanelModel review = modelOf(st);
     EXPECT_NE(review.hint.find("Export writes .nii.gz, .seg.nrrd, .stl."), std::string::npos)
         << review.hint;
     st.state = State::Done;
-    EXPECT_NE(ui::buildPanelModel(st, kScans).hint.find(".seg.nrrd"), std::string::npos);
+    EXPECT_NE(modelOf(st).hint.find(".seg.nrrd"), std::string::npos);
     st.state = State::Seeding;
-    EXPECT_EQ(ui::buildPanelModel(st, kScans).hint.find("Export writes"), std::string::npos);
+    EXPECT_EQ(modelOf(st).hint.find("Export writes"), std::string::npos);
 }
 
 } // namespace steerseg::test

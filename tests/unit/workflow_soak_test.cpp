@@ -1,9 +1,10 @@
 // A million random actions, frames and injected failures through the workflow over the fake
 // engine (fixed seed; STEERSEG_SOAK_ACTIONS sets the count), checking the state machine's
-// invariants after each: no exception, a valid state, parameters finite and in range, a level
-// set whenever evolving, bounded undo and snapshots (none leaked), the status agreeing with
-// the engine, and no call the engine should never see.
+// invariants after each: no exception, a valid state, only actions the status allowed accepted,
+// parameters finite and in range, a level set whenever evolving, bounded undo and snapshots (none
+// leaked), the status agreeing with the engine, and no call the engine should never see.
 #include "support/fake_engine.hpp"
+#include "workflow/transition_table.hpp"
 #include "workflow/workflow.hpp"
 
 #include <array>
@@ -215,6 +216,9 @@ std::string broken(const Workflow& wf, const FakeEngine& engine, std::size_t max
     if (s.seeds < 0 || s.erasures < 0 || !std::isfinite(s.view.zoom) || s.view.zoom <= 0.0) {
         return "counts or zoom invalid";
     }
+    if (s.allowed != allowedActions(s.state, factsOf(s))) {
+        return "the allowed actions differ from the table's for the status";
+    }
     if (s.message.find('\n') != std::string::npos) {
         return "a message of several lines";
     }
@@ -252,8 +256,12 @@ void walk(long long count, AuditLog* audit, Walk& out) {
             if (kind < 70) {
                 const Action a = gen.action();
                 what = actionName(a);
+                const bool allowed = wf.status().allowed.contains(kindOf(a));
                 if (wf.handle(a).accepted) {
                     ++out.accepted[a.index()];
+                    if (!allowed) {
+                        FAIL() << "step " << n << ": " << what << " accepted, not allowed";
+                    }
                 }
             } else if (kind < 85) {
                 what = "evolve";

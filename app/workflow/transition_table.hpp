@@ -1,0 +1,244 @@
+#pragma once
+
+// The workflow's rules as data: in which states an action kind is accepted, under which guard,
+// which state follows, and the one-line refusal otherwise. Workflow::handle runs it before an
+// action's own code, Status::allowed publishes it, and docs/workflow.md prints it
+// (transition_markdown.hpp; a unit test keeps the two equal).
+#include "workflow/action.hpp"
+#include "workflow/status.hpp"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <initializer_list>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace steerseg::workflow {
+
+inline constexpr std::size_t kStateCount = static_cast<std::size_t>(State::Error) + 1;
+
+class StateSet {
+  public:
+    constexpr StateSet() = default;
+    constexpr StateSet(std::initializer_list<State> states) {
+        for (const State s : states) {
+            bits_ |= bit(s);
+        }
+    }
+    [[nodiscard]] constexpr bool contains(State state) const { return (bits_ & bit(state)) != 0; }
+
+  private:
+    static constexpr std::uint16_t bit(State state) {
+        return static_cast<std::uint16_t>(1U << static_cast<unsigned>(state));
+    }
+    std::uint16_t bits_ = 0;
+};
+
+// What the workflow knows besides its state that decides whether an action may happen.
+struct Facts {
+    bool levelSet = false;
+    bool unexported = false;
+    bool canUndo = false;
+    bool canRedo = false;
+    bool examples = false; // classify has an inside or an outside example
+};
+// The same facts as a status shows them (a status built by hand, a test's).
+inline Facts factsOf(const Status& status) {
+    return {status.hasLevelSet, status.unexported, status.canUndo, status.canRedo,
+            !status.insideExamples.empty() || !status.outsideExamples.empty()};
+}
+
+enum class Guard { Always, Never, LevelSet, NoUnexportedWork, CanUndo, CanRedo, Examples };
+std::string_view guardName(Guard guard); // the docs' words: "always", "level set", ...
+constexpr bool holds(Guard guard, const Facts& facts) {
+    switch (guard) {
+    case Guard::Always:
+        return true;
+    case Guard::Never:
+        return false;
+    case Guard::LevelSet:
+        return facts.levelSet;
+    case Guard::NoUnexportedWork:
+        return !facts.unexported;
+    case Guard::CanUndo:
+        return facts.canUndo;
+    case Guard::CanRedo:
+        return facts.canRedo;
+    case Guard::Examples:
+        return facts.examples;
+    }
+    return false;
+}
+
+struct Rule {
+    StateSet states;
+    ActionKinds actions;
+    Guard guard = Guard::Always;
+    // nullopt: the state stays, unless the action's own code moves it (`note` says where).
+    std::optional<State> next;
+    std::string_view refusal; // when the guard fails; "{state}" stands for the state's name
+    std::string_view note = {};
+};
+
+// The refusal of every action kind no rule names in a state.
+struct StateDefault {
+    State state;
+    std::string_view refusal;
+};
+
+// The table itself, in the docs' order. At most one rule names any (state, action kind), and a
+// state without a default has a rule for every kind (workflow_table_test). It lives in this
+// header so the screen (which links no workflow code) can ask it.
+namespace table {
+using K = ActionKind;
+using S = State;
+
+inline constexpr StateSet kAll{S::NoScan, S::Loading, S::Inspect,   S::Seeding, S::Evolving,
+                               S::Paused, S::Review,  S::Exporting, S::Done,    S::Error};
+inline constexpr StateSet kWithScan{S::Inspect, S::Seeding,   S::Evolving, S::Paused,
+                                    S::Review,  S::Exporting, S::Done,     S::Error};
+inline constexpr StateSet kSteering{S::Inspect, S::Seeding, S::Evolving, S::Paused};
+
+// Looking around: the view, the knob's selection and the tap's meaning. Also in error, where
+// they leave the error's message on screen.
+inline constexpr ActionKinds kLooking{
+    K::RotateView, K::ZoomView,    K::PageSlice,  K::SetSlice,     K::ShowSlices,
+    K::SetWindow,  K::SelectParam, K::CycleParam, K::SetEraseMode, K::SetOutsideMode};
+// Parameters and the speed: live in every steering state, evolving included.
+inline constexpr ActionKinds kSteer{K::Probe,         K::ApplyPreset, K::SetParam,   K::NudgeParam,
+                                    K::NudgeSelected, K::SetSpeed,    K::MarkOutside};
+inline constexpr ActionKinds kSteerAll{K::Probe,       K::ApplyPreset,   K::SetParam,
+                                       K::NudgeParam,  K::NudgeSelected, K::SetSpeed,
+                                       K::MarkOutside, K::ClearExamples};
+inline constexpr ActionKinds kExportedRefused{
+    K::Probe,    K::ApplyPreset, K::SetParam,      K::NudgeParam, K::NudgeSelected,
+    K::SetSpeed, K::MarkOutside, K::ClearExamples, K::AddSeed,    K::Erase};
+
+inline constexpr std::string_view kNoLevelSetToRun = "no level set to evolve: add a seed first";
+inline constexpr std::string_view kNothingToExport = "nothing to export: add a seed first";
+inline constexpr std::string_view kExportNote =
+    "then done; a failure goes back to review with the writer's message, the work kept";
+
+// clang-format off
+inline constexpr std::array kRules{
+    Rule{{S::NoScan, S::Loading, S::Inspect, S::Seeding, S::Evolving, S::Paused, S::Review, S::Done, S::Error},
+         {K::LoadScan}, Guard::NoUnexportedWork, S::Loading,
+         "the segmentation is not exported: export or restart first"},
+    Rule{kWithScan, kLooking, Guard::Always, std::nullopt, {}},
+    Rule{kSteering, kSteer, Guard::Always, std::nullopt, {}},
+    Rule{kSteering, {K::ClearExamples}, Guard::Examples, std::nullopt, "no examples to clear"},
+    Rule{{S::Review}, kSteerAll, Guard::Never, std::nullopt,
+         "go back to steering to change parameters"},
+    Rule{{S::Done}, kExportedRefused, Guard::Never, std::nullopt,
+         "the result is exported: go back to review, or load the next scan"},
+    // The spheres.
+    Rule{{S::Inspect}, {K::AddSeed}, Guard::Always, S::Seeding, {}, "the seed is placed"},
+    Rule{{S::Seeding, S::Evolving, S::Paused}, {K::AddSeed, K::Erase}, Guard::Always, std::nullopt,
+         {}, "evolving: an erase that empties the level set pauses"},
+    Rule{{S::Inspect}, {K::Erase}, Guard::Never, std::nullopt, "place a seed before erasing"},
+    Rule{{S::Review}, {K::AddSeed, K::Erase}, Guard::Never, std::nullopt,
+         "go back to steering to edit the surface"},
+    // The run.
+    Rule{{S::Seeding, S::Paused}, {K::Run, K::ToggleRun}, Guard::LevelSet, S::Evolving,
+         kNoLevelSetToRun},
+    Rule{{S::Seeding}, {K::Proceed}, Guard::LevelSet, S::Evolving, kNoLevelSetToRun},
+    Rule{{S::Evolving}, {K::Run}, Guard::Always, std::nullopt, {}, "already running"},
+    Rule{{S::Evolving}, {K::Pause, K::ToggleRun}, Guard::Always, S::Paused, {}},
+    Rule{{S::Paused}, {K::Pause}, Guard::Always, std::nullopt, {}},
+    Rule{{S::Inspect}, {K::Run, K::ToggleRun}, Guard::Never, std::nullopt,
+         "place a seed before running"},
+    Rule{{S::Review}, {K::Run, K::ToggleRun}, Guard::Never, std::nullopt,
+         "resume steering before running"},
+    Rule{{S::Done}, {K::Run, K::ToggleRun}, Guard::Never, std::nullopt, "nothing to run in {state}"},
+    Rule{{S::NoScan, S::Loading, S::Inspect, S::Seeding, S::Review, S::Done}, {K::Pause},
+         Guard::Never, std::nullopt, "not running"},
+    // Review.
+    Rule{{S::Seeding, S::Evolving, S::Paused}, {K::Finish}, Guard::LevelSet, S::Review,
+         "nothing to review: add a seed first"},
+    Rule{{S::Evolving, S::Paused}, {K::Proceed}, Guard::LevelSet, S::Review,
+         "nothing to review: add a seed first"},
+    Rule{{S::Review}, {K::Finish}, Guard::Always, std::nullopt, {}},
+    Rule{{S::Inspect, S::Done}, {K::Finish}, Guard::Never, std::nullopt,
+         "nothing to finish in {state}"},
+    Rule{{S::Review}, {K::Resume, K::Back}, Guard::Always, S::Paused, {}},
+    Rule{{S::NoScan, S::Loading, S::Inspect, S::Seeding, S::Evolving, S::Paused, S::Done},
+         {K::Resume}, Guard::Never, std::nullopt, "resume goes from review back to steering"},
+    // Export.
+    Rule{{S::Review, S::Paused}, {K::Export}, Guard::LevelSet, S::Exporting, kNothingToExport,
+         kExportNote},
+    Rule{{S::Review}, {K::Proceed}, Guard::LevelSet, S::Exporting, kNothingToExport, kExportNote},
+    Rule{{S::Inspect, S::Seeding, S::Evolving, S::Done}, {K::Export}, Guard::Never, std::nullopt,
+         "export from review (or paused)"},
+    // Undo, restart.
+    Rule{{S::Inspect, S::Seeding, S::Paused}, {K::Undo}, Guard::CanUndo, std::nullopt,
+         "nothing to undo"},
+    Rule{{S::Inspect, S::Seeding, S::Paused}, {K::Redo}, Guard::CanRedo, std::nullopt,
+         "nothing to redo"},
+    Rule{{S::Evolving}, {K::Undo}, Guard::CanUndo, S::Paused, "nothing to undo",
+         "the operator sees what came back before it moves again"},
+    Rule{{S::Evolving}, {K::Redo}, Guard::CanRedo, S::Paused, "nothing to redo"},
+    Rule{{S::Review, S::Done}, {K::Undo, K::Redo}, Guard::Never, std::nullopt,
+         "go back to steering to undo"},
+    Rule{{S::Inspect, S::Seeding, S::Evolving, S::Paused, S::Review, S::Done}, {K::Restart},
+         Guard::LevelSet, S::Seeding, "nothing to restart: the level set is empty",
+         "clears the level set; undoable"},
+    // The workflow's own steps.
+    Rule{{S::Inspect}, {K::Proceed}, Guard::Always, S::Seeding, {}},
+    Rule{{S::Done}, {K::Proceed}, Guard::Never, std::nullopt, "done: load the next scan"},
+    Rule{{S::Seeding}, {K::Back}, Guard::Always, S::Inspect, {}},
+    Rule{{S::Done}, {K::Back}, Guard::Always, S::Review, {}},
+    Rule{{S::NoScan, S::Loading, S::Inspect, S::Evolving, S::Paused}, {K::Back}, Guard::Never,
+         std::nullopt, "no step back from {state}"},
+    Rule{kAll, {K::Dismiss}, Guard::Always, std::nullopt, {},
+         "clears the notice; error goes to paused with a level set, inspect with a scan, else no_scan"},
+    Rule{kAll, {K::Quit}, Guard::Always, std::nullopt, {}, "quitRequested()"},
+};
+
+inline constexpr std::array kDefaults{
+    StateDefault{S::NoScan, "no scan loaded: load one first"},
+    StateDefault{S::Loading, "a scan is loading"},
+    StateDefault{S::Exporting, "an export is under way"},
+    StateDefault{S::Error, "dismiss the error first"},
+};
+// clang-format on
+
+} // namespace table
+
+constexpr std::span<const Rule> transitionRules() {
+    return table::kRules;
+}
+constexpr std::span<const StateDefault> stateDefaults() {
+    return table::kDefaults;
+}
+
+struct Verdict {
+    bool allowed = false;
+    std::optional<State> next; // when allowed: the state that follows (nullopt: as it is)
+    std::string refusal;       // when not
+};
+Verdict decide(State state, ActionKind kind, const Facts& facts);
+constexpr ActionKinds allowedActions(State state, const Facts& facts) {
+    ActionKinds out;
+    for (const Rule& r : transitionRules()) {
+        if (r.states.contains(state) && holds(r.guard, facts)) {
+            out.insert(r.actions);
+        }
+    }
+    return out;
+}
+// The kinds some rule accepts in `state`, whatever its guard: what a screen for that state
+// offers (a button that then explains its refusal, such as Run before a seed).
+constexpr ActionKinds offeredActions(State state) {
+    ActionKinds out;
+    for (const Rule& r : transitionRules()) {
+        if (r.states.contains(state) && r.guard != Guard::Never) {
+            out.insert(r.actions);
+        }
+    }
+    return out;
+}
+
+} // namespace steerseg::workflow
