@@ -8,9 +8,9 @@ namespace steerseg::ui {
 
 namespace {
 
-using workflow::Action;
-using workflow::ActionKind;
-using workflow::State;
+using model::Action;
+using model::ActionKind;
+using model::State;
 
 bool scanShown(State s) {
     return s != State::NoScan && s != State::Loading;
@@ -57,19 +57,18 @@ std::vector<Action> Interaction::onGesture(const Gesture& g, const ScreenState& 
     return {};
 }
 
-std::vector<Action> Interaction::page(workflow::SliceAxis axis, double& accumulated,
-                                      double amount) {
+std::vector<Action> Interaction::page(model::SliceAxis axis, double& accumulated, double amount) {
     accumulated += amount;
     const double whole = std::trunc(accumulated);
     if (whole == 0.0) {
         return {};
     }
     accumulated -= whole;
-    return {workflow::PageSlice{axis, static_cast<int>(whole)}};
+    return {model::PageSlice{axis, static_cast<int>(whole)}};
 }
 
 std::vector<Action> Interaction::onSlice(const Gesture& g, const SliceView& view,
-                                         workflow::SliceAxis axis, const workflow::Status& status) {
+                                         model::SliceAxis axis, const workflow::Status& status) {
     switch (g.kind) {
     case Gesture::Kind::Tap:
     case Gesture::Kind::LongPress: {
@@ -79,24 +78,24 @@ std::vector<Action> Interaction::onSlice(const Gesture& g, const SliceView& view
         }
         // What a touch may mean follows the workflow's table for the state; its guards (a
         // level set to erase from, say) are the workflow's to check and explain.
-        const workflow::ActionKinds offered = workflow::offeredActions(status.state);
+        const model::ActionKinds offered = workflow::offeredActions(status.state);
         // Outside mode: a tap is a counter-example for the classify speed.
         if (status.outsideMode && g.kind == Gesture::Kind::Tap &&
             offered.contains(ActionKind::MarkOutside)) {
-            return {workflow::MarkOutside{*voxel, config_.probeRadiusMm}};
+            return {model::MarkOutside{*voxel, config_.probeRadiusMm}};
         }
         // Before the first seed a tap looks at the tissue; after it, it places spheres.
         if (status.state == State::Inspect && g.kind == Gesture::Kind::Tap) {
-            return {workflow::Probe{*voxel, config_.probeRadiusMm}};
+            return {model::Probe{*voxel, config_.probeRadiusMm}};
         }
         if (g.kind == Gesture::Kind::LongPress || status.eraseMode) {
             if (offered.contains(ActionKind::Erase)) {
-                return {workflow::Erase{*voxel, 0.0}};
+                return {model::Erase{*voxel, 0.0}};
             }
             return {};
         }
         if (offered.contains(ActionKind::AddSeed)) {
-            return {workflow::AddSeed{*voxel, 0.0}};
+            return {model::AddSeed{*voxel, 0.0}};
         }
         return {};
     }
@@ -121,15 +120,15 @@ std::vector<Action> Interaction::onView3d(const Gesture& g) {
         if (g.delta.x == 0.0 && g.delta.y == 0.0) {
             return {};
         }
-        return {workflow::RotateView{g.delta.x * config_.degreesPerPx,
-                                     g.delta.y * config_.degreesPerPx}};
+        return {
+            model::RotateView{g.delta.x * config_.degreesPerPx, g.delta.y * config_.degreesPerPx}};
     case Gesture::Kind::Pinch:
         if (!(g.scale > 0.0) || !std::isfinite(g.scale) || g.scale == 1.0) {
             return {};
         }
-        return {workflow::ZoomView{g.scale}};
+        return {model::ZoomView{g.scale}};
     case Gesture::Kind::Wheel:
-        return {workflow::ZoomView{std::pow(config_.zoomPerDetent, g.wheel)}};
+        return {model::ZoomView{std::pow(config_.zoomPerDetent, g.wheel)}};
     case Gesture::Kind::Tap:
     case Gesture::Kind::LongPress:
         break;

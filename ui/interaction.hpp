@@ -4,11 +4,11 @@
 // status and the slice views as drawn -> workflow actions. The workflow decides whether an
 // action applies; this only names the operator's intent (a tap on a slice while seeding is a
 // seed at the voxel under the finger). Taps on the panel belong to ImGui, not here.
+#include "model/action.hpp"
 #include "ui/gestures.hpp"
 #include "ui/layout.hpp"
 #include "ui/screen_state.hpp"
 #include "ui/slice_mapping.hpp"
-#include "workflow/action.hpp"
 #include "workflow/status.hpp"
 
 #include <vector>
@@ -28,15 +28,15 @@ class Interaction {
   public:
     explicit Interaction(InteractionConfig config = {});
 
-    std::vector<workflow::Action> onGesture(const Gesture& gesture, const ScreenState& screen,
-                                            const workflow::Status& status);
+    std::vector<model::Action> onGesture(const Gesture& gesture, const ScreenState& screen,
+                                         const workflow::Status& status);
 
   private:
-    std::vector<workflow::Action> onSlice(const Gesture& g, const SliceView& view,
-                                          workflow::SliceAxis axis, const workflow::Status& status);
-    std::vector<workflow::Action> onView3d(const Gesture& g);
-    static std::vector<workflow::Action> page(workflow::SliceAxis axis, double& accumulated,
-                                              double amount);
+    std::vector<model::Action> onSlice(const Gesture& g, const SliceView& view,
+                                       model::SliceAxis axis, const workflow::Status& status);
+    std::vector<model::Action> onView3d(const Gesture& g);
+    static std::vector<model::Action> page(model::SliceAxis axis, double& accumulated,
+                                           double amount);
 
     InteractionConfig config_;
     int dragId_ = -1; // the drag whose paging remainder `dragSlices_` holds

@@ -27,7 +27,7 @@ void caption(const Rect& rect, const std::string& text, float pad) {
 
 void drawViewCaptions(const ImGuiLayer& layer, const ScreenState& screen,
                       const workflow::Status& status) {
-    if (status.state == workflow::State::NoScan || status.state == workflow::State::Loading) {
+    if (status.state == model::State::NoScan || status.state == model::State::Loading) {
         return;
     }
     const auto pad = static_cast<float>(0.25 * layer.touchPx());

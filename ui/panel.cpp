@@ -10,7 +10,7 @@ namespace steerseg::ui {
 
 namespace {
 
-using workflow::Action;
+using model::Action;
 
 const ImVec4 kActive(0.85F, 0.62F, 0.10F, 1.0F); // the selected parameter, toggles on
 const ImVec4 kBannerOk(0.16F, 0.36F, 0.58F, 1.0F);
@@ -26,10 +26,10 @@ class Drawer {
         : layer_(layer), rects_(rects), actions_(actions),
           touch_(static_cast<float>(layer.touchPx())) {}
 
-    void banner(const PanelModel& m, workflow::State state) {
-        const ImVec4 colour = m.error                              ? kBannerError
-                              : state == workflow::State::Evolving ? kBannerRun
-                                                                   : kBannerOk;
+    void banner(const PanelModel& m, model::State state) {
+        const ImVec4 colour = m.error                           ? kBannerError
+                              : state == model::State::Evolving ? kBannerRun
+                                                                : kBannerOk;
         ImDrawList* list = ImGui::GetWindowDrawList();
         const ImVec2 at = ImGui::GetCursorScreenPos();
         const float w = ImGui::GetContentRegionAvail().x;
@@ -116,10 +116,10 @@ class Drawer {
         // A narrow panel (high DPI) gives the name what the other three targets leave.
         const float rest = ImGui::GetContentRegionAvail().x - 3.0F * (touch_ + sp);
         const float nameW = std::max(touch_, std::min(1.6F * touch_, rest));
-        button({row.label + "##select" + id, workflow::SelectParam{row.param}, row.selected},
+        button({row.label + "##select" + id, model::SelectParam{row.param}, row.selected},
                ImVec2(nameW, touch_), "select##" + id);
         ImGui::SameLine();
-        button({"-##" + id, workflow::NudgeParam{row.param, -1.0}}, ImVec2(touch_, touch_));
+        button({"-##" + id, model::NudgeParam{row.param, -1.0}}, ImVec2(touch_, touch_));
         ImGui::SameLine();
         double value = std::clamp(row.value, row.range.min, row.range.max);
         ImGui::SetNextItemWidth(std::max(touch_, ImGui::GetContentRegionAvail().x - touch_ - sp));
@@ -127,15 +127,15 @@ class Drawer {
         ImGui::PushStyleVar(ImGuiStyleVar_FramePadding,
                             ImVec2(ImGui::GetStyle().FramePadding.x, padY));
         const std::string slider = "##slider" + id;
-        const char* format = row.param == workflow::Param::Alpha ? "%.2f" : "%.1f";
+        const char* format = row.param == model::Param::Alpha ? "%.2f" : "%.1f";
         if (ImGui::SliderScalar(slider.c_str(), ImGuiDataType_Double, &value, &row.range.min,
                                 &row.range.max, format)) {
-            actions_.emplace_back(workflow::SetParam{row.param, value});
+            actions_.emplace_back(model::SetParam{row.param, value});
         }
         ImGui::PopStyleVar();
         record(slider);
         ImGui::SameLine();
-        button({"+##" + id, workflow::NudgeParam{row.param, 1.0}}, ImVec2(touch_, touch_));
+        button({"+##" + id, model::NudgeParam{row.param, 1.0}}, ImVec2(touch_, touch_));
         ImGui::PopStyleVar();
     }
 
@@ -157,7 +157,7 @@ class Drawer {
         record("##width");
         ImGui::PopStyleVar();
         if (a || b) {
-            actions_.emplace_back(workflow::SetWindow{level, width});
+            actions_.emplace_back(model::SetWindow{level, width});
         }
     }
 
@@ -189,15 +189,15 @@ class Drawer {
     }
 
   private:
-    static std::string paramId(workflow::Param p) {
+    static std::string paramId(model::Param p) {
         switch (p) {
-        case workflow::Param::Target:
+        case model::Param::T:
             return "T";
-        case workflow::Param::Epsilon:
+        case model::Param::Eps:
             return "eps";
-        case workflow::Param::Alpha:
+        case model::Param::Alpha:
             return "alpha";
-        case workflow::Param::Radius:
+        case model::Param::Radius:
             return "radius";
         }
         return "?";

@@ -18,8 +18,8 @@ namespace steerseg::ui {
 
 class Panel {
   public:
-    std::vector<workflow::Action> draw(const ImGuiLayer& layer, const workflow::Status& status,
-                                       const Rect& rect, const std::vector<std::string>& scans);
+    std::vector<model::Action> draw(const ImGuiLayer& layer, const workflow::Status& status,
+                                    const Rect& rect, const std::vector<std::string>& scans);
 
     // Where a widget was drawn last frame, by its label as the model names it ("Run",
     // "Seed##proceed", "+##T" for a parameter's plus button): for tests and scripted taps.

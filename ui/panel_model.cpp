@@ -12,11 +12,11 @@ namespace steerseg::ui {
 
 namespace {
 
-using workflow::Action;
-using workflow::ActionKind;
-using workflow::Param;
-using workflow::SliceAxis;
-using workflow::State;
+using model::Action;
+using model::ActionKind;
+using model::Param;
+using model::SliceAxis;
+using model::State;
 
 std::string fixed(double value, int decimals) {
     char text[64];
@@ -63,9 +63,9 @@ workflow::ParamRange rangeFor(const workflow::Status& st, Param p) {
     const double lo = st.scan.minValue;
     const double hi = std::max(st.scan.maxValue, lo + 1.0);
     switch (p) {
-    case Param::Target:
+    case Param::T:
         return {lo, hi, (hi - lo) / 200.0};
-    case Param::Epsilon:
+    case Param::Eps:
         return {0.0, hi - lo, (hi - lo) / 400.0};
     case Param::Alpha:
         return {0.0, 1.0, 0.01};
@@ -77,9 +77,9 @@ workflow::ParamRange rangeFor(const workflow::Status& st, Param p) {
 
 double valueOf(const workflow::Status& st, Param p) {
     switch (p) {
-    case Param::Target:
+    case Param::T:
         return static_cast<double>(st.params.T);
-    case Param::Epsilon:
+    case Param::Eps:
         return static_cast<double>(st.params.eps);
     case Param::Alpha:
         return static_cast<double>(st.params.alpha);
@@ -116,7 +116,7 @@ void addReadouts(const workflow::Status& st, PanelModel& m) {
 // matter only to classify, so its tools appear only when it is chosen.
 void addSpeed(const workflow::Status& st, PanelModel& m) {
     for (model::SpeedKind k : model::kSpeedKinds) {
-        m.speeds.push_back({speedLabel(k) + "##speed", workflow::SetSpeed{k}, st.speed == k});
+        m.speeds.push_back({speedLabel(k) + "##speed", model::SetSpeed{k}, st.speed == k});
     }
     if (st.speed != model::SpeedKind::Classify) {
         return;
@@ -125,9 +125,9 @@ void addSpeed(const workflow::Status& st, PanelModel& m) {
     const std::size_t outside = st.outsideExamples.size();
     m.examples = std::to_string(inside) + " inside, " + std::to_string(outside) + " outside";
     m.exampleTools.push_back({st.outsideMode ? "Outside: on" : "Outside: off",
-                              workflow::SetOutsideMode{!st.outsideMode}, st.outsideMode});
-    m.exampleTools.push_back({"Clear examples", workflow::ClearExamples{}, false,
-                              st.allowed.contains(workflow::ActionKind::ClearExamples)});
+                              model::SetOutsideMode{!st.outsideMode}, st.outsideMode});
+    m.exampleTools.push_back({"Clear examples", model::ClearExamples{}, false,
+                              st.allowed.contains(model::ActionKind::ClearExamples)});
     if (st.speedInForce != model::SpeedKind::Classify) {
         std::string needs;
         if (inside == 0) {
@@ -171,9 +171,9 @@ std::string stateLabel(State s) {
 
 std::string paramLabel(Param p) {
     switch (p) {
-    case Param::Target:
+    case Param::T:
         return "T";
-    case Param::Epsilon:
+    case Param::Eps:
         return "eps";
     case Param::Alpha:
         return "alpha";
@@ -231,7 +231,7 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
     const State s = st.state;
     // Which controls a state shows follows the workflow's table (offered: a button such as Run
     // before a seed is there to explain its refusal); whether one works now, Status::allowed.
-    const workflow::ActionKinds offered = workflow::offeredActions(s);
+    const model::ActionKinds offered = workflow::offeredActions(s);
     // The brush and the erase toggle belong where a tap on a slice places and erases spheres.
     const bool spheres = offered.contains(ActionKind::Erase);
     m.banner = stateLabel(s);
@@ -263,12 +263,12 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
         for (std::size_t i = 0; i < scans.size(); ++i) {
             // The index keeps two scans of the same file name apart as widgets.
             m.scans.push_back({"Load " + scanLabel(scans[i]) + "##scan" + std::to_string(i),
-                               workflow::LoadScan{scans[i]}});
+                               model::LoadScan{scans[i]}});
         }
     }
 
     if (offered.contains(ActionKind::SetParam)) {
-        std::vector<Param> shown{Param::Target, Param::Epsilon, Param::Alpha};
+        std::vector<Param> shown{Param::T, Param::Eps, Param::Alpha};
         if (spheres) {
             shown.push_back(Param::Radius);
         }
@@ -284,7 +284,7 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
         for (const std::string& preset : st.presets) {
             // The suffix keeps a preset named like a button ("Undo") a widget of its own.
             m.presets.push_back(
-                {preset + "##preset", workflow::ApplyPreset{preset}, preset == st.preset});
+                {preset + "##preset", model::ApplyPreset{preset}, preset == st.preset});
         }
     }
 
@@ -304,30 +304,30 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
     if (spheres) {
         // In Seeding the forward button runs (below); one Run button, not two.
         if (s == State::Evolving) {
-            m.tools.push_back({"Pause", workflow::Pause{}});
+            m.tools.push_back({"Pause", model::Pause{}});
         } else if (s == State::Paused) {
-            m.tools.push_back({"Run", workflow::Run{}});
+            m.tools.push_back({"Run", model::Run{}});
         }
         m.tools.push_back({st.eraseMode ? "Erase: on" : "Erase: off",
-                           workflow::SetEraseMode{!st.eraseMode}, st.eraseMode});
+                           model::SetEraseMode{!st.eraseMode}, st.eraseMode});
     }
     if (offered.contains(ActionKind::Undo)) {
-        m.tools.push_back({"Undo", workflow::Undo{}, false, st.allowed.contains(ActionKind::Undo)});
-        m.tools.push_back({"Redo", workflow::Redo{}, false, st.allowed.contains(ActionKind::Redo)});
+        m.tools.push_back({"Undo", model::Undo{}, false, st.allowed.contains(ActionKind::Undo)});
+        m.tools.push_back({"Redo", model::Redo{}, false, st.allowed.contains(ActionKind::Redo)});
     }
     if (spheres) {
         m.tools.push_back(
-            {"Restart", workflow::Restart{}, false, st.allowed.contains(ActionKind::Restart)});
+            {"Restart", model::Restart{}, false, st.allowed.contains(ActionKind::Restart)});
     }
     if (s == State::Done) {
-        m.tools.push_back({"Export again", workflow::Export{}});
+        m.tools.push_back({"Export again", model::Export{}});
     }
 
     // The error and export screens keep to their message.
     if (offered.contains(ActionKind::ShowSlices) && s != State::Exporting && s != State::Error) {
         for (int view = 0; view < 2; ++view) {
             for (SliceAxis a : {SliceAxis::Axial, SliceAxis::Coronal, SliceAxis::Sagittal}) {
-                workflow::ShowSlices show{st.view.first, st.view.second};
+                model::ShowSlices show{st.view.first, st.view.second};
                 (view == 0 ? show.first : show.second) = a;
                 const bool current = (view == 0 ? st.view.first : st.view.second) == a;
                 m.views.push_back({std::string(axisName(a)) + "##view" + std::to_string(view + 1),
@@ -337,18 +337,18 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
     }
 
     if (s == State::Error) {
-        m.nav.push_back({"Dismiss", workflow::Dismiss{}});
+        m.nav.push_back({"Dismiss", model::Dismiss{}});
     }
     if (offered.contains(ActionKind::Back)) {
         const char* label = s == State::Review ? "Back: steer"
                             : s == State::Done ? "Back: review"
                                                : "Back";
-        m.nav.push_back({label, workflow::Back{}});
+        m.nav.push_back({label, model::Back{}});
     }
     if (s == State::Seeding) {
-        m.nav.push_back({"Run", workflow::Run{}});
+        m.nav.push_back({"Run", model::Run{}});
     } else if (offered.contains(ActionKind::Proceed) && !proceedLabel(s).empty()) {
-        m.nav.push_back({proceedLabel(s) + "##proceed", workflow::Proceed{}});
+        m.nav.push_back({proceedLabel(s) + "##proceed", model::Proceed{}});
     }
     return m;
 }
@@ -364,14 +364,14 @@ std::vector<Action> reachableActions(const PanelModel& m) {
         }
     }
     for (const ParamRow& row : m.params) {
-        out.emplace_back(workflow::SelectParam{row.param});
-        out.emplace_back(workflow::NudgeParam{row.param, -1.0});
-        out.emplace_back(workflow::NudgeParam{row.param, 1.0});
-        out.emplace_back(workflow::SetParam{row.param, row.range.min});
-        out.emplace_back(workflow::SetParam{row.param, row.range.max});
+        out.emplace_back(model::SelectParam{row.param});
+        out.emplace_back(model::NudgeParam{row.param, -1.0});
+        out.emplace_back(model::NudgeParam{row.param, 1.0});
+        out.emplace_back(model::SetParam{row.param, row.range.min});
+        out.emplace_back(model::SetParam{row.param, row.range.max});
     }
     if (m.window) {
-        out.emplace_back(workflow::SetWindow{m.window->level, m.window->width});
+        out.emplace_back(model::SetWindow{m.window->level, m.window->width});
     }
     return out;
 }

@@ -4,7 +4,7 @@
 // parameter rows and every button with the action it emits. panel.cpp draws it with ImGui;
 // tests read it to check that every action the workflow offers in a state is reachable by
 // touch alone.
-#include "workflow/action.hpp"
+#include "model/action.hpp"
 #include "workflow/status.hpp"
 
 #include <optional>
@@ -15,7 +15,7 @@ namespace steerseg::ui {
 
 struct PanelButton {
     std::string label; // unique within the panel (it is the widget's id)
-    workflow::Action action;
+    model::Action action;
     bool active = false; // drawn highlighted (a toggle that is on, the selected preset)
     bool enabled = true; // drawn greyed out and inert (Undo with nothing to undo)
 };
@@ -23,7 +23,7 @@ struct PanelButton {
 // A steerable parameter: tapping its name selects it for the knob (SelectParam), -/+ nudge it
 // by one fine step (NudgeParam), the slider sets it (SetParam).
 struct ParamRow {
-    workflow::Param param = workflow::Param::Target;
+    model::Param param = model::Param::T;
     std::string label; // "T", "eps", "alpha", "brush"
     double value = 0.0;
     workflow::ParamRange range;
@@ -72,16 +72,16 @@ PanelModel buildPanelModel(const workflow::Status& status, const std::vector<std
 
 // Every action a touch on the panel can emit (enabled buttons, and for each parameter row
 // SelectParam, NudgeParam -1/+1 and SetParam at its ends; SetWindow for the window row).
-std::vector<workflow::Action> reachableActions(const PanelModel& model);
+std::vector<model::Action> reachableActions(const PanelModel& model);
 
 // The operator's words for a state ("Seeding") and a parameter ("T", "brush"), and the label of the
 // Proceed button in a state ("Seed", "Run", "Review", "Export"; empty where Proceed means
 // nothing).
-std::string stateLabel(workflow::State state);
-std::string paramLabel(workflow::Param param);
+std::string stateLabel(model::State state);
+std::string paramLabel(model::Param param);
 // "Threshold", "Edge", "Classify": the speed buttons' words.
 std::string speedLabel(model::SpeedKind kind);
-std::string proceedLabel(workflow::State state);
+std::string proceedLabel(model::State state);
 // A scan's name for its button: the file or folder name, "Sample" for builtin:sample.
 std::string scanLabel(const std::string& path);
 

@@ -23,27 +23,27 @@ TouchUi::TouchUi(const TouchUiOptions& options)
       interaction_(interactionConfig(options.dpi, options.probeRadiusMm)), scans_(options.scans) {}
 
 void TouchUi::feed(const platform::InputEvent& event, const ScreenState& screen,
-                   const workflow::Status& status, std::vector<workflow::Action>& out) {
+                   const workflow::Status& status, std::vector<model::Action>& out) {
     layer_.feed(event);
     // Gestures that begin on the panel are ImGui's: Interaction ignores the panel's region.
     for (const Gesture& g : gestures_.feed(event)) {
-        for (workflow::Action& a : interaction_.onGesture(g, screen, status)) {
+        for (model::Action& a : interaction_.onGesture(g, screen, status)) {
             out.push_back(std::move(a));
         }
     }
 }
 
-std::vector<workflow::Action> TouchUi::drawFrame(const glm::ivec2& screenSize, double time,
-                                                 const ScreenState& screen,
-                                                 const workflow::Status& status) {
-    std::vector<workflow::Action> out;
+std::vector<model::Action> TouchUi::drawFrame(const glm::ivec2& screenSize, double time,
+                                              const ScreenState& screen,
+                                              const workflow::Status& status) {
+    std::vector<model::Action> out;
     for (const Gesture& g : gestures_.update(time)) {
-        for (workflow::Action& a : interaction_.onGesture(g, screen, status)) {
+        for (model::Action& a : interaction_.onGesture(g, screen, status)) {
             out.push_back(std::move(a));
         }
     }
     layer_.beginFrame(screenSize, time);
-    for (workflow::Action& a : panel_.draw(layer_, status, screen.layout.panel, scans_)) {
+    for (model::Action& a : panel_.draw(layer_, status, screen.layout.panel, scans_)) {
         out.push_back(std::move(a));
     }
     drawViewCaptions(layer_, screen, status);

@@ -38,11 +38,10 @@ class TouchUi {
 
     // One event in logical pixels: the view gestures it completes append their actions.
     void feed(const platform::InputEvent& event, const ScreenState& screen,
-              const workflow::Status& status, std::vector<workflow::Action>& out);
+              const workflow::Status& status, std::vector<model::Action>& out);
     // Long presses due by `time`, the panel and the captions, drawn into the bound framebuffer.
-    std::vector<workflow::Action> drawFrame(const glm::ivec2& screenSize, double time,
-                                            const ScreenState& screen,
-                                            const workflow::Status& status);
+    std::vector<model::Action> drawFrame(const glm::ivec2& screenSize, double time,
+                                         const ScreenState& screen, const workflow::Status& status);
 
     void setScans(std::vector<std::string> scans) { scans_ = std::move(scans); }
     // A question over the panel until it is cleared (nullopt); the button pressed since the

@@ -11,13 +11,13 @@ std::string sliceOf(const render::SliceFrame& f, const glm::ivec3& dims) {
 
 } // namespace
 
-std::string axisLabel(workflow::SliceAxis axis) {
+std::string axisLabel(model::SliceAxis axis) {
     switch (axis) {
-    case workflow::SliceAxis::Axial:
+    case model::SliceAxis::Axial:
         return "Axial";
-    case workflow::SliceAxis::Coronal:
+    case model::SliceAxis::Coronal:
         return "Coronal";
-    case workflow::SliceAxis::Sagittal:
+    case model::SliceAxis::Sagittal:
         return "Sagittal";
     }
     return "?";
@@ -27,12 +27,12 @@ std::string view3dCaption() {
     return "3D";
 }
 
-std::string contourCaption(workflow::SliceAxis axis, const render::SliceFrame& frame,
+std::string contourCaption(model::SliceAxis axis, const render::SliceFrame& frame,
                            const glm::ivec3& dims) {
     return axisLabel(axis) + "  slice " + sliceOf(frame, dims);
 }
 
-std::string speedCaption(workflow::SliceAxis axis, const render::SliceFrame& frame,
+std::string speedCaption(model::SliceAxis axis, const render::SliceFrame& frame,
                          const glm::ivec3& dims) {
     return axisLabel(axis) + " \u2014 speed  " + sliceOf(frame, dims);
 }

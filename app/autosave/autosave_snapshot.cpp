@@ -49,10 +49,10 @@ std::uint32_t crcOf(std::span<const std::byte> bytes) {
     return static_cast<std::uint32_t>(crc);
 }
 
-std::optional<workflow::State> stateFromName(const std::string& name) {
-    for (int i = 0; i <= static_cast<int>(workflow::State::Error); ++i) {
-        const auto s = static_cast<workflow::State>(i);
-        if (workflow::stateName(s) == name) {
+std::optional<model::State> stateFromName(const std::string& name) {
+    for (int i = 0; i <= static_cast<int>(model::State::Error); ++i) {
+        const auto s = static_cast<model::State>(i);
+        if (model::stateName(s) == name) {
             return s;
         }
     }
@@ -76,7 +76,7 @@ std::vector<model::Sphere> readSpheres(const nlohmann::json& params, const char*
         out.push_back({{e.at(0).get<float>(), e.at(1).get<float>(), e.at(2).get<float>()},
                        e.at(3).get<float>()});
     }
-    if (out.size() > workflow::kMaxExamples) {
+    if (out.size() > model::kMaxExamples) {
         throw AutosaveFormatError(std::string("more ") + key + " examples than a session keeps");
     }
     return out;
@@ -101,9 +101,9 @@ nlohmann::json metadata(const AutosaveSnapshot& s) {
                           {"speed_fallback", model::speedKindName(s.params.fallback)},
                           {"inside", spheres(s.params.speed.inside)},
                           {"outside", spheres(s.params.speed.outside)}};
-    for (int i = 0; i < workflow::kParamCount; ++i) {
-        const auto p = static_cast<workflow::Param>(i);
-        params[std::string(workflow::paramName(p))] = s.params.values[workflow::indexOf(p)];
+    for (int i = 0; i < model::kParamCount; ++i) {
+        const auto p = static_cast<model::Param>(i);
+        params[std::string(model::paramName(p))] = s.params.values[workflow::indexOf(p)];
     }
     const auto saved =
         std::chrono::system_clock::time_point(std::chrono::milliseconds(s.savedAtMs));
@@ -113,7 +113,7 @@ nlohmann::json metadata(const AutosaveSnapshot& s) {
         {"saved_at_ms", s.savedAtMs},
         {"saved_at", workflow::isoUtc(saved)},
         {"sequence", s.sequence},
-        {"state", workflow::stateName(s.state)},
+        {"state", model::stateName(s.state)},
         {"params", params},
         {"seeds", s.seeds},
         {"erasures", s.erasures},
@@ -142,10 +142,10 @@ void readMetadata(const nlohmann::json& j, AutosaveSnapshot& s) {
     s.params.fallback = readSpeed(params, "speed_fallback");
     s.params.speed.inside = readSpheres(params, "inside");
     s.params.speed.outside = readSpheres(params, "outside");
-    for (int i = 0; i < workflow::kParamCount; ++i) {
-        const auto p = static_cast<workflow::Param>(i);
+    for (int i = 0; i < model::kParamCount; ++i) {
+        const auto p = static_cast<model::Param>(i);
         s.params.values[workflow::indexOf(p)] =
-            params.at(std::string(workflow::paramName(p))).get<double>();
+            params.at(std::string(model::paramName(p))).get<double>();
     }
     s.seeds = j.at("seeds").get<int>();
     s.erasures = j.at("erasures").get<int>();

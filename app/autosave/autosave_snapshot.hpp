@@ -5,7 +5,7 @@
 // sizes, CRC32 of the payload) and a payload of JSON metadata followed by the mask's runs, so a
 // torn, truncated or bit-flipped file is recognised before anything in it is trusted.
 #include "core/mask_runs.hpp"
-#include "workflow/action.hpp"
+#include "model/action.hpp"
 #include "workflow/undo_stack.hpp"
 
 #include <cstddef>
@@ -38,7 +38,7 @@ struct AutosaveSnapshot {
     glm::ivec3 dims{0};
     std::int64_t savedAtMs = 0; // UTC, milliseconds since the epoch
     std::uint64_t sequence = 0; // counts the session's autosaves
-    workflow::State state = workflow::State::NoScan;
+    model::State state = model::State::NoScan;
     workflow::ParamValues params;
     int seeds = 0;
     int erasures = 0;

@@ -151,7 +151,7 @@ std::filesystem::path AutosaveStore::save(AutosaveSnapshot snapshot) {
     entry.savedAtMs = snapshot.savedAtMs;
     entry.crc = snapshotCrc(bytes);
     entry.bytes = bytes.size();
-    entry.state = std::string(workflow::stateName(snapshot.state));
+    entry.state = std::string(model::stateName(snapshot.state));
     const std::filesystem::path path = folder_ / entry.file;
     files::writeFileAtomically(path, {std::span<const std::byte>(bytes)});
     manifest_.files.push_back(entry);

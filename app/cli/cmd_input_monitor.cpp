@@ -72,31 +72,31 @@ std::string describe(const ControlEvent& e) {
 }
 
 // The action's name and, for the relative ones, how far: what the workflow will be asked.
-std::string describe(const workflow::Action& a) {
+std::string describe(const model::Action& a) {
     std::ostringstream out;
-    out << workflow::actionName(a);
-    if (const auto* n = std::get_if<workflow::NudgeSelected>(&a)) {
+    out << model::actionName(a);
+    if (const auto* n = std::get_if<model::NudgeSelected>(&a)) {
         out << ' ' << n->steps;
-    } else if (const auto* p = std::get_if<workflow::NudgeParam>(&a)) {
-        out << ' ' << workflow::paramName(p->param) << ' ' << p->steps;
-    } else if (const auto* c = std::get_if<workflow::CycleParam>(&a)) {
+    } else if (const auto* p = std::get_if<model::NudgeParam>(&a)) {
+        out << ' ' << model::paramName(p->param) << ' ' << p->steps;
+    } else if (const auto* c = std::get_if<model::CycleParam>(&a)) {
         out << ' ' << c->delta;
-    } else if (const auto* s = std::get_if<workflow::PageSlice>(&a)) {
-        out << ' ' << workflow::sliceAxisName(s->axis) << ' ' << s->delta;
-    } else if (const auto* r = std::get_if<workflow::RotateView>(&a)) {
+    } else if (const auto* s = std::get_if<model::PageSlice>(&a)) {
+        out << ' ' << model::sliceAxisName(s->axis) << ' ' << s->delta;
+    } else if (const auto* r = std::get_if<model::RotateView>(&a)) {
         out << ' ' << r->yaw << ' ' << r->pitch;
-    } else if (const auto* z = std::get_if<workflow::ZoomView>(&a)) {
+    } else if (const auto* z = std::get_if<model::ZoomView>(&a)) {
         out << ' ' << z->factor;
     }
     return out.str();
 }
 
-std::string describe(const std::vector<workflow::Action>& actions, bool bound) {
+std::string describe(const std::vector<model::Action>& actions, bool bound) {
     if (actions.empty()) {
         return bound ? "(no action)" : "(unbound)";
     }
     std::string out;
-    for (const workflow::Action& a : actions) {
+    for (const model::Action& a : actions) {
         out += (out.empty() ? "" : ", ") + describe(a);
     }
     return out;
@@ -152,7 +152,7 @@ void listAttached(const std::vector<DeviceSpec>& specs, std::ostream& out) {
 
 config::LoadedConfig readConfig(const std::optional<std::string>& file, std::ostream& err) {
     const config::BindingCheck check = [](std::string_view action) {
-        return workflow::bindingAction(action, 1.0).has_value();
+        return model::bindingAction(action, 1.0).has_value();
     };
     std::optional<std::filesystem::path> path;
     if (file) {
@@ -171,12 +171,11 @@ class Printer {
   public:
     explicit Printer(std::ostream& out) : out_(out) {}
     void attach(input::InputHub& hub) {
-        hub.setObserver(
-            [this, &hub](const ControlEvent& e, const std::vector<workflow::Action>& a) {
-                out_ << seconds(e.time) << ' ' << describe(e) << " -> "
-                     << describe(a, hub.bindings().bound(e.control)) << '\n';
-                observed_ += a.size();
-            });
+        hub.setObserver([this, &hub](const ControlEvent& e, const std::vector<model::Action>& a) {
+            out_ << seconds(e.time) << ' ' << describe(e) << " -> "
+                 << describe(a, hub.bindings().bound(e.control)) << '\n';
+            observed_ += a.size();
+        });
     }
     void poll(input::InputHub& hub, double now) {
         actions_.clear();
@@ -190,7 +189,7 @@ class Printer {
 
   private:
     std::ostream& out_;
-    std::vector<workflow::Action> actions_;
+    std::vector<model::Action> actions_;
     std::size_t observed_ = 0;
 };
 

@@ -9,11 +9,11 @@
 #include "gpu/program.hpp"
 #include "gpu/shader_library.hpp"
 #include "input/input_hub.hpp"
+#include "model/action.hpp"
 #include "model/level_set_params.hpp"
 #include "model/solver_types.hpp"
 #include "platform/egl/offscreen_context.hpp"
 #include "platform/input/sources.hpp"
-#include "workflow/action.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -159,7 +159,7 @@ int runSelfTest(std::span<const std::string> words) {
     }
 
     const config::BindingCheck bindable = [](std::string_view action) {
-        return workflow::bindingAction(action, 1.0).has_value();
+        return model::bindingAction(action, 1.0).has_value();
     };
     const config::LoadedConfig loaded =
         config::loadConfig(config::kioskConfigSources(configFile), bindable);

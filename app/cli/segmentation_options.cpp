@@ -213,10 +213,10 @@ void completeWithScan(SegmentationRequest& request, const Volume& scan) {
         }
         // Explicit values override what the probe suggests.
         if (!request.explicitT) {
-            request.params.T = static_cast<float>(p.target);
+            request.params.T = static_cast<float>(p.T);
         }
         if (!request.explicitEps) {
-            request.params.eps = static_cast<float>(p.epsilon);
+            request.params.eps = static_cast<float>(p.eps);
         }
         if (!request.explicitConductance) {
             request.speed.smoothing.conductance = static_cast<float>(p.conductance);

@@ -20,7 +20,7 @@ inline constexpr std::string_view kSystemConfigPath = "/etc/steerseg/steerseg.to
 inline constexpr std::uintmax_t kMaxConfigBytes = std::uintmax_t{1} << 20;
 
 // Whether an action name may be bound. The kiosk passes the workflow's own check
-// (workflow::bindingAction(name, 1).has_value()), so config needs no workflow code at link time.
+// (model::bindingAction(name, 1).has_value()), so config needs no workflow code at link time.
 using BindingCheck = std::function<bool(std::string_view action)>;
 
 struct ConfigSource {

@@ -1,5 +1,6 @@
 #include "config/config_sections.hpp"
 
+#include "model/export_format.hpp"
 #include "model/speed_kind.hpp"
 
 #include <algorithm>
@@ -214,10 +215,12 @@ void readExport(TableReader& t, ExportConfig& e) {
         auto format = readText(
             *formats->get(i), key,
             [&read](std::string_view f) -> std::string {
-                const auto& known = exportFormats();
-                if (std::find(known.begin(), known.end(), f) == known.end()) {
+                const auto& known = model::exportFormats();
+                if (std::none_of(known.begin(), known.end(), [f](model::ExportFormat k) {
+                        return model::exportFormatName(k) == f;
+                    })) {
                     return "unknown format \"" + std::string(f) +
-                           "\"; known: " + exportFormatList();
+                           "\"; known: " + model::exportFormatNames();
                 }
                 if (std::find(read.begin(), read.end(), f) != read.end()) {
                     return "\"" + std::string(f) + "\" is listed twice";
@@ -232,7 +235,7 @@ void readExport(TableReader& t, ExportConfig& e) {
         }
     }
     if (good && read.empty()) {
-        t.problem("formats", "must name at least one format (" + exportFormatList() + ")");
+        t.problem("formats", "must name at least one format (" + model::exportFormatNames() + ")");
         good = false;
     }
     if (good) {

@@ -38,21 +38,6 @@ std::optional<InputDeviceKind> parseInputDeviceKind(std::string_view word) {
     return std::nullopt;
 }
 
-const std::vector<std::string_view>& exportFormats() {
-    // model::exportFormatName's names (config may not include io: a test keeps them equal).
-    static const std::vector<std::string_view> formats{"nii.gz", "nii", "nrrd", "seg.nrrd",
-                                                       "dcm",    "stl", "ply",  "tif"};
-    return formats;
-}
-
-std::string exportFormatList() {
-    std::string out;
-    for (const std::string_view f : exportFormats()) {
-        out += (out.empty() ? "" : ", ") + std::string(f);
-    }
-    return out;
-}
-
 // Keep equal to config/steerseg.toml, whose comments say why each value is what it is
 // (config_test compares the two field by field).
 KioskConfig defaultConfig() {

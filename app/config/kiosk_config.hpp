@@ -81,12 +81,6 @@ struct ExportConfig {
     std::vector<std::string> formats{"nii.gz"}; // one mask file per format
     bool operator==(const ExportConfig&) const = default;
 };
-// The export formats the kiosk may write, in the order the docs list them (model::ExportFormat's
-// names; config links no io, so the list is kept here). DICOM SEG ("dcm") joins once its
-// writer is wired.
-const std::vector<std::string_view>& exportFormats();
-// The same, comma separated, for messages.
-std::string exportFormatList();
 
 struct AuditConfig {
     std::filesystem::path path = "steerseg-export/audit.jsonl";
@@ -113,7 +107,7 @@ struct Preset {
     bool operator==(const Preset&) const = default;
 };
 
-// What a key, knob or button does: a bindable action of the workflow (workflow::bindableNames)
+// What a key, knob or button does: a bindable action of the workflow (model::bindableNames)
 // and how many of its steps one press or detent makes (-1 turns "nudge_selected" into a minus).
 // A button or pedal may also name what its release does (`release`, "" = nothing), so a
 // pedal can run while held: { action = "run", release = "pause" }.

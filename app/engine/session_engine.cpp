@@ -151,8 +151,8 @@ workflow::LoadPoll SessionEngine::pollLoad() {
     info_.maxValue = scan.stats().max;
     info_.units = session_->format() == "dicom" && scan.stats().min < -500.0 ? "HU" : "";
     // Which index axis each orientation pages along depends on how the scan is stored.
-    for (const workflow::SliceAxis axis : {workflow::SliceAxis::Axial, workflow::SliceAxis::Coronal,
-                                           workflow::SliceAxis::Sagittal}) {
+    for (const model::SliceAxis axis :
+         {model::SliceAxis::Axial, model::SliceAxis::Coronal, model::SliceAxis::Sagittal}) {
         info_.sliceCount[static_cast<int>(axis)] =
             scan.dims()[render::sliceAxisFor(scan.geometry(), viewKindOf(axis))];
     }

@@ -16,13 +16,13 @@ void applyWindow(render::ViewParams& p, const workflow::ViewState& view) {
 
 } // namespace
 
-render::ViewKind viewKindOf(workflow::SliceAxis axis) {
+render::ViewKind viewKindOf(model::SliceAxis axis) {
     switch (axis) {
-    case workflow::SliceAxis::Axial:
+    case model::SliceAxis::Axial:
         return render::ViewKind::Axial;
-    case workflow::SliceAxis::Coronal:
+    case model::SliceAxis::Coronal:
         return render::ViewKind::Coronal;
-    case workflow::SliceAxis::Sagittal:
+    case model::SliceAxis::Sagittal:
         return render::ViewKind::Sagittal;
     }
     return render::ViewKind::Axial;
@@ -51,7 +51,7 @@ render::ViewParams volumeViewParams(const session::Session& session, const workf
 }
 
 render::ViewParams sliceViewParams(const session::Session& session, const workflow::Status& status,
-                                   workflow::SliceAxis axis, bool speed, const glm::ivec2& size) {
+                                   model::SliceAxis axis, bool speed, const glm::ivec2& size) {
     render::ViewParams p = session.defaultView(viewKindOf(axis), size);
     const int index = status.view.slice[static_cast<int>(axis)];
     if (index >= 0) {

@@ -9,13 +9,13 @@
 
 namespace steerseg::engine {
 
-render::ViewKind viewKindOf(workflow::SliceAxis axis);
+render::ViewKind viewKindOf(model::SliceAxis axis);
 
 render::ViewParams volumeViewParams(const session::Session& session, const workflow::Status& status,
                                     const glm::ivec2& size);
 // `speed`: the second slice view, which shows the data term eps - |I - T| under the contour.
 // The caller picks the picture (ViewParams::target) and the region.
 render::ViewParams sliceViewParams(const session::Session& session, const workflow::Status& status,
-                                   workflow::SliceAxis axis, bool speed, const glm::ivec2& size);
+                                   model::SliceAxis axis, bool speed, const glm::ivec2& size);
 
 } // namespace steerseg::engine

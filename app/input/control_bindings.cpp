@@ -57,8 +57,8 @@ bool ControlBindings::repeating() const {
 }
 
 void ControlBindings::emit(const config::Binding& binding, double steps,
-                           std::vector<workflow::Action>& out) {
-    if (auto action = workflow::bindingAction(binding.action, steps)) {
+                           std::vector<model::Action>& out) {
+    if (auto action = model::bindingAction(binding.action, steps)) {
         out.push_back(std::move(*action));
     }
 }
@@ -94,7 +94,7 @@ double ControlBindings::accelerated(const ControlEvent& event) {
     return stepAcceleration(detents);
 }
 
-void ControlBindings::feed(const ControlEvent& event, std::vector<workflow::Action>& out) {
+void ControlBindings::feed(const ControlEvent& event, std::vector<model::Action>& out) {
     switch (event.kind) {
     case ControlEvent::Kind::Step: {
         const auto it = knobs_.find(event.control);
@@ -154,7 +154,7 @@ void ControlBindings::feed(const ControlEvent& event, std::vector<workflow::Acti
     }
 }
 
-void ControlBindings::tick(double now, std::vector<workflow::Action>& out) {
+void ControlBindings::tick(double now, std::vector<model::Action>& out) {
     for (auto& [name, ring] : rings_) {
         if (ring.suppressed) {
             continue;

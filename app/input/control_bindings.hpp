@@ -5,8 +5,8 @@
 // caller gives the clock (control events carry their time; tick() takes the frame's), so a
 // recording replays to the same actions. Clamping to a parameter's range is the workflow's.
 #include "config/kiosk_config.hpp"
+#include "model/action.hpp"
 #include "platform/input/control_event.hpp"
-#include "workflow/action.hpp"
 
 #include <deque>
 #include <map>
@@ -32,9 +32,9 @@ class ControlBindings {
 
     // The actions of one event, appended to `out`. Step and Position go through the knobs
     // table, Press and Release through the buttons table; an unbound control does nothing.
-    void feed(const platform::input::ControlEvent& event, std::vector<workflow::Action>& out);
+    void feed(const platform::input::ControlEvent& event, std::vector<model::Action>& out);
     // The repeats of the rings held off centre that are due by `now` (the events' clock).
-    void tick(double now, std::vector<workflow::Action>& out);
+    void tick(double now, std::vector<model::Action>& out);
 
     [[nodiscard]] bool bound(std::string_view control) const;
     // The binding's action name for a control ("" = unbound), for input-monitor's listing.
@@ -56,7 +56,7 @@ class ControlBindings {
     };
 
     void touched(std::string_view control, const std::string& action);
-    void emit(const config::Binding& binding, double steps, std::vector<workflow::Action>& out);
+    void emit(const config::Binding& binding, double steps, std::vector<model::Action>& out);
     double accelerated(const platform::input::ControlEvent& event);
 
     config::BindingTable knobs_;

@@ -73,11 +73,11 @@ std::vector<DeviceSpec> deviceSpecs(const std::vector<config::InputDeviceConfig>
     return specs;
 }
 
-Indicator indicatorFor(workflow::State state) {
+Indicator indicatorFor(model::State state) {
     switch (state) {
-    case workflow::State::Evolving:
+    case model::State::Evolving:
         return Indicator::Steady;
-    case workflow::State::Paused:
+    case model::State::Paused:
         return Indicator::Pulsing;
     default:
         return Indicator::Off;
@@ -147,12 +147,12 @@ void InputHub::takeProblems(Device& d, double now) {
     }
 }
 
-void InputHub::deliver(std::vector<ControlEvent>& events, std::vector<workflow::Action>& out) {
+void InputHub::deliver(std::vector<ControlEvent>& events, std::vector<model::Action>& out) {
     for (const ControlEvent& e : events) {
         const std::size_t before = out.size();
         bindings_.feed(e, out);
         if (observer_) {
-            observer_(e, std::vector<workflow::Action>(
+            observer_(e, std::vector<model::Action>(
                              out.begin() + static_cast<std::ptrdiff_t>(before), out.end()));
         }
     }
@@ -160,7 +160,7 @@ void InputHub::deliver(std::vector<ControlEvent>& events, std::vector<workflow::
 }
 
 void InputHub::unplugged(Device& d, double now, const std::string& why,
-                         std::vector<workflow::Action>& out) {
+                         std::vector<model::Action>& out) {
     if (d.decoder) {
         d.decoder->reset(now, events_);
         deliver(events_, out);
@@ -175,7 +175,7 @@ void InputHub::unplugged(Device& d, double now, const std::string& why,
     d.nextOpen = now + limits_.retrySeconds;
 }
 
-void InputHub::feed(Device& d, const RawRecord& record, std::vector<workflow::Action>& out) {
+void InputHub::feed(Device& d, const RawRecord& record, std::vector<model::Action>& out) {
     if (recordObserver_) {
         recordObserver_(record);
     }
@@ -218,7 +218,7 @@ void InputHub::feed(Device& d, const RawRecord& record, std::vector<workflow::Ac
     deliver(events_, out);
 }
 
-void InputHub::inject(const RawRecord& record, std::vector<workflow::Action>& out) {
+void InputHub::inject(const RawRecord& record, std::vector<model::Action>& out) {
     Device* d = find(record.device);
     if (d == nullptr) {
         if (record.time - unknownLogged_ >= limits_.logSeconds) {
@@ -286,7 +286,7 @@ void InputHub::openDue(double now) {
     }
 }
 
-void InputHub::readSource(Device& d, double now, std::vector<workflow::Action>& out) {
+void InputHub::readSource(Device& d, double now, std::vector<model::Action>& out) {
     records_.clear();
     std::string why;
     const RawSource::ReadStatus status =
@@ -311,7 +311,7 @@ void InputHub::readSource(Device& d, double now, std::vector<workflow::Action>& 
     }
 }
 
-void InputHub::poll(double now, std::vector<workflow::Action>& out) {
+void InputHub::poll(double now, std::vector<model::Action>& out) {
     if (live_) {
         if (backend_.devicesChanged && backend_.devicesChanged(now)) {
             for (auto& d : devices_) {

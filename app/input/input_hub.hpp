@@ -9,10 +9,10 @@
 // reset (held buttons released, rings at rest), shown disconnected and opened again later.
 #include "config/kiosk_config.hpp"
 #include "input/control_bindings.hpp"
+#include "model/action.hpp"
 #include "platform/input/decoder.hpp"
 #include "platform/input/device_spec.hpp"
 #include "platform/input/raw_source.hpp"
-#include "workflow/action.hpp"
 #include "workflow/status.hpp"
 
 #include <cstddef>
@@ -31,7 +31,7 @@ std::vector<platform::input::DeviceSpec>
 deviceSpecs(const std::vector<config::InputDeviceConfig>& devices);
 
 // The LED's meaning: steady while evolving, pulsing while paused, off otherwise.
-platform::input::Indicator indicatorFor(workflow::State state);
+platform::input::Indicator indicatorFor(model::State state);
 
 struct InputHubLimits {
     std::size_t recordsPerFrame = 256;   // per device: a flood cannot stall a frame
@@ -58,7 +58,7 @@ class InputHub {
     };
     // What one control event became, for input-monitor.
     using EventObserver = std::function<void(const platform::input::ControlEvent&,
-                                             const std::vector<workflow::Action>&)>;
+                                             const std::vector<model::Action>&)>;
 
     // `log` gets one line per problem ("input: shuttle: ..."). `live`: open the devices and
     // retry them; false for a replay, where only replayed records arrive.
@@ -71,9 +71,9 @@ class InputHub {
     // One frame at `now` (seconds, the clock records are stamped with): reads the sources,
     // opens missing ones when their retry is due, delivers replayed records that are due, lets
     // the decoders and the rings' repeats tick. Appends the actions.
-    void poll(double now, std::vector<workflow::Action>& out);
+    void poll(double now, std::vector<model::Action>& out);
     // One raw record from a replay or a script, on the hub's clock, through its device's decoder.
-    void inject(const platform::input::RawRecord& record, std::vector<workflow::Action>& out);
+    void inject(const platform::input::RawRecord& record, std::vector<model::Action>& out);
     // A whole recording, replayed in time: its first record at `now`, the others as far apart
     // as they were recorded (poll() delivers them).
     void replay(std::vector<platform::input::RawRecord> records, double now);
@@ -97,13 +97,11 @@ class InputHub {
 
     Device* find(const std::string& name);
     void openDue(double now);
-    void readSource(Device& d, double now, std::vector<workflow::Action>& out);
-    void feed(Device& d, const platform::input::RawRecord& record,
-              std::vector<workflow::Action>& out);
-    void unplugged(Device& d, double now, const std::string& why,
-                   std::vector<workflow::Action>& out);
+    void readSource(Device& d, double now, std::vector<model::Action>& out);
+    void feed(Device& d, const platform::input::RawRecord& record, std::vector<model::Action>& out);
+    void unplugged(Device& d, double now, const std::string& why, std::vector<model::Action>& out);
     void deliver(std::vector<platform::input::ControlEvent>& events,
-                 std::vector<workflow::Action>& out);
+                 std::vector<model::Action>& out);
     void problem(Device& d, double now, const std::string& line);
     void takeProblems(Device& d, double now);
 

@@ -17,7 +17,7 @@ std::string bindingKeyName(const platform::InputEvent& event) {
 
 KeyBindings::KeyBindings(config::BindingTable keys) : keys_(std::move(keys)) {}
 
-std::optional<workflow::Action> KeyBindings::actionFor(const platform::InputEvent& event) const {
+std::optional<model::Action> KeyBindings::actionFor(const platform::InputEvent& event) const {
     if (event.kind != platform::InputEvent::Kind::KeyDown || event.key.empty()) {
         return std::nullopt;
     }
@@ -29,7 +29,7 @@ std::optional<workflow::Action> KeyBindings::actionFor(const platform::InputEven
     if (it == keys_.end()) {
         return std::nullopt;
     }
-    return workflow::bindingAction(it->second.action, it->second.steps);
+    return model::bindingAction(it->second.action, it->second.steps);
 }
 
 } // namespace steerseg::input

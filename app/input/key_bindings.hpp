@@ -3,8 +3,8 @@
 // Keys -> the workflow's actions, through the config's [bindings.keys] table. The devices
 // issue adds knobs, buttons and pedals beside it; the workflow sees the same actions.
 #include "config/kiosk_config.hpp"
+#include "model/action.hpp"
 #include "platform/input_event.hpp"
-#include "workflow/action.hpp"
 
 #include <optional>
 #include <string>
@@ -18,8 +18,7 @@ class KeyBindings {
   public:
     explicit KeyBindings(config::BindingTable keys);
     // The action a key-down event is bound to; nothing for other events or unbound keys.
-    [[nodiscard]] std::optional<workflow::Action>
-    actionFor(const platform::InputEvent& event) const;
+    [[nodiscard]] std::optional<model::Action> actionFor(const platform::InputEvent& event) const;
 
   private:
     config::BindingTable keys_;

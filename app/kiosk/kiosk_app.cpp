@@ -74,7 +74,7 @@ class Kiosk {
           start_(Clock::now()) {
         screenState_.layout = layout();
         if (!options.scan.empty() && !player_ && !autosave_.resuming()) {
-            actions_.emplace_back(workflow::LoadScan{options.scan});
+            actions_.emplace_back(model::LoadScan{options.scan});
         }
     }
 
@@ -205,10 +205,10 @@ class Kiosk {
     }
 
     void applyActions() {
-        for (const workflow::Action& a : actions_) {
+        for (const model::Action& a : actions_) {
             const workflow::Workflow::Outcome o = flow_.handle(a);
             if (!o.accepted) {
-                err_ << "steerseg kiosk: " << workflow::actionName(a) << " refused: " << o.reason
+                err_ << "steerseg kiosk: " << model::actionName(a) << " refused: " << o.reason
                      << '\n';
             }
         }
@@ -228,7 +228,7 @@ class Kiosk {
     // evolving, half when not), then the frame's iterations: both are the solver's time.
     void stepSolver() {
         solverSeconds_ = 0.0;
-        evolving_ = flow_.state() == workflow::State::Evolving;
+        evolving_ = flow_.state() == model::State::Evolving;
         const Clock::time_point fill = Clock::now();
         if (engine_.fillSpeedAhead(frameBudget_ * (evolving_ ? 0.1 : 0.5))) {
             solverSeconds_ = secondsSince(fill);
@@ -380,7 +380,7 @@ class Kiosk {
     double frameBudget_;
     Clock::time_point start_;
 
-    std::vector<workflow::Action> actions_;
+    std::vector<model::Action> actions_;
     std::vector<platform::InputEvent> events_;
     std::vector<std::filesystem::path> pendingFrames_;
     ui::ScreenState screenState_;

@@ -1,9 +1,9 @@
 #include "kiosk/kiosk_startup.hpp"
 
+#include "model/action.hpp"
 #include "platform/egl/offscreen_display.hpp"
 #include "platform/kms/kms_display.hpp"
 #include "platform/window/window_display.hpp"
-#include "workflow/action.hpp"
 
 #include <atomic>
 #include <csignal>
@@ -43,7 +43,7 @@ void StopSignals::requestStop() {
 
 config::LoadedConfig readConfig(const KioskOptions& options, std::ostream& err) {
     const config::BindingCheck check = [](std::string_view action) {
-        return workflow::bindingAction(action, 1.0).has_value();
+        return model::bindingAction(action, 1.0).has_value();
     };
     config::LoadedConfig loaded =
         config::loadConfig(config::kioskConfigSources(options.config), check);

@@ -1,11 +1,11 @@
 #include "kiosk/service_status.hpp"
 
-#include "workflow/action.hpp"
+#include "model/action.hpp"
 
 namespace steerseg::kiosk {
 
 void ServiceStatus::framePresented(const workflow::Status& status) {
-    std::string line(workflow::stateName(status.state));
+    std::string line(model::stateName(status.state));
     if (!status.message.empty()) {
         line += ": " + status.message;
     }

@@ -16,9 +16,9 @@ using SteadyClock = std::chrono::steady_clock;
 
 // Moments a session can be picked up from; an autosave of a finished one (exported) or of one
 // that never had a scan offers nothing.
-bool resumable(workflow::State state) {
-    return state != workflow::State::NoScan && state != workflow::State::Loading &&
-           state != workflow::State::Done;
+bool resumable(model::State state) {
+    return state != model::State::NoScan && state != model::State::Loading &&
+           state != model::State::Done;
 }
 
 // "2026-11-23 13:01:40 UTC": for the operator and the log.
@@ -76,7 +76,7 @@ std::string SessionAutosave::offerText() const {
         return {};
     }
     const autosave::AutosaveSnapshot& s = offer_->snapshot;
-    return engine::scanShortName(s.scan.path) + ", " + std::string(workflow::stateName(s.state)) +
+    return engine::scanShortName(s.scan.path) + ", " + std::string(model::stateName(s.state)) +
            ", " + std::to_string(s.seeds) + (s.seeds == 1 ? " seed" : " seeds") + ", saved " +
            utcOf(s.savedAtMs);
 }
@@ -94,7 +94,7 @@ void SessionAutosave::answer(bool resume) {
 }
 
 void SessionAutosave::frame(workflow::Workflow& flow, engine::SessionEngine& engine,
-                            std::vector<workflow::Action>& actions) {
+                            std::vector<model::Action>& actions) {
     reportWriteError();
     if (resuming_) {
         if (!loadQueued_) {
@@ -102,7 +102,7 @@ void SessionAutosave::frame(workflow::Workflow& flow, engine::SessionEngine& eng
                 err_ << "steerseg kiosk: " << line << '\n';
             }
             scansAtResume_ = engine.scansAttached();
-            actions.emplace_back(workflow::LoadScan{offer_->snapshot.scan.path});
+            actions.emplace_back(model::LoadScan{offer_->snapshot.scan.path});
             loadQueued_ = true;
             return;
         }
@@ -110,8 +110,8 @@ void SessionAutosave::frame(workflow::Workflow& flow, engine::SessionEngine& eng
         return;
     }
     const workflow::Status& status = flow.status();
-    if (offering() && status.state != workflow::State::NoScan &&
-        status.state != workflow::State::Loading && status.state != workflow::State::Inspect) {
+    if (offering() && status.state != model::State::NoScan &&
+        status.state != model::State::Loading && status.state != model::State::Inspect) {
         // The operator went on with new work without answering: that is a discard.
         answer(false);
     }
@@ -121,12 +121,12 @@ void SessionAutosave::frame(workflow::Workflow& flow, engine::SessionEngine& eng
 }
 
 void SessionAutosave::finishResume(workflow::Workflow& flow, engine::SessionEngine& engine) {
-    if (flow.state() == workflow::State::Loading) {
+    if (flow.state() == model::State::Loading) {
         return;
     }
     const autosave::AutosaveSnapshot& s = offer_->snapshot;
     std::string failure;
-    if (engine.scansAttached() == scansAtResume_ || flow.state() != workflow::State::Inspect) {
+    if (engine.scansAttached() == scansAtResume_ || flow.state() != model::State::Inspect) {
         failure = flow.status().message.empty() ? "its scan did not load" : flow.status().message;
     } else if (engine.scanInfo().dims != s.dims) {
         failure = "the scan's grid differs from the autosave's";
@@ -145,8 +145,8 @@ void SessionAutosave::finishResume(workflow::Workflow& flow, engine::SessionEngi
     }
     if (failure.empty()) {
         err_ << "steerseg kiosk: autosave: resumed " << offer_->file.string() << " (saved "
-             << utcOf(s.savedAtMs) << ", " << workflow::stateName(s.state) << ") as "
-             << workflow::stateName(flow.state()) << '\n';
+             << utcOf(s.savedAtMs) << ", " << model::stateName(s.state) << ") as "
+             << model::stateName(flow.state()) << '\n';
     } else {
         err_ << "steerseg kiosk: autosave: resume of " << offer_->file.string()
              << " failed: " << failure << '\n';
@@ -160,7 +160,7 @@ void SessionAutosave::finishResume(workflow::Workflow& flow, engine::SessionEngi
 
 bool SessionAutosave::due(const workflow::Status& status,
                           const engine::SessionEngine& engine) const {
-    using workflow::State;
+    using model::State;
     const State state = status.state;
     if (state == State::NoScan || state == State::Loading || state == State::Exporting) {
         return false;
@@ -192,13 +192,11 @@ void SessionAutosave::save(const workflow::Status& status, engine::SessionEngine
                       std::chrono::system_clock::now().time_since_epoch())
                       .count();
     s.state = status.state;
-    s.params.values[workflow::indexOf(workflow::Param::Target)] =
-        static_cast<double>(status.params.T);
-    s.params.values[workflow::indexOf(workflow::Param::Epsilon)] =
-        static_cast<double>(status.params.eps);
-    s.params.values[workflow::indexOf(workflow::Param::Alpha)] =
+    s.params.values[workflow::indexOf(model::Param::T)] = static_cast<double>(status.params.T);
+    s.params.values[workflow::indexOf(model::Param::Eps)] = static_cast<double>(status.params.eps);
+    s.params.values[workflow::indexOf(model::Param::Alpha)] =
         static_cast<double>(status.params.alpha);
-    s.params.values[workflow::indexOf(workflow::Param::Radius)] = status.radius;
+    s.params.values[workflow::indexOf(model::Param::Radius)] = status.radius;
     s.params.preset = status.preset;
     s.params.speed = {status.speed, status.insideExamples, status.outsideExamples};
     // While classify waits, the speed that runs is the one it falls back to; once it runs, what
@@ -257,7 +255,7 @@ void SessionAutosave::finish(const workflow::Workflow& flow, engine::SessionEngi
         if (due(status, engine)) {
             save(status, engine);
         }
-        const bool unexported = status.hasLevelSet && status.state != workflow::State::Done;
+        const bool unexported = status.hasLevelSet && status.state != model::State::Done;
         if (!unexported) {
             writer_->markClean();
         }

@@ -49,7 +49,7 @@ class SessionAutosave {
 
     // Each frame, after the solver: finishes a resume whose scan is in, then saves if due.
     void frame(workflow::Workflow& flow, engine::SessionEngine& engine,
-               std::vector<workflow::Action>& actions);
+               std::vector<model::Action>& actions);
     // On a clean exit: the last state written; the manifest says the session ended cleanly
     // unless unexported work is left (then the next start offers it).
     void finish(const workflow::Workflow& flow, engine::SessionEngine& engine);
@@ -76,7 +76,7 @@ class SessionAutosave {
     std::uint64_t referenceScans_ = 0;
 
     // What the last snapshot saw, to tell when the next one is due.
-    std::optional<workflow::State> savedState_;
+    std::optional<model::State> savedState_;
     std::uint64_t savedVersion_ = 0;
     model::LevelSetParams savedParams_;
     double savedRadius_ = 0.0;

@@ -32,7 +32,7 @@ std::string volumeSignature(const workflow::Status& s, std::uint64_t version,
 }
 
 std::string sliceSignature(const workflow::Status& s, std::uint64_t version, const glm::ivec2& size,
-                           workflow::SliceAxis axis, std::optional<std::uint64_t> speedVersion) {
+                           model::SliceAxis axis, std::optional<std::uint64_t> speedVersion) {
     std::ostringstream o;
     o << size.x << 'x' << size.y << ' ' << static_cast<int>(axis) << ' '
       << s.view.slice[static_cast<int>(axis)] << ' ' << s.view.windowLevel << ' '
@@ -121,7 +121,7 @@ ui::ScreenState ViewPainter::paint(session::Session& session, const workflow::St
                                    const ui::Layout& layout, double seconds,
                                    ScreenCompositor& screen) {
     const std::array<ui::Rect, 3> rects{layout.view3d, layout.slice1, layout.slice2};
-    const std::array<workflow::SliceAxis, 2> axes{status.view.first, status.view.second};
+    const std::array<model::SliceAxis, 2> axes{status.view.first, status.view.second};
     for (std::size_t n = 0; n < views_.size(); ++n) {
         const glm::ivec2 size = rectSize(rects[n]);
         if (size.x <= 0 || size.y <= 0) {
@@ -132,7 +132,7 @@ ui::ScreenState ViewPainter::paint(session::Session& session, const workflow::St
                       volumeSignature(status, levelSetVersion, size), seconds * kShare[n]);
         } else {
             const bool speed = n == kSecond;
-            const workflow::SliceAxis axis = axes[n - 1];
+            const model::SliceAxis axis = axes[n - 1];
             paintView(views_[n], session,
                       engine::sliceViewParams(session, status, axis, speed, size),
                       sliceSignature(status, levelSetVersion, size, axis,

@@ -29,8 +29,8 @@ struct ClipPlane {
 
 // The data term of the segmentation speed, D(I) = eps - |I - T| (real units).
 struct SpeedParams {
-    double target = 0.0;  // T
-    double epsilon = 1.0; // eps
+    double T = 0.0;
+    double eps = 1.0;
 };
 
 // Everything one frame depends on. Plain data so the UI can keep one per view.

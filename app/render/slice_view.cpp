@@ -32,12 +32,12 @@ SliceFrame SliceView::draw(const RenderInputs& in, const ViewParams& params) {
         speed::bindSpeedTextures(in.speed, in.scan.exact(), VIEW_SPEED_INTENSITY_UNIT,
                                  VIEW_SPEED_FACTOR_UNIT);
         glUniform1i(uniform(program, "speedKind"), static_cast<int>(in.speed.kind));
-        glUniform1f(uniform(program, "targetT"), static_cast<float>(params.speed.target));
-        glUniform1f(uniform(program, "halfWidth"), static_cast<float>(params.speed.epsilon));
+        glUniform1f(uniform(program, "T"), static_cast<float>(params.speed.T));
+        glUniform1f(uniform(program, "eps"), static_cast<float>(params.speed.eps));
         // Full colour at |D| = eps for the speeds in the scan's units, at 1 for classify's.
         const bool unitless = in.speed.kind == model::SpeedKind::Classify;
         glUniform1f(uniform(program, "speedScale"),
-                    unitless ? 1.0F : static_cast<float>(std::max(params.speed.epsilon, 1e-6)));
+                    unitless ? 1.0F : static_cast<float>(std::max(params.speed.eps, 1e-6)));
     }
     glUniform1i(uniform(program, "showContour"), params.contour ? 1 : 0);
     if (params.labels) {

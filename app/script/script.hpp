@@ -4,9 +4,9 @@
 // ScriptPlayer replays frame by frame. Two levels share the format: device-level events
 // (touch, keys, wheel) that go through the kiosk's input path as a finger or a keyboard would,
 // and named operator actions that go straight to the workflow's action layer. GL-free.
+#include "model/action.hpp"
 #include "platform/input/raw_record.hpp"
 #include "platform/input_event.hpp"
-#include "workflow/action.hpp"
 
 #include <filesystem>
 #include <optional>
@@ -41,7 +41,7 @@ struct InputStep {
 
 // Operator level: one workflow action. LoadScan and Export paths may hold variables ($SCAN).
 struct ActionStep {
-    workflow::Action action;
+    model::Action action;
 };
 
 // A condition on the workflow's Status: the step that waits for it, or the check that fails.
@@ -57,7 +57,7 @@ struct Condition {
         ExportedHas, // status.exportedPath contains `text`
         Speed,       // status.speedInForce == speed: the speed the engine runs
     } kind = State;
-    workflow::State state = workflow::State::NoScan;
+    model::State state = model::State::NoScan;
     model::SpeedKind speed = model::SpeedKind::Threshold;
     std::string field; // Compare: "volume_ml", "iterations", "T", ... (statusFields())
     enum class Op { Less, LessEqual, Greater, GreaterEqual, Equal, NotEqual } op = Op::Equal;
@@ -126,8 +126,8 @@ Script parseScript(std::string_view text, const std::string& name);
 Script loadScript(const std::filesystem::path& path);
 
 // The script's names for the workflow's states ("no_scan", "inspect", "review", ...).
-std::string_view scriptStateName(workflow::State state);
-std::optional<workflow::State> scriptStateFromName(std::string_view name);
+std::string_view scriptStateName(model::State state);
+std::optional<model::State> scriptStateFromName(std::string_view name);
 
 // The numeric Status fields `expect FIELD OP VALUE` can name, and their value in a status.
 const std::vector<std::string_view>& statusFields();

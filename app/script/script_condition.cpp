@@ -113,7 +113,7 @@ std::string_view opText(Condition::Op op) {
 }
 
 bool holds(const Condition& condition, const workflow::Status& status) {
-    using workflow::State;
+    using model::State;
     switch (condition.kind) {
     case Condition::State:
         return status.state == condition.state;

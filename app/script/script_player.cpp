@@ -95,9 +95,9 @@ ScriptPlayer::ScriptPlayer(Script script, Variables variables)
             [&](auto& kind) {
                 using K = std::decay_t<decltype(kind)>;
                 if constexpr (std::is_same_v<K, ActionStep>) {
-                    if (auto* load = std::get_if<workflow::LoadScan>(&kind.action)) {
+                    if (auto* load = std::get_if<model::LoadScan>(&kind.action)) {
                         fill(load->path);
-                    } else if (auto* out = std::get_if<workflow::Export>(&kind.action)) {
+                    } else if (auto* out = std::get_if<model::Export>(&kind.action)) {
                         fill(out->path);
                     }
                 } else if constexpr (std::is_same_v<K, FrameStep>) {
@@ -192,10 +192,10 @@ void ScriptPlayer::poll(double now, const workflow::Status& status, ScriptSink& 
                 emitted = true;
                 complete(scheduled);
             } else if (const auto* act = std::get_if<ActionStep>(&step.kind)) {
-                workflow::Action action = act->action;
-                if (auto* out = std::get_if<workflow::Export>(&action)) {
+                model::Action action = act->action;
+                if (auto* out = std::get_if<model::Export>(&action)) {
                     out->path = runtimePath(out->path, status, true);
-                } else if (auto* load = std::get_if<workflow::LoadScan>(&action)) {
+                } else if (auto* load = std::get_if<model::LoadScan>(&action)) {
                     load->path = runtimePath(load->path, status, false);
                 }
                 sink.action(action);
@@ -264,12 +264,12 @@ bool ScriptPlayer::pollWait(const Step& step, const WaitStep& wait, double now,
         complete(now);
         return true;
     }
-    const bool waitsForError = c.kind == Condition::State && c.state == workflow::State::Error;
-    if (status.state == workflow::State::Error && !waitsForError) {
+    const bool waitsForError = c.kind == Condition::State && c.state == model::State::Error;
+    if (status.state == model::State::Error && !waitsForError) {
         fail(step, "the workflow is in error: " + status.message);
         return true;
     }
-    if (c.kind == Condition::Loaded && status.state == workflow::State::NoScan &&
+    if (c.kind == Condition::Loaded && status.state == model::State::NoScan &&
         !status.message.empty()) {
         fail(step, "the scan did not load: " + status.message);
         return true;
@@ -277,7 +277,7 @@ bool ScriptPlayer::pollWait(const Step& step, const WaitStep& wait, double now,
     // The solver stopping (convergence, a pause) before the count is a failure now, not after
     // the timeout; a status from before the run began does not count.
     if (c.kind == Condition::Iterations) {
-        if (status.state == workflow::State::Evolving) {
+        if (status.state == model::State::Evolving) {
             waitSawEvolving_ = true;
         } else if (waitSawEvolving_) {
             fail(step, "the solver stopped (" + observed(c, status) + ") after " +

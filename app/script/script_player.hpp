@@ -3,9 +3,9 @@
 // Replays a Script frame by frame: the kiosk's loop calls poll() once a frame with the script
 // clock and the workflow's Status; the player hands the due steps to a ScriptSink and holds the
 // rest behind waits and checks. GL-free: the sink is the kiosk (or a test).
+#include "model/action.hpp"
 #include "platform/input_event.hpp"
 #include "script/script.hpp"
-#include "workflow/action.hpp"
 #include "workflow/status.hpp"
 
 #include <cstddef>
@@ -24,7 +24,7 @@ class ScriptSink {
     ScriptSink(const ScriptSink&) = delete;
     ScriptSink& operator=(const ScriptSink&) = delete;
 
-    virtual void action(const workflow::Action& action) = 0;
+    virtual void action(const model::Action& action) = 0;
     // Device level: into the input path as the platform would deliver it (time = script clock).
     virtual void input(const platform::InputEvent& event) = 0;
     // The full screen as drawn at the end of this frame, to a PNG.

@@ -6,7 +6,7 @@ namespace steerseg::script::detail {
 
 namespace {
 
-using workflow::Action;
+using model::Action;
 
 StepKind actionStep(Action action) {
     return ActionStep{std::move(action)};
@@ -26,11 +26,11 @@ StepKind load(Words& w) {
     }
     detail::checkVariables(path);
     w.finish("load PATH");
-    return actionStep(workflow::LoadScan{path});
+    return actionStep(model::LoadScan{path});
 }
 
 StepKind probe(Words& w) {
-    workflow::Probe p;
+    model::Probe p;
     p.voxel = voxelWords(w);
     if (!w.empty()) {
         p.radiusMm = w.number("the probe radius (mm)", 0.1, 1000.0);
@@ -57,7 +57,7 @@ StepKind eraseMode(Words& w) {
     if (on != "on" && on != "off") {
         throw LineError("erase_mode '" + on + "': give on or off");
     }
-    return actionStep(workflow::SetEraseMode{on == "on"});
+    return actionStep(model::SetEraseMode{on == "on"});
 }
 
 StepKind speedVerb(Words& w) {
@@ -67,12 +67,12 @@ StepKind speedVerb(Words& w) {
     if (!kind) {
         throw LineError("speed '" + name + "': give threshold, edge or classify");
     }
-    return actionStep(workflow::SetSpeed{*kind});
+    return actionStep(model::SetSpeed{*kind});
 }
 
 // An outside example for the classify speed, sized as a probe.
 StepKind outside(Words& w) {
-    workflow::MarkOutside m;
+    model::MarkOutside m;
     m.voxel = voxelWords(w);
     if (!w.empty()) {
         m.radiusMm = w.number("the example's radius (mm)", 0.1, 1000.0);
@@ -87,7 +87,7 @@ StepKind outsideMode(Words& w) {
     if (on != "on" && on != "off") {
         throw LineError("outside_mode '" + on + "': give on or off");
     }
-    return actionStep(workflow::SetOutsideMode{on == "on"});
+    return actionStep(model::SetOutsideMode{on == "on"});
 }
 
 StepKind autosave(Words& w) {
@@ -100,28 +100,28 @@ StepKind autosave(Words& w) {
 }
 
 StepKind set(Words& w) {
-    const workflow::Param param = paramWord(w);
+    const model::Param param = paramWord(w);
     const double value = w.number("the value", -kMaxValue, kMaxValue);
     w.finish("set T|eps|alpha|radius VALUE");
-    return actionStep(workflow::SetParam{param, value});
+    return actionStep(model::SetParam{param, value});
 }
 
 StepKind nudge(Words& w) {
     if (w.accept("selected")) {
         const double steps = w.number("the steps", -10000.0, 10000.0);
         w.finish("nudge selected STEPS");
-        return actionStep(workflow::NudgeSelected{steps});
+        return actionStep(model::NudgeSelected{steps});
     }
-    const workflow::Param param = paramWord(w);
+    const model::Param param = paramWord(w);
     const double steps = w.number("the steps", -10000.0, 10000.0);
     w.finish("nudge T|eps|alpha|radius|selected STEPS");
-    return actionStep(workflow::NudgeParam{param, steps});
+    return actionStep(model::NudgeParam{param, steps});
 }
 
 StepKind select(Words& w) {
-    const workflow::Param param = paramWord(w);
+    const model::Param param = paramWord(w);
     w.finish("select T|eps|alpha|radius");
-    return actionStep(workflow::SelectParam{param});
+    return actionStep(model::SelectParam{param});
 }
 
 StepKind cycle(Words& w) {
@@ -130,7 +130,7 @@ StepKind cycle(Words& w) {
         delta = static_cast<int>(w.integer("the step", -10, 10));
     }
     w.finish("cycle [STEP]");
-    return actionStep(workflow::CycleParam{delta});
+    return actionStep(model::CycleParam{delta});
 }
 
 StepKind preset(Words& w) {
@@ -139,48 +139,48 @@ StepKind preset(Words& w) {
     if (name.empty()) {
         throw LineError("the preset name is empty");
     }
-    return actionStep(workflow::ApplyPreset{name});
+    return actionStep(model::ApplyPreset{name});
 }
 
 StepKind window(Words& w) {
     const double level = w.number("the level", -kMaxValue, kMaxValue);
     const double width = w.number("the width", 1e-6, kMaxValue);
     w.finish("window LEVEL WIDTH");
-    return actionStep(workflow::SetWindow{level, width});
+    return actionStep(model::SetWindow{level, width});
 }
 
 StepKind rotate(Words& w) {
     const double yaw = w.number("the yaw (degrees)", -3600.0, 3600.0);
     const double pitch = w.number("the pitch (degrees)", -3600.0, 3600.0);
     w.finish("rotate YAW PITCH");
-    return actionStep(workflow::RotateView{yaw, pitch});
+    return actionStep(model::RotateView{yaw, pitch});
 }
 
 StepKind zoom(Words& w) {
     const double factor = w.number("the zoom factor", 1e-3, 1e3);
     w.finish("zoom FACTOR");
-    return actionStep(workflow::ZoomView{factor});
+    return actionStep(model::ZoomView{factor});
 }
 
 StepKind page(Words& w) {
-    const workflow::SliceAxis axis = axisWord(w);
+    const model::SliceAxis axis = axisWord(w);
     const int delta = static_cast<int>(w.integer("the slices", -100000, 100000));
     w.finish("page AXIS SLICES");
-    return actionStep(workflow::PageSlice{axis, delta});
+    return actionStep(model::PageSlice{axis, delta});
 }
 
 StepKind slice(Words& w) {
-    const workflow::SliceAxis axis = axisWord(w);
+    const model::SliceAxis axis = axisWord(w);
     const int index = static_cast<int>(w.integer("the slice index", -1, 100000));
     w.finish("slice AXIS INDEX");
-    return actionStep(workflow::SetSlice{axis, index});
+    return actionStep(model::SetSlice{axis, index});
 }
 
 StepKind show(Words& w) {
-    const workflow::SliceAxis first = axisWord(w);
-    const workflow::SliceAxis second = axisWord(w);
+    const model::SliceAxis first = axisWord(w);
+    const model::SliceAxis second = axisWord(w);
     w.finish("show AXIS AXIS");
-    return actionStep(workflow::ShowSlices{first, second});
+    return actionStep(model::ShowSlices{first, second});
 }
 
 StepKind exportMask(Words& w) {
@@ -189,7 +189,7 @@ StepKind exportMask(Words& w) {
         path = pathWord(w, "the export path");
     }
     w.finish("export [PATH]");
-    return actionStep(workflow::Export{path});
+    return actionStep(model::Export{path});
 }
 
 StepKind frame(Words& w) {
@@ -207,31 +207,31 @@ void addOperatorVerbs(VerbTable& table) {
     table.insert({
         {"load", load},
         {"probe", probe},
-        {"seed", sphere<workflow::AddSeed>("seed I J K [RADIUS_VOXELS]")},
-        {"erase", sphere<workflow::Erase>("erase I J K [RADIUS_VOXELS]")},
+        {"seed", sphere<model::AddSeed>("seed I J K [RADIUS_VOXELS]")},
+        {"erase", sphere<model::Erase>("erase I J K [RADIUS_VOXELS]")},
         {"erase_mode", eraseMode},
         {"speed", speedVerb},
         {"outside", outside},
         {"outside_mode", outsideMode},
-        {"clear_examples", plain<workflow::ClearExamples>("clear_examples")},
+        {"clear_examples", plain<model::ClearExamples>("clear_examples")},
         {"set", set},
         {"nudge", nudge},
         {"select", select},
         {"cycle", cycle},
         {"preset", preset},
         {"window", window},
-        {"run", plain<workflow::Run>("run")},
-        {"pause", plain<workflow::Pause>("pause")},
-        {"toggle", plain<workflow::ToggleRun>("toggle")},
-        {"finish", plain<workflow::Finish>("finish")},
-        {"resume", plain<workflow::Resume>("resume")},
-        {"undo", plain<workflow::Undo>("undo")},
-        {"redo", plain<workflow::Redo>("redo")},
-        {"restart", plain<workflow::Restart>("restart")},
-        {"proceed", plain<workflow::Proceed>("proceed")},
-        {"back", plain<workflow::Back>("back")},
-        {"dismiss", plain<workflow::Dismiss>("dismiss")},
-        {"quit", plain<workflow::Quit>("quit")},
+        {"run", plain<model::Run>("run")},
+        {"pause", plain<model::Pause>("pause")},
+        {"toggle", plain<model::ToggleRun>("toggle")},
+        {"finish", plain<model::Finish>("finish")},
+        {"resume", plain<model::Resume>("resume")},
+        {"undo", plain<model::Undo>("undo")},
+        {"redo", plain<model::Redo>("redo")},
+        {"restart", plain<model::Restart>("restart")},
+        {"proceed", plain<model::Proceed>("proceed")},
+        {"back", plain<model::Back>("back")},
+        {"dismiss", plain<model::Dismiss>("dismiss")},
+        {"quit", plain<model::Quit>("quit")},
         {"rotate", rotate},
         {"zoom", zoom},
         {"page", page},

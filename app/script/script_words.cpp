@@ -15,15 +15,15 @@ constexpr std::array<std::string_view, 10> kStateNames = {
 
 } // namespace
 
-std::string_view scriptStateName(workflow::State state) {
+std::string_view scriptStateName(model::State state) {
     const auto n = static_cast<std::size_t>(state);
     return n < kStateNames.size() ? kStateNames[n] : std::string_view("unknown");
 }
 
-std::optional<workflow::State> scriptStateFromName(std::string_view name) {
+std::optional<model::State> scriptStateFromName(std::string_view name) {
     for (std::size_t n = 0; n < kStateNames.size(); ++n) {
         if (kStateNames[n] == name) {
-            return static_cast<workflow::State>(n);
+            return static_cast<model::State>(n);
         }
     }
     return std::nullopt;
@@ -51,7 +51,7 @@ bool isKeyName(std::string_view key) {
     return std::find(kNamed.begin(), kNamed.end(), key) != kNamed.end();
 }
 
-workflow::State stateWord(Words& words) {
+model::State stateWord(Words& words) {
     const std::string name = words.text("a state");
     if (const auto state = scriptStateFromName(name)) {
         return *state;
@@ -63,13 +63,13 @@ workflow::State stateWord(Words& words) {
     throw LineError("unknown state '" + name + "' (states: " + known + ")");
 }
 
-workflow::Param paramWord(Words& words) {
+model::Param paramWord(Words& words) {
     const std::string name = words.text("a parameter (T, eps, alpha, radius)");
-    static const std::map<std::string, workflow::Param, std::less<>> kParams = {
-        {"T", workflow::Param::Target},
-        {"eps", workflow::Param::Epsilon},
-        {"alpha", workflow::Param::Alpha},
-        {"radius", workflow::Param::Radius}};
+    static const std::map<std::string, model::Param, std::less<>> kParams = {
+        {"T", model::Param::T},
+        {"eps", model::Param::Eps},
+        {"alpha", model::Param::Alpha},
+        {"radius", model::Param::Radius}};
     const auto it = kParams.find(name);
     if (it == kParams.end()) {
         throw LineError("unknown parameter '" + name + "' (T, eps, alpha, radius)");
@@ -77,16 +77,16 @@ workflow::Param paramWord(Words& words) {
     return it->second;
 }
 
-workflow::SliceAxis axisWord(Words& words) {
+model::SliceAxis axisWord(Words& words) {
     const std::string name = words.text("a slice axis (axial, coronal, sagittal)");
     if (name == "axial") {
-        return workflow::SliceAxis::Axial;
+        return model::SliceAxis::Axial;
     }
     if (name == "coronal") {
-        return workflow::SliceAxis::Coronal;
+        return model::SliceAxis::Coronal;
     }
     if (name == "sagittal") {
-        return workflow::SliceAxis::Sagittal;
+        return model::SliceAxis::Sagittal;
     }
     throw LineError("unknown slice axis '" + name + "' (axial, coronal, sagittal)");
 }

@@ -17,9 +17,9 @@ inline constexpr double kMaxValue = 1e9;      // parameters, window, field bound
 
 // platform/input_event.hpp's key names.
 bool isKeyName(std::string_view key);
-workflow::State stateWord(Words& words);
-workflow::Param paramWord(Words& words);
-workflow::SliceAxis axisWord(Words& words);
+model::State stateWord(Words& words);
+model::Param paramWord(Words& words);
+model::SliceAxis axisWord(Words& words);
 Condition::Op opWord(Words& words);
 // A non-empty path whose $VARIABLES are known.
 std::string pathWord(Words& words, const char* what);

@@ -18,8 +18,8 @@ ProbeStats probe(const Volume& volume, const glm::dvec3& index, double radiusMm)
 
 // The speed function's parameters a probe suggests: T = mean, eps = stddev * factor.
 struct SuggestedSpeed {
-    double target = 0.0;
-    double epsilon = 0.0;
+    double T = 0.0;
+    double eps = 0.0;
 };
 SuggestedSpeed suggestSpeed(const ProbeStats& stats, double factor = 2.0);
 

@@ -55,8 +55,8 @@ SpeedProbe probeSpeed(const Volume& volume, const model::Sphere& sphere) {
     p.stddev = std::sqrt(std::max(0.0, sumSq / static_cast<double>(n) - p.mean * p.mean));
     p.noise = std::sqrt(diffSq / static_cast<double>(pairs) / 2.0);
     const SuggestedSpeed s = suggestSpeed({p.mean, p.stddev, n}, kEpsFactor);
-    p.target = s.target;
-    p.epsilon = std::max(s.epsilon, kEpsFloor);
+    p.T = s.T;
+    p.eps = std::max(s.eps, kEpsFloor);
     // A noiseless region (a phantom) would give K = kappa = 0, which no speed accepts.
     const double noise = std::max(p.noise, kNoiseFloor);
     p.conductance = kConductanceFactor * noise;

@@ -21,8 +21,8 @@ struct SpeedProbe {
     // probe (session::suggestSpeed, the shipped config's eps floor);
     // conductance = kConductanceFactor * noise and kappa = kKappaFactor * noise, with
     // noise at least kNoiseFloor.
-    double target = 0.0;
-    double epsilon = 0.0;
+    double T = 0.0;
+    double eps = 0.0;
     double conductance = 0.0;
     double kappa = 0.0;
 };

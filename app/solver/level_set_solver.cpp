@@ -96,8 +96,8 @@ void LevelSetSolver::setParams(const model::LevelSetParams& params) {
     haveParams_ = true;
     for (GLuint p : {programs_->measureSpeed.id(), programs_->updatePhi.id()}) {
         setUniform(p, "alpha", params.alpha);
-        setUniform(p, "targetT", params.T);
-        setUniform(p, "halfWidth", params.eps);
+        setUniform(p, "T", params.T);
+        setUniform(p, "eps", params.eps);
     }
     setUniform(programs_->chooseTimeStep.id(), "courant", rule.courant);
     setUniform(programs_->chooseTimeStep.id(), "fixedRate", rule.fixedRate);

@@ -21,68 +21,68 @@ nlohmann::json vec(const glm::dvec3& v) {
     return nlohmann::json::array({v.x, v.y, v.z});
 }
 
-nlohmann::json values(const LoadScan& a) {
+nlohmann::json values(const model::LoadScan& a) {
     return {{"path", a.path}};
 }
-nlohmann::json values(const Probe& a) {
+nlohmann::json values(const model::Probe& a) {
     return {{"voxel", vec(a.voxel)}, {"radius_mm", a.radiusMm}};
 }
-nlohmann::json values(const ApplyPreset& a) {
+nlohmann::json values(const model::ApplyPreset& a) {
     return {{"name", a.name}};
 }
-nlohmann::json values(const SetParam& a) {
-    return {{"param", paramName(a.param)}, {"value", a.value}};
+nlohmann::json values(const model::SetParam& a) {
+    return {{"param", model::paramName(a.param)}, {"value", a.value}};
 }
-nlohmann::json values(const NudgeParam& a) {
-    return {{"param", paramName(a.param)}, {"steps", a.steps}};
+nlohmann::json values(const model::NudgeParam& a) {
+    return {{"param", model::paramName(a.param)}, {"steps", a.steps}};
 }
-nlohmann::json values(const NudgeSelected& a) {
+nlohmann::json values(const model::NudgeSelected& a) {
     return {{"steps", a.steps}};
 }
-nlohmann::json values(const SelectParam& a) {
-    return {{"param", paramName(a.param)}};
+nlohmann::json values(const model::SelectParam& a) {
+    return {{"param", model::paramName(a.param)}};
 }
-nlohmann::json values(const CycleParam& a) {
+nlohmann::json values(const model::CycleParam& a) {
     return {{"delta", a.delta}};
 }
-nlohmann::json values(const SetWindow& a) {
+nlohmann::json values(const model::SetWindow& a) {
     return {{"level", a.level}, {"width", a.width}};
 }
-nlohmann::json values(const AddSeed& a) {
+nlohmann::json values(const model::AddSeed& a) {
     return {{"voxel", vec(a.voxel)}, {"radius", a.radius}};
 }
-nlohmann::json values(const Erase& a) {
+nlohmann::json values(const model::Erase& a) {
     return {{"voxel", vec(a.voxel)}, {"radius", a.radius}};
 }
-nlohmann::json values(const SetEraseMode& a) {
+nlohmann::json values(const model::SetEraseMode& a) {
     return {{"erase", a.erase}};
 }
-nlohmann::json values(const SetSpeed& a) {
+nlohmann::json values(const model::SetSpeed& a) {
     return {{"speed", model::speedKindName(a.kind)}};
 }
-nlohmann::json values(const MarkOutside& a) {
+nlohmann::json values(const model::MarkOutside& a) {
     return {{"voxel", vec(a.voxel)}, {"radius_mm", a.radiusMm}};
 }
-nlohmann::json values(const SetOutsideMode& a) {
+nlohmann::json values(const model::SetOutsideMode& a) {
     return {{"outside", a.outside}};
 }
-nlohmann::json values(const Export& a) {
+nlohmann::json values(const model::Export& a) {
     return {{"path", a.path}};
 }
-nlohmann::json values(const RotateView& a) {
+nlohmann::json values(const model::RotateView& a) {
     return {{"yaw", a.yaw}, {"pitch", a.pitch}};
 }
-nlohmann::json values(const ZoomView& a) {
+nlohmann::json values(const model::ZoomView& a) {
     return {{"factor", a.factor}};
 }
-nlohmann::json values(const PageSlice& a) {
-    return {{"axis", sliceAxisName(a.axis)}, {"delta", a.delta}};
+nlohmann::json values(const model::PageSlice& a) {
+    return {{"axis", model::sliceAxisName(a.axis)}, {"delta", a.delta}};
 }
-nlohmann::json values(const SetSlice& a) {
-    return {{"axis", sliceAxisName(a.axis)}, {"index", a.index}};
+nlohmann::json values(const model::SetSlice& a) {
+    return {{"axis", model::sliceAxisName(a.axis)}, {"index", a.index}};
 }
-nlohmann::json values(const ShowSlices& a) {
-    return {{"first", sliceAxisName(a.first)}, {"second", sliceAxisName(a.second)}};
+nlohmann::json values(const model::ShowSlices& a) {
+    return {{"first", model::sliceAxisName(a.first)}, {"second", model::sliceAxisName(a.second)}};
 }
 template <class T> nlohmann::json values(const T&) {
     return nlohmann::json::object();
@@ -90,7 +90,7 @@ template <class T> nlohmann::json values(const T&) {
 
 } // namespace
 
-nlohmann::json actionValues(const Action& action) {
+nlohmann::json actionValues(const model::Action& action) {
     return std::visit([](const auto& a) { return values(a); }, action);
 }
 
@@ -163,12 +163,12 @@ void AuditLog::write(nlohmann::json& record) {
     }
 }
 
-void AuditLog::action(State state, const Action& action, const nlohmann::json& result,
+void AuditLog::action(model::State state, const model::Action& action, const nlohmann::json& result,
                       std::string_view scan, bool accepted, std::string_view reason) {
     try {
         nlohmann::json r{{"event", "action"},
-                         {"state", stateName(state)},
-                         {"action", actionName(action)},
+                         {"state", model::stateName(state)},
+                         {"action", model::actionName(action)},
                          {"values", actionValues(action)},
                          {"accepted", accepted},
                          {"scan", scan}};
@@ -184,11 +184,15 @@ void AuditLog::action(State state, const Action& action, const nlohmann::json& r
     }
 }
 
-void AuditLog::transition(State from, State to, std::string_view cause, std::string_view scan,
-                          std::string_view message) {
+void AuditLog::transition(model::State from, model::State to, std::string_view cause,
+                          std::string_view scan, std::string_view message) {
     try {
-        nlohmann::json r{{"event", "transition"},  {"from", stateName(from)}, {"to", stateName(to)},
-                         {"state", stateName(to)}, {"cause", cause},          {"scan", scan}};
+        nlohmann::json r{{"event", "transition"},
+                         {"from", model::stateName(from)},
+                         {"to", model::stateName(to)},
+                         {"state", model::stateName(to)},
+                         {"cause", cause},
+                         {"scan", scan}};
         if (!message.empty()) {
             r["message"] = message;
         }

@@ -5,7 +5,7 @@
 // transition, each with the UTC time, seconds since the log opened and the scan's identity.
 // docs/workflow.md lists the fields. The log must never stop the operator: a failure to open
 // or write is kept and reported once (takeError), never thrown.
-#include "workflow/action.hpp"
+#include "model/action.hpp"
 #include "workflow/settings.hpp"
 
 #include <chrono>
@@ -32,12 +32,12 @@ class AuditLog {
 
     // `state`: the state the action found. `result`: what it changed (null: nothing to add).
     // `reason`: empty for an accepted action, else why it was refused.
-    void action(State state, const Action& action, const nlohmann::json& result,
+    void action(model::State state, const model::Action& action, const nlohmann::json& result,
                 std::string_view scan, bool accepted, std::string_view reason);
     // `cause`: the action's name, or "load" / "evolve" for what update() and evolve() found.
     // `message`: the notice or error the new state shows ("" = none).
-    void transition(State from, State to, std::string_view cause, std::string_view scan,
-                    std::string_view message);
+    void transition(model::State from, model::State to, std::string_view cause,
+                    std::string_view scan, std::string_view message);
 
     [[nodiscard]] bool ok() const { return error_.empty(); }
     // The first failure, the first time it is asked for; nullopt afterwards and while all is well.
@@ -70,6 +70,6 @@ AuditLogContents readAuditLog(const std::filesystem::path& path);
 
 // The action's arguments as a JSON object ({} for actions without any): the audit log's
 // "values" and a script's round trip.
-nlohmann::json actionValues(const Action& action);
+nlohmann::json actionValues(const model::Action& action);
 
 } // namespace steerseg::workflow

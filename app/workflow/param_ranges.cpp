@@ -35,10 +35,10 @@ ParamRanges rangesFor(const ScanInfo& scan) {
         }
     }
     ParamRanges r{};
-    r[indexOf(Param::Target)] = {scan.minValue, scan.maxValue, valueStep};
-    r[indexOf(Param::Epsilon)] = {0.0, span, valueStep};
-    r[indexOf(Param::Alpha)] = {0.0, 1.0, 0.01};
-    r[indexOf(Param::Radius)] = {1.0, std::max(1.0, smallest / 2.0), 0.5};
+    r[indexOf(model::Param::T)] = {scan.minValue, scan.maxValue, valueStep};
+    r[indexOf(model::Param::Eps)] = {0.0, span, valueStep};
+    r[indexOf(model::Param::Alpha)] = {0.0, 1.0, 0.01};
+    r[indexOf(model::Param::Radius)] = {1.0, std::max(1.0, smallest / 2.0), 0.5};
     return r;
 }
 

@@ -9,9 +9,9 @@
 
 namespace steerseg::workflow {
 
-using ParamRanges = std::array<ParamRange, kParamCount>;
+using ParamRanges = std::array<ParamRange, model::kParamCount>;
 
-inline constexpr std::size_t indexOf(Param param) {
+inline constexpr std::size_t indexOf(model::Param param) {
     return static_cast<std::size_t>(param);
 }
 

@@ -32,7 +32,7 @@ struct Settings {
     // a probe sets eps = max(probeEpsFactor * stddev, epsFloor). Real units.
     double epsFloor = 0.0;
     double probeEpsFactor = 2.0;
-    double probeRadiusMm = 5.0; // a Probe action's radius when it gives none (<= 0)
+    double probeRadiusMm = 5.0; // a model::Probe action's radius when it gives none (<= 0)
     double defaultRadius = 3.0; // the brush after a load, voxels (clamped to the scan's range)
     // Default exports: <folder>/<scan>_<UTC time>.<format>.
     std::filesystem::path exportFolder = ".";

@@ -1,7 +1,7 @@
 #pragma once
 
 // Everything the screen shows about the workflow, as one plain value the UI reads each frame.
-#include "workflow/action.hpp"
+#include "model/action.hpp"
 #include "workflow/engine.hpp"
 
 #include <array>
@@ -21,9 +21,9 @@ struct ViewState {
     double yawDeg = 0.0; // 3D camera about the scan's centre; 0,0 = anterior view
     double pitchDeg = 0.0;
     double zoom = 1.0;
-    glm::ivec3 slice{-1};                  // per SliceAxis (axial, coronal, sagittal); -1 = middle
-    SliceAxis first = SliceAxis::Axial;    // the slice view with the yellow contour
-    SliceAxis second = SliceAxis::Coronal; // the slice view with the speed
+    glm::ivec3 slice{-1}; // per model::SliceAxis (axial, coronal, sagittal); -1 = middle
+    model::SliceAxis first = model::SliceAxis::Axial;    // the slice view with the yellow contour
+    model::SliceAxis second = model::SliceAxis::Coronal; // the slice view with the speed
     double windowLevel = 0.0;
     double windowWidth = 0.0; // 0 = not set yet: the kiosk's default for the scan
     std::string transfer;     // transfer-function preset name ("" = the scan's default)
@@ -38,16 +38,16 @@ struct DeviceLink {
 };
 
 struct Status {
-    State state = State::NoScan;
+    model::State state = model::State::NoScan;
     std::string message; // the last error or notice for the operator ("" = none)
     double loadProgress = 0.0;
     ScanInfo scan;
     model::LevelSetParams params;
     double radius = 3.0; // brush, voxels
-    Param selected = Param::Target;
-    std::array<ParamRange, kParamCount> ranges{};
+    model::Param selected = model::Param::T;
+    std::array<ParamRange, model::kParamCount> ranges{};
     bool eraseMode = false;
-    bool outsideMode = false; // a tap marks an outside example (MarkOutside)
+    bool outsideMode = false; // a tap marks an outside example (model::MarkOutside)
     // The speed the operator chose, and the one the engine runs: they differ while Classify
     // waits for an inside (probe) and an outside example.
     model::SpeedKind speed = model::SpeedKind::Threshold;
@@ -58,7 +58,7 @@ struct Status {
     bool unexported = false; // the level set changed since its last export (a load must wait)
     // What the workflow would accept now, by the transition table (transition_table.hpp) and
     // its guards; an action of another kind is refused. Arguments can still be refused.
-    ActionKinds allowed;
+    model::ActionKinds allowed;
     int seeds = 0;
     int erasures = 0;
     int iterations = 0;

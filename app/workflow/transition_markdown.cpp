@@ -10,20 +10,21 @@ std::string statesText(const StateSet& states) {
     std::string out;
     std::size_t n = 0;
     for (std::size_t s = 0; s < kStateCount; ++s) {
-        if (states.contains(static_cast<State>(s))) {
-            out += (out.empty() ? "" : ", ") + std::string(stateName(static_cast<State>(s)));
+        if (states.contains(static_cast<model::State>(s))) {
+            out += (out.empty() ? "" : ", ") +
+                   std::string(model::stateName(static_cast<model::State>(s)));
             ++n;
         }
     }
     return n == kStateCount ? std::string("any") : out;
 }
 
-std::string actionsText(const ActionKinds& actions) {
+std::string actionsText(const model::ActionKinds& actions) {
     std::string out;
-    for (std::size_t k = 0; k < kActionKindCount; ++k) {
-        if (actions.contains(static_cast<ActionKind>(k))) {
-            out +=
-                (out.empty() ? "" : ", ") + std::string(actionKindName(static_cast<ActionKind>(k)));
+    for (std::size_t k = 0; k < model::kActionKindCount; ++k) {
+        if (actions.contains(static_cast<model::ActionKind>(k))) {
+            out += (out.empty() ? "" : ", ") +
+                   std::string(model::actionKindName(static_cast<model::ActionKind>(k)));
         }
     }
     return out;
@@ -46,11 +47,13 @@ std::string transitionTableMarkdown() {
     for (const Rule& r : transitionRules()) {
         const bool never = r.guard == Guard::Never;
         const std::string_view needs = r.guard == Guard::Always ? "" : guardName(r.guard);
-        const std::string next = never ? "" : r.next ? std::string(stateName(*r.next)) : "same";
+        const std::string next = never    ? ""
+                                 : r.next ? std::string(model::stateName(*r.next))
+                                          : "same";
         out += row(statesText(r.states), actionsText(r.actions), needs, next, r.refusal, r.note);
     }
     for (const StateDefault& d : stateDefaults()) {
-        out += row(std::string(stateName(d.state)), "any other", guardName(Guard::Never), "",
+        out += row(std::string(model::stateName(d.state)), "any other", guardName(Guard::Never), "",
                    d.refusal, "");
     }
     return out;

@@ -8,7 +8,7 @@ namespace {
 
 // The rule for each (state, kind), found once: the soak hands a million actions through here.
 struct Index {
-    std::array<std::array<const Rule*, kActionKindCount>, kStateCount> rule{};
+    std::array<std::array<const Rule*, model::kActionKindCount>, kStateCount> rule{};
     std::array<std::string_view, kStateCount> fallback{};
 };
 
@@ -17,10 +17,10 @@ const Index& index() {
         Index ix;
         for (const Rule& r : transitionRules()) {
             for (std::size_t s = 0; s < kStateCount; ++s) {
-                for (std::size_t k = 0; k < kActionKindCount; ++k) {
+                for (std::size_t k = 0; k < model::kActionKindCount; ++k) {
                     // The first rule wins; the table test reports a second one.
-                    if (r.states.contains(static_cast<State>(s)) &&
-                        r.actions.contains(static_cast<ActionKind>(k)) &&
+                    if (r.states.contains(static_cast<model::State>(s)) &&
+                        r.actions.contains(static_cast<model::ActionKind>(k)) &&
                         ix.rule[s][k] == nullptr) {
                         ix.rule[s][k] = &r;
                     }
@@ -35,11 +35,11 @@ const Index& index() {
     return built;
 }
 
-std::string refusalIn(State state, std::string_view text) {
+std::string refusalIn(model::State state, std::string_view text) {
     std::string out(text);
     constexpr std::string_view kPlaceholder = "{state}";
     if (const auto at = out.find(kPlaceholder); at != std::string::npos) {
-        out.replace(at, kPlaceholder.size(), stateName(state));
+        out.replace(at, kPlaceholder.size(), model::stateName(state));
     }
     return out;
 }
@@ -66,10 +66,10 @@ std::string_view guardName(Guard guard) {
     return "?";
 }
 
-Verdict decide(State state, ActionKind kind, const Facts& facts) {
+Verdict decide(model::State state, model::ActionKind kind, const Facts& facts) {
     const auto s = static_cast<std::size_t>(state);
     const auto k = static_cast<std::size_t>(kind);
-    if (s >= kStateCount || k >= kActionKindCount) {
+    if (s >= kStateCount || k >= model::kActionKindCount) {
         return {false, std::nullopt, "unknown state or action"};
     }
     const Index& ix = index();

@@ -4,7 +4,7 @@
 // which state follows, and the one-line refusal otherwise. Workflow::handle runs it before an
 // action's own code, Status::allowed publishes it, and docs/workflow.md prints it
 // (transition_markdown.hpp; a unit test keeps the two equal).
-#include "workflow/action.hpp"
+#include "model/action.hpp"
 #include "workflow/status.hpp"
 
 #include <array>
@@ -18,20 +18,22 @@
 
 namespace steerseg::workflow {
 
-inline constexpr std::size_t kStateCount = static_cast<std::size_t>(State::Error) + 1;
+inline constexpr std::size_t kStateCount = static_cast<std::size_t>(model::State::Error) + 1;
 
 class StateSet {
   public:
     constexpr StateSet() = default;
-    constexpr StateSet(std::initializer_list<State> states) {
-        for (const State s : states) {
+    constexpr StateSet(std::initializer_list<model::State> states) {
+        for (const model::State s : states) {
             bits_ |= bit(s);
         }
     }
-    [[nodiscard]] constexpr bool contains(State state) const { return (bits_ & bit(state)) != 0; }
+    [[nodiscard]] constexpr bool contains(model::State state) const {
+        return (bits_ & bit(state)) != 0;
+    }
 
   private:
-    static constexpr std::uint16_t bit(State state) {
+    static constexpr std::uint16_t bit(model::State state) {
         return static_cast<std::uint16_t>(1U << static_cast<unsigned>(state));
     }
     std::uint16_t bits_ = 0;
@@ -75,17 +77,17 @@ constexpr bool holds(Guard guard, const Facts& facts) {
 
 struct Rule {
     StateSet states;
-    ActionKinds actions;
+    model::ActionKinds actions;
     Guard guard = Guard::Always;
     // nullopt: the state stays, unless the action's own code moves it (`note` says where).
-    std::optional<State> next;
+    std::optional<model::State> next;
     std::string_view refusal; // when the guard fails; "{state}" stands for the state's name
     std::string_view note = {};
 };
 
 // The refusal of every action kind no rule names in a state.
 struct StateDefault {
-    State state;
+    model::State state;
     std::string_view refusal;
 };
 
@@ -93,8 +95,8 @@ struct StateDefault {
 // state without a default has a rule for every kind (workflow_table_test). It lives in this
 // header so the screen (which links no workflow code) can ask it.
 namespace table {
-using K = ActionKind;
-using S = State;
+using K = model::ActionKind;
+using S = model::State;
 
 inline constexpr StateSet kAll{S::NoScan, S::Loading, S::Inspect,   S::Seeding, S::Evolving,
                                S::Paused, S::Review,  S::Exporting, S::Done,    S::Error};
@@ -104,16 +106,17 @@ inline constexpr StateSet kSteering{S::Inspect, S::Seeding, S::Evolving, S::Paus
 
 // Looking around: the view, the knob's selection and the tap's meaning. Also in error, where
 // they leave the error's message on screen.
-inline constexpr ActionKinds kLooking{
+inline constexpr model::ActionKinds kLooking{
     K::RotateView, K::ZoomView,    K::PageSlice,  K::SetSlice,     K::ShowSlices,
     K::SetWindow,  K::SelectParam, K::CycleParam, K::SetEraseMode, K::SetOutsideMode};
 // Parameters and the speed: live in every steering state, evolving included.
-inline constexpr ActionKinds kSteer{K::Probe,         K::ApplyPreset, K::SetParam,   K::NudgeParam,
-                                    K::NudgeSelected, K::SetSpeed,    K::MarkOutside};
-inline constexpr ActionKinds kSteerAll{K::Probe,       K::ApplyPreset,   K::SetParam,
-                                       K::NudgeParam,  K::NudgeSelected, K::SetSpeed,
-                                       K::MarkOutside, K::ClearExamples};
-inline constexpr ActionKinds kExportedRefused{
+inline constexpr model::ActionKinds kSteer{K::Probe,      K::ApplyPreset,   K::SetParam,
+                                           K::NudgeParam, K::NudgeSelected, K::SetSpeed,
+                                           K::MarkOutside};
+inline constexpr model::ActionKinds kSteerAll{K::Probe,       K::ApplyPreset,   K::SetParam,
+                                              K::NudgeParam,  K::NudgeSelected, K::SetSpeed,
+                                              K::MarkOutside, K::ClearExamples};
+inline constexpr model::ActionKinds kExportedRefused{
     K::Probe,    K::ApplyPreset, K::SetParam,      K::NudgeParam, K::NudgeSelected,
     K::SetSpeed, K::MarkOutside, K::ClearExamples, K::AddSeed,    K::Erase};
 
@@ -216,12 +219,12 @@ constexpr std::span<const StateDefault> stateDefaults() {
 
 struct Verdict {
     bool allowed = false;
-    std::optional<State> next; // when allowed: the state that follows (nullopt: as it is)
-    std::string refusal;       // when not
+    std::optional<model::State> next; // when allowed: the state that follows (nullopt: as it is)
+    std::string refusal;              // when not
 };
-Verdict decide(State state, ActionKind kind, const Facts& facts);
-constexpr ActionKinds allowedActions(State state, const Facts& facts) {
-    ActionKinds out;
+Verdict decide(model::State state, model::ActionKind kind, const Facts& facts);
+constexpr model::ActionKinds allowedActions(model::State state, const Facts& facts) {
+    model::ActionKinds out;
     for (const Rule& r : transitionRules()) {
         if (r.states.contains(state) && holds(r.guard, facts)) {
             out.insert(r.actions);
@@ -231,8 +234,8 @@ constexpr ActionKinds allowedActions(State state, const Facts& facts) {
 }
 // The kinds some rule accepts in `state`, whatever its guard: what a screen for that state
 // offers (a button that then explains its refusal, such as Run before a seed).
-constexpr ActionKinds offeredActions(State state) {
-    ActionKinds out;
+constexpr model::ActionKinds offeredActions(model::State state) {
+    model::ActionKinds out;
     for (const Rule& r : transitionRules()) {
         if (r.states.contains(state) && r.guard != Guard::Never) {
             out.insert(r.actions);

@@ -4,7 +4,7 @@
 // before and after each edit, parameter changes as values. The stack owns the snapshots it
 // holds and frees them (through the drop callback) when entries fall off its bottom, when a new
 // edit clears the redo side, and on clear().
-#include "workflow/action.hpp"
+#include "model/action.hpp"
 #include "workflow/engine.hpp"
 
 #include <array>
@@ -20,7 +20,7 @@ namespace steerseg::workflow {
 // speed: the kind chosen with the classifier's examples, and the kind that runs while Classify
 // waits for an example of each kind (the one in force when Classify was chosen).
 struct ParamValues {
-    std::array<double, kParamCount> values{};
+    std::array<double, model::kParamCount> values{};
     std::string preset;
     SpeedChoice speed;
     model::SpeedKind fallback = model::SpeedKind::Threshold;
@@ -41,7 +41,7 @@ struct UndoEntry {
     ParamValues paramsAfter;
     // A parameter change merges into the entry below it when both name the same parameter and
     // nothing (no other edit, no undo or redo) came between: a knob turn is one undo step.
-    std::optional<Param> coalesce;
+    std::optional<model::Param> coalesce;
     LevelSetMark before;
     LevelSetMark after;
 };

@@ -23,15 +23,18 @@ Settings validated(Settings s) {
 }
 
 // Actions that leave the operator's notice on screen: looking around must not wipe an error.
-bool keepsNotice(const Action& action) {
-    return std::holds_alternative<RotateView>(action) || std::holds_alternative<ZoomView>(action) ||
-           std::holds_alternative<PageSlice>(action) || std::holds_alternative<SetSlice>(action) ||
-           std::holds_alternative<ShowSlices>(action) ||
-           std::holds_alternative<SelectParam>(action) ||
-           std::holds_alternative<CycleParam>(action) ||
-           std::holds_alternative<SetEraseMode>(action) ||
-           std::holds_alternative<SetOutsideMode>(action) ||
-           std::holds_alternative<SetWindow>(action) || std::holds_alternative<Quit>(action);
+bool keepsNotice(const model::Action& action) {
+    return std::holds_alternative<model::RotateView>(action) ||
+           std::holds_alternative<model::ZoomView>(action) ||
+           std::holds_alternative<model::PageSlice>(action) ||
+           std::holds_alternative<model::SetSlice>(action) ||
+           std::holds_alternative<model::ShowSlices>(action) ||
+           std::holds_alternative<model::SelectParam>(action) ||
+           std::holds_alternative<model::CycleParam>(action) ||
+           std::holds_alternative<model::SetEraseMode>(action) ||
+           std::holds_alternative<model::SetOutsideMode>(action) ||
+           std::holds_alternative<model::SetWindow>(action) ||
+           std::holds_alternative<model::Quit>(action);
 }
 
 } // namespace
@@ -50,25 +53,25 @@ Workflow::Workflow(Engine& engine, Settings settings, AuditLog* audit)
     }
     status_.exportFormats = settings_.exportFormats;
     status_.radius = settings_.defaultRadius;
-    params_.values[indexOf(Param::Radius)] = settings_.defaultRadius;
+    params_.values[indexOf(model::Param::Radius)] = settings_.defaultRadius;
     noteAuditError();
     refreshAllowed();
 }
 
 Workflow::~Workflow() = default;
 
-Workflow::Outcome Workflow::handle(const Action& action) {
-    const State before = status_.state;
+Workflow::Outcome Workflow::handle(const model::Action& action) {
+    const model::State before = status_.state;
     pending_.clear();
     handling_ = true;
-    cause_ = actionName(action);
+    cause_ = model::actionName(action);
     std::string notice = status_.message;
-    if (!keepsNotice(action) && before != State::Error) {
+    if (!keepsNotice(action) && before != model::State::Error) {
         status_.message.clear();
     }
     Outcome out;
     try {
-        const Verdict verdict = decide(before, kindOf(action), facts());
+        const Verdict verdict = decide(before, model::kindOf(action), facts());
         if (!verdict.allowed) {
             out = no(verdict.refusal);
         } else {
@@ -87,7 +90,7 @@ Workflow::Outcome Workflow::handle(const Action& action) {
     handling_ = false;
     if (!out.accepted) {
         // In Error the error stays on screen; elsewhere the refusal is the newest notice.
-        status_.message = status_.state == State::Error ? std::move(notice) : out.reason;
+        status_.message = status_.state == model::State::Error ? std::move(notice) : out.reason;
     }
     refreshAllowed();
     record(action, before, out);
@@ -95,7 +98,7 @@ Workflow::Outcome Workflow::handle(const Action& action) {
 }
 
 void Workflow::update() {
-    if (status_.state != State::Loading) {
+    if (status_.state != model::State::Loading) {
         return;
     }
     cause_ = "load";
@@ -116,18 +119,18 @@ void Workflow::update() {
         finishLoad();
         break;
     case LoadPoll::Failed:
-        enter(State::NoScan, poll.error.empty() ? std::string("the scan could not be read")
-                                                : oneLine(poll.error.c_str()));
+        enter(model::State::NoScan, poll.error.empty() ? std::string("the scan could not be read")
+                                                       : oneLine(poll.error.c_str()));
         break;
     }
     noteAuditError();
     refreshAllowed();
 }
 
-void Workflow::enter(State next, std::string message) {
-    const State from = status_.state;
+void Workflow::enter(model::State next, std::string message) {
+    const model::State from = status_.state;
     status_.state = next;
-    if (from == State::Evolving && next != State::Evolving && scanLoaded_) {
+    if (from == model::State::Evolving && next != model::State::Evolving && scanLoaded_) {
         // The readouts during the run may lag a little; the stopped surface's are exact.
         try {
             status_.volumeMl = engine_.exactVolumeMl();
@@ -172,7 +175,7 @@ void Workflow::noteAuditError() {
     }
 }
 
-void Workflow::record(const Action& action, State before, const Outcome& outcome) {
+void Workflow::record(const model::Action& action, model::State before, const Outcome& outcome) {
     if (audit_ == nullptr) {
         return;
     }
@@ -214,7 +217,7 @@ void Workflow::forgetScan() {
     status_.view = ViewState{};
 }
 
-Workflow::Outcome Workflow::on(const LoadScan& a) {
+Workflow::Outcome Workflow::on(const model::LoadScan& a) {
     if (a.path.empty()) {
         return no("no scan path given");
     }
@@ -231,14 +234,14 @@ void Workflow::finishLoad() {
     try {
         info = engine_.scanInfo();
     } catch (const std::exception& e) {
-        enter(State::NoScan, oneLine(e.what()));
+        enter(model::State::NoScan, oneLine(e.what()));
         return;
     }
     const bool sized = info.dims.x >= 1 && info.dims.y >= 1 && info.dims.z >= 1;
     const bool valued = std::isfinite(info.minValue) && std::isfinite(info.maxValue) &&
                         info.minValue <= info.maxValue;
     if (!sized || !valued) {
-        enter(State::NoScan,
+        enter(model::State::NoScan,
               "scan " + info.name +
                   (sized ? ": its value range is not finite" : ": it has no voxels"));
         return;
@@ -249,7 +252,7 @@ void Workflow::finishLoad() {
     status_.scan = info;
     status_.ranges = rangesFor(info);
     status_.view = ViewState{};
-    status_.selected = Param::Target;
+    status_.selected = model::Param::T;
     status_.loadProgress = 1.0;
     scanLoaded_ = true;
     try {
@@ -257,36 +260,36 @@ void Workflow::finishLoad() {
         refreshEngineStatus();
     } catch (const std::exception& e) {
         forgetScan();
-        enter(State::NoScan, oneLine(e.what()));
+        enter(model::State::NoScan, oneLine(e.what()));
         return;
     }
-    enter(State::Inspect);
+    enter(model::State::Inspect);
 }
 
 // Proceed and Back are the table's steps; from review the step forward is the export.
-Workflow::Outcome Workflow::on(const Proceed&) {
-    return status_.state == State::Review ? exportTo({}) : ok();
+Workflow::Outcome Workflow::on(const model::Proceed&) {
+    return status_.state == model::State::Review ? exportTo({}) : ok();
 }
 
-Workflow::Outcome Workflow::on(const Back&) {
+Workflow::Outcome Workflow::on(const model::Back&) {
     return ok();
 }
 
-Workflow::Outcome Workflow::on(const Dismiss&) {
+Workflow::Outcome Workflow::on(const model::Dismiss&) {
     status_.message.clear();
-    if (status_.state == State::Error) {
+    if (status_.state == model::State::Error) {
         if (!scanLoaded_) {
-            enter(State::NoScan);
+            enter(model::State::NoScan);
         } else if (status_.hasLevelSet) {
-            enter(State::Paused);
+            enter(model::State::Paused);
         } else {
-            enter(State::Inspect);
+            enter(model::State::Inspect);
         }
     }
     return ok();
 }
 
-Workflow::Outcome Workflow::on(const Quit&) {
+Workflow::Outcome Workflow::on(const model::Quit&) {
     quit_ = true;
     return ok();
 }

@@ -5,7 +5,7 @@
 // history and the view state, writes the audit log and publishes a Status for the screen. It
 // knows actions, not devices, and runs without a GPU. Which action may happen in which state,
 // and which state follows, is the transition table's (transition_table.hpp), which this runs.
-#include "workflow/action.hpp"
+#include "model/action.hpp"
 #include "workflow/audit_log.hpp"
 #include "workflow/engine.hpp"
 #include "workflow/param_ranges.hpp"
@@ -32,7 +32,7 @@ struct RestoredSession {
     ParamValues params;
     int seeds = 0;
     int erasures = 0;
-    State state = State::Paused;
+    model::State state = model::State::Paused;
     std::string notice; // for the operator, e.g. "resumed the session saved at 13:01:40 UTC"
 };
 
@@ -50,7 +50,7 @@ class Workflow {
         std::string reason; // why it was refused, one line ("" when accepted)
     };
     // The only entry for operator intent. Never throws: a refusal says why.
-    Outcome handle(const Action& action);
+    Outcome handle(const model::Action& action);
     // Each frame: polls a running load.
     void update();
     // The frame loop calls it while state() == Evolving (elsewhere it does nothing).
@@ -60,7 +60,7 @@ class Workflow {
     // back paused: after a crash nothing moves until the operator says so. Undo starts empty.
     Outcome restoreSession(const RestoredSession& restored);
 
-    [[nodiscard]] State state() const { return status_.state; }
+    [[nodiscard]] model::State state() const { return status_.state; }
     [[nodiscard]] const Status& status() const { return status_; }
     [[nodiscard]] bool quitRequested() const { return quit_; }
     [[nodiscard]] const Settings& settings() const { return settings_; }
@@ -77,43 +77,43 @@ class Workflow {
     // (workflow.cpp: flow; workflow_params.cpp: parameters and probe; workflow_edits.cpp:
     // spheres, restart, undo; workflow_view.cpp: the view state). A handler may still refuse
     // the action's arguments.
-    Outcome on(const LoadScan& a);
-    Outcome on(const Probe& a);
-    Outcome on(const ApplyPreset& a);
-    Outcome on(const SetParam& a);
-    Outcome on(const NudgeParam& a);
-    Outcome on(const NudgeSelected& a);
-    Outcome on(const SelectParam& a);
-    Outcome on(const CycleParam& a);
-    Outcome on(const SetWindow& a);
-    Outcome on(const AddSeed& a);
-    Outcome on(const Erase& a);
-    Outcome on(const SetEraseMode& a);
-    Outcome on(const SetSpeed& a);
-    Outcome on(const MarkOutside& a);
-    Outcome on(const ClearExamples& a);
-    Outcome on(const SetOutsideMode& a);
-    Outcome on(const Run& a);
-    Outcome on(const Pause& a);
-    Outcome on(const ToggleRun& a);
-    Outcome on(const Finish& a);
-    Outcome on(const Resume& a);
-    Outcome on(const Export& a);
-    Outcome on(const Undo& a);
-    Outcome on(const Redo& a);
-    Outcome on(const Restart& a);
-    Outcome on(const Proceed& a);
-    Outcome on(const Back& a);
-    Outcome on(const Dismiss& a);
-    Outcome on(const RotateView& a);
-    Outcome on(const ZoomView& a);
-    Outcome on(const PageSlice& a);
-    Outcome on(const SetSlice& a);
-    Outcome on(const ShowSlices& a);
-    Outcome on(const Quit& a);
+    Outcome on(const model::LoadScan& a);
+    Outcome on(const model::Probe& a);
+    Outcome on(const model::ApplyPreset& a);
+    Outcome on(const model::SetParam& a);
+    Outcome on(const model::NudgeParam& a);
+    Outcome on(const model::NudgeSelected& a);
+    Outcome on(const model::SelectParam& a);
+    Outcome on(const model::CycleParam& a);
+    Outcome on(const model::SetWindow& a);
+    Outcome on(const model::AddSeed& a);
+    Outcome on(const model::Erase& a);
+    Outcome on(const model::SetEraseMode& a);
+    Outcome on(const model::SetSpeed& a);
+    Outcome on(const model::MarkOutside& a);
+    Outcome on(const model::ClearExamples& a);
+    Outcome on(const model::SetOutsideMode& a);
+    Outcome on(const model::Run& a);
+    Outcome on(const model::Pause& a);
+    Outcome on(const model::ToggleRun& a);
+    Outcome on(const model::Finish& a);
+    Outcome on(const model::Resume& a);
+    Outcome on(const model::Export& a);
+    Outcome on(const model::Undo& a);
+    Outcome on(const model::Redo& a);
+    Outcome on(const model::Restart& a);
+    Outcome on(const model::Proceed& a);
+    Outcome on(const model::Back& a);
+    Outcome on(const model::Dismiss& a);
+    Outcome on(const model::RotateView& a);
+    Outcome on(const model::ZoomView& a);
+    Outcome on(const model::PageSlice& a);
+    Outcome on(const model::SetSlice& a);
+    Outcome on(const model::ShowSlices& a);
+    Outcome on(const model::Quit& a);
 
     // States and transitions (workflow.cpp).
-    void enter(State next, std::string message = {});
+    void enter(model::State next, std::string message = {});
     [[nodiscard]] bool unexportedWork() const;
     // What the transition table's guards read.
     [[nodiscard]] Facts facts() const;
@@ -122,12 +122,13 @@ class Workflow {
     void finishLoad();
     void forgetScan();
     void noteAuditError();
-    void record(const Action& action, State before, const Outcome& outcome);
-    [[nodiscard]] nlohmann::json resultOf(const Action& action) const; // workflow_audit.cpp
+    void record(const model::Action& action, model::State before, const Outcome& outcome);
+    [[nodiscard]] nlohmann::json resultOf(const model::Action& action) const; // workflow_audit.cpp
 
     // Parameters (workflow_params.cpp).
-    Outcome changeParams(ParamValues next, std::string_view what, std::optional<Param> coalesce);
-    Outcome setParam(Param param, double value, std::string_view what);
+    Outcome changeParams(ParamValues next, std::string_view what,
+                         std::optional<model::Param> coalesce);
+    Outcome setParam(model::Param param, double value, std::string_view what);
     void applyParams(const ParamValues& values, bool force = false); // the engine, the status
     [[nodiscard]] ParamValues clamped(ParamValues values) const;
     void setDefaultParams();
@@ -176,8 +177,8 @@ class Workflow {
     bool quit_ = false;
     // Transitions made while handling one action, audited after the action's own record.
     struct PendingTransition {
-        State from;
-        State to;
+        model::State from;
+        model::State to;
         std::string message;
     };
     std::vector<PendingTransition> pending_;

@@ -30,7 +30,7 @@ double decimal(float f) {
 
 } // namespace
 
-nlohmann::json Workflow::resultOf(const Action& action) const {
+nlohmann::json Workflow::resultOf(const model::Action& action) const {
     const auto params = [this] {
         nlohmann::json p{{"T", decimal(status_.params.T)},
                          {"eps", decimal(status_.params.eps)},
@@ -58,45 +58,47 @@ nlohmann::json Workflow::resultOf(const Action& action) const {
     return std::visit(
         [&](const auto& a) -> nlohmann::json {
             using A = std::decay_t<decltype(a)>;
-            if constexpr (std::is_same_v<A, Probe>) {
+            if constexpr (std::is_same_v<A, model::Probe>) {
                 nlohmann::json r = params();
                 r["mean"] = lastProbe_.mean;
                 r["stddev"] = lastProbe_.stddev;
                 r["count"] = lastProbe_.count;
                 r.update(speed());
                 return r;
-            } else if constexpr (std::is_same_v<A, ApplyPreset>) {
+            } else if constexpr (std::is_same_v<A, model::ApplyPreset>) {
                 nlohmann::json r = params();
                 r["window_level"] = v.windowLevel;
                 r["window_width"] = v.windowWidth;
                 r["transfer"] = v.transfer;
                 return r;
-            } else if constexpr (isOneOf<A, SetParam, NudgeParam, NudgeSelected>) {
+            } else if constexpr (isOneOf<A, model::SetParam, model::NudgeParam,
+                                         model::NudgeSelected>) {
                 return params();
-            } else if constexpr (isOneOf<A, AddSeed, Erase, Restart>) {
+            } else if constexpr (isOneOf<A, model::AddSeed, model::Erase, model::Restart>) {
                 return levelSet();
-            } else if constexpr (isOneOf<A, Undo, Redo>) {
+            } else if constexpr (isOneOf<A, model::Undo, model::Redo>) {
                 nlohmann::json r = params();
                 r.update(levelSet());
                 r.update(speed());
                 r["entry"] = lastUndone_;
                 return r;
-            } else if constexpr (isOneOf<A, SetSpeed, MarkOutside, ClearExamples>) {
+            } else if constexpr (isOneOf<A, model::SetSpeed, model::MarkOutside,
+                                         model::ClearExamples>) {
                 return speed();
-            } else if constexpr (std::is_same_v<A, SetOutsideMode>) {
+            } else if constexpr (std::is_same_v<A, model::SetOutsideMode>) {
                 return {{"outside_mode", status_.outsideMode}, {"erase_mode", status_.eraseMode}};
-            } else if constexpr (isOneOf<A, SelectParam, CycleParam>) {
-                return {{"selected", paramName(status_.selected)}};
-            } else if constexpr (isOneOf<A, Export, Proceed>) {
-                if (status_.state == State::Done && !status_.exportedPath.empty()) {
+            } else if constexpr (isOneOf<A, model::SelectParam, model::CycleParam>) {
+                return {{"selected", model::paramName(status_.selected)}};
+            } else if constexpr (isOneOf<A, model::Export, model::Proceed>) {
+                if (status_.state == model::State::Done && !status_.exportedPath.empty()) {
                     return {{"exported", status_.exportedPath}};
                 }
                 return nullptr;
-            } else if constexpr (std::is_same_v<A, SetWindow>) {
+            } else if constexpr (std::is_same_v<A, model::SetWindow>) {
                 return {{"window_level", v.windowLevel}, {"window_width", v.windowWidth}};
-            } else if constexpr (isOneOf<A, RotateView, ZoomView>) {
+            } else if constexpr (isOneOf<A, model::RotateView, model::ZoomView>) {
                 return {{"yaw", v.yawDeg}, {"pitch", v.pitchDeg}, {"zoom", v.zoom}};
-            } else if constexpr (isOneOf<A, PageSlice, SetSlice>) {
+            } else if constexpr (isOneOf<A, model::PageSlice, model::SetSlice>) {
                 return {{"slice", {v.slice.x, v.slice.y, v.slice.z}}};
             } else {
                 return nullptr;

@@ -23,7 +23,7 @@ void Workflow::refreshEngineStatus() {
     status_.iterations = s.iterations;
     status_.evolvedTime = static_cast<double>(s.evolvedTime);
     status_.volumeMl =
-        status_.state == State::Evolving ? engine_.volumeMl() : engine_.exactVolumeMl();
+        status_.state == model::State::Evolving ? engine_.volumeMl() : engine_.exactVolumeMl();
 }
 
 void Workflow::refreshUndoFlags() {
@@ -135,8 +135,9 @@ Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, b
     if (!seed && !status_.hasLevelSet) {
         return no("nothing to erase");
     }
-    const ParamRange& r = status_.ranges[indexOf(Param::Radius)];
-    const double rad = radius > 0.0 ? clampTo(r, radius) : params_.values[indexOf(Param::Radius)];
+    const ParamRange& r = status_.ranges[indexOf(model::Param::Radius)];
+    const double rad =
+        radius > 0.0 ? clampTo(r, radius) : params_.values[indexOf(model::Param::Radius)];
     const model::Sphere sphere{glm::vec3(voxel), static_cast<float>(rad)};
     if (seed) {
         // The operator puts seeds in the structure, often where no probe was: classify's inside
@@ -150,21 +151,21 @@ Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, b
         editLevelSet(
             "erase", [&] { engine_.erase(sphere); }, status_.seeds, status_.erasures + 1);
     }
-    if (status_.state == State::Evolving && !status_.hasLevelSet) {
-        enter(State::Paused, "the level set is empty: add a seed");
+    if (status_.state == model::State::Evolving && !status_.hasLevelSet) {
+        enter(model::State::Paused, "the level set is empty: add a seed");
     }
     return ok();
 }
 
-Workflow::Outcome Workflow::on(const AddSeed& a) {
+Workflow::Outcome Workflow::on(const model::AddSeed& a) {
     return sphereEdit(a.voxel, a.radius, true);
 }
 
-Workflow::Outcome Workflow::on(const Erase& a) {
+Workflow::Outcome Workflow::on(const model::Erase& a) {
     return sphereEdit(a.voxel, a.radius, false);
 }
 
-Workflow::Outcome Workflow::on(const SetEraseMode& a) {
+Workflow::Outcome Workflow::on(const model::SetEraseMode& a) {
     status_.eraseMode = a.erase;
     if (a.erase) {
         status_.outsideMode = false; // one meaning per tap
@@ -172,13 +173,13 @@ Workflow::Outcome Workflow::on(const SetEraseMode& a) {
     return ok();
 }
 
-Workflow::Outcome Workflow::on(const Restart&) {
+Workflow::Outcome Workflow::on(const model::Restart&) {
     editLevelSet(
         "restart", [&] { engine_.clearLevelSet(); }, 0, 0);
     return ok();
 }
 
-Workflow::Outcome Workflow::on(const Undo&) {
+Workflow::Outcome Workflow::on(const model::Undo&) {
     const UndoEntry* e = undo_.undoTop();
     if (e == nullptr) {
         return no("nothing to undo");
@@ -195,7 +196,7 @@ Workflow::Outcome Workflow::on(const Undo&) {
     return ok();
 }
 
-Workflow::Outcome Workflow::on(const Redo&) {
+Workflow::Outcome Workflow::on(const model::Redo&) {
     const UndoEntry* e = undo_.redoTop();
     if (e == nullptr) {
         return no("nothing to redo");

@@ -65,7 +65,7 @@ std::string firstLine(const std::exception& e) {
 } // namespace
 
 Workflow::Outcome Workflow::exportTo(const std::string& requested) {
-    enter(State::Exporting);
+    enter(model::State::Exporting);
     std::filesystem::path path;
     // Every configured format is tried: one that fails (DICOM SEG for a scan not from DICOM, a
     // mesh of an empty segmentation) does not keep the others from being written.
@@ -106,17 +106,18 @@ Workflow::Outcome Workflow::exportTo(const std::string& requested) {
         if (written > 0) {
             message += "; " + std::to_string(written) + " written, first " + path.string();
         }
-        enter(State::Review, message);
+        enter(model::State::Review, message);
         return no(message);
     }
     dirty_ = false;
     status_.exportedPath = path.string();
-    enter(State::Done, "exported to " + status_.exportedPath +
-                           (written > 1 ? " and " + std::to_string(written - 1) + " more" : ""));
+    enter(model::State::Done,
+          "exported to " + status_.exportedPath +
+              (written > 1 ? " and " + std::to_string(written - 1) + " more" : ""));
     return ok();
 }
 
-Workflow::Outcome Workflow::on(const Export& a) {
+Workflow::Outcome Workflow::on(const model::Export& a) {
     return exportTo(a.path);
 }
 

@@ -12,12 +12,12 @@ namespace steerseg::workflow {
 
 namespace {
 
-bool validParam(Param p) {
-    return indexOf(p) < static_cast<std::size_t>(kParamCount);
+bool validParam(model::Param p) {
+    return indexOf(p) < static_cast<std::size_t>(model::kParamCount);
 }
 
-bool speedParam(Param p) {
-    return p != Param::Radius;
+bool speedParam(model::Param p) {
+    return p != model::Param::Radius;
 }
 
 } // namespace
@@ -26,7 +26,7 @@ ParamValues Workflow::clamped(ParamValues v) const {
     for (std::size_t i = 0; i < v.values.size(); ++i) {
         const ParamRange& r = status_.ranges[i];
         // T, eps and alpha travel to the solver as floats: keep the float the status shows.
-        v.values[i] = i == indexOf(Param::Radius)
+        v.values[i] = i == indexOf(model::Param::Radius)
                           ? clampTo(r, v.values[i])
                           : static_cast<double>(clampToFloat(r, v.values[i]));
     }
@@ -43,9 +43,9 @@ void Workflow::applyParams(const ParamValues& values, bool force) {
         status_.converged = false;
     }
     showSpeed(values, engineSpeed_.kind);
-    const model::LevelSetParams p{static_cast<float>(values.values[indexOf(Param::Target)]),
-                                  static_cast<float>(values.values[indexOf(Param::Epsilon)]),
-                                  static_cast<float>(values.values[indexOf(Param::Alpha)])};
+    const model::LevelSetParams p{static_cast<float>(values.values[indexOf(model::Param::T)]),
+                                  static_cast<float>(values.values[indexOf(model::Param::Eps)]),
+                                  static_cast<float>(values.values[indexOf(model::Param::Alpha)])};
     const model::LevelSetParams& now = status_.params;
     if (force || p.T != now.T || p.eps != now.eps || p.alpha != now.alpha) {
         engine_.setParams(p);
@@ -53,7 +53,7 @@ void Workflow::applyParams(const ParamValues& values, bool force) {
     }
     params_ = values;
     status_.params = p;
-    status_.radius = values.values[indexOf(Param::Radius)];
+    status_.radius = values.values[indexOf(model::Param::Radius)];
     status_.preset = values.preset;
 }
 
@@ -63,10 +63,10 @@ void Workflow::setDefaultParams() {
     const double lo = status_.scan.minValue;
     const double hi = status_.scan.maxValue;
     ParamValues v;
-    v.values[indexOf(Param::Target)] = lo + (hi - lo) / 2.0;
-    v.values[indexOf(Param::Epsilon)] = std::max(settings_.epsFloor, (hi - lo) / 10.0);
-    v.values[indexOf(Param::Alpha)] = 0.8;
-    v.values[indexOf(Param::Radius)] = settings_.defaultRadius;
+    v.values[indexOf(model::Param::T)] = lo + (hi - lo) / 2.0;
+    v.values[indexOf(model::Param::Eps)] = std::max(settings_.epsFloor, (hi - lo) / 10.0);
+    v.values[indexOf(model::Param::Alpha)] = 0.8;
+    v.values[indexOf(model::Param::Radius)] = settings_.defaultRadius;
     v.speed.kind = settings_.defaultSpeed;
     try {
         applyParams(clamped(v), true); // a new scan: the engine hears its parameters
@@ -82,7 +82,7 @@ void Workflow::setDefaultParams() {
 }
 
 Workflow::Outcome Workflow::changeParams(ParamValues next, std::string_view what,
-                                         std::optional<Param> coalesce) {
+                                         std::optional<model::Param> coalesce) {
     UndoEntry e;
     e.what = what;
     e.paramsBefore = params_;
@@ -93,12 +93,12 @@ Workflow::Outcome Workflow::changeParams(ParamValues next, std::string_view what
     return ok();
 }
 
-Workflow::Outcome Workflow::setParam(Param param, double value, std::string_view what) {
+Workflow::Outcome Workflow::setParam(model::Param param, double value, std::string_view what) {
     if (!validParam(param)) {
         return no("unknown parameter");
     }
     if (!std::isfinite(value)) {
-        return no(std::string(paramName(param)) + " must be a finite number");
+        return no(std::string(model::paramName(param)) + " must be a finite number");
     }
     ParamValues next = params_;
     next.values[indexOf(param)] = value;
@@ -108,11 +108,11 @@ Workflow::Outcome Workflow::setParam(Param param, double value, std::string_view
     return changeParams(std::move(next), what, param);
 }
 
-Workflow::Outcome Workflow::on(const SetParam& a) {
+Workflow::Outcome Workflow::on(const model::SetParam& a) {
     return setParam(a.param, a.value, "set_param");
 }
 
-Workflow::Outcome Workflow::on(const NudgeParam& a) {
+Workflow::Outcome Workflow::on(const model::NudgeParam& a) {
     if (!validParam(a.param)) {
         return no("unknown parameter");
     }
@@ -129,11 +129,11 @@ Workflow::Outcome Workflow::on(const NudgeParam& a) {
     return setParam(a.param, v, "nudge_param");
 }
 
-Workflow::Outcome Workflow::on(const NudgeSelected& a) {
-    return on(NudgeParam{status_.selected, a.steps});
+Workflow::Outcome Workflow::on(const model::NudgeSelected& a) {
+    return on(model::NudgeParam{status_.selected, a.steps});
 }
 
-Workflow::Outcome Workflow::on(const SelectParam& a) {
+Workflow::Outcome Workflow::on(const model::SelectParam& a) {
     if (!validParam(a.param)) {
         return no("unknown parameter");
     }
@@ -141,14 +141,14 @@ Workflow::Outcome Workflow::on(const SelectParam& a) {
     return ok();
 }
 
-Workflow::Outcome Workflow::on(const CycleParam& a) {
-    const long long n = kParamCount;
+Workflow::Outcome Workflow::on(const model::CycleParam& a) {
+    const long long n = model::kParamCount;
     const long long next = ((static_cast<long long>(status_.selected) + a.delta) % n + n) % n;
-    status_.selected = static_cast<Param>(next);
+    status_.selected = static_cast<model::Param>(next);
     return ok();
 }
 
-Workflow::Outcome Workflow::on(const Probe& a) {
+Workflow::Outcome Workflow::on(const model::Probe& a) {
     if (!std::isfinite(a.voxel.x) || !std::isfinite(a.voxel.y) || !std::isfinite(a.voxel.z) ||
         !std::isfinite(a.radiusMm)) {
         return no("a probe needs a finite position and radius");
@@ -167,23 +167,23 @@ Workflow::Outcome Workflow::on(const Probe& a) {
     if (auto example = exampleAt(a.voxel, radius)) {
         addExample(next.speed.inside, *example);
     }
-    next.values[indexOf(Param::Target)] = p.mean;
-    next.values[indexOf(Param::Epsilon)] =
+    next.values[indexOf(model::Param::T)] = p.mean;
+    next.values[indexOf(model::Param::Eps)] =
         std::max(settings_.probeEpsFactor * p.stddev, settings_.epsFloor);
     next.preset.clear();
     return changeParams(std::move(next), "probe", std::nullopt);
 }
 
-Workflow::Outcome Workflow::on(const ApplyPreset& a) {
+Workflow::Outcome Workflow::on(const model::ApplyPreset& a) {
     const auto it = std::find_if(settings_.presets.begin(), settings_.presets.end(),
                                  [&](const TissuePreset& p) { return p.name == a.name; });
     if (it == settings_.presets.end()) {
         return no("unknown preset '" + a.name + "'");
     }
     ParamValues next = params_;
-    next.values[indexOf(Param::Target)] = it->T;
-    next.values[indexOf(Param::Epsilon)] = it->eps;
-    next.values[indexOf(Param::Alpha)] = it->alpha;
+    next.values[indexOf(model::Param::T)] = it->T;
+    next.values[indexOf(model::Param::Eps)] = it->eps;
+    next.values[indexOf(model::Param::Alpha)] = it->alpha;
     next.preset = it->name;
     Outcome out = changeParams(std::move(next), "apply_preset", std::nullopt);
     if (it->windowWidth > 0.0) {

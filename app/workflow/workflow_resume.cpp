@@ -9,33 +9,33 @@ namespace {
 
 // Where a resumed session lands: the state it was in, except where that state was a moment
 // that cannot be resumed (a run, a write, an error) or needs a level set it does not have.
-State resumedState(State saved, bool hasLevelSet) {
+model::State resumedState(model::State saved, bool hasLevelSet) {
     switch (saved) {
-    case State::Inspect:
-        return State::Inspect;
-    case State::Seeding:
-        return State::Seeding;
-    case State::Review:
-        return hasLevelSet ? State::Review : State::Seeding;
-    case State::Evolving:
-    case State::Paused:
-    case State::Exporting:
-    case State::Done:
-    case State::Error:
-        return hasLevelSet ? State::Paused : State::Seeding;
-    case State::NoScan:
-    case State::Loading:
+    case model::State::Inspect:
+        return model::State::Inspect;
+    case model::State::Seeding:
+        return model::State::Seeding;
+    case model::State::Review:
+        return hasLevelSet ? model::State::Review : model::State::Seeding;
+    case model::State::Evolving:
+    case model::State::Paused:
+    case model::State::Exporting:
+    case model::State::Done:
+    case model::State::Error:
+        return hasLevelSet ? model::State::Paused : model::State::Seeding;
+    case model::State::NoScan:
+    case model::State::Loading:
         break;
     }
-    return State::Inspect;
+    return model::State::Inspect;
 }
 
 } // namespace
 
 Workflow::Outcome Workflow::restoreSession(const RestoredSession& restored) {
-    if (!scanLoaded_ || status_.state != State::Inspect) {
+    if (!scanLoaded_ || status_.state != model::State::Inspect) {
         return no("a session resumes right after its scan loaded, not in " +
-                  std::string(stateName(status_.state)));
+                  std::string(model::stateName(status_.state)));
     }
     cause_ = "resume";
     std::string notice = restored.notice;
@@ -58,7 +58,7 @@ Workflow::Outcome Workflow::restoreSession(const RestoredSession& restored) {
         status_.converged = false;
         refreshEngineStatus();
     } catch (const std::exception& e) {
-        enter(State::Error, e.what());
+        enter(model::State::Error, e.what());
         noteAuditError();
         refreshAllowed();
         return no(e.what());

@@ -11,7 +11,7 @@
 namespace steerseg::workflow {
 
 model::StepResult Workflow::evolve(int iterations) {
-    if (status_.state != State::Evolving || iterations <= 0) {
+    if (status_.state != model::State::Evolving || iterations <= 0) {
         return {};
     }
     cause_ = "evolve";
@@ -22,20 +22,20 @@ model::StepResult Workflow::evolve(int iterations) {
         status_.converged = r.converged;
         refreshEngineStatus();
     } catch (const std::exception& e) {
-        enter(State::Error, oneLine(e.what()));
+        enter(model::State::Error, oneLine(e.what()));
         noteAuditError();
         refreshAllowed();
         return {};
     } catch (...) {
-        enter(State::Error, "the solver failed unexpectedly");
+        enter(model::State::Error, "the solver failed unexpectedly");
         noteAuditError();
         refreshAllowed();
         return {};
     }
     if (!status_.hasLevelSet) {
-        enter(State::Paused, "the surface vanished: add a seed, or widen eps");
+        enter(model::State::Paused, "the surface vanished: add a seed, or widen eps");
     } else if (r.converged) {
-        enter(State::Paused,
+        enter(model::State::Paused,
               "converged after " + std::to_string(status_.iterations) + " iterations");
     }
     noteAuditError();
@@ -43,23 +43,23 @@ model::StepResult Workflow::evolve(int iterations) {
     return r;
 }
 
-Workflow::Outcome Workflow::on(const Run&) {
+Workflow::Outcome Workflow::on(const model::Run&) {
     return ok();
 }
 
-Workflow::Outcome Workflow::on(const Pause&) {
+Workflow::Outcome Workflow::on(const model::Pause&) {
     return ok();
 }
 
-Workflow::Outcome Workflow::on(const ToggleRun&) {
+Workflow::Outcome Workflow::on(const model::ToggleRun&) {
     return ok();
 }
 
-Workflow::Outcome Workflow::on(const Finish&) {
+Workflow::Outcome Workflow::on(const model::Finish&) {
     return ok();
 }
 
-Workflow::Outcome Workflow::on(const Resume&) {
+Workflow::Outcome Workflow::on(const model::Resume&) {
     return ok();
 }
 

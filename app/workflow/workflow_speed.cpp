@@ -37,9 +37,10 @@ std::optional<model::Sphere> Workflow::exampleAt(const glm::dvec3& voxel, double
 
 void Workflow::addExample(std::vector<model::Sphere>& examples, const model::Sphere& example) {
     examples.push_back(example);
-    if (examples.size() > kMaxExamples) {
-        examples.erase(examples.begin(), examples.begin() + static_cast<std::ptrdiff_t>(
-                                                                examples.size() - kMaxExamples));
+    if (examples.size() > model::kMaxExamples) {
+        examples.erase(examples.begin(),
+                       examples.begin() +
+                           static_cast<std::ptrdiff_t>(examples.size() - model::kMaxExamples));
     }
 }
 
@@ -50,7 +51,7 @@ void Workflow::showSpeed(const ParamValues& values, model::SpeedKind inForce) {
     status_.outsideExamples = values.speed.outside;
 }
 
-Workflow::Outcome Workflow::on(const SetSpeed& a) {
+Workflow::Outcome Workflow::on(const model::SetSpeed& a) {
     if (!model::validSpeedKind(a.kind)) {
         return no("unknown speed");
     }
@@ -73,7 +74,7 @@ Workflow::Outcome Workflow::on(const SetSpeed& a) {
     return out;
 }
 
-Workflow::Outcome Workflow::on(const MarkOutside& a) {
+Workflow::Outcome Workflow::on(const model::MarkOutside& a) {
     if (!std::isfinite(a.voxel.x) || !std::isfinite(a.voxel.y) || !std::isfinite(a.voxel.z) ||
         !std::isfinite(a.radiusMm)) {
         return no("an outside example needs a finite position and radius");
@@ -88,7 +89,7 @@ Workflow::Outcome Workflow::on(const MarkOutside& a) {
     return changeParams(std::move(next), "mark_outside", std::nullopt);
 }
 
-Workflow::Outcome Workflow::on(const ClearExamples&) {
+Workflow::Outcome Workflow::on(const model::ClearExamples&) {
     ParamValues next = params_;
     next.speed.inside.clear();
     next.speed.outside.clear();
@@ -101,7 +102,7 @@ Workflow::Outcome Workflow::on(const ClearExamples&) {
     return out;
 }
 
-Workflow::Outcome Workflow::on(const SetOutsideMode& a) {
+Workflow::Outcome Workflow::on(const model::SetOutsideMode& a) {
     status_.outsideMode = a.outside;
     if (a.outside) {
         status_.eraseMode = false; // one meaning per tap

@@ -13,13 +13,13 @@ constexpr double kMinZoom = 0.1;
 constexpr double kMaxZoom = 10.0;
 constexpr double kMaxPitch = 90.0;
 
-bool validAxis(SliceAxis a) {
+bool validAxis(model::SliceAxis a) {
     return static_cast<unsigned>(a) < 3U;
 }
 
 } // namespace
 
-Workflow::Outcome Workflow::on(const RotateView& a) {
+Workflow::Outcome Workflow::on(const model::RotateView& a) {
     if (!std::isfinite(a.yaw) || !std::isfinite(a.pitch)) {
         return no("a rotation needs finite angles");
     }
@@ -30,7 +30,7 @@ Workflow::Outcome Workflow::on(const RotateView& a) {
     return ok();
 }
 
-Workflow::Outcome Workflow::on(const ZoomView& a) {
+Workflow::Outcome Workflow::on(const model::ZoomView& a) {
     if (!std::isfinite(a.factor) || a.factor <= 0.0) {
         return no("a zoom needs a finite factor > 0");
     }
@@ -38,7 +38,7 @@ Workflow::Outcome Workflow::on(const ZoomView& a) {
     return ok();
 }
 
-Workflow::Outcome Workflow::on(const PageSlice& a) {
+Workflow::Outcome Workflow::on(const model::PageSlice& a) {
     if (!validAxis(a.axis)) {
         return no("unknown slice orientation");
     }
@@ -50,7 +50,7 @@ Workflow::Outcome Workflow::on(const PageSlice& a) {
     return ok();
 }
 
-Workflow::Outcome Workflow::on(const SetSlice& a) {
+Workflow::Outcome Workflow::on(const model::SetSlice& a) {
     if (!validAxis(a.axis)) {
         return no("unknown slice orientation");
     }
@@ -59,7 +59,7 @@ Workflow::Outcome Workflow::on(const SetSlice& a) {
     return ok();
 }
 
-Workflow::Outcome Workflow::on(const ShowSlices& a) {
+Workflow::Outcome Workflow::on(const model::ShowSlices& a) {
     if (!validAxis(a.first) || !validAxis(a.second)) {
         return no("unknown slice orientation");
     }
@@ -71,7 +71,7 @@ Workflow::Outcome Workflow::on(const ShowSlices& a) {
     return ok();
 }
 
-Workflow::Outcome Workflow::on(const SetWindow& a) {
+Workflow::Outcome Workflow::on(const model::SetWindow& a) {
     if (!std::isfinite(a.level) || !std::isfinite(a.width) || a.width <= 0.0) {
         return no("a window needs a finite level and a finite width > 0");
     }

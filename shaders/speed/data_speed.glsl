@@ -1,5 +1,5 @@
 // The data term of the speed, the outward speed in voxels per unit time before the alpha
-// weighting (docs/speed.md), by speedKind (speed::SpeedKind's order):
+// weighting (docs/speed.md), by speedKind (model::SpeedKind's order):
 //   0 threshold  eps - |I - T|          (Lefohn et al. 2003): positive where I lies in T +/- eps
 //   1 edge       g * (eps - |I - T|)    g the edge-stopping factor (speed/edge_factor.comp)
 //   2 classify   P(inside) - P(outside) the classifier's output, in [-1, 1]
@@ -15,15 +15,15 @@ precision highp sampler3D;
 layout(binding = DATA_SPEED_INTENSITY_UNIT) uniform highp sampler3D speedIntensity;
 // R32F, read by kinds 1 and 2 only.
 layout(binding = DATA_SPEED_FACTOR_UNIT) uniform highp sampler3D speedFactor;
-uniform float targetT;
-uniform float halfWidth;
+uniform float T;
+uniform float eps;
 uniform int speedKind;
 
 float dataSpeed(ivec3 voxel) {
     if (speedKind == 2) {
         return texelFetch(speedFactor, voxel, 0).r;
     }
-    float d = halfWidth - abs(texelFetch(speedIntensity, voxel, 0).r - targetT);
+    float d = eps - abs(texelFetch(speedIntensity, voxel, 0).r - T);
     if (speedKind == 1) {
         d *= texelFetch(speedFactor, voxel, 0).r;
     }

@@ -10,7 +10,7 @@
 namespace {
 
 struct NullSink : steerseg::script::ScriptSink {
-    void action(const steerseg::workflow::Action& /*action*/) override {}
+    void action(const steerseg::model::Action& /*action*/) override {}
     void input(const steerseg::platform::InputEvent& /*event*/) override {}
     void saveFrame(const std::filesystem::path& /*path*/) override {}
     double maskDice(const std::filesystem::path& /*mask*/,
@@ -41,7 +41,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const std::size_t frames = 3 * script.steps.size() + 3;
         for (std::size_t frame = 0; frame < frames && !player.finished() && !player.failed();
              ++frame) {
-            status.state = static_cast<workflow::State>(frame % 10);
+            status.state = static_cast<model::State>(frame % 10);
             status.iterations = static_cast<int>(frame % 100000) * 7;
             status.converged = frame % 13 == 0;
             status.exportedPath = frame % 5 == 0 ? "/o/m.nii.gz" : "";

@@ -20,7 +20,7 @@ namespace steerseg::test {
 namespace {
 
 struct Case {
-    workflow::SliceAxis axis;
+    model::SliceAxis axis;
     const char* axisName;
     int rotation;
 };
@@ -73,7 +73,7 @@ TEST_P(KioskTouch, ATapSeedsTheVoxelUnderTheFinger) {
     std::ostringstream script;
     script << "load builtin:sample\nwait loaded\n"
            << "show " << c.axisName
-           << (c.axis == workflow::SliceAxis::Coronal ? " axial\n" : " coronal\n") << "slice "
+           << (c.axis == model::SliceAxis::Coronal ? " axial\n" : " coronal\n") << "slice "
            << c.axisName << " " << params.slice << "\n"
            << "proceed\nwait state seeding\n"
            // A frame is written once every view is complete at full resolution, and the script
@@ -104,12 +104,12 @@ TEST_P(KioskTouch, ATapSeedsTheVoxelUnderTheFinger) {
 }
 
 INSTANTIATE_TEST_SUITE_P(OrientationsAndMountings, KioskTouch,
-                         ::testing::Values(Case{workflow::SliceAxis::Axial, "axial", 0},
-                                           Case{workflow::SliceAxis::Coronal, "coronal", 0},
-                                           Case{workflow::SliceAxis::Sagittal, "sagittal", 0},
-                                           Case{workflow::SliceAxis::Axial, "axial", 90},
-                                           Case{workflow::SliceAxis::Coronal, "coronal", 270},
-                                           Case{workflow::SliceAxis::Sagittal, "sagittal", 180}),
+                         ::testing::Values(Case{model::SliceAxis::Axial, "axial", 0},
+                                           Case{model::SliceAxis::Coronal, "coronal", 0},
+                                           Case{model::SliceAxis::Sagittal, "sagittal", 0},
+                                           Case{model::SliceAxis::Axial, "axial", 90},
+                                           Case{model::SliceAxis::Coronal, "coronal", 270},
+                                           Case{model::SliceAxis::Sagittal, "sagittal", 180}),
                          [](const ::testing::TestParamInfo<Case>& param) {
                              return std::string(param.param.axisName) +
                                     std::to_string(param.param.rotation);

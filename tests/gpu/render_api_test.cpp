@@ -264,8 +264,8 @@ TEST(RenderProbe, MeanAndStddevInASphere) {
     const double var = (3 * 300.0 * 300.0 + 2 * 100.0 * 100.0) / 5.0 - s.mean * s.mean;
     EXPECT_NEAR(s.stddev, std::sqrt(var), 1e-9);
     const session::SuggestedSpeed speed = session::suggestSpeed(s, 2.0);
-    EXPECT_DOUBLE_EQ(speed.target, s.mean);
-    EXPECT_DOUBLE_EQ(speed.epsilon, 2.0 * s.stddev);
+    EXPECT_DOUBLE_EQ(speed.T, s.mean);
+    EXPECT_DOUBLE_EQ(speed.eps, 2.0 * s.stddev);
     EXPECT_EQ(session::probe(v, {-50.0, 0.0, 0.0}, 2.0).count, 0u);
     EXPECT_THROW(session::probe(v, {4.0, 4.0, NAN}, 1.0), std::invalid_argument);
 }

@@ -18,8 +18,8 @@
 
 namespace steerseg::test {
 
-using workflow::Action;
-using workflow::State;
+using model::Action;
+using model::State;
 
 namespace {
 
@@ -202,7 +202,7 @@ TEST_F(UiPanel, TapOnRunInSeedingEmitsRun) {
     ui::ImGuiLayer layer;
     const std::vector<Action> out = tap(layer, status(State::Seeding), "Run");
     ASSERT_EQ(out.size(), 1U);
-    EXPECT_TRUE(std::holds_alternative<workflow::Run>(out[0]));
+    EXPECT_TRUE(std::holds_alternative<model::Run>(out[0]));
 }
 
 TEST_F(UiPanel, TapsOnProceedPlusAndALoadButton) {
@@ -210,18 +210,18 @@ TEST_F(UiPanel, TapsOnProceedPlusAndALoadButton) {
     ui::ImGuiLayer layer;
     const std::vector<Action> seed = tap(layer, status(State::Inspect), "Seed##proceed");
     ASSERT_EQ(seed.size(), 1U);
-    EXPECT_TRUE(std::holds_alternative<workflow::Proceed>(seed[0]));
+    EXPECT_TRUE(std::holds_alternative<model::Proceed>(seed[0]));
 
     const std::vector<Action> plus = tap(layer, status(State::Paused), "+##eps");
     ASSERT_EQ(plus.size(), 1U);
-    const auto* nudge = std::get_if<workflow::NudgeParam>(&plus[0]);
+    const auto* nudge = std::get_if<model::NudgeParam>(&plus[0]);
     ASSERT_NE(nudge, nullptr);
-    EXPECT_EQ(nudge->param, workflow::Param::Epsilon);
+    EXPECT_EQ(nudge->param, model::Param::Eps);
     EXPECT_EQ(nudge->steps, 1.0);
 
     const std::vector<Action> load = tap(layer, status(State::NoScan), "Load Sample##scan0");
     ASSERT_EQ(load.size(), 1U);
-    EXPECT_EQ(std::get<workflow::LoadScan>(load[0]).path, "builtin:sample");
+    EXPECT_EQ(std::get<model::LoadScan>(load[0]).path, "builtin:sample");
 }
 
 TEST_F(UiPanel, WantsThePointerOverThePanelOnly) {
@@ -354,7 +354,7 @@ TEST_F(UiPanel, TouchUiRoutesTapsToViewsAndPanel) {
     at(platform::InputEvent::Kind::PointerUp, onSlice);
     frames(2);
     ASSERT_EQ(out.size(), 1U);
-    const auto* seed = std::get_if<workflow::AddSeed>(&out[0]);
+    const auto* seed = std::get_if<model::AddSeed>(&out[0]);
     ASSERT_NE(seed, nullptr);
     EXPECT_NEAR(glm::length(seed->voxel - *ui::voxelAtScreen(*s.slice1, onSlice)), 0.0, 1e-9);
     out.clear();
@@ -366,7 +366,7 @@ TEST_F(UiPanel, TouchUiRoutesTapsToViewsAndPanel) {
     at(platform::InputEvent::Kind::PointerUp, onRun);
     frames(3);
     ASSERT_EQ(out.size(), 1U);
-    EXPECT_TRUE(std::holds_alternative<workflow::Run>(out[0]));
+    EXPECT_TRUE(std::holds_alternative<model::Run>(out[0]));
     out.clear();
 
     st.state = State::Evolving;
@@ -375,7 +375,7 @@ TEST_F(UiPanel, TouchUiRoutesTapsToViewsAndPanel) {
     at(platform::InputEvent::Kind::PointerDown, onSpeed);
     frames(30); // a second: the long press is due while the finger is still down
     ASSERT_EQ(out.size(), 1U);
-    EXPECT_TRUE(std::holds_alternative<workflow::Erase>(out[0]));
+    EXPECT_TRUE(std::holds_alternative<model::Erase>(out[0]));
     at(platform::InputEvent::Kind::PointerUp, onSpeed);
     frames(2);
     EXPECT_EQ(out.size(), 1U) << "nothing more when the finger lifts";
@@ -496,7 +496,7 @@ TEST_F(UiPanel, FingerDragScrollsATallPanel) {
     EXPECT_LE(after->y + after->h, kH) << "the last row is on the screen now";
     const std::vector<Action> tapped = tap(layer, st, "Sagittal##view2");
     ASSERT_EQ(tapped.size(), 1U);
-    EXPECT_EQ(std::get<workflow::ShowSlices>(tapped[0]).second, workflow::SliceAxis::Sagittal);
+    EXPECT_EQ(std::get<model::ShowSlices>(tapped[0]).second, model::SliceAxis::Sagittal);
 }
 
 } // namespace steerseg::test

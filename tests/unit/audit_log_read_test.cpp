@@ -11,6 +11,8 @@ namespace steerseg::test {
 namespace {
 
 using namespace workflow;
+
+using namespace model;
 namespace fs = std::filesystem;
 
 fs::path freshFile(const std::string& name) {

@@ -29,11 +29,11 @@ AutosaveSnapshot sampleSnapshot(std::int64_t savedAtMs = 1'700'000'000'123) {
     s.dims = {20, 16, 12};
     s.savedAtMs = savedAtMs;
     s.sequence = 9;
-    s.state = workflow::State::Evolving;
-    s.params.values[workflow::indexOf(workflow::Param::Target)] = 812.25;
-    s.params.values[workflow::indexOf(workflow::Param::Epsilon)] = 150.0;
-    s.params.values[workflow::indexOf(workflow::Param::Alpha)] = 0.9;
-    s.params.values[workflow::indexOf(workflow::Param::Radius)] = 4.5;
+    s.state = model::State::Evolving;
+    s.params.values[workflow::indexOf(model::Param::T)] = 812.25;
+    s.params.values[workflow::indexOf(model::Param::Eps)] = 150.0;
+    s.params.values[workflow::indexOf(model::Param::Alpha)] = 0.9;
+    s.params.values[workflow::indexOf(model::Param::Radius)] = 4.5;
     s.params.preset = "CT soft tissue";
     s.params.speed = {model::SpeedKind::Classify,
                       {{{1.0F, 2.0F, 3.0F}, 1.5F}},
@@ -92,7 +92,7 @@ TEST(AutosaveFormat, RoundTripKeepsEverything) {
 TEST(AutosaveFormat, RoundTripWithoutALevelSet) {
     AutosaveSnapshot s = sampleSnapshot();
     s.mask = {};
-    s.state = workflow::State::Inspect;
+    s.state = model::State::Inspect;
     expectSame(decodeSnapshot(encodeSnapshot(s)), s);
 }
 

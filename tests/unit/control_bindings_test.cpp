@@ -11,8 +11,8 @@ namespace steerseg::test {
 namespace {
 
 using input::ControlBindings;
+using model::Action;
 using platform::input::ControlEvent;
-using workflow::Action;
 
 ControlEvent step(const char* control, int steps, double time) {
     return {ControlEvent::Kind::Step, time, control, steps, 0.0};
@@ -35,7 +35,7 @@ ControlBindings defaults() {
 double nudged(const std::vector<Action>& actions) {
     double total = 0.0;
     for (const Action& a : actions) {
-        if (const auto* n = std::get_if<workflow::NudgeSelected>(&a)) {
+        if (const auto* n = std::get_if<model::NudgeSelected>(&a)) {
             total += n->steps;
         }
     }
@@ -117,16 +117,16 @@ TEST(ControlBindings, HoldBindingRunsWhileHeld) {
     std::vector<Action> out;
     b.feed(press("pedal", 0.0), out);
     ASSERT_EQ(out.size(), 1U);
-    EXPECT_TRUE(std::holds_alternative<workflow::Run>(out[0]));
+    EXPECT_TRUE(std::holds_alternative<model::Run>(out[0]));
     b.feed(release("pedal", 2.0), out);
     ASSERT_EQ(out.size(), 2U);
-    EXPECT_TRUE(std::holds_alternative<workflow::Pause>(out[1]));
+    EXPECT_TRUE(std::holds_alternative<model::Pause>(out[1]));
     // A plain button does nothing on release.
     out.clear();
     b.feed(press("powermate_press", 3.0), out);
     b.feed(release("powermate_press", 3.1), out);
     ASSERT_EQ(out.size(), 1U);
-    EXPECT_TRUE(std::holds_alternative<workflow::ToggleRun>(out[0]));
+    EXPECT_TRUE(std::holds_alternative<model::ToggleRun>(out[0]));
 }
 
 TEST(ControlBindings, ButtonsOfTheIssuesMapping) {
@@ -137,11 +137,11 @@ TEST(ControlBindings, ButtonsOfTheIssuesMapping) {
     b.feed(press("shuttle_button5", 0.0), out);
     b.feed(step("powermate_turn", 2, 0.0), out);
     ASSERT_EQ(out.size(), 4U);
-    EXPECT_EQ(std::get<workflow::CycleParam>(out[0]).delta, 1);
-    EXPECT_TRUE(std::holds_alternative<workflow::Undo>(out[1]));
-    EXPECT_TRUE(std::holds_alternative<workflow::Export>(out[2]));
-    const auto& radius = std::get<workflow::NudgeParam>(out[3]);
-    EXPECT_EQ(radius.param, workflow::Param::Radius);
+    EXPECT_EQ(std::get<model::CycleParam>(out[0]).delta, 1);
+    EXPECT_TRUE(std::holds_alternative<model::Undo>(out[1]));
+    EXPECT_TRUE(std::holds_alternative<model::Export>(out[2]));
+    const auto& radius = std::get<model::NudgeParam>(out[3]);
+    EXPECT_EQ(radius.param, model::Param::Radius);
     EXPECT_DOUBLE_EQ(radius.steps, 2.0);
 }
 
@@ -196,7 +196,7 @@ TEST(ControlBindings, AKnobPastTheRangeStopsAtTheBound) {
         rig.act(a);
     }
     const workflow::ParamRange& range = rig.status().ranges[0];
-    EXPECT_EQ(rig.status().selected, workflow::Param::Target);
+    EXPECT_EQ(rig.status().selected, model::Param::T);
     const auto T = [&rig] { return static_cast<double>(rig.status().params.T); };
     EXPECT_LE(T(), range.max);
     EXPECT_GT(T(), range.max - range.fineStep);

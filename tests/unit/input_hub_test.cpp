@@ -16,9 +16,9 @@ namespace steerseg::test {
 namespace {
 
 using input::InputHub;
+using model::Action;
 using platform::input::RawRecord;
 using platform::input::RawSource;
-using workflow::Action;
 
 const std::string kData = STEERSEG_INPUT_DATA_DIR;
 
@@ -39,7 +39,7 @@ template <typename A> int count(const std::vector<Action>& actions) {
 double nudged(const std::vector<Action>& actions) {
     double total = 0.0;
     for (const Action& a : actions) {
-        if (const auto* n = std::get_if<workflow::NudgeSelected>(&a)) {
+        if (const auto* n = std::get_if<model::NudgeSelected>(&a)) {
             total += n->steps;
         }
     }
@@ -83,16 +83,16 @@ TEST(InputHub, UnplugInTheMiddleOfATurnReleasesAndStopsReplugResumes) {
     hub.replay(rec.records, 0.0);
 
     const std::vector<Action> held = run(hub, 0.0, 0.99);
-    EXPECT_EQ(count<workflow::Run>(held), 1) << "the pedal, once debounced";
-    EXPECT_EQ(count<workflow::Pause>(held), 0);
+    EXPECT_EQ(count<model::Run>(held), 1) << "the pedal, once debounced";
+    EXPECT_EQ(count<model::Pause>(held), 0);
     // The ring at +4/7 from 0.2 s: one nudge at once, then 20 * 4/7 a second for 0.79 s.
     EXPECT_NEAR(nudged(held), 10.0 * (1 + 20.0 * 4 / 7 * 0.79), 10.0 * 1);
     EXPECT_TRUE(connected(hub, "shuttle"));
     EXPECT_TRUE(connected(hub, "pedal"));
 
     const std::vector<Action> gone = run(hub, 1.0, 1.99);
-    EXPECT_EQ(count<workflow::Pause>(gone), 1) << "the held pedal is released: it stops";
-    EXPECT_EQ(count<workflow::Run>(gone), 0);
+    EXPECT_EQ(count<model::Pause>(gone), 1) << "the held pedal is released: it stops";
+    EXPECT_EQ(count<model::Run>(gone), 0);
     EXPECT_EQ(nudged(gone), 0.0) << "the ring is at rest: no more nudges";
     EXPECT_FALSE(connected(hub, "shuttle"));
     EXPECT_FALSE(connected(hub, "pedal"));
@@ -155,7 +155,7 @@ TEST(InputHub, AReplayedFloodIsCapped) {
     }
     hub.replay(std::move(flood), 0.0);
     const std::vector<Action> out = run(hub, 0.0, 1.5);
-    const int turns = count<workflow::NudgeParam>(out);
+    const int turns = count<model::NudgeParam>(out);
     EXPECT_GT(turns, 0);
     EXPECT_LE(turns, 500) << "1000 records a second are 500 detents with their SYNs";
     EXPECT_EQ(lines(log.str(), "flooding"), 1) << log.str();
@@ -256,8 +256,8 @@ TEST(InputHub, LiveDeviceRetriedUntilPresentThenGoneThenBack) {
     }
     out.clear();
     hub.poll(5.1, out);
-    EXPECT_EQ(count<workflow::NudgeParam>(out), 1);
-    EXPECT_EQ(count<workflow::ToggleRun>(out), 1);
+    EXPECT_EQ(count<model::NudgeParam>(out), 1);
+    EXPECT_EQ(count<model::ToggleRun>(out), 1);
     shared.gone = true;
     hub.poll(5.2, out);
     EXPECT_FALSE(connected(hub, "powermate"));
@@ -320,16 +320,16 @@ TEST(InputHub, ALiveFloodNeverStallsAFrame) {
     }
     EXPECT_LT(slowest, 0.02) << "one frame's share of a flood is bounded";
     // 256 records a frame at 30 Hz is 7680 a second, capped at 2000: 1000 detents a second.
-    EXPECT_LE(count<workflow::NudgeParam>(out), 10 * 1000 + 1000);
+    EXPECT_LE(count<model::NudgeParam>(out), 10 * 1000 + 1000);
     EXPECT_LE(lines(log.str(), "input: powermate"), 12) << "one line a second at most";
     EXPECT_GE(lines(log.str(), "flooding"), 1);
 }
 
 TEST(InputHub, IndicatorFollowsTheWorkflow) {
-    EXPECT_EQ(input::indicatorFor(workflow::State::Evolving), platform::input::Indicator::Steady);
-    EXPECT_EQ(input::indicatorFor(workflow::State::Paused), platform::input::Indicator::Pulsing);
-    EXPECT_EQ(input::indicatorFor(workflow::State::Inspect), platform::input::Indicator::Off);
-    EXPECT_EQ(input::indicatorFor(workflow::State::NoScan), platform::input::Indicator::Off);
+    EXPECT_EQ(input::indicatorFor(model::State::Evolving), platform::input::Indicator::Steady);
+    EXPECT_EQ(input::indicatorFor(model::State::Paused), platform::input::Indicator::Pulsing);
+    EXPECT_EQ(input::indicatorFor(model::State::Inspect), platform::input::Indicator::Off);
+    EXPECT_EQ(input::indicatorFor(model::State::NoScan), platform::input::Indicator::Off);
 }
 
 TEST(InputHub, SpecsFromTheConfig) {

@@ -2,7 +2,6 @@
 // NIfTI, NRRD and .seg.nrrd through the project's readers, TIFF through OpenImageIO. On an
 // oblique, anisotropic, partly flipped grid, one asymmetric blob must land on the same voxels
 // and the same world positions as on the scan.
-#include "config/kiosk_config.hpp"
 #include "exports/export_writer.hpp"
 #include "io_test_files.hpp"
 #include "model/export_format.hpp"
@@ -283,12 +282,6 @@ TEST(ExportFormats, ChosenByExtensionOrName) {
     EXPECT_THROW((void)model::exportFormatFor("a.nrrd", "seg.nrrd"), std::invalid_argument);
     EXPECT_THROW((void)model::exportFormatFor("a.nrrd", "jpeg"), std::invalid_argument);
     EXPECT_THROW((void)model::exportFormatFor("a.obj", std::nullopt), std::invalid_argument);
-}
-
-// The config validates export.formats against its own copy of the names (config may not
-// include io); the copy must not drift from the writers.
-TEST(ExportFormats, TheConfigKnowsEveryFormatByItsName) {
-    EXPECT_EQ(config::exportFormatList(), model::exportFormatNames());
 }
 
 } // namespace

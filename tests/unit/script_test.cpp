@@ -17,11 +17,11 @@
 namespace steerseg::test {
 namespace {
 
+using model::State;
 using script::parseScript;
 using script::Script;
 using script::ScriptError;
 using script::ScriptPlayer;
-using workflow::State;
 using Kind = platform::InputEvent::Kind;
 
 std::string parseError(const std::string& text, const std::string& name = "s.session") {
@@ -82,62 +82,62 @@ TEST(ScriptParse, DeviceEvents) {
 }
 
 TEST(ScriptParse, OperatorActions) {
-    EXPECT_EQ(action<workflow::LoadScan>("load builtin:sample").path, "builtin:sample");
-    EXPECT_EQ(action<workflow::LoadScan>("load \"a b/c.nii\"").path, "a b/c.nii");
-    EXPECT_EQ(action<workflow::LoadScan>("load $SCAN").path, "$SCAN");
-    const auto probe = action<workflow::Probe>("probe 80 56 52 6");
+    EXPECT_EQ(action<model::LoadScan>("load builtin:sample").path, "builtin:sample");
+    EXPECT_EQ(action<model::LoadScan>("load \"a b/c.nii\"").path, "a b/c.nii");
+    EXPECT_EQ(action<model::LoadScan>("load $SCAN").path, "$SCAN");
+    const auto probe = action<model::Probe>("probe 80 56 52 6");
     EXPECT_EQ(probe.voxel, glm::dvec3(80, 56, 52));
     EXPECT_DOUBLE_EQ(probe.radiusMm, 6.0);
-    EXPECT_DOUBLE_EQ(action<workflow::Probe>("probe 1 2 3").radiusMm, workflow::Probe{}.radiusMm);
-    const auto seed = action<workflow::AddSeed>("seed 1.5 2 3 4");
+    EXPECT_DOUBLE_EQ(action<model::Probe>("probe 1 2 3").radiusMm, model::Probe{}.radiusMm);
+    const auto seed = action<model::AddSeed>("seed 1.5 2 3 4");
     EXPECT_EQ(seed.voxel, glm::dvec3(1.5, 2, 3));
     EXPECT_DOUBLE_EQ(seed.radius, 4.0);
-    EXPECT_DOUBLE_EQ(action<workflow::AddSeed>("seed 1 2 3").radius, 0.0); // the brush
-    EXPECT_DOUBLE_EQ(action<workflow::Erase>("erase 4 5 6 2").radius, 2.0);
-    EXPECT_TRUE(action<workflow::SetEraseMode>("erase_mode on").erase);
-    EXPECT_FALSE(action<workflow::SetEraseMode>("erase_mode off").erase);
-    const auto set = action<workflow::SetParam>("set eps 35.5");
-    EXPECT_EQ(set.param, workflow::Param::Epsilon);
+    EXPECT_DOUBLE_EQ(action<model::AddSeed>("seed 1 2 3").radius, 0.0); // the brush
+    EXPECT_DOUBLE_EQ(action<model::Erase>("erase 4 5 6 2").radius, 2.0);
+    EXPECT_TRUE(action<model::SetEraseMode>("erase_mode on").erase);
+    EXPECT_FALSE(action<model::SetEraseMode>("erase_mode off").erase);
+    const auto set = action<model::SetParam>("set eps 35.5");
+    EXPECT_EQ(set.param, model::Param::Eps);
     EXPECT_DOUBLE_EQ(set.value, 35.5);
-    EXPECT_EQ(action<workflow::SetParam>("set T -10").param, workflow::Param::Target);
-    EXPECT_EQ(action<workflow::SetParam>("set alpha 0.9").param, workflow::Param::Alpha);
-    EXPECT_EQ(action<workflow::SetParam>("set radius 4").param, workflow::Param::Radius);
-    EXPECT_DOUBLE_EQ(action<workflow::NudgeParam>("nudge alpha -2").steps, -2.0);
-    EXPECT_DOUBLE_EQ(action<workflow::NudgeSelected>("nudge selected 3").steps, 3.0);
-    EXPECT_EQ(action<workflow::SelectParam>("select eps").param, workflow::Param::Epsilon);
-    EXPECT_EQ(action<workflow::CycleParam>("cycle").delta, 1);
-    EXPECT_EQ(action<workflow::CycleParam>("cycle -1").delta, -1);
-    EXPECT_EQ(action<workflow::ApplyPreset>("preset \"CT soft tissue\"").name, "CT soft tissue");
-    const auto window = action<workflow::SetWindow>("window 40 400");
+    EXPECT_EQ(action<model::SetParam>("set T -10").param, model::Param::T);
+    EXPECT_EQ(action<model::SetParam>("set alpha 0.9").param, model::Param::Alpha);
+    EXPECT_EQ(action<model::SetParam>("set radius 4").param, model::Param::Radius);
+    EXPECT_DOUBLE_EQ(action<model::NudgeParam>("nudge alpha -2").steps, -2.0);
+    EXPECT_DOUBLE_EQ(action<model::NudgeSelected>("nudge selected 3").steps, 3.0);
+    EXPECT_EQ(action<model::SelectParam>("select eps").param, model::Param::Eps);
+    EXPECT_EQ(action<model::CycleParam>("cycle").delta, 1);
+    EXPECT_EQ(action<model::CycleParam>("cycle -1").delta, -1);
+    EXPECT_EQ(action<model::ApplyPreset>("preset \"CT soft tissue\"").name, "CT soft tissue");
+    const auto window = action<model::SetWindow>("window 40 400");
     EXPECT_DOUBLE_EQ(window.level, 40.0);
     EXPECT_DOUBLE_EQ(window.width, 400.0);
-    action<workflow::Run>("run");
-    action<workflow::Pause>("pause");
-    action<workflow::ToggleRun>("toggle");
-    action<workflow::Finish>("finish");
-    action<workflow::Resume>("resume");
-    action<workflow::Undo>("undo");
-    action<workflow::Redo>("redo");
-    action<workflow::Restart>("restart");
-    action<workflow::Proceed>("proceed");
-    action<workflow::Back>("back");
-    action<workflow::Dismiss>("dismiss");
-    action<workflow::Quit>("quit");
-    const auto rotate = action<workflow::RotateView>("rotate 30 -10");
+    action<model::Run>("run");
+    action<model::Pause>("pause");
+    action<model::ToggleRun>("toggle");
+    action<model::Finish>("finish");
+    action<model::Resume>("resume");
+    action<model::Undo>("undo");
+    action<model::Redo>("redo");
+    action<model::Restart>("restart");
+    action<model::Proceed>("proceed");
+    action<model::Back>("back");
+    action<model::Dismiss>("dismiss");
+    action<model::Quit>("quit");
+    const auto rotate = action<model::RotateView>("rotate 30 -10");
     EXPECT_DOUBLE_EQ(rotate.yaw, 30.0);
     EXPECT_DOUBLE_EQ(rotate.pitch, -10.0);
-    EXPECT_DOUBLE_EQ(action<workflow::ZoomView>("zoom 1.5").factor, 1.5);
-    const auto page = action<workflow::PageSlice>("page sagittal -4");
-    EXPECT_EQ(page.axis, workflow::SliceAxis::Sagittal);
+    EXPECT_DOUBLE_EQ(action<model::ZoomView>("zoom 1.5").factor, 1.5);
+    const auto page = action<model::PageSlice>("page sagittal -4");
+    EXPECT_EQ(page.axis, model::SliceAxis::Sagittal);
     EXPECT_EQ(page.delta, -4);
-    const auto slice = action<workflow::SetSlice>("slice coronal 60");
-    EXPECT_EQ(slice.axis, workflow::SliceAxis::Coronal);
+    const auto slice = action<model::SetSlice>("slice coronal 60");
+    EXPECT_EQ(slice.axis, model::SliceAxis::Coronal);
     EXPECT_EQ(slice.index, 60);
-    const auto show = action<workflow::ShowSlices>("show sagittal axial");
-    EXPECT_EQ(show.first, workflow::SliceAxis::Sagittal);
-    EXPECT_EQ(show.second, workflow::SliceAxis::Axial);
-    EXPECT_EQ(action<workflow::Export>("export").path, "");
-    EXPECT_EQ(action<workflow::Export>("export out/mask.nii.gz").path, "out/mask.nii.gz");
+    const auto show = action<model::ShowSlices>("show sagittal axial");
+    EXPECT_EQ(show.first, model::SliceAxis::Sagittal);
+    EXPECT_EQ(show.second, model::SliceAxis::Axial);
+    EXPECT_EQ(action<model::Export>("export").path, "");
+    EXPECT_EQ(action<model::Export>("export out/mask.nii.gz").path, "out/mask.nii.gz");
 }
 
 TEST(ScriptParse, WaitsChecksFramesDice) {
@@ -184,17 +184,17 @@ TEST(ScriptParse, WaitsChecksFramesDice) {
 }
 
 TEST(ScriptParse, SpeedVerbsAndChecks) {
-    EXPECT_EQ(action<workflow::SetSpeed>("speed threshold").kind, model::SpeedKind::Threshold);
-    EXPECT_EQ(action<workflow::SetSpeed>("speed edge").kind, model::SpeedKind::Edge);
-    EXPECT_EQ(action<workflow::SetSpeed>("speed classify").kind, model::SpeedKind::Classify);
-    const auto outside = action<workflow::MarkOutside>("outside 10 20 30 4.5");
+    EXPECT_EQ(action<model::SetSpeed>("speed threshold").kind, model::SpeedKind::Threshold);
+    EXPECT_EQ(action<model::SetSpeed>("speed edge").kind, model::SpeedKind::Edge);
+    EXPECT_EQ(action<model::SetSpeed>("speed classify").kind, model::SpeedKind::Classify);
+    const auto outside = action<model::MarkOutside>("outside 10 20 30 4.5");
     EXPECT_EQ(outside.voxel, glm::dvec3(10, 20, 30));
     EXPECT_DOUBLE_EQ(outside.radiusMm, 4.5);
-    EXPECT_DOUBLE_EQ(action<workflow::MarkOutside>("outside 1 2 3").radiusMm, 0.0)
+    EXPECT_DOUBLE_EQ(action<model::MarkOutside>("outside 1 2 3").radiusMm, 0.0)
         << "no radius: the probe's";
-    action<workflow::ClearExamples>("clear_examples");
-    EXPECT_TRUE(action<workflow::SetOutsideMode>("outside_mode on").outside);
-    EXPECT_FALSE(action<workflow::SetOutsideMode>("outside_mode off").outside);
+    action<model::ClearExamples>("clear_examples");
+    EXPECT_TRUE(action<model::SetOutsideMode>("outside_mode on").outside);
+    EXPECT_FALSE(action<model::SetOutsideMode>("outside_mode off").outside);
 
     const Script s = parseScript("wait speed classify timeout 5\n"
                                  "expect speed edge\n"
@@ -301,9 +301,8 @@ TEST(ScriptParse, TimingCommentsAndLines) {
     EXPECT_EQ(s.steps[1].timing.kind, script::Timing::At);
     EXPECT_DOUBLE_EQ(s.steps[1].timing.seconds, 1.25);
     EXPECT_EQ(s.steps[2].timing.kind, script::Timing::After);
-    EXPECT_EQ(
-        std::get<workflow::LoadScan>(std::get<script::ActionStep>(s.steps[2].kind).action).path,
-        "x # not a comment.nii");
+    EXPECT_EQ(std::get<model::LoadScan>(std::get<script::ActionStep>(s.steps[2].kind).action).path,
+              "x # not a comment.nii");
     EXPECT_EQ(s.steps[3].line, 6);
 }
 
@@ -419,10 +418,10 @@ TEST(ScriptParse, FilesThatAreNotScripts) {
 struct Recorder : script::ScriptSink {
     std::vector<std::string> log;
     double dice = 0.9;
-    void action(const workflow::Action& a) override {
-        if (const auto* load = std::get_if<workflow::LoadScan>(&a)) {
+    void action(const model::Action& a) override {
+        if (const auto* load = std::get_if<model::LoadScan>(&a)) {
             log.push_back("load " + load->path);
-        } else if (const auto* out = std::get_if<workflow::Export>(&a)) {
+        } else if (const auto* out = std::get_if<model::Export>(&a)) {
             log.push_back("export " + out->path);
         } else {
             log.push_back("action " + std::to_string(a.index()));
@@ -812,7 +811,7 @@ TEST(ScriptScenarios, ParseAndNameExistingData) {
         for (const script::Step& step : p.script().steps) {
             std::vector<std::string> paths;
             if (const auto* a = std::get_if<script::ActionStep>(&step.kind)) {
-                if (const auto* load = std::get_if<workflow::LoadScan>(&a->action)) {
+                if (const auto* load = std::get_if<model::LoadScan>(&a->action)) {
                     paths.push_back(load->path);
                 }
             } else if (const auto* dice = std::get_if<script::DiceStep>(&step.kind)) {

@@ -48,13 +48,13 @@ TEST(SpeedProbe, NoiseFollowsTheNoiseNotTheStructure) {
 
 TEST(SpeedProbe, SuggestionsFollowTheRulesAndTheirFloors) {
     const session::SpeedProbe p = session::probeSpeed(noisyVolume(20.0F, 0.0F), kProbe);
-    EXPECT_DOUBLE_EQ(p.target, p.mean);
-    EXPECT_DOUBLE_EQ(p.epsilon, session::kEpsFactor * p.stddev);
+    EXPECT_DOUBLE_EQ(p.T, p.mean);
+    EXPECT_DOUBLE_EQ(p.eps, session::kEpsFactor * p.stddev);
     EXPECT_DOUBLE_EQ(p.conductance, session::kConductanceFactor * p.noise);
     EXPECT_DOUBLE_EQ(p.kappa, session::kKappaFactor * p.noise);
     // A noiseless region: eps at its floor, conductance and kappa from the noise floor.
     const session::SpeedProbe clean = session::probeSpeed(noisyVolume(0.0F, 0.0F), kProbe);
-    EXPECT_DOUBLE_EQ(clean.epsilon, session::kEpsFloor);
+    EXPECT_DOUBLE_EQ(clean.eps, session::kEpsFloor);
     EXPECT_DOUBLE_EQ(clean.kappa, session::kKappaFactor * session::kNoiseFloor);
     EXPECT_GT(clean.conductance, 0.0);
 }

@@ -6,8 +6,8 @@
 
 namespace steerseg::test {
 
-using workflow::Action;
-using workflow::State;
+using model::Action;
+using model::State;
 
 namespace {
 
@@ -37,8 +37,8 @@ workflow::Status status(State state) {
     workflow::Status st;
     st.state = state;
     st.scan.dims = geometry().dims;
-    st.view.first = workflow::SliceAxis::Axial;
-    st.view.second = workflow::SliceAxis::Coronal;
+    st.view.first = model::SliceAxis::Axial;
+    st.view.second = model::SliceAxis::Coronal;
     return st;
 }
 
@@ -55,10 +55,10 @@ glm::dvec2 centreOf(const ui::Rect& r) {
     return {r.x + 0.5 * r.w, r.y + 0.5 * r.h};
 }
 
-int pagedBy(const std::vector<Action>& actions, workflow::SliceAxis axis) {
+int pagedBy(const std::vector<Action>& actions, model::SliceAxis axis) {
     int total = 0;
     for (const Action& a : actions) {
-        const auto* p = std::get_if<workflow::PageSlice>(&a);
+        const auto* p = std::get_if<model::PageSlice>(&a);
         EXPECT_NE(p, nullptr);
         if (p != nullptr) {
             EXPECT_EQ(p->axis, axis);
@@ -78,7 +78,7 @@ TEST(UiInteraction, TapInInspectProbesTheVoxelUnderTheFinger) {
     const glm::dvec2 at = centreOf(s.layout.slice1) + glm::dvec2(13.0, -7.0);
     const auto out = in.onGesture(gesture(ui::Gesture::Kind::Tap, at), s, status(State::Inspect));
     ASSERT_EQ(out.size(), 1U);
-    const auto* probe = std::get_if<workflow::Probe>(&out[0]);
+    const auto* probe = std::get_if<model::Probe>(&out[0]);
     ASSERT_NE(probe, nullptr);
     EXPECT_EQ(probe->radiusMm, 7.5);
     EXPECT_NEAR(glm::length(probe->voxel - *ui::voxelAtScreen(*s.slice1, at)), 0.0, 1e-12);
@@ -96,7 +96,7 @@ TEST(UiInteraction, TapSeedsOrErasesWhileEditing) {
     for (State state : {State::Seeding, State::Evolving, State::Paused}) {
         const auto seed = in.onGesture(gesture(ui::Gesture::Kind::Tap, at), s, status(state));
         ASSERT_EQ(seed.size(), 1U);
-        const auto* add = std::get_if<workflow::AddSeed>(&seed[0]);
+        const auto* add = std::get_if<model::AddSeed>(&seed[0]);
         ASSERT_NE(add, nullptr);
         EXPECT_LE(add->radius, 0.0) << "the brush radius";
         EXPECT_NEAR(glm::length(add->voxel - *ui::voxelAtScreen(*s.slice2, at)), 0.0, 1e-12);
@@ -105,11 +105,11 @@ TEST(UiInteraction, TapSeedsOrErasesWhileEditing) {
         erasing.eraseMode = true;
         const auto erase = in.onGesture(gesture(ui::Gesture::Kind::Tap, at), s, erasing);
         ASSERT_EQ(erase.size(), 1U);
-        EXPECT_TRUE(std::holds_alternative<workflow::Erase>(erase[0]));
+        EXPECT_TRUE(std::holds_alternative<model::Erase>(erase[0]));
 
         const auto held = in.onGesture(gesture(ui::Gesture::Kind::LongPress, at), s, status(state));
         ASSERT_EQ(held.size(), 1U);
-        EXPECT_TRUE(std::holds_alternative<workflow::Erase>(held[0]));
+        EXPECT_TRUE(std::holds_alternative<model::Erase>(held[0]));
     }
     for (State state : {State::NoScan, State::Loading, State::Review, State::Exporting, State::Done,
                         State::Error}) {
@@ -129,7 +129,7 @@ TEST(UiInteraction, TapInOutsideModeMarksAnOutsideExample) {
         st.outsideMode = true;
         const auto out = in.onGesture(gesture(ui::Gesture::Kind::Tap, at), s, st);
         ASSERT_EQ(out.size(), 1U) << static_cast<int>(state);
-        const auto* mark = std::get_if<workflow::MarkOutside>(&out[0]);
+        const auto* mark = std::get_if<model::MarkOutside>(&out[0]);
         ASSERT_NE(mark, nullptr) << static_cast<int>(state);
         EXPECT_EQ(mark->radiusMm, 6.0) << "sized as a probe";
         EXPECT_NEAR(glm::length(mark->voxel - *ui::voxelAtScreen(*s.slice1, at)), 0.0, 1e-12);
@@ -137,7 +137,7 @@ TEST(UiInteraction, TapInOutsideModeMarksAnOutsideExample) {
             // A long press still erases: outside mode changes the tap only.
             const auto held = in.onGesture(gesture(ui::Gesture::Kind::LongPress, at), s, st);
             ASSERT_EQ(held.size(), 1U);
-            EXPECT_TRUE(std::holds_alternative<workflow::Erase>(held[0]));
+            EXPECT_TRUE(std::holds_alternative<model::Erase>(held[0]));
         }
     }
     for (State state : {State::Review, State::Done, State::Error}) {
@@ -176,11 +176,11 @@ TEST(UiInteraction, VerticalDragOnASlicePages) {
             all.push_back(a);
         }
     }
-    EXPECT_EQ(pagedBy(all, workflow::SliceAxis::Axial), 3);
+    EXPECT_EQ(pagedBy(all, model::SliceAxis::Axial), 3);
     // A new drag starts from no remainder; down pages back, on the second view's axis.
     ui::Gesture down = gesture(ui::Gesture::Kind::Drag, centreOf(s.layout.slice2), 8);
     down.delta = {0.0, 25.0};
-    EXPECT_EQ(pagedBy(in.onGesture(down, s, status(State::Inspect)), workflow::SliceAxis::Coronal),
+    EXPECT_EQ(pagedBy(in.onGesture(down, s, status(State::Inspect)), model::SliceAxis::Coronal),
               -2);
 }
 
@@ -189,10 +189,10 @@ TEST(UiInteraction, WheelOnASlicePagesAndCarriesFractions) {
     const ui::ScreenState s = screen();
     ui::Gesture w = gesture(ui::Gesture::Kind::Wheel, centreOf(s.layout.slice1));
     w.wheel = 2.0;
-    EXPECT_EQ(pagedBy(in.onGesture(w, s, status(State::Paused)), workflow::SliceAxis::Axial), 2);
+    EXPECT_EQ(pagedBy(in.onGesture(w, s, status(State::Paused)), model::SliceAxis::Axial), 2);
     w.wheel = 0.5;
     EXPECT_TRUE(in.onGesture(w, s, status(State::Paused)).empty());
-    EXPECT_EQ(pagedBy(in.onGesture(w, s, status(State::Paused)), workflow::SliceAxis::Axial), 1);
+    EXPECT_EQ(pagedBy(in.onGesture(w, s, status(State::Paused)), model::SliceAxis::Axial), 1);
 }
 
 TEST(UiInteraction, DragRotatesAndPinchOrWheelZoomsThe3dView) {
@@ -205,7 +205,7 @@ TEST(UiInteraction, DragRotatesAndPinchOrWheelZoomsThe3dView) {
     drag.delta = {10.0, -4.0};
     const auto rotate = in.onGesture(drag, s, status(State::Review));
     ASSERT_EQ(rotate.size(), 1U);
-    const auto* r = std::get_if<workflow::RotateView>(&rotate[0]);
+    const auto* r = std::get_if<model::RotateView>(&rotate[0]);
     ASSERT_NE(r, nullptr);
     EXPECT_DOUBLE_EQ(r->yaw, 5.0);
     EXPECT_DOUBLE_EQ(r->pitch, -2.0);
@@ -214,13 +214,13 @@ TEST(UiInteraction, DragRotatesAndPinchOrWheelZoomsThe3dView) {
     pinch.scale = 1.5;
     const auto zoom = in.onGesture(pinch, s, status(State::Inspect));
     ASSERT_EQ(zoom.size(), 1U);
-    EXPECT_DOUBLE_EQ(std::get<workflow::ZoomView>(zoom[0]).factor, 1.5);
+    EXPECT_DOUBLE_EQ(std::get<model::ZoomView>(zoom[0]).factor, 1.5);
 
     ui::Gesture wheel = gesture(ui::Gesture::Kind::Wheel, centreOf(s.layout.view3d));
     wheel.wheel = -2.0;
     const auto out = in.onGesture(wheel, s, status(State::Evolving));
     ASSERT_EQ(out.size(), 1U);
-    EXPECT_NEAR(std::get<workflow::ZoomView>(out[0]).factor, 1.0 / (1.25 * 1.25), 1e-12);
+    EXPECT_NEAR(std::get<model::ZoomView>(out[0]).factor, 1.0 / (1.25 * 1.25), 1e-12);
 
     EXPECT_TRUE(in.onGesture(drag, s, status(State::NoScan)).empty());
     pinch.scale = std::nan("");

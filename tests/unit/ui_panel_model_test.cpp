@@ -9,8 +9,8 @@
 
 namespace steerseg::test {
 
-using workflow::Action;
-using workflow::State;
+using model::Action;
+using model::State;
 
 namespace {
 
@@ -58,24 +58,24 @@ ui::PanelModel modelOf(workflow::Status st) {
 // panel (taps on the views add Probe, AddSeed, Erase, PageSlice, RotateView and ZoomView:
 // ui_interaction_test).
 TEST(UiPanelModel, EveryMeaningfulActionIsReachableByTouch) {
-    const std::size_t load = indexOf<workflow::LoadScan>();
-    const std::size_t preset = indexOf<workflow::ApplyPreset>();
-    const std::size_t set = indexOf<workflow::SetParam>();
-    const std::size_t nudge = indexOf<workflow::NudgeParam>();
-    const std::size_t select = indexOf<workflow::SelectParam>();
-    const std::size_t window = indexOf<workflow::SetWindow>();
-    const std::size_t eraseMode = indexOf<workflow::SetEraseMode>();
-    const std::size_t run = indexOf<workflow::Run>();
-    const std::size_t pause = indexOf<workflow::Pause>();
-    const std::size_t exportMask = indexOf<workflow::Export>();
-    const std::size_t undo = indexOf<workflow::Undo>();
-    const std::size_t redo = indexOf<workflow::Redo>();
-    const std::size_t restart = indexOf<workflow::Restart>();
-    const std::size_t proceed = indexOf<workflow::Proceed>();
-    const std::size_t back = indexOf<workflow::Back>();
-    const std::size_t dismiss = indexOf<workflow::Dismiss>();
-    const std::size_t show = indexOf<workflow::ShowSlices>();
-    const std::size_t speed = indexOf<workflow::SetSpeed>();
+    const std::size_t load = indexOf<model::LoadScan>();
+    const std::size_t preset = indexOf<model::ApplyPreset>();
+    const std::size_t set = indexOf<model::SetParam>();
+    const std::size_t nudge = indexOf<model::NudgeParam>();
+    const std::size_t select = indexOf<model::SelectParam>();
+    const std::size_t window = indexOf<model::SetWindow>();
+    const std::size_t eraseMode = indexOf<model::SetEraseMode>();
+    const std::size_t run = indexOf<model::Run>();
+    const std::size_t pause = indexOf<model::Pause>();
+    const std::size_t exportMask = indexOf<model::Export>();
+    const std::size_t undo = indexOf<model::Undo>();
+    const std::size_t redo = indexOf<model::Redo>();
+    const std::size_t restart = indexOf<model::Restart>();
+    const std::size_t proceed = indexOf<model::Proceed>();
+    const std::size_t back = indexOf<model::Back>();
+    const std::size_t dismiss = indexOf<model::Dismiss>();
+    const std::size_t show = indexOf<model::ShowSlices>();
+    const std::size_t speed = indexOf<model::SetSpeed>();
     const std::set<std::size_t> steering{preset, set,  nudge,   select, eraseMode,
                                          undo,   redo, restart, show,   speed};
     const auto with = [](std::set<std::size_t> s, std::initializer_list<std::size_t> more) {
@@ -120,14 +120,14 @@ TEST(UiPanelModel, ProceedIsLabelledForTheState) {
     const auto run = std::find_if(seeding.nav.begin(), seeding.nav.end(),
                                   [](const ui::PanelButton& b) { return b.label == "Run"; });
     ASSERT_NE(run, seeding.nav.end());
-    EXPECT_TRUE(std::holds_alternative<workflow::Run>(run->action));
+    EXPECT_TRUE(std::holds_alternative<model::Run>(run->action));
     const ui::PanelModel review = modelOf(status(State::Review));
     EXPECT_EQ(review.nav.back().label, "Export##proceed");
 }
 
 TEST(UiPanelModel, ParametersReadoutsAndToggles) {
     workflow::Status st = status(State::Paused);
-    st.selected = workflow::Param::Epsilon;
+    st.selected = model::Param::Eps;
     st.params.T = 40.0F;
     st.params.eps = 25.0F;
     st.params.alpha = 0.9F;
@@ -136,7 +136,7 @@ TEST(UiPanelModel, ParametersReadoutsAndToggles) {
     st.volumeMl = 7.126;
     st.converged = true;
     st.eraseMode = true;
-    st.ranges[static_cast<std::size_t>(workflow::Param::Target)] = {-200.0, 300.0, 1.0};
+    st.ranges[static_cast<std::size_t>(model::Param::T)] = {-200.0, 300.0, 1.0};
     const ui::PanelModel m = modelOf(st);
     ASSERT_EQ(m.params.size(), 4U);
     EXPECT_EQ(m.params[0].range.min, -200.0);
@@ -162,11 +162,11 @@ TEST(UiPanelModel, ParametersReadoutsAndToggles) {
     EXPECT_EQ(m.banner, "Paused");
     EXPECT_EQ(m.scanName, "sample");
     const auto erase = std::find_if(m.tools.begin(), m.tools.end(), [](const ui::PanelButton& b) {
-        return std::holds_alternative<workflow::SetEraseMode>(b.action);
+        return std::holds_alternative<model::SetEraseMode>(b.action);
     });
     ASSERT_NE(erase, m.tools.end());
     EXPECT_TRUE(erase->active);
-    EXPECT_FALSE(std::get<workflow::SetEraseMode>(erase->action).erase) << "a tap turns it off";
+    EXPECT_FALSE(std::get<model::SetEraseMode>(erase->action).erase) << "a tap turns it off";
 }
 
 TEST(UiPanelModel, TheSpeedsAreOfferedWhereParametersAre) {
@@ -179,7 +179,7 @@ TEST(UiPanelModel, TheSpeedsAreOfferedWhereParametersAre) {
         const std::vector<std::string> labels{"Threshold##speed", "Edge##speed", "Classify##speed"};
         for (std::size_t i = 0; i < 3; ++i) {
             EXPECT_EQ(m.speeds[i].label, labels[i]);
-            EXPECT_EQ(std::get<workflow::SetSpeed>(m.speeds[i].action).kind, model::kSpeedKinds[i]);
+            EXPECT_EQ(std::get<model::SetSpeed>(m.speeds[i].action).kind, model::kSpeedKinds[i]);
             EXPECT_EQ(m.speeds[i].active, i == 1) << "the chosen speed is highlighted";
             EXPECT_TRUE(m.speeds[i].enabled);
         }
@@ -204,22 +204,22 @@ TEST(UiPanelModel, ClassifyShowsItsExamplesAndTools) {
     EXPECT_EQ(m.speedNote, "Classify needs an outside example; threshold runs until then.");
     ASSERT_EQ(m.exampleTools.size(), 2U);
     EXPECT_EQ(m.exampleTools[0].label, "Outside: off");
-    EXPECT_TRUE(std::get<workflow::SetOutsideMode>(m.exampleTools[0].action).outside);
+    EXPECT_TRUE(std::get<model::SetOutsideMode>(m.exampleTools[0].action).outside);
     EXPECT_FALSE(m.exampleTools[0].active);
-    EXPECT_TRUE(std::holds_alternative<workflow::ClearExamples>(m.exampleTools[1].action));
+    EXPECT_TRUE(std::holds_alternative<model::ClearExamples>(m.exampleTools[1].action));
     EXPECT_TRUE(m.exampleTools[1].enabled);
     const std::set<std::size_t> got = kinds(ui::reachableActions(m));
-    EXPECT_TRUE(got.count(indexOf<workflow::SetOutsideMode>()));
-    EXPECT_TRUE(got.count(indexOf<workflow::ClearExamples>()));
+    EXPECT_TRUE(got.count(indexOf<model::SetOutsideMode>()));
+    EXPECT_TRUE(got.count(indexOf<model::ClearExamples>()));
 
     st.insideExamples.clear();
     st.outsideMode = true;
     m = modelOf(st);
     EXPECT_EQ(m.exampleTools[0].label, "Outside: on");
     EXPECT_TRUE(m.exampleTools[0].active);
-    EXPECT_FALSE(std::get<workflow::SetOutsideMode>(m.exampleTools[0].action).outside);
+    EXPECT_FALSE(std::get<model::SetOutsideMode>(m.exampleTools[0].action).outside);
     EXPECT_FALSE(m.exampleTools[1].enabled) << "nothing to clear";
-    EXPECT_FALSE(kinds(ui::reachableActions(m)).count(indexOf<workflow::ClearExamples>()));
+    EXPECT_FALSE(kinds(ui::reachableActions(m)).count(indexOf<model::ClearExamples>()));
     EXPECT_EQ(m.speedNote, "Classify needs an inside example (a probe or a seed) and an outside "
                            "example; threshold runs until then.");
 
@@ -236,8 +236,8 @@ TEST(UiPanelModel, UndoGreyedWithNothingToUndo) {
     st.canUndo = false;
     const ui::PanelModel m = modelOf(st);
     const std::set<std::size_t> got = kinds(ui::reachableActions(m));
-    EXPECT_FALSE(got.count(indexOf<workflow::Undo>()));
-    EXPECT_TRUE(got.count(indexOf<workflow::Redo>()));
+    EXPECT_FALSE(got.count(indexOf<model::Undo>()));
+    EXPECT_TRUE(got.count(indexOf<model::Redo>()));
 }
 
 TEST(UiPanelModel, ButtonsWorkAsTheWorkflowAllows) {
@@ -245,7 +245,7 @@ TEST(UiPanelModel, ButtonsWorkAsTheWorkflowAllows) {
     st.speed = model::SpeedKind::Classify;
     st.insideExamples.resize(1);
     // What the workflow published, not what the panel could derive from the counts.
-    st.allowed = workflow::ActionKinds{workflow::ActionKind::Redo};
+    st.allowed = model::ActionKinds{model::ActionKind::Redo};
     const ui::PanelModel m = ui::buildPanelModel(st, kScans);
     const auto enabled = [&](const std::vector<ui::PanelButton>& list, const std::string& label) {
         const auto b = std::find_if(list.begin(), list.end(),
@@ -275,20 +275,20 @@ TEST(UiPanelModel, ScansAndViews) {
     const ui::PanelModel m = modelOf(status(State::NoScan));
     ASSERT_EQ(m.scans.size(), 3U);
     EXPECT_EQ(m.scans[0].label, "Load Sample##scan0");
-    EXPECT_EQ(std::get<workflow::LoadScan>(m.scans[1].action).path, kScans[1]);
+    EXPECT_EQ(std::get<model::LoadScan>(m.scans[1].action).path, kScans[1]);
     EXPECT_EQ(ui::scanLabel("/data/ct/CT_sarcoma.nii.gz"), "CT_sarcoma.nii.gz");
     EXPECT_EQ(ui::scanLabel("/data/dicom/head/"), "head");
     EXPECT_EQ(ui::scanLabel(""), "");
 
     workflow::Status st = status(State::Inspect);
-    st.view.first = workflow::SliceAxis::Axial;
-    st.view.second = workflow::SliceAxis::Coronal;
+    st.view.first = model::SliceAxis::Axial;
+    st.view.second = model::SliceAxis::Coronal;
     const ui::PanelModel inspect = modelOf(st);
     ASSERT_EQ(inspect.views.size(), 6U);
     EXPECT_TRUE(inspect.views[0].active);
-    const auto sagittalFirst = std::get<workflow::ShowSlices>(inspect.views[2].action);
-    EXPECT_EQ(sagittalFirst.first, workflow::SliceAxis::Sagittal);
-    EXPECT_EQ(sagittalFirst.second, workflow::SliceAxis::Coronal);
+    const auto sagittalFirst = std::get<model::ShowSlices>(inspect.views[2].action);
+    EXPECT_EQ(sagittalFirst.first, model::SliceAxis::Sagittal);
+    EXPECT_EQ(sagittalFirst.second, model::SliceAxis::Coronal);
     EXPECT_TRUE(inspect.views[4].active);
     ASSERT_TRUE(inspect.window);
     EXPECT_EQ(inspect.window->width, 3000.0) << "unset window: the whole range";
@@ -311,11 +311,10 @@ TEST(UiViewCaption, NamesTheViewAndTheSlice) {
     f.sliceAxis = 2;
     f.slice = 40;
     EXPECT_EQ(ui::view3dCaption(), "3D");
-    EXPECT_EQ(ui::contourCaption(workflow::SliceAxis::Axial, f, {64, 64, 80}),
-              "Axial  slice 41/80");
+    EXPECT_EQ(ui::contourCaption(model::SliceAxis::Axial, f, {64, 64, 80}), "Axial  slice 41/80");
     f.sliceAxis = 1;
     f.slice = 11;
-    EXPECT_EQ(ui::speedCaption(workflow::SliceAxis::Coronal, f, {64, 80, 80}),
+    EXPECT_EQ(ui::speedCaption(model::SliceAxis::Coronal, f, {64, 80, 80}),
               "Coronal \u2014 speed  12/80");
 }
 

@@ -1,4 +1,4 @@
-#include "workflow/action.hpp"
+#include "model/action.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -10,15 +10,15 @@
 namespace steerseg::test {
 namespace {
 
-using namespace workflow;
+using namespace model;
 
 TEST(WorkflowAction, ParamNamesRoundTrip) {
     for (int i = 0; i < kParamCount; ++i) {
         const auto p = static_cast<Param>(i);
         EXPECT_EQ(paramFromName(paramName(p)), p) << paramName(p);
     }
-    EXPECT_EQ(paramName(Param::Target), "T");
-    EXPECT_EQ(paramName(Param::Epsilon), "eps");
+    EXPECT_EQ(paramName(Param::T), "T");
+    EXPECT_EQ(paramName(Param::Eps), "eps");
     EXPECT_FALSE(paramFromName("Eps").has_value());
     EXPECT_FALSE(paramFromName("").has_value());
 }
@@ -78,7 +78,7 @@ TEST(WorkflowAction, EveryBindableNameGivesItsAction) {
 
 TEST(WorkflowAction, BindingStepsCarryDirectionAndSize) {
     const auto nudge = std::get<NudgeParam>(*bindingAction("nudge:eps", -3.0));
-    EXPECT_EQ(nudge.param, Param::Epsilon);
+    EXPECT_EQ(nudge.param, Param::Eps);
     EXPECT_EQ(nudge.steps, -3.0);
     EXPECT_EQ(std::get<NudgeSelected>(*bindingAction("nudge_selected", 2.0)).steps, 2.0);
     const auto page = std::get<PageSlice>(*bindingAction("page:sagittal", -2.0));

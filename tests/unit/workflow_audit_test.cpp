@@ -11,6 +11,8 @@ namespace steerseg::test {
 namespace {
 
 using namespace workflow;
+
+using namespace model;
 namespace fs = std::filesystem;
 
 std::vector<nlohmann::json> readLines(const fs::path& path) {
@@ -43,7 +45,7 @@ TEST(WorkflowAudit, EveryActionAndTransitionIsAJsonLine) {
         ASSERT_TRUE(rig.act(Probe{{15.0, 6.0, 4.0}, 3.0}).accepted);
         ASSERT_FALSE(rig.act(ApplyPreset{"liver"}).accepted);
         rig.seed();
-        ASSERT_TRUE(rig.act(NudgeParam{Param::Epsilon, 2.0}).accepted);
+        ASSERT_TRUE(rig.act(NudgeParam{Param::Eps, 2.0}).accepted);
         EXPECT_TRUE(rig.status().message.empty());
     }
     const std::vector<nlohmann::json> lines = readLines(path);

@@ -8,6 +8,8 @@ namespace steerseg::test {
 namespace {
 
 using namespace workflow;
+
+using namespace model;
 namespace fs = std::filesystem;
 
 fs::path freshDir(const std::string& name) {

@@ -10,6 +10,8 @@ namespace {
 
 using namespace workflow;
 
+using namespace model;
+
 TEST(WorkflowParams, NiceStepsAreOneTwoFive) {
     EXPECT_DOUBLE_EQ(niceStep(1.0), 1.0);
     EXPECT_DOUBLE_EQ(niceStep(4.095), 5.0);
@@ -78,7 +80,7 @@ TEST(WorkflowParams, PresetsSetSpeedWindowAndTransfer) {
     // Changing the speed by hand means the preset no longer holds; the brush does not.
     ASSERT_TRUE(rig.act(SetParam{Param::Radius, 2.0}).accepted);
     EXPECT_EQ(rig.status().preset, "CT soft tissue");
-    ASSERT_TRUE(rig.act(NudgeParam{Param::Target, 1.0}).accepted);
+    ASSERT_TRUE(rig.act(NudgeParam{Param::T, 1.0}).accepted);
     EXPECT_EQ(rig.status().preset, "");
     ASSERT_TRUE(rig.act(Undo{}).accepted);
     EXPECT_EQ(rig.status().preset, "CT soft tissue");
@@ -86,7 +88,7 @@ TEST(WorkflowParams, PresetsSetSpeedWindowAndTransfer) {
     EXPECT_FALSE(out.accepted);
     EXPECT_EQ(out.reason, "unknown preset 'MR tumour'");
     // A preset beyond the scan's range is clamped into it.
-    ASSERT_TRUE(rig.act(SetParam{Param::Target, 1e9}).accepted);
+    ASSERT_TRUE(rig.act(SetParam{Param::T, 1e9}).accepted);
     EXPECT_EQ(rig.status().params.T, 1000.0F);
 }
 
@@ -95,15 +97,15 @@ TEST(WorkflowParams, ValuesAreClampedAndNonFiniteOnesRefused) {
     rig.load();
     ASSERT_TRUE(rig.act(SetParam{Param::Alpha, 7.0}).accepted);
     EXPECT_EQ(rig.status().params.alpha, 1.0F);
-    ASSERT_TRUE(rig.act(SetParam{Param::Epsilon, -3.0}).accepted);
+    ASSERT_TRUE(rig.act(SetParam{Param::Eps, -3.0}).accepted);
     EXPECT_EQ(rig.status().params.eps, 0.0F);
     ASSERT_TRUE(rig.act(NudgeParam{Param::Radius, 1e308}).accepted);
     EXPECT_EQ(rig.status().radius, 4.0);
-    ASSERT_TRUE(rig.act(NudgeParam{Param::Target, -1e308}).accepted);
+    ASSERT_TRUE(rig.act(NudgeParam{Param::T, -1e308}).accepted);
     EXPECT_EQ(rig.status().params.T, -1000.0F);
     const double inf = std::numeric_limits<double>::infinity();
-    EXPECT_FALSE(rig.act(SetParam{Param::Target, inf}).accepted);
-    EXPECT_FALSE(rig.act(NudgeParam{Param::Target, std::nan("")}).accepted);
+    EXPECT_FALSE(rig.act(SetParam{Param::T, inf}).accepted);
+    EXPECT_FALSE(rig.act(NudgeParam{Param::T, std::nan("")}).accepted);
     EXPECT_FALSE(rig.act(NudgeSelected{-inf}).accepted);
     EXPECT_FALSE(rig.act(SelectParam{static_cast<Param>(-1)}).accepted);
     EXPECT_FALSE(rig.act(SetWindow{std::nan(""), 10.0}).accepted);
@@ -131,7 +133,7 @@ TEST(WorkflowParams, ParametersAreLiveWhileEvolving) {
     Rig rig;
     rig.driveTo(State::Evolving);
     const int calls = rig.engine.setParamsCalls;
-    ASSERT_TRUE(rig.act(SetParam{Param::Epsilon, 321.0}).accepted);
+    ASSERT_TRUE(rig.act(SetParam{Param::Eps, 321.0}).accepted);
     EXPECT_EQ(rig.engine.setParamsCalls, calls + 1);
     EXPECT_EQ(rig.engine.params().eps, 321.0F);
     EXPECT_EQ(rig.state(), State::Evolving);

@@ -8,10 +8,12 @@ namespace {
 
 using namespace workflow;
 
+using namespace model;
+
 RestoredSession restored(State state) {
     RestoredSession r;
-    r.params.values[indexOf(Param::Target)] = 120.0;
-    r.params.values[indexOf(Param::Epsilon)] = 60.0;
+    r.params.values[indexOf(Param::T)] = 120.0;
+    r.params.values[indexOf(Param::Eps)] = 60.0;
     r.params.values[indexOf(Param::Alpha)] = 0.5;
     r.params.values[indexOf(Param::Radius)] = 2.5;
     r.params.preset = "CT soft tissue";
@@ -44,7 +46,7 @@ TEST(WorkflowResume, ARunComesBackPausedWithItsParametersAndCounts) {
     EXPECT_EQ(st.message, "resumed the session saved 13:01:40");
     // The resumed surface was never exported: a new load must not drop it silently.
     EXPECT_FALSE(rig.act(LoadScan{"other.nii.gz"}).accepted);
-    EXPECT_TRUE(rig.act(workflow::Run{}).accepted);
+    EXPECT_TRUE(rig.act(model::Run{}).accepted);
 }
 
 TEST(WorkflowResume, TheSpeedAndItsExamplesComeBack) {

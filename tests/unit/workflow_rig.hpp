@@ -31,29 +31,29 @@ struct Rig {
     explicit Rig(workflow::Settings s = testSettings(), workflow::AuditLog* audit = nullptr)
         : wf(std::make_unique<workflow::Workflow>(engine, std::move(s), audit)) {}
 
-    workflow::Workflow::Outcome act(const workflow::Action& a) { return wf->handle(a); }
-    workflow::State state() const { return wf->state(); }
+    workflow::Workflow::Outcome act(const model::Action& a) { return wf->handle(a); }
+    model::State state() const { return wf->state(); }
     const workflow::Status& status() const { return wf->status(); }
 
     // Loads the fake scan through the polls a real load takes.
     void load() {
-        ASSERT_TRUE(act(workflow::LoadScan{"fake.nii.gz"}).accepted);
-        for (int i = 0; i < 10 && state() == workflow::State::Loading; ++i) {
+        ASSERT_TRUE(act(model::LoadScan{"fake.nii.gz"}).accepted);
+        for (int i = 0; i < 10 && state() == model::State::Loading; ++i) {
             wf->update();
         }
-        ASSERT_EQ(state(), workflow::State::Inspect);
+        ASSERT_EQ(state(), model::State::Inspect);
     }
     void seed(const glm::dvec3& at = {8.0, 6.0, 4.0}, double radius = 2.0) {
-        ASSERT_TRUE(act(workflow::AddSeed{at, radius}).accepted);
+        ASSERT_TRUE(act(model::AddSeed{at, radius}).accepted);
     }
     // Drives a fresh rig to `s` along the operator's path (Exporting is transient: not here).
-    void driveTo(workflow::State s) {
-        using workflow::State;
+    void driveTo(model::State s) {
+        using model::State;
         if (s == State::NoScan) {
             return;
         }
         if (s == State::Loading) {
-            ASSERT_TRUE(act(workflow::LoadScan{"fake.nii.gz"}).accepted);
+            ASSERT_TRUE(act(model::LoadScan{"fake.nii.gz"}).accepted);
             return;
         }
         load();
@@ -64,7 +64,7 @@ struct Rig {
         if (s == State::Seeding) {
             return;
         }
-        ASSERT_TRUE(act(workflow::Run{}).accepted);
+        ASSERT_TRUE(act(model::Run{}).accepted);
         if (s == State::Evolving) {
             return;
         }
@@ -75,15 +75,15 @@ struct Rig {
             ASSERT_EQ(state(), State::Error);
             return;
         }
-        ASSERT_TRUE(act(workflow::Pause{}).accepted);
+        ASSERT_TRUE(act(model::Pause{}).accepted);
         if (s == State::Paused) {
             return;
         }
-        ASSERT_TRUE(act(workflow::Finish{}).accepted);
+        ASSERT_TRUE(act(model::Finish{}).accepted);
         if (s == State::Review) {
             return;
         }
-        ASSERT_TRUE(act(workflow::Export{"out.nii.gz"}).accepted);
+        ASSERT_TRUE(act(model::Export{"out.nii.gz"}).accepted);
         ASSERT_EQ(state(), State::Done);
     }
 

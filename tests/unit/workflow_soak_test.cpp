@@ -25,6 +25,8 @@ namespace {
 
 using namespace workflow;
 
+using namespace model;
+
 long long soakCount() {
     if (const char* env = std::getenv("STEERSEG_SOAK_ACTIONS")) {
         char* end = nullptr;

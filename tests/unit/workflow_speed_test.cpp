@@ -15,6 +15,8 @@ namespace steerseg::test {
 namespace {
 
 using namespace workflow;
+
+using namespace model;
 using model::SpeedKind;
 namespace fs = std::filesystem;
 
@@ -118,7 +120,7 @@ TEST(WorkflowSpeed, ASpeedChangeClearsConvergenceAndRunsLive) {
     ASSERT_TRUE(rig.status().converged);
     ASSERT_TRUE(rig.act(SetSpeed{SpeedKind::Edge}).accepted);
     EXPECT_FALSE(rig.status().converged);
-    ASSERT_TRUE(rig.act(workflow::Run{}).accepted);
+    ASSERT_TRUE(rig.act(model::Run{}).accepted);
     ASSERT_TRUE(rig.act(SetSpeed{SpeedKind::Threshold}).accepted);
     EXPECT_EQ(rig.state(), State::Evolving) << "the front goes on under the new speed";
     EXPECT_EQ(rig.engine.speedKind(), SpeedKind::Threshold);
@@ -232,7 +234,7 @@ TEST(WorkflowSpeed, UndoAndRedoTheSpeedAndTheExamples) {
     ASSERT_TRUE(rig.act(Probe{kInside, 3.0}).accepted);
     ASSERT_TRUE(rig.act(MarkOutside{kOutside, 2.0}).accepted);
     ASSERT_EQ(rig.engine.speedKind(), SpeedKind::Classify);
-    ASSERT_TRUE(rig.act(workflow::Run{}).accepted);
+    ASSERT_TRUE(rig.act(model::Run{}).accepted);
     // Undo of the outside mark: classify waits again, the edge speed runs.
     ASSERT_TRUE(rig.act(Undo{}).accepted);
     EXPECT_EQ(rig.state(), State::Paused);

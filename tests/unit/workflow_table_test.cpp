@@ -19,6 +19,8 @@ namespace {
 
 using namespace workflow;
 
+using namespace model;
+
 std::string pair(State s, ActionKind k) {
     return std::string(stateName(s)) + " + " + std::string(actionKindName(k));
 }
@@ -106,11 +108,11 @@ Action sample(ActionKind kind) {
     case ActionKind::SetParam:
         return SetParam{Param::Alpha, 0.5};
     case ActionKind::NudgeParam:
-        return NudgeParam{Param::Target, 1.0};
+        return NudgeParam{Param::T, 1.0};
     case ActionKind::NudgeSelected:
         return NudgeSelected{-1.0};
     case ActionKind::SelectParam:
-        return SelectParam{Param::Epsilon};
+        return SelectParam{Param::Eps};
     case ActionKind::CycleParam:
         return CycleParam{1};
     case ActionKind::SetWindow:

@@ -12,6 +12,8 @@ namespace {
 
 using namespace workflow;
 
+using namespace model;
+
 struct Row {
     State from;
     Action action;
@@ -37,7 +39,7 @@ std::vector<Row> table() {
         {N, AddSeed{kIn, 2.0}, false, N},
         {N, Run{}, false, N},
         {N, Probe{kIn, 5.0}, false, N},
-        {N, SetParam{Param::Target, 1.0}, false, N},
+        {N, SetParam{Param::T, 1.0}, false, N},
         {N, RotateView{10.0, 0.0}, false, N},
         {N, Proceed{}, false, N},
         {N, Back{}, false, N},
@@ -55,8 +57,8 @@ std::vector<Row> table() {
         {I, Probe{{500.0, 6.0, 4.0}, 5.0}, false, I},
         {I, ApplyPreset{"CT bone"}, true, I},
         {I, ApplyPreset{"liver"}, false, I},
-        {I, SetParam{Param::Epsilon, 50.0}, true, I},
-        {I, SetParam{Param::Epsilon, nan}, false, I},
+        {I, SetParam{Param::Eps, 50.0}, true, I},
+        {I, SetParam{Param::Eps, nan}, false, I},
         {I, SetParam{static_cast<Param>(9), 1.0}, false, I},
         {I, NudgeSelected{2.0}, true, I},
         {I, SetWindow{40.0, 400.0}, true, I},
@@ -120,7 +122,7 @@ std::vector<Row> table() {
         {R, Export{"r.nii.gz"}, true, D},
         {R, Proceed{}, true, D},
         {R, AddSeed{kIn, 2.0}, false, R},
-        {R, SetParam{Param::Target, 3.0}, false, R},
+        {R, SetParam{Param::T, 3.0}, false, R},
         {R, Undo{}, false, R},
         {R, Run{}, false, R},
         {R, LoadScan{"b.nii"}, false, R},
@@ -139,7 +141,7 @@ std::vector<Row> table() {
         {X, Run{}, false, X},
         {X, Proceed{}, false, X},
         {X, AddSeed{kIn, 2.0}, false, X},
-        {X, SetParam{Param::Target, 3.0}, false, X},
+        {X, SetParam{Param::T, 3.0}, false, X},
         {X, Undo{}, false, X},
         {X, LoadScan{"b.nii"}, false, X},
         {X, RotateView{5.0, 0.0}, true, X},
@@ -229,12 +231,12 @@ TEST(WorkflowTransitions, StepFailureIsAnErrorThatDismissReturnsFrom) {
     // Looking around keeps the error on screen.
     ASSERT_TRUE(rig.act(RotateView{5.0, 0.0}).accepted);
     EXPECT_EQ(rig.status().message, "GPU lost");
-    EXPECT_EQ(rig.act(workflow::Run{}).reason, "dismiss the error first");
+    EXPECT_EQ(rig.act(model::Run{}).reason, "dismiss the error first");
     EXPECT_EQ(rig.status().message, "GPU lost");
     ASSERT_TRUE(rig.act(Dismiss{}).accepted);
     EXPECT_EQ(rig.state(), State::Paused);
     EXPECT_TRUE(rig.status().message.empty());
-    EXPECT_TRUE(rig.act(workflow::Run{}).accepted);
+    EXPECT_TRUE(rig.act(model::Run{}).accepted);
 }
 
 TEST(WorkflowTransitions, ErasingEverythingWhileEvolvingPauses) {
@@ -243,7 +245,7 @@ TEST(WorkflowTransitions, ErasingEverythingWhileEvolvingPauses) {
     ASSERT_TRUE(rig.act(Erase{{8.0, 6.0, 4.0}, 4.0}).accepted);
     EXPECT_FALSE(rig.status().hasLevelSet);
     EXPECT_EQ(rig.state(), State::Paused);
-    EXPECT_FALSE(rig.act(workflow::Run{}).accepted);
+    EXPECT_FALSE(rig.act(model::Run{}).accepted);
 }
 
 TEST(WorkflowTransitions, ViewActionsClampToTheScan) {
@@ -269,7 +271,7 @@ TEST(WorkflowTransitions, ViewActionsClampToTheScan) {
     ASSERT_TRUE(rig.act(CycleParam{-1}).accepted);
     EXPECT_EQ(rig.status().selected, Param::Radius);
     ASSERT_TRUE(rig.act(CycleParam{2}).accepted);
-    EXPECT_EQ(rig.status().selected, Param::Epsilon);
+    EXPECT_EQ(rig.status().selected, Param::Eps);
 }
 
 TEST(WorkflowTransitions, UnexportedWorkBlocksALoadUntilExportedOrRestarted) {

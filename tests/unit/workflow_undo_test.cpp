@@ -7,6 +7,8 @@ namespace {
 
 using namespace workflow;
 
+using namespace model;
+
 TEST(WorkflowUndo, SeedsAndErasuresUndoAndRedoExactly) {
     Rig rig;
     rig.load();
@@ -94,12 +96,12 @@ TEST(WorkflowUndo, ParameterChangesCoalescePerParameter) {
     const float t0 = rig.status().params.T;
     const float e0 = rig.status().params.eps;
     for (int i = 0; i < 5; ++i) {
-        ASSERT_TRUE(rig.act(NudgeParam{Param::Target, 1.0}).accepted);
+        ASSERT_TRUE(rig.act(NudgeParam{Param::T, 1.0}).accepted);
     }
-    ASSERT_TRUE(rig.act(SetParam{Param::Target, 100.0}).accepted);
+    ASSERT_TRUE(rig.act(SetParam{Param::T, 100.0}).accepted);
     EXPECT_EQ(rig.wf->undoDepth(), 1U); // one knob turn, one entry
-    ASSERT_TRUE(rig.act(NudgeParam{Param::Epsilon, 3.0}).accepted);
-    ASSERT_TRUE(rig.act(NudgeParam{Param::Target, 1.0}).accepted);
+    ASSERT_TRUE(rig.act(NudgeParam{Param::Eps, 3.0}).accepted);
+    ASSERT_TRUE(rig.act(NudgeParam{Param::T, 1.0}).accepted);
     EXPECT_EQ(rig.wf->undoDepth(), 3U);
     EXPECT_EQ(rig.status().params.T, 102.0F);
 
@@ -113,7 +115,7 @@ TEST(WorkflowUndo, ParameterChangesCoalescePerParameter) {
     ASSERT_TRUE(rig.act(Redo{}).accepted);
     EXPECT_EQ(rig.status().params.T, 100.0F);
     // After an undo, a change starts a new entry rather than merging into an old one.
-    ASSERT_TRUE(rig.act(NudgeParam{Param::Target, 1.0}).accepted);
+    ASSERT_TRUE(rig.act(NudgeParam{Param::T, 1.0}).accepted);
     EXPECT_EQ(rig.wf->undoDepth(), 2U);
     EXPECT_FALSE(rig.status().canRedo);
     // A change that clamps to what is already there records nothing.
@@ -123,8 +125,8 @@ TEST(WorkflowUndo, ParameterChangesCoalescePerParameter) {
     ASSERT_TRUE(rig.act(SetParam{Param::Radius, -5.0}).accepted);
     EXPECT_EQ(rig.wf->undoDepth(), depth);
     // Turning a knob there and back leaves nothing to undo for it.
-    ASSERT_TRUE(rig.act(NudgeParam{Param::Epsilon, 4.0}).accepted);
-    ASSERT_TRUE(rig.act(NudgeParam{Param::Epsilon, -4.0}).accepted);
+    ASSERT_TRUE(rig.act(NudgeParam{Param::Eps, 4.0}).accepted);
+    ASSERT_TRUE(rig.act(NudgeParam{Param::Eps, -4.0}).accepted);
     EXPECT_EQ(rig.wf->undoDepth(), depth);
 }
 

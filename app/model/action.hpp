@@ -3,7 +3,7 @@
 // The workflow's vocabulary: the states of the fixed operator workflow and the actions that
 // move it. Devices, gestures, bindings and scripts all end here; nothing in this folder knows
 // where an action came from. No GL, no OS: the workflow runs in unit tests without a GPU.
-#include "model/speed_kind.hpp" // the enum only
+#include "model/speed_kind.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -15,7 +15,7 @@
 #include <variant>
 #include <vector>
 
-namespace steerseg::workflow {
+namespace steerseg::model {
 
 // load -> inspect -> seed -> evolve <-> pause (steering) -> review -> export -> done.
 enum class State {
@@ -33,7 +33,7 @@ enum class State {
 std::string_view stateName(State state);
 
 // The parameters a knob, the panel or a script can set. Radius is the brush (seed/erase sphere).
-enum class Param { Target, Epsilon, Alpha, Radius };
+enum class Param { T, Eps, Alpha, Radius };
 inline constexpr int kParamCount = 4;
 std::string_view paramName(Param param); // "T", "eps", "alpha", "radius"
 std::optional<Param> paramFromName(std::string_view name);
@@ -55,18 +55,18 @@ struct ApplyPreset {
     std::string name; // a tissue preset of the config
 };
 struct SetParam { // absolute value, clamped to the parameter's range
-    Param param = Param::Target;
+    Param param = Param::T;
     double value = 0.0;
 };
 struct NudgeParam { // relative control: steps of the parameter's fine step (knobs, +/- keys)
-    Param param = Param::Target;
+    Param param = Param::T;
     double steps = 0.0;
 };
 struct NudgeSelected { // the same on the parameter a knob currently drives
     double steps = 0.0;
 };
 struct SelectParam { // absolute selection (panel) ...
-    Param param = Param::Target;
+    Param param = Param::T;
 };
 struct CycleParam { // ... or the next/previous one (a button)
     int delta = 1;
@@ -222,4 +222,4 @@ static_assert(kActionKindCount <= 64, "ActionKinds holds one bit per kind");
 std::optional<Action> bindingAction(std::string_view name, double steps);
 const std::vector<std::string_view>& bindableNames();
 
-} // namespace steerseg::workflow
+} // namespace steerseg::model

@@ -1,4 +1,4 @@
-#include "workflow/action.hpp"
+#include "model/action.hpp"
 
 #include <algorithm>
 #include <array>
@@ -6,7 +6,7 @@
 #include <type_traits>
 #include <utility>
 
-namespace steerseg::workflow {
+namespace steerseg::model {
 
 namespace {
 
@@ -131,18 +131,18 @@ const std::vector<Binding>& bindings() {
         {"outside_mode:on", [](double) -> Action { return SetOutsideMode{true}; }},
         {"outside_mode:off", [](double) -> Action { return SetOutsideMode{false}; }},
         {"clear_examples", [](double) -> Action { return ClearExamples{}; }},
-        {"select:T", [](double) -> Action { return SelectParam{Param::Target}; }},
-        {"select:eps", [](double) -> Action { return SelectParam{Param::Epsilon}; }},
+        {"select:T", [](double) -> Action { return SelectParam{Param::T}; }},
+        {"select:eps", [](double) -> Action { return SelectParam{Param::Eps}; }},
         {"select:alpha", [](double) -> Action { return SelectParam{Param::Alpha}; }},
         {"select:radius", [](double) -> Action { return SelectParam{Param::Radius}; }},
         {"cycle_param", [](double s) -> Action { return CycleParam{wholeSteps(s)}; }},
         {"nudge:T",
          [](double s) -> Action {
-             return NudgeParam{Param::Target, s};
+             return NudgeParam{Param::T, s};
          }},
         {"nudge:eps",
          [](double s) -> Action {
-             return NudgeParam{Param::Epsilon, s};
+             return NudgeParam{Param::Eps, s};
          }},
         {"nudge:alpha",
          [](double s) -> Action {
@@ -319,4 +319,4 @@ const std::vector<std::string_view>& bindableNames() {
     return names;
 }
 
-} // namespace steerseg::workflow
+} // namespace steerseg::model
