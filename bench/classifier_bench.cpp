@@ -166,11 +166,17 @@ void timeWhole(const gpu::ScanTexture& scan, const std::string& label,
             glGenFramebuffers(1, &fb);
             glBindFramebuffer(GL_READ_FRAMEBUFFER, fb);
             std::size_t right = 0;
+            // RGBA/FLOAT is the one pair GLES guarantees for a float colour buffer: GL_RED is
+            // llvmpipe's extra, and the NVIDIA driver refuses it, leaving zeros.
+            const auto slice = static_cast<std::size_t>(d.x) * static_cast<std::size_t>(d.y);
+            std::vector<float> rgba(slice * 4);
             for (int k = 0; k < d.z; ++k) {
                 glFramebufferTextureLayer(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, s.texture(), 0,
                                           k);
-                const auto slice = static_cast<std::size_t>(d.x) * static_cast<std::size_t>(d.y);
-                glReadPixels(0, 0, d.x, d.y, GL_RED, GL_FLOAT, values.data() + slice * k);
+                glReadPixels(0, 0, d.x, d.y, GL_RGBA, GL_FLOAT, rgba.data());
+                for (std::size_t v = 0; v < slice; ++v) {
+                    values[slice * static_cast<std::size_t>(k) + v] = rgba[v * 4];
+                }
             }
             glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
             glDeleteFramebuffers(1, &fb);

@@ -114,7 +114,7 @@ TEST(MaskWriter, RefusesBadInput) {
                  files::WriteError);
     g.spacing.y = 0.0;
     EXPECT_THROW(exports::writeMask(dir / "m.nrrd", g, std::vector<std::uint8_t>(8)),
-                 files::WriteError);
+                 scan::ScanError);
     EXPECT_TRUE(std::filesystem::is_empty(dir));
 }
 
