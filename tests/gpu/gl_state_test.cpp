@@ -3,8 +3,8 @@
 // context must give what each gives alone, also when the caller leaves unrelated objects bound
 // between the calls (as a UI drawing in the same context does).
 #include "gpu/gl_handle.hpp"
+#include "render/render_scene.hpp"
 #include "render/renderer.hpp"
-#include "render_scene.hpp"
 #include "solver/level_set_solver.hpp"
 #include "support/gpu_fixture.hpp"
 

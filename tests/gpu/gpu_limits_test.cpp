@@ -8,8 +8,8 @@
 #include "render/renderer.hpp"
 #include "solver/gpu_brick_pool.hpp"
 #include "solver/level_set_solver.hpp"
-#include "solver_test_support.hpp"
 #include "support/gpu_fixture.hpp"
+#include "support/solver_test_support.hpp"
 
 #include <gtest/gtest.h>
 #include <string>

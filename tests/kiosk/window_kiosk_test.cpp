@@ -6,10 +6,10 @@
 // workflow as the script's own tap and key at the same pixel do in the offscreen run.
 #include "core/rgba_image.hpp"
 #include "exports/image_file.hpp"
-#include "gpu/golden_compare.hpp"
-#include "gpu/x11_probe.hpp"
 #include "kiosk/child_process.hpp"
+#include "render/golden_compare.hpp"
 #include "support/test_data.hpp"
+#include "support/x11_probe.hpp"
 #include "ui/layout.hpp"
 
 #include <chrono>

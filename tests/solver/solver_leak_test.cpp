@@ -1,0 +1,138 @@
+// Barriers and the leak watch on a structure that leaks: two balls of the same intensity joined
+// by a thin tube, as a tumour touches a vessel or an organ of its intensity through a narrow
+// neck. The threshold speed alone fills both.
+#include "solver/level_set_solver.hpp"
+#include "support/gpu_fixture.hpp"
+#include "support/solver_test_support.hpp"
+
+#include <gtest/gtest.h>
+
+namespace steerseg::test {
+using namespace steerseg::solver; // the solver under test
+using namespace steerseg::model;
+namespace {
+
+class SolverLeakTest : public GpuTest {};
+
+constexpr glm::ivec3 kDims{72, 32, 32};
+constexpr glm::vec3 kBallA{16.0F, 16.0F, 16.0F};
+constexpr glm::vec3 kBallB{54.0F, 16.0F, 16.0F};
+constexpr float kBallRadius = 11.0F;
+constexpr float kNeckRadius = 1.6F;
+constexpr float kNeckMiddleX = 35.0F;
+const LevelSetParams kParams{100.0F, 40.0F, 0.9F};
+// Voxels of one ball.
+constexpr auto kBallVoxels =
+    static_cast<std::size_t>(4.19F * kBallRadius * kBallRadius * kBallRadius);
+
+std::vector<float> dumbbell() {
+    std::vector<float> v = ballVolume(kDims, 0.0F, 100.0F, kBallA, kBallRadius);
+    for (int k = 0; k < kDims.z; ++k) {
+        for (int j = 0; j < kDims.y; ++j) {
+            for (int i = 0; i < kDims.x; ++i) {
+                const glm::vec3 p(i, j, k);
+                const bool tube =
+                    p.x >= kBallA.x && p.x <= kBallB.x &&
+                    glm::length(glm::vec2(p.y, p.z) - glm::vec2(16.0F)) <= kNeckRadius;
+                if (tube || glm::length(p - kBallB) <= kBallRadius) {
+                    v[voxelIndex(kDims, i, j, k)] = 100.0F;
+                }
+            }
+        }
+    }
+    return v;
+}
+
+// Voxels inside ball B's half of the volume (beyond the neck's middle).
+std::size_t insideBeyondNeck(const std::vector<std::uint8_t>& mask) {
+    std::size_t n = 0;
+    for (int k = 0; k < kDims.z; ++k) {
+        for (int j = 0; j < kDims.y; ++j) {
+            for (int i = static_cast<int>(kNeckMiddleX) + 1; i < kDims.x; ++i) {
+                n += mask[voxelIndex(kDims, i, j, k)];
+            }
+        }
+    }
+    return n;
+}
+
+SolverOptions watching() {
+    SolverOptions o;
+    o.stopOnLeak = true;
+    o.checkInterval = 4; // the balls fill in a few dozen iterations
+    return o;
+}
+
+TEST_F(SolverLeakTest, StopsWhenTheFrontBreaksThroughTheNeckAndSaysWhere) {
+    const std::vector<float> volume = dumbbell();
+    LevelSetSolver solver(volume, kDims, watching());
+    solver.setParams(kParams);
+    solver.addSphere({kBallA, 3.0F});
+    const StepResult r = solver.runUntilConverged(3000);
+    ASSERT_EQ(r.stopReason, StopReason::Leak) << stopReasonName(r.stopReason);
+    ASSERT_TRUE(r.leak.has_value());
+    // The site is where the front grew after the slowdown: beyond ball A, on the neck's axis.
+    const glm::vec3 c = r.leak->centre();
+    EXPECT_GT(c.x, kBallA.x + kBallRadius - 2.0F) << c.x;
+    EXPECT_NEAR(c.y, 16.0F, 4.0F);
+    EXPECT_NEAR(c.z, 16.0F, 4.0F);
+    // Stopped early in ball B, not after filling it.
+    EXPECT_LT(insideBeyondNeck(solver.readMask()), kBallVoxels / 2);
+    EXPECT_EQ(std::string(stopReasonName(StopReason::Leak)), "leak");
+}
+
+TEST_F(SolverLeakTest, WithoutTheWatchTheFrontFillsBothBalls) {
+    const std::vector<float> volume = dumbbell();
+    LevelSetSolver solver(volume, kDims);
+    solver.setParams(kParams);
+    solver.addSphere({kBallA, 3.0F});
+    const StepResult r = solver.runUntilConverged(3000);
+    EXPECT_EQ(r.stopReason, StopReason::Converged);
+    EXPECT_FALSE(r.leak.has_value());
+    EXPECT_GT(insideBeyondNeck(solver.readMask()), kBallVoxels * 9 / 10);
+}
+
+TEST_F(SolverLeakTest, ABarrierOnTheNeckKeepsTheFrontOutOfTheOtherBall) {
+    const std::vector<float> volume = dumbbell();
+    LevelSetSolver solver(volume, kDims, watching());
+    solver.setParams(kParams);
+    solver.addSphere({kBallA, 3.0F});
+    solver.addBarrier({{kNeckMiddleX, 16.0F, 16.0F}, 3.0F});
+    const StepResult r = solver.runUntilConverged(3000);
+    EXPECT_EQ(r.stopReason, StopReason::Converged) << stopReasonName(r.stopReason);
+    EXPECT_EQ(insideBeyondNeck(solver.readMask()), 0U);
+    EXPECT_EQ(solver.stats().barriers, 1);
+    // Ball A is still filled.
+    const std::vector<std::uint8_t> mask = solver.readMask();
+    EXPECT_EQ(mask[voxelIndex(kDims, 16, 16, 16)], 1);
+    EXPECT_EQ(mask[voxelIndex(kDims, 16 + 9, 16, 16)], 1);
+}
+
+TEST_F(SolverLeakTest, ABarrierPlacedAfterTheLeakCutsTheFrontBackAndHolds) {
+    const std::vector<float> volume = dumbbell();
+    LevelSetSolver solver(volume, kDims, watching());
+    solver.setParams(kParams);
+    solver.addSphere({kBallA, 3.0F});
+    ASSERT_EQ(solver.runUntilConverged(3000).stopReason, StopReason::Leak);
+    // The operator erases what leaked, from the neck's middle on, and closes the neck.
+    solver.removeSphere({kBallB, kBallB.x - kNeckMiddleX + 1.0F});
+    solver.addBarrier({{kNeckMiddleX, 16.0F, 16.0F}, 3.0F});
+    const StepResult r = solver.runUntilConverged(3000);
+    EXPECT_EQ(r.stopReason, StopReason::Converged) << stopReasonName(r.stopReason);
+    EXPECT_EQ(insideBeyondNeck(solver.readMask()), 0U);
+}
+
+TEST_F(SolverLeakTest, RefusesMoreBarriersThanTheShaderHolds) {
+    const std::vector<float> volume(countOf(kDims), 0.0F);
+    LevelSetSolver solver(volume, kDims);
+    for (std::size_t n = 0; n < kMaxBarriers; ++n) {
+        solver.addBarrier({{10.0F + static_cast<float>(n), 16.0F, 16.0F}, 1.0F});
+    }
+    EXPECT_THROW(solver.addBarrier({{40.0F, 16.0F, 16.0F}, 1.0F}), std::invalid_argument);
+    EXPECT_THROW(solver.addBarrier({{400.0F, 16.0F, 16.0F}, 1.0F}), std::invalid_argument);
+    solver.clearBarriers();
+    EXPECT_TRUE(solver.barriers().empty());
+}
+
+} // namespace
+} // namespace steerseg::test

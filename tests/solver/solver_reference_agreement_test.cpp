@@ -1,0 +1,43 @@
+// GPU sparse solver against the dense CPU reference on synthetic volumes.
+#include "solver/level_set_solver.hpp"
+#include "solver/reference_solver.hpp"
+#include "support/gpu_fixture.hpp"
+#include "support/solver_test_support.hpp"
+
+#include <gtest/gtest.h>
+
+namespace steerseg::test {
+using namespace steerseg::solver; // the solver under test
+using namespace steerseg::model;
+namespace {
+
+class SolverAgreementTest : public GpuTest {};
+
+void expectAgree(const glm::ivec3& d, const std::vector<std::uint8_t>& gpu,
+                 const std::vector<std::uint8_t>& cpu) {
+    ASSERT_EQ(gpu.size(), cpu.size());
+    EXPECT_GT(insideCount(cpu), 0U);
+    EXPECT_GE(dice(gpu, cpu), 0.99) << "gpu " << insideCount(gpu) << " cpu " << insideCount(cpu);
+    EXPECT_EQ(differencesOffSurface(d, gpu, cpu), 0U);
+}
+
+TEST_F(SolverAgreementTest, GrowingBallMatchesReference) {
+    const glm::ivec3 d{48, 44, 40};
+    const auto volume = ballVolume(d, 0.0F, 100.0F, {24, 22, 20}, 15.0F);
+    const LevelSetParams params{100.0F, 30.0F, 0.7F};
+    const Sphere seed{{22, 20, 19}, 4.0F};
+    LevelSetSolver gpu(volume, d);
+    gpu.addSphere(seed);
+    gpu.setParams(params);
+    ReferenceSolver cpu(volume, d);
+    cpu.addSphere(seed);
+    cpu.setParams(params);
+    const StepResult r = gpu.step(60);
+    EXPECT_EQ(r.iterations, 60);
+    EXPECT_EQ(cpu.step(60), 60);
+    EXPECT_NEAR(r.evolvedTime, cpu.evolvedTime(), 1e-3F * cpu.evolvedTime());
+    expectAgree(d, gpu.readMask(), cpu.mask());
+}
+
+} // namespace
+} // namespace steerseg::test
