@@ -48,7 +48,7 @@ TEST(KmsOpen, AFileThatIsNoDrmDeviceIsRefused) {
 
 TEST(KmsOpen, DisplayOnThisMachineOpensOrNamesTheStep) {
     // Without /dev/dri (containers, CI) the display names the missing device; elsewhere it may
-    // open for real (tests/gpu/kms_display_test.cpp covers that) or refuse with a kms: line.
+    // open for real (tests/platform/kms_display_test.cpp covers that) or refuse with a kms: line.
     try {
         const auto display = platform::openKmsDisplay(platform::DisplayOptions{});
         EXPECT_GT(display->info().width, 0);

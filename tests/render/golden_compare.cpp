@@ -78,7 +78,7 @@ GoldenResult compareImages(const std::string& name, const RgbaImage& expected,
 }
 
 std::filesystem::path goldenPath(const std::string& name) {
-    // Compiled in (tests/gpu/CMakeLists.txt) so the check never depends on the environment.
+    // Compiled in (tests/render/CMakeLists.txt) so the check never depends on the environment.
     return std::filesystem::path(STEERSEG_GOLDEN_DIR) / (name + ".png");
 }
 
