@@ -3,52 +3,11 @@
 #include "kiosk/kiosk_app.hpp"
 #include "scan/scan_reader.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <tuple>
 #include <unistd.h>
 
 namespace steerseg::cli {
-
-namespace {
-
-// The outputs are checked before the display opens: a session must not run for minutes and then
-// fail at its first frame or its last line on a folder it could never write (exit status 4).
-void requireWritableFolder(const std::filesystem::path& dir, const char* option) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) {
-        throw files::WriteError(dir, std::string("cannot create the ") + option + " folder (" +
-                                         ec.message() + ")");
-    }
-    if (::access(dir.c_str(), W_OK | X_OK) != 0) {
-        throw files::WriteError(dir, std::string("cannot write in the ") + option + " folder (" +
-                                         std::strerror(errno) + ")");
-    }
-}
-
-// Opened for appending, which creates it where it is missing (and removed again then): access()
-// would pass root on any folder, /proc included.
-void requireWritableFile(const std::filesystem::path& file, const char* option) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(file, ec)) {
-        throw files::WriteError(file, std::string(option) + " names a folder, not a file");
-    }
-    const bool existed = std::filesystem::exists(file, ec);
-    errno = 0;
-    if (!std::ofstream(file, std::ios::app)) {
-        throw files::WriteError(file, std::string("cannot write the ") + option + " file (" +
-                                          std::strerror(errno != 0 ? errno : EIO) + ")");
-    }
-    if (!existed) {
-        std::filesystem::remove(file, ec);
-    }
-}
-
-} // namespace
 
 int runKiosk(std::span<const std::string> words) {
     const Args args(
@@ -100,12 +59,6 @@ int runKiosk(std::span<const std::string> words) {
         o.resume = kiosk::ResumeChoice::Yes;
     } else if (args.flag("no-resume")) {
         o.resume = kiosk::ResumeChoice::No;
-    }
-    if (o.frames) {
-        requireWritableFolder(*o.frames, "--frames");
-    }
-    if (o.stats) {
-        requireWritableFile(*o.stats, "--stats");
     }
     return kiosk::runKiosk(o, std::cout, std::cerr);
 }
