@@ -59,9 +59,9 @@ constexpr Command kCommands[] = {
      "docs/scripts.md); --resume picks up an unfinished session's autosave",
      steerseg::cli::runKiosk},
     {"self-test",
-     "--self-test [--platform auto|surfaceless|device] [--config FILE]: check what the "
-     "appliance needs (GL, shaders, config, writable folders, controllers); one line per check, "
-     "status 1 when a required one fails",
+     "--self-test [--platform auto|surfaceless|device] [--config FILE] [--allow-root]: check "
+     "what the appliance needs (GL, shaders, config, writable folders, controllers); one line "
+     "per check, status 1 when a required one fails",
      steerseg::cli::runSelfTest},
     {"input-monitor",
      "input-monitor [--config FILE] [--seconds N] [--record FILE] | --replay FILE: list the "

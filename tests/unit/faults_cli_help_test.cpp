@@ -1,6 +1,6 @@
 // The real binary's answers to what an operator types: every command's --help is its usage on
 // stdout and status 0; a script error is its line and reason alone, and leaves no --frames
-// folder behind.
+// folder behind; --self-test takes the --allow-root the kiosk requires as root.
 #include "support/cli_run.hpp"
 #include "support/test_data.hpp"
 
@@ -41,6 +41,14 @@ TEST(FaultsCliHelp, AScriptErrorIsItsLineAloneAndMakesNoFramesFolder) {
     EXPECT_NE(r.err.find("bad.session:2"), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("usage:"), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(frames));
+}
+
+TEST(FaultsCliHelp, SelfTestTakesAllowRoot) {
+    const CliRun plain = runSteerseg("--self-test");
+    const CliRun root = runSteerseg("--self-test --allow-root");
+    EXPECT_NE(root.exitCode, 2) << root.err;
+    EXPECT_EQ(root.exitCode, plain.exitCode) << root.err;
+    EXPECT_EQ(root.err.find("allow-root"), std::string::npos) << root.err;
 }
 
 } // namespace
