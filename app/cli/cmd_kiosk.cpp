@@ -3,6 +3,7 @@
 #include "kiosk/kiosk_app.hpp"
 #include "scan/scan_reader.hpp"
 
+#include <cstdio>
 #include <iostream>
 #include <tuple>
 #include <unistd.h>
@@ -19,6 +20,9 @@ int runKiosk(std::span<const std::string> words) {
         throw UsageError("refusing to run as root: run the kiosk as its own user in the video "
                          "and input groups (--allow-root overrides, for containers)");
     }
+    // Under journald stdout is a pipe, block-buffered by default: a kill -9 or a watchdog abort
+    // would take the start-up lines and the frame statistics that say how far the kiosk got.
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);
     kiosk::KioskOptions o;
     o.platform = args.value("platform").value_or("");
     if (!o.platform.empty() && o.platform != "auto" && o.platform != "kms" &&
