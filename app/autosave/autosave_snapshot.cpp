@@ -6,8 +6,10 @@
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <system_error>
 #include <zlib.h>
@@ -121,6 +123,30 @@ nlohmann::json metadata(const AutosaveSnapshot& s) {
         {"evolved_time", s.evolvedTime}};
 }
 
+// A valid CRC says the bytes are the ones written, not that the writer was sane: a count no
+// session can have would reach the operator's panel as is, so it is refused like a damaged file
+// and the resume falls back to the autosave before it.
+constexpr int kMaxSpheres = 1'000'000;
+
+int readCount(const nlohmann::json& j, const char* key, int most) {
+    const int value = j.at(key).get<int>();
+    if (value < 0 || value > most) {
+        throw AutosaveFormatError(std::string(key) + " is " + std::to_string(value) +
+                                  ", not a count a session can have (0.." + std::to_string(most) +
+                                  ")");
+    }
+    return value;
+}
+
+double readEvolvedTime(const nlohmann::json& j) {
+    const double value = j.at("evolved_time").get<double>();
+    if (!(value >= 0.0) || !std::isfinite(value)) {
+        throw AutosaveFormatError("evolved_time is " + std::to_string(value) +
+                                  ", not a time a session can have (0 or more)");
+    }
+    return value;
+}
+
 void readMetadata(const nlohmann::json& j, AutosaveSnapshot& s) {
     const nlohmann::json& scan = j.at("scan");
     s.scan.path = scan.at("path").get<std::string>();
@@ -147,10 +173,10 @@ void readMetadata(const nlohmann::json& j, AutosaveSnapshot& s) {
         s.params.values[workflow::indexOf(p)] =
             params.at(std::string(model::paramName(p))).get<double>();
     }
-    s.seeds = j.at("seeds").get<int>();
-    s.erasures = j.at("erasures").get<int>();
-    s.iterations = j.at("iterations").get<int>();
-    s.evolvedTime = j.at("evolved_time").get<double>();
+    s.seeds = readCount(j, "seeds", kMaxSpheres);
+    s.erasures = readCount(j, "erasures", kMaxSpheres);
+    s.iterations = readCount(j, "iterations", std::numeric_limits<int>::max());
+    s.evolvedTime = readEvolvedTime(j);
 }
 
 struct FileStamp {

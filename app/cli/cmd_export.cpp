@@ -2,6 +2,7 @@
 // grid, as a mask or as a surface mesh. GL-free: it needs no GPU, only the two files.
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "core/mask_inside.hpp"
 #include "core/volume.hpp"
 #include "exports/export_writer.hpp"
 #include "model/file_name.hpp"
@@ -76,11 +77,11 @@ std::vector<std::uint8_t> readMaskFor(const std::string& path, const Geometry& s
                                         std::to_string(std::max(near, far)) +
                                         " mm from the scan's)");
     }
-    std::vector<std::uint8_t> inside(g.voxelCount());
-    for (std::size_t n = 0; n < inside.size(); ++n) {
-        inside[n] = mask.volume.rescale().apply(mask.volume.storedAt(n)) > 0.5 ? 1 : 0;
+    try {
+        return maskInside(mask.volume);
+    } catch (const std::invalid_argument& e) {
+        throw scan::ScanError(path, e.what());
     }
-    return inside;
 }
 
 } // namespace

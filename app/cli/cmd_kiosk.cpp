@@ -3,52 +3,12 @@
 #include "kiosk/kiosk_app.hpp"
 #include "scan/scan_reader.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
+#include <cstdio>
 #include <iostream>
 #include <tuple>
 #include <unistd.h>
 
 namespace steerseg::cli {
-
-namespace {
-
-// The outputs are checked before the display opens: a session must not run for minutes and then
-// fail at its first frame or its last line on a folder it could never write (exit status 4).
-void requireWritableFolder(const std::filesystem::path& dir, const char* option) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) {
-        throw files::WriteError(dir, std::string("cannot create the ") + option + " folder (" +
-                                         ec.message() + ")");
-    }
-    if (::access(dir.c_str(), W_OK | X_OK) != 0) {
-        throw files::WriteError(dir, std::string("cannot write in the ") + option + " folder (" +
-                                         std::strerror(errno) + ")");
-    }
-}
-
-// Opened for appending, which creates it where it is missing (and removed again then): access()
-// would pass root on any folder, /proc included.
-void requireWritableFile(const std::filesystem::path& file, const char* option) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(file, ec)) {
-        throw files::WriteError(file, std::string(option) + " names a folder, not a file");
-    }
-    const bool existed = std::filesystem::exists(file, ec);
-    errno = 0;
-    if (!std::ofstream(file, std::ios::app)) {
-        throw files::WriteError(file, std::string("cannot write the ") + option + " file (" +
-                                          std::strerror(errno != 0 ? errno : EIO) + ")");
-    }
-    if (!existed) {
-        std::filesystem::remove(file, ec);
-    }
-}
-
-} // namespace
 
 int runKiosk(std::span<const std::string> words) {
     const Args args(
@@ -60,6 +20,9 @@ int runKiosk(std::span<const std::string> words) {
         throw UsageError("refusing to run as root: run the kiosk as its own user in the video "
                          "and input groups (--allow-root overrides, for containers)");
     }
+    // Under journald stdout is a pipe, block-buffered by default: a kill -9 or a watchdog abort
+    // would take the start-up lines and the frame statistics that say how far the kiosk got.
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);
     kiosk::KioskOptions o;
     o.platform = args.value("platform").value_or("");
     if (!o.platform.empty() && o.platform != "auto" && o.platform != "kms" &&
@@ -100,12 +63,6 @@ int runKiosk(std::span<const std::string> words) {
         o.resume = kiosk::ResumeChoice::Yes;
     } else if (args.flag("no-resume")) {
         o.resume = kiosk::ResumeChoice::No;
-    }
-    if (o.frames) {
-        requireWritableFolder(*o.frames, "--frames");
-    }
-    if (o.stats) {
-        requireWritableFile(*o.stats, "--stats");
     }
     return kiosk::runKiosk(o, std::cout, std::cerr);
 }

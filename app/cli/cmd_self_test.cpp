@@ -133,7 +133,9 @@ CheckResult checkShaders() {
 } // namespace
 
 int runSelfTest(std::span<const std::string> words) {
-    const Args args(words, {"platform", "config"}, {});
+    // --allow-root only so that the kiosk's own command line checks as it runs; the user check
+    // still warns that root's answers are not the service user's.
+    const Args args(words, {"platform", "config"}, {"allow-root"});
     const auto platformChoice =
         platform::parseOffscreenPlatform(args.value("platform").value_or("auto"));
     std::optional<std::filesystem::path> configFile;

@@ -8,6 +8,7 @@
 #include "scan/scan_reader.hpp"
 #include "script/script.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -58,9 +59,9 @@ constexpr Command kCommands[] = {
      "docs/scripts.md); --resume picks up an unfinished session's autosave",
      steerseg::cli::runKiosk},
     {"self-test",
-     "--self-test [--platform auto|surfaceless|device] [--config FILE]: check what the "
-     "appliance needs (GL, shaders, config, writable folders, controllers); one line per check, "
-     "status 1 when a required one fails",
+     "--self-test [--platform auto|surfaceless|device] [--config FILE] [--allow-root]: check "
+     "what the appliance needs (GL, shaders, config, writable folders, controllers); one line "
+     "per check, status 1 when a required one fails",
      steerseg::cli::runSelfTest},
     {"input-monitor",
      "input-monitor [--config FILE] [--seconds N] [--record FILE] | --replay FILE: list the "
@@ -76,6 +77,13 @@ void printUsage(std::FILE* out) {
     }
     std::fprintf(out, "\nA scan PATH may be a file, a DICOM folder, or %s.\n", "builtin:sample");
     std::fprintf(out, "\nexit status:\n%s", steerseg::cli::exitStatusHelp());
+}
+
+// A command's --help (or -h), wherever it stands among the options, asks for that command's
+// usage: the operator gets it on stdout and status 0, not the parser's unknown option.
+bool asksForHelp(std::span<const std::string> options) {
+    return std::any_of(options.begin(), options.end(),
+                       [](const std::string& w) { return w == "--help" || w == "-h"; });
 }
 
 } // namespace
@@ -129,15 +137,20 @@ int main(int argc, char** argv) {
         if (words[0] != c.name) {
             continue;
         }
+        const auto options = std::span<const std::string>(words).subspan(1);
+        if (asksForHelp(options)) {
+            std::printf("usage: steerseg %s\n", c.summary);
+            return steerseg::cli::kExitOk;
+        }
         try {
-            return c.run(std::span<const std::string>(words).subspan(1));
+            return c.run(options);
         } catch (const std::exception& e) {
-            const steerseg::cli::ExitStatus status = steerseg::cli::exitStatusOf(e);
             std::fprintf(stderr, "steerseg %s: %s\n", c.name, e.what());
-            if (status == steerseg::cli::kExitUsage) {
+            // A script's error names its own line; the command's usage after it would bury it.
+            if (dynamic_cast<const steerseg::cli::UsageError*>(&e) != nullptr) {
                 std::fprintf(stderr, "usage: steerseg %s\n", c.summary);
             }
-            return status;
+            return steerseg::cli::exitStatusOf(e);
         }
     }
     std::fprintf(stderr, "steerseg: unknown command '%s'\n", words[0].c_str());

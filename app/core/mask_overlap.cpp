@@ -1,5 +1,7 @@
 #include "core/mask_overlap.hpp"
 
+#include "core/mask_inside.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -10,7 +12,7 @@ namespace {
 
 bool inReference(const Volume& reference, std::size_t n, int label) {
     const double ref = reference.rescale().apply(reference.storedAt(n));
-    return label < 0 ? ref != 0.0 : std::lround(ref) == label;
+    return label < 0 ? insideValue(ref) : std::lround(ref) == label;
 }
 
 template <typename InsideAt>
@@ -43,10 +45,7 @@ MaskOverlap maskOverlap(const Volume& mask, const Volume& reference, int label) 
         throw std::invalid_argument("the mask is " + dimsText(mask.dims()) +
                                     " voxels, the reference " + dimsText(reference.dims()));
     }
-    return countOverlap(
-        mask.geometry().voxelCount(),
-        [&](std::size_t n) { return mask.rescale().apply(mask.storedAt(n)) != 0.0; }, reference,
-        label);
+    return maskOverlap(maskInside(mask), reference, label);
 }
 
 std::vector<std::uint8_t> referenceVoxels(const Volume& reference, int label) {

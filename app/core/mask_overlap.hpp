@@ -23,9 +23,9 @@ struct MaskOverlap {
     }
 };
 
-// The segmentation's voxels are the mask's non-zero ones (real values for a Volume); the
+// The segmentation's voxels are the mask's non-zero ones (for a Volume by maskInside's rule); the
 // reference's are those whose real value rounds to `label`, or every non-zero one when label < 0.
-// Throws std::invalid_argument with one line when the grids differ in size.
+// Throws std::invalid_argument with one line when the grids differ in size or a voxel is NaN.
 MaskOverlap maskOverlap(std::span<const std::uint8_t> mask, const Volume& reference, int label);
 MaskOverlap maskOverlap(const Volume& mask, const Volume& reference, int label);
 // The reference's voxels by the same rule: 1 where it counts as inside, else 0.

@@ -1,24 +1,50 @@
 #include "exports/image_file.hpp"
 
-#include "scan/scan_reader.hpp"
+#include "files/file_error.hpp"
+#include "files/file_write.hpp"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <algorithm>
+#include <span>
 #include <stdexcept>
 
 namespace steerseg::exports {
 
-void writeImage(const std::filesystem::path& path, const RgbaImage& image) {
+namespace {
+
+// OpenImageIO's messages may span lines; a WriteError is one.
+std::string oneLine(std::string text) {
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    return text;
+}
+
+// The picture encoded in memory, so that the one durable write below is the only thing that
+// reaches the disk: OpenImageIO writing a file in place leaves a truncated one on a full disk.
+std::vector<unsigned char> encodeImage(const std::filesystem::path& path, const RgbaImage& image) {
     auto out = OIIO::ImageOutput::create(path.string());
     if (!out) {
-        throw files::WriteError(path, OIIO::geterror());
+        throw files::WriteError(path, oneLine(OIIO::geterror()));
     }
+    if (!out->supports("ioproxy")) {
+        throw files::WriteError(path, "OpenImageIO cannot encode this format in memory");
+    }
+    std::vector<unsigned char> encoded;
+    OIIO::Filesystem::IOVecOutput memory(encoded);
+    out->set_ioproxy(&memory);
     const OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
     if (!out->open(path.string(), spec) ||
-        !out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data())) {
-        const std::string message = out->geterror();
-        throw files::WriteError(path, message);
+        !out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data()) || !out->close()) {
+        throw files::WriteError(path, oneLine(out->geterror()));
     }
-    out->close();
+    return encoded;
+}
+
+} // namespace
+
+void writeImage(const std::filesystem::path& path, const RgbaImage& image) {
+    const std::vector<unsigned char> encoded = encodeImage(path, image);
+    files::writeFileAtomically(path, {std::as_bytes(std::span(encoded))});
 }
 
 RgbaImage readImage(const std::filesystem::path& path) {

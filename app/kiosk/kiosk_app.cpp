@@ -403,9 +403,7 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
     const config::LoadedConfig loaded = readConfig(options, err);
     const config::KioskConfig& cfg = loaded.config;
     std::unique_ptr<script::ScriptPlayer> player = makePlayer(options); // before a window opens
-    if (options.frames) {
-        std::filesystem::create_directories(*options.frames);
-    }
+    prepareOutputs(options);
     const std::string configured = options.platform.empty()
                                        ? std::string(config::platformName(cfg.display.platform))
                                        : options.platform;

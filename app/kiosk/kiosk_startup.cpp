@@ -1,14 +1,19 @@
 #include "kiosk/kiosk_startup.hpp"
 
+#include "files/file_error.hpp"
 #include "model/action.hpp"
 #include "platform/egl/offscreen_display.hpp"
 #include "platform/kms/kms_display.hpp"
 #include "platform/window/window_display.hpp"
 
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <unistd.h>
 
 namespace steerseg::kiosk {
 
@@ -83,6 +88,50 @@ std::unique_ptr<script::ScriptPlayer> makePlayer(const KioskOptions& options) {
         options.frames ? options.frames->string() : std::filesystem::current_path().string();
     return std::make_unique<script::ScriptPlayer>(script::loadScript(*options.script),
                                                   std::move(vars));
+}
+
+namespace {
+
+void requireWritableFolder(const std::filesystem::path& dir, const char* option) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) {
+        throw files::WriteError(dir, std::string("cannot create the ") + option + " folder (" +
+                                         ec.message() + ")");
+    }
+    if (::access(dir.c_str(), W_OK | X_OK) != 0) {
+        throw files::WriteError(dir, std::string("cannot write in the ") + option + " folder (" +
+                                         std::strerror(errno) + ")");
+    }
+}
+
+// Opened for appending, which creates it where it is missing (and removed again then): access()
+// would pass root on any folder, /proc included.
+void requireWritableFile(const std::filesystem::path& file, const char* option) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(file, ec)) {
+        throw files::WriteError(file, std::string(option) + " names a folder, not a file");
+    }
+    const bool existed = std::filesystem::exists(file, ec);
+    errno = 0;
+    if (!std::ofstream(file, std::ios::app)) {
+        throw files::WriteError(file, std::string("cannot write the ") + option + " file (" +
+                                          std::strerror(errno != 0 ? errno : EIO) + ")");
+    }
+    if (!existed) {
+        std::filesystem::remove(file, ec);
+    }
+}
+
+} // namespace
+
+void prepareOutputs(const KioskOptions& options) {
+    if (options.frames) {
+        requireWritableFolder(*options.frames, "--frames");
+    }
+    if (options.stats) {
+        requireWritableFile(*options.stats, "--stats");
+    }
 }
 
 } // namespace steerseg::kiosk

@@ -38,6 +38,12 @@ config::LoadedConfig readConfig(const KioskOptions& options, std::ostream& err);
 std::unique_ptr<platform::Display> openDisplay(const std::string& platform,
                                                const platform::DisplayOptions& options);
 
+// Checks the --frames folder (creating it) and the --stats file can be written, throwing
+// files::WriteError in one line. Called after the script is read, so that a refused script leaves
+// no folder behind, and before the display opens, so that a session does not run for minutes to
+// fail at its first frame or its last line on an output it could never write (exit status 4).
+void prepareOutputs(const KioskOptions& options);
+
 // The --script's player with SCAN, DATA and OUT set; nullptr without a script.
 std::unique_ptr<script::ScriptPlayer> makePlayer(const KioskOptions& options);
 

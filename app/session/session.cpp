@@ -1,5 +1,6 @@
 #include "session/session.hpp"
 
+#include "core/mask_inside.hpp"
 #include "exports/export_writer.hpp"
 #include "gpu/gl.hpp"
 #include "gpu/scan_texture.hpp"
@@ -90,11 +91,11 @@ void Session::startFromMask(const std::filesystem::path& path) {
         throw std::runtime_error(path.string() + ": mask is " + dimsText(mask.volume.dims()) +
                                  " but the scan is " + dimsText(scan_.dims()));
     }
-    std::vector<std::uint8_t> inside(mask.volume.geometry().voxelCount());
-    for (std::size_t n = 0; n < inside.size(); ++n) {
-        inside[n] = mask.volume.rescale().apply(mask.volume.storedAt(n)) > 0.5 ? 1 : 0;
+    try {
+        setMask(maskInside(mask.volume));
+    } catch (const std::invalid_argument& e) {
+        throw std::runtime_error(path.string() + ": " + e.what());
     }
-    setMask(inside);
 }
 
 void Session::setMask(std::span<const std::uint8_t> inside) {
