@@ -6,14 +6,10 @@
 #include "files/file_error.hpp"
 #include "support/test_data.hpp"
 #include "support/unprivileged.hpp"
+#include "support/write_faults.hpp"
 
 #include <fstream>
-#include <functional>
 #include <gtest/gtest.h>
-#include <signal.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace steerseg::test {
 namespace {
@@ -31,56 +27,13 @@ RgbaImage noisyPicture() {
     return image;
 }
 
-std::string readText(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::string text(std::filesystem::file_size(path), '\0');
-    in.read(text.data(), static_cast<std::streamsize>(text.size()));
-    return text;
-}
-
-std::size_t entries(const std::filesystem::path& dir) {
-    return static_cast<std::size_t>(std::distance(std::filesystem::directory_iterator(dir), {}));
-}
-
-std::string messageOf(const std::function<void()>& write) {
-    try {
-        write();
-    } catch (const files::WriteError& e) {
-        return e.what();
-    }
-    return "";
-}
-
 void writeOld(const std::filesystem::path& path) {
     std::ofstream(path, std::ios::binary) << "the previous picture";
 }
 
 // The child may write files of at most 4 KiB: the PNG's bytes stop there, as on a full disk.
 std::string messageUnderSizeLimit(const std::filesystem::path& target) {
-    int pipeFds[2];
-    if (::pipe(pipeFds) != 0) {
-        return "no pipe";
-    }
-    const pid_t child = ::fork();
-    if (child == 0) {
-        ::close(pipeFds[0]);
-        ::signal(SIGXFSZ, SIG_IGN);
-        const rlimit limit{4096, 4096};
-        ::setrlimit(RLIMIT_FSIZE, &limit);
-        const std::string m = messageOf([&] { exports::writeImage(target, noisyPicture()); });
-        const ssize_t written = ::write(pipeFds[1], m.data(), m.size());
-        ::_exit(written == static_cast<ssize_t>(m.size()) ? 0 : 1);
-    }
-    ::close(pipeFds[1]);
-    std::string m;
-    char buffer[512];
-    for (ssize_t n = 0; (n = ::read(pipeFds[0], buffer, sizeof buffer)) > 0;) {
-        m.append(buffer, static_cast<std::size_t>(n));
-    }
-    ::close(pipeFds[0]);
-    int status = 0;
-    ::waitpid(child, &status, 0);
-    return m;
+    return writeErrorUnderSizeLimit([&] { exports::writeImage(target, noisyPicture()); }, 4096);
 }
 
 TEST(FaultsImageWrite, WritesAPictureThatReadsBack) {
@@ -89,7 +42,7 @@ TEST(FaultsImageWrite, WritesAPictureThatReadsBack) {
     writeOld(dir / "frame.png");
     exports::writeImage(dir / "frame.png", picture);
     EXPECT_EQ(exports::readImage(dir / "frame.png").pixels, picture.pixels);
-    EXPECT_EQ(entries(dir), 1u);
+    EXPECT_EQ(entryCount(dir), 1u);
 }
 
 TEST(FaultsImageWrite, FailingHalfwayLeavesTheOldPictureAndNoTemporary) {
@@ -103,14 +56,14 @@ TEST(FaultsImageWrite, FailingHalfwayLeavesTheOldPictureAndNoTemporary) {
         << m;
     EXPECT_EQ(m.find('\n'), std::string::npos) << m;
     EXPECT_EQ(readText(target), "the previous picture");
-    EXPECT_EQ(entries(dir), 1u);
+    EXPECT_EQ(entryCount(dir), 1u);
 }
 
 TEST(FaultsImageWrite, MissingFolderIsNamed) {
     const auto dir = tempDir("faults-image-missing");
     const auto folder = dir / "not-there";
     const std::string m =
-        messageOf([&] { exports::writeImage(folder / "frame.png", noisyPicture()); });
+        writeErrorOf([&] { exports::writeImage(folder / "frame.png", noisyPicture()); });
     EXPECT_NE(m.find("the folder " + folder.string() + " does not exist"), std::string::npos) << m;
     EXPECT_EQ(m.find('\n'), std::string::npos) << m;
     EXPECT_TRUE(std::filesystem::is_empty(dir));
@@ -120,9 +73,9 @@ TEST(FaultsImageWrite, AFolderInTheWayIsNamed) {
     const auto dir = tempDir("faults-image-folder");
     std::filesystem::create_directory(dir / "frame.png");
     const std::string m =
-        messageOf([&] { exports::writeImage(dir / "frame.png", noisyPicture()); });
+        writeErrorOf([&] { exports::writeImage(dir / "frame.png", noisyPicture()); });
     EXPECT_NE(m.find("a folder of that name is in the way"), std::string::npos) << m;
-    EXPECT_EQ(entries(dir), 1u);
+    EXPECT_EQ(entryCount(dir), 1u);
 }
 
 TEST(FaultsImageWrite, ReadOnlyFolderLeavesTheOldPicture) {
@@ -131,12 +84,13 @@ TEST(FaultsImageWrite, ReadOnlyFolderLeavesTheOldPicture) {
     std::filesystem::permissions(
         dir, std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec |
                  std::filesystem::perms::others_read | std::filesystem::perms::others_exec);
-    const std::string m = runUnprivileged(
-        [&] { return messageOf([&] { exports::writeImage(dir / "frame.png", noisyPicture()); }); });
+    const std::string m = runUnprivileged([&] {
+        return writeErrorOf([&] { exports::writeImage(dir / "frame.png", noisyPicture()); });
+    });
     std::filesystem::permissions(dir, std::filesystem::perms::owner_all);
     EXPECT_NE(m.find("the folder " + dir.string() + " is not writable"), std::string::npos) << m;
     EXPECT_EQ(readText(dir / "frame.png"), "the previous picture");
-    EXPECT_EQ(entries(dir), 1u);
+    EXPECT_EQ(entryCount(dir), 1u);
 }
 
 } // namespace

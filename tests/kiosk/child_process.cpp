@@ -2,9 +2,7 @@
 
 #include <csignal>
 #include <fcntl.h>
-#include <fstream>
 #include <spawn.h>
-#include <sstream>
 #include <stdexcept>
 #include <sys/wait.h>
 #include <thread>
@@ -83,13 +81,6 @@ std::optional<int> ChildProcess::wait(std::chrono::milliseconds timeout) {
         std::this_thread::sleep_for(kPoll);
     }
     return status_;
-}
-
-std::string readText(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
 }
 
 } // namespace steerseg::test

@@ -36,7 +36,4 @@ class ChildProcess {
     std::optional<int> status_;
 };
 
-// The file's text ("" if unreadable), for failure messages.
-std::string readText(const std::filesystem::path& path);
-
 } // namespace steerseg::test

@@ -9,6 +9,7 @@
 #include "kiosk/child_process.hpp"
 #include "render/golden_compare.hpp"
 #include "support/test_data.hpp"
+#include "support/write_faults.hpp"
 #include "support/x11_probe.hpp"
 #include "ui/layout.hpp"
 
