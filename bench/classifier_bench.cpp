@@ -178,8 +178,22 @@ void timeWhole(const gpu::ScanTexture& scan, const std::string& label,
                     values[slice * static_cast<std::size_t>(k) + v] = rgba[v * 4];
                 }
             }
+            const GLenum fbStatus = glCheckFramebufferStatus(GL_READ_FRAMEBUFFER);
+            const GLenum glError = glGetError();
             glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
             glDeleteFramebuffers(1, &fb);
+            // What the sign column rests on: a readback that failed reads as all zeros.
+            std::size_t positive = 0;
+            std::size_t negative = 0;
+            for (const float value : values) {
+                positive += value > 0.0F ? 1 : 0;
+                negative += value < 0.0F ? 1 : 0;
+            }
+            std::fprintf(stderr,
+                         "%s: speed > 0 at %zu voxels, < 0 at %zu, = 0 at %zu (framebuffer 0x%x, "
+                         "GL error 0x%x)\n",
+                         label.c_str(), positive, negative, values.size() - positive - negative,
+                         fbStatus, glError);
             for (std::size_t v = 0; v < values.size(); ++v) {
                 right += ((values[v] > 0.0F) == ((*truth)[v] != 0)) ? 1 : 0;
             }
