@@ -73,6 +73,14 @@ for script in postinst prerm postrm; do
     sh -n "$work/control/$script" || fail "$script: syntax"
 done
 
+step "hardening (readelf)"
+# Full RELRO: a read-only GOT after start-up needs both the relro segment and immediate binding.
+dpkg-deb -x "$deb" "$work/elf"
+elf_dynamic=$(readelf -d "$work/elf/usr/bin/steerseg")
+grep -q 'BIND_NOW' <<<"$elf_dynamic" || grep -q 'FLAGS_1.*NOW' <<<"$elf_dynamic" ||
+    fail "usr/bin/steerseg is not linked with -z now"
+readelf -l "$work/elf/usr/bin/steerseg" | grep -q 'GNU_RELRO' || fail "usr/bin/steerseg has no RELRO"
+
 step "lintian"
 # Tags are errors and warnings; info tags are listed, not failed. Overrides (with reasons):
 # packaging/lintian-overrides, shipped in the package where lintian reads them.
