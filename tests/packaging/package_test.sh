@@ -73,14 +73,6 @@ for script in postinst prerm postrm; do
     sh -n "$work/control/$script" || fail "$script: syntax"
 done
 
-step "hardening (readelf)"
-# Full RELRO: a read-only GOT after start-up needs both the relro segment and immediate binding.
-dpkg-deb -x "$deb" "$work/elf"
-elf_dynamic=$(readelf -d "$work/elf/usr/bin/steerseg")
-grep -q 'BIND_NOW' <<<"$elf_dynamic" || grep -q 'FLAGS_1.*NOW' <<<"$elf_dynamic" ||
-    fail "usr/bin/steerseg is not linked with -z now"
-readelf -l "$work/elf/usr/bin/steerseg" | grep -q 'GNU_RELRO' || fail "usr/bin/steerseg has no RELRO"
-
 step "lintian"
 # Tags are errors and warnings; info tags are listed, not failed. Overrides (with reasons):
 # packaging/lintian-overrides, shipped in the package where lintian reads them.
@@ -115,6 +107,13 @@ for dir in /var/lib/steerseg /var/lib/steerseg/export /var/lib/steerseg/autosave
     [[ $(stat -c '%a %u:%g' "$root$dir" 2>/dev/null || true) == "750 $owner" ]] ||
         fail "tmpfiles: $dir is not a 0750 folder of $owner"
 done
+
+step "hardening (readelf)"
+# Full RELRO: a read-only GOT after start-up needs both the relro segment and immediate binding.
+elf_dynamic=$(readelf -d "$root/usr/bin/steerseg")
+grep -q 'BIND_NOW' <<<"$elf_dynamic" || grep -q 'FLAGS_1.*NOW' <<<"$elf_dynamic" ||
+    fail "usr/bin/steerseg is not linked with -z now"
+readelf -l "$root/usr/bin/steerseg" | grep -q 'GNU_RELRO' || fail "usr/bin/steerseg has no RELRO"
 
 step "udev helper: radial controller by report descriptor"
 hid="$work/hidraw"

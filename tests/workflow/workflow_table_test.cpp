@@ -1,9 +1,9 @@
 // The transition table: well formed (one rule per state and action kind), the rules the
 // workflow actually follows (every kind in every state the operator reaches, against
 // Status::allowed and the refusal text), and the table docs/workflow.md shows.
+#include "support/workflow_rig.hpp"
 #include "workflow/transition_markdown.hpp"
 #include "workflow/transition_table.hpp"
-#include "support/workflow_rig.hpp"
 
 #include <cstdlib>
 #include <filesystem>
