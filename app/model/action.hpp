@@ -1,8 +1,8 @@
 #pragma once
 
 // The workflow's vocabulary: the states of the fixed operator workflow and the actions that
-// move it. Devices, gestures, bindings and scripts all end here; nothing in this folder knows
-// where an action came from. No GL, no OS: the workflow runs in unit tests without a GPU.
+// move it. Devices, gestures, bindings and scripts all end here; nothing here knows where an
+// action came from. No GL, no OS: the workflow runs in unit tests without a GPU.
 #include "model/speed_kind.hpp"
 
 #include <cstddef>

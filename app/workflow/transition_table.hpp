@@ -113,12 +113,14 @@ inline constexpr model::ActionKinds kLooking{
 inline constexpr model::ActionKinds kSteer{K::Probe,      K::ApplyPreset,   K::SetParam,
                                            K::NudgeParam, K::NudgeSelected, K::SetSpeed,
                                            K::MarkOutside};
-inline constexpr model::ActionKinds kSteerAll{K::Probe,       K::ApplyPreset,   K::SetParam,
-                                              K::NudgeParam,  K::NudgeSelected, K::SetSpeed,
-                                              K::MarkOutside, K::ClearExamples};
-inline constexpr model::ActionKinds kExportedRefused{
-    K::Probe,    K::ApplyPreset, K::SetParam,      K::NudgeParam, K::NudgeSelected,
-    K::SetSpeed, K::MarkOutside, K::ClearExamples, K::AddSeed,    K::Erase};
+constexpr model::ActionKinds with(model::ActionKinds kinds, model::ActionKinds more) {
+    kinds.insert(more);
+    return kinds;
+}
+// The same with clear_examples (guarded apart while steering), and the spheres besides: what
+// review and done refuse.
+inline constexpr model::ActionKinds kSteerAll = with(kSteer, {K::ClearExamples});
+inline constexpr model::ActionKinds kExportedRefused = with(kSteerAll, {K::AddSeed, K::Erase});
 
 inline constexpr std::string_view kNoLevelSetToRun = "no level set to evolve: add a seed first";
 inline constexpr std::string_view kNothingToExport = "nothing to export: add a seed first";
