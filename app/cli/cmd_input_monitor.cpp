@@ -6,6 +6,7 @@
 // as root it simply sees every node.
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/kiosk_config_file.hpp"
 #include "config/config_loader.hpp"
 #include "input/input_backend.hpp"
 #include "input/input_hub.hpp"
@@ -150,21 +151,6 @@ void listAttached(const std::vector<DeviceSpec>& specs, std::ostream& out) {
     }
 }
 
-config::LoadedConfig readConfig(const std::optional<std::string>& file, std::ostream& err) {
-    const config::BindingCheck check = [](std::string_view action) {
-        return model::bindingAction(action, 1.0).has_value();
-    };
-    std::optional<std::filesystem::path> path;
-    if (file) {
-        path = *file;
-    }
-    config::LoadedConfig loaded = config::loadConfig(config::kioskConfigSources(path), check);
-    for (const config::ConfigProblem& p : loaded.problems) {
-        err << "steerseg input-monitor: config: " << config::describe(p) << '\n';
-    }
-    return loaded;
-}
-
 // Prints each event with its actions as it is decoded; ring repeats (actions without an event
 // of their own) are printed after the poll that made them.
 class Printer {
@@ -283,7 +269,8 @@ int runInputMonitor(std::span<const std::string> words) {
     if (replayFile && (args.value("record") || maxSeconds)) {
         throw UsageError("--replay takes neither --record nor --seconds");
     }
-    const config::LoadedConfig loaded = readConfig(args.value("config"), std::cerr);
+    const config::LoadedConfig loaded =
+        readKioskConfig(args.value("config"), "input-monitor", std::cerr);
     if (replayFile) {
         return replay(*replayFile, loaded.config);
     }

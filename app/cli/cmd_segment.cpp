@@ -1,6 +1,7 @@
 // steerseg segment: one segmentation run, offscreen; the mask to a file, the report to stdout.
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/segment_clicks.hpp"
 #include "cli/segmentation_options.hpp"
 #include "core/mask_overlap.hpp"
 #include "gpu/gpu_info.hpp"
@@ -11,7 +12,6 @@
 #include "session/session.hpp"
 
 #include <cstdio>
-#include <fstream>
 #include <optional>
 #include <stdexcept>
 
@@ -19,9 +19,18 @@ namespace steerseg::cli {
 
 int runSegment(std::span<const std::string> words) {
     std::vector<std::string> valueOptions = segmentationValueOptions();
-    valueOptions.insert(valueOptions.end(),
-                        {"input", "output", "report", "format", "reference", "reference-label"});
+    valueOptions.insert(valueOptions.end(), {"input", "output", "report", "format", "reference",
+                                             "reference-label", "click", "config"});
     const Args args(words, valueOptions, segmentationFlagOptions());
+    if (!args.values("click").empty()) {
+        if (!args.positional().empty()) {
+            throw UsageError("unexpected argument '" + args.positional().front() + "'");
+        }
+        return runSegmentClicks(args);
+    }
+    if (args.value("config")) {
+        throw UsageError("--config goes with --click (the kiosk's settings for the clicks)");
+    }
     if (!args.positional().empty()) {
         throw UsageError("unexpected argument '" + args.positional().front() + "'");
     }
@@ -75,11 +84,7 @@ int runSegment(std::span<const std::string> words) {
         session, run, mask,
         {input, output, gpu::queryGpuInfo().renderer, request.params, reference});
     if (const auto report = args.value("report")) {
-        std::ofstream out(*report);
-        out << text << "\n";
-        if (!out) {
-            throw files::WriteError(*report, "cannot write the report");
-        }
+        writeReport(*report, text);
     }
     std::printf("%s\n", text.c_str());
     return 0;

@@ -44,7 +44,10 @@ constexpr Command kCommands[] = {
      "[--probe i,j,k,r] --output OUT "
      "[--format F] [--report REPORT.json] [--reference LABELS [--reference-label N]]: level-set "
      "segmentation on the GPU; OUT as for export (surfaces from the level set itself); the "
-     "report gives the Dice against LABELS' voxels equal to N (or non-zero)",
+     "report gives the Dice against LABELS' voxels equal to N (or non-zero). Or: segment --input "
+     "PATH --click i,j,k,+|-[,r] [--click ...] [--max-iterations N] [--config FILE] --output OUT "
+     "[--report R.json] [--reference LABELS [--reference-label N]]: an operator's corrections "
+     "through the kiosk's workflow, the solver run to its stop after each (docs/steering.md)",
      steerseg::cli::runSegment},
     {"export",
      "export --input SCAN --mask MASK --output OUT.nii.gz|.nii|.nrrd|.seg.nrrd|.dcm|.stl|.ply|.tif "

@@ -190,6 +190,12 @@ workflow::ProbeResult SessionEngine::probe(const glm::dvec3& voxel, double radiu
     return {s.mean, s.stddev, s.count};
 }
 
+model::SolverOptions consoleSolverOptions() {
+    model::SolverOptions options;
+    options.stopOnLeak = true;
+    return options;
+}
+
 void SessionEngine::addSeed(const model::Sphere& sphere) {
     requireSession().addSeed(sphere);
     volumeMl_.reset();
@@ -202,7 +208,28 @@ void SessionEngine::erase(const model::Sphere& sphere) {
     changed();
 }
 
+bool SessionEngine::addBarrier(const model::Sphere& sphere) {
+    if (barriers_.size() >= model::kMaxBarriers) {
+        return false;
+    }
+    requireSession().addBarrier(sphere);
+    barriers_.push_back(sphere);
+    changed();
+    return true;
+}
+
+void SessionEngine::setBarriers(const std::vector<model::Sphere>& barriers) {
+    session::Session& s = requireSession();
+    s.clearBarriers();
+    barriers_.clear();
+    for (const model::Sphere& b : barriers) {
+        s.addBarrier(b);
+        barriers_.push_back(b);
+    }
+}
+
 void SessionEngine::clearLevelSet() {
+    setBarriers({});
     requireSession().clearLevelSet();
     volumeMl_.reset();
     changed();
@@ -299,7 +326,7 @@ double SessionEngine::exactVolumeMl() const {
 
 workflow::SnapshotId SessionEngine::snapshot() {
     const workflow::SnapshotId id = nextSnapshot_++;
-    snapshots_[id] = hasLevelSet() ? encodeRuns(requireSession().mask()) : MaskRuns{};
+    snapshots_[id] = {hasLevelSet() ? encodeRuns(requireSession().mask()) : MaskRuns{}, barriers_};
     return id;
 }
 
@@ -308,16 +335,18 @@ void SessionEngine::restore(workflow::SnapshotId id) {
     if (it == snapshots_.end()) {
         throw std::logic_error("undo: snapshot " + std::to_string(id) + " is gone");
     }
-    if (it->second.runs.empty()) {
+    setBarriers(it->second.barriers);
+    if (it->second.mask.runs.empty()) {
         requireSession().clearLevelSet();
     } else {
-        requireSession().setMask(decodeRuns(it->second));
+        requireSession().setMask(decodeRuns(it->second.mask));
     }
     volumeMl_.reset();
     changed();
 }
 
 void SessionEngine::setMask(const MaskRuns& mask) {
+    setBarriers({}); // an autosave keeps the surface, not the run's no-go spheres
     if (mask.runs.empty()) {
         requireSession().clearLevelSet();
     } else {

@@ -25,6 +25,10 @@ struct EdgeSpeedRules {
     double kappaFactor = session::kKappaFactor;             // kappa = factor * the probe's noise
 };
 
+// The solver as the console runs it: a leak stops the front (the workflow pauses and says
+// where); everything else as SolverOptions' defaults.
+model::SolverOptions consoleSolverOptions();
+
 class SessionEngine final : public workflow::Engine {
   public:
     explicit SessionEngine(model::SolverOptions options = {}, EdgeSpeedRules edge = {});
@@ -39,6 +43,8 @@ class SessionEngine final : public workflow::Engine {
                                               double radiusMm) const override;
     void addSeed(const model::Sphere& sphere) override;
     void erase(const model::Sphere& sphere) override;
+    bool addBarrier(const model::Sphere& sphere) override;
+    [[nodiscard]] int barriers() const override { return static_cast<int>(barriers_.size()); }
     void clearLevelSet() override;
     [[nodiscard]] bool hasLevelSet() const override;
     void setParams(const model::LevelSetParams& params) override;
@@ -89,7 +95,14 @@ class SessionEngine final : public workflow::Engine {
     // Loads replaced before they finished: a read cannot be interrupted, so they are joined on
     // destruction instead of detached with the scan they are writing into.
     std::vector<std::unique_ptr<PendingLoad>> abandoned_;
-    std::map<workflow::SnapshotId, MaskRuns> snapshots_; // empty runs: no level set
+    // A level set as undo keeps it: the mask (empty runs: none) and the barriers in force.
+    struct Snapshot {
+        MaskRuns mask;
+        std::vector<model::Sphere> barriers;
+    };
+    void setBarriers(const std::vector<model::Sphere>& barriers);
+    std::map<workflow::SnapshotId, Snapshot> snapshots_;
+    std::vector<model::Sphere> barriers_; // as the solver holds them
     workflow::SnapshotId nextSnapshot_ = 1;
     std::uint64_t version_ = 0;
     std::uint64_t attached_ = 0;

@@ -57,7 +57,7 @@ class Kiosk {
           physical_(info_.width, info_.height),
           rotation_(cfg.display.rotation, physical_.x, physical_.y),
           screen_(physical_, cfg.display.rotation),
-          engine_(model::SolverOptions{},
+          engine_(engine::consoleSolverOptions(),
                   {cfg.speed.smoothIterations, cfg.speed.conductanceFactor, cfg.speed.kappaFactor}),
           autosave_(cfg.autosave, cfg.audit.path, options.resume, err), audit_(cfg.audit.path),
           flow_(engine_, workflowSettings(cfg), &audit_),

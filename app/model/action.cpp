@@ -94,6 +94,8 @@ template <class T> constexpr std::string_view nameOf() {
         return "set_slice";
     } else if constexpr (std::is_same_v<T, ShowSlices>) {
         return "show_slices";
+    } else if constexpr (std::is_same_v<T, Correct>) {
+        return "correct";
     } else {
         static_assert(std::is_same_v<T, Quit>, "every action needs a name");
         return "quit";
@@ -274,6 +276,7 @@ static_assert(std::is_same_v<TypeOf<ActionKind::ZoomView>, ZoomView>);
 static_assert(std::is_same_v<TypeOf<ActionKind::PageSlice>, PageSlice>);
 static_assert(std::is_same_v<TypeOf<ActionKind::SetSlice>, SetSlice>);
 static_assert(std::is_same_v<TypeOf<ActionKind::ShowSlices>, ShowSlices>);
+static_assert(std::is_same_v<TypeOf<ActionKind::Correct>, Correct>);
 static_assert(std::is_same_v<TypeOf<ActionKind::Quit>, Quit>);
 static_assert(static_cast<std::size_t>(ActionKind::Quit) + 1 == kActionKindCount);
 

@@ -137,13 +137,25 @@ struct ShowSlices { // which two orientations the slice views show
     SliceAxis first = SliceAxis::Axial;
     SliceAxis second = SliceAxis::Coronal;
 };
+// The operator's correction tap, as the clicks protocol counts it (docs/steering.md): a tap in
+// add mode (positive) or remove mode (negative) that the surface should follow at once. The
+// first one, on a scan without a level set, probes and seeds there; after it a positive one is
+// a seed that also teaches the speed the tissue under it, a negative one an erase that sticks
+// (a barrier and an outside example). Either way the solver then runs from the current
+// surface. The same as AddSeed or Erase followed by Run, in one undo step.
+struct Correct {
+    glm::dvec3 voxel{0.0};
+    bool positive = true;
+    double radius = 0.0; // voxels; <= 0: the brush radius
+};
 struct Quit {};
 
-using Action = std::variant<LoadScan, Probe, ApplyPreset, SetParam, NudgeParam, NudgeSelected,
-                            SelectParam, CycleParam, SetWindow, AddSeed, Erase, SetEraseMode,
-                            SetSpeed, MarkOutside, ClearExamples, SetOutsideMode, Run, Pause,
-                            ToggleRun, Finish, Resume, Export, Undo, Redo, Restart, Proceed, Back,
-                            Dismiss, RotateView, ZoomView, PageSlice, SetSlice, ShowSlices, Quit>;
+using Action =
+    std::variant<LoadScan, Probe, ApplyPreset, SetParam, NudgeParam, NudgeSelected, SelectParam,
+                 CycleParam, SetWindow, AddSeed, Erase, SetEraseMode, SetSpeed, MarkOutside,
+                 ClearExamples, SetOutsideMode, Run, Pause, ToggleRun, Finish, Resume, Export, Undo,
+                 Redo, Restart, Proceed, Back, Dismiss, RotateView, ZoomView, PageSlice, SetSlice,
+                 ShowSlices, Correct, Quit>;
 
 // "load_scan", "probe", ... (snake_case of the type): the audit log's and scripts' names.
 std::string_view actionName(const Action& action);
@@ -184,6 +196,7 @@ enum class ActionKind {
     PageSlice,
     SetSlice,
     ShowSlices,
+    Correct,
     Quit,
 };
 inline constexpr std::size_t kActionKindCount = std::variant_size_v<Action>;

@@ -51,6 +51,22 @@ template <typename Sphere> Handler sphere(const char* usage) {
     };
 }
 
+// A correction as `segment --click` gives it (docs/steering.md): + adds, - removes.
+StepKind click(Words& w) {
+    model::Correct c;
+    c.voxel = voxelWords(w);
+    const std::string sign = w.text("+ or -");
+    if (sign != "+" && sign != "-") {
+        throw LineError("click '" + sign + "': give + (add) or - (remove)");
+    }
+    c.positive = sign == "+";
+    if (!w.empty()) {
+        c.radius = w.number("the radius (voxels)", 0.1, 10000.0);
+    }
+    w.finish("click I J K +|- [RADIUS_VOXELS]");
+    return actionStep(c);
+}
+
 StepKind eraseMode(Words& w) {
     const std::string on = w.text("on or off");
     w.finish("erase_mode on|off");
@@ -210,6 +226,7 @@ void addOperatorVerbs(VerbTable& table) {
         {"seed", sphere<model::AddSeed>("seed I J K [RADIUS_VOXELS]")},
         {"erase", sphere<model::Erase>("erase I J K [RADIUS_VOXELS]")},
         {"erase_mode", eraseMode},
+        {"click", click},
         {"speed", speedVerb},
         {"outside", outside},
         {"outside_mode", outsideMode},

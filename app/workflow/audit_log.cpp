@@ -54,6 +54,9 @@ nlohmann::json values(const model::AddSeed& a) {
 nlohmann::json values(const model::Erase& a) {
     return {{"voxel", vec(a.voxel)}, {"radius", a.radius}};
 }
+nlohmann::json values(const model::Correct& a) {
+    return {{"voxel", vec(a.voxel)}, {"positive", a.positive}, {"radius", a.radius}};
+}
 nlohmann::json values(const model::SetEraseMode& a) {
     return {{"erase", a.erase}};
 }

@@ -84,6 +84,11 @@ class Engine {
     // Sphere edits; std::invalid_argument for a sphere outside the scan.
     virtual void addSeed(const model::Sphere& sphere) = 0;
     virtual void erase(const model::Sphere& sphere) = 0;
+    // A no-go sphere for the rest of the run, so that an erase sticks (a negative correction):
+    // part of the level set's state, kept by snapshots and cleared with it. False when the
+    // engine holds its most (model::kMaxBarriers) already: the erase stands, without it.
+    virtual bool addBarrier(const model::Sphere& sphere) = 0;
+    [[nodiscard]] virtual int barriers() const = 0;
     virtual void clearLevelSet() = 0;
     [[nodiscard]] virtual bool hasLevelSet() const = 0;
 

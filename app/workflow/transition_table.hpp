@@ -120,7 +120,8 @@ constexpr model::ActionKinds with(model::ActionKinds kinds, model::ActionKinds m
 // The same with clear_examples (guarded apart while steering), and the spheres besides: what
 // review and done refuse.
 inline constexpr model::ActionKinds kSteerAll = with(kSteer, {K::ClearExamples});
-inline constexpr model::ActionKinds kExportedRefused = with(kSteerAll, {K::AddSeed, K::Erase});
+inline constexpr model::ActionKinds kExportedRefused =
+    with(kSteerAll, {K::AddSeed, K::Erase, K::Correct});
 
 inline constexpr std::string_view kNoLevelSetToRun = "no level set to evolve: add a seed first";
 inline constexpr std::string_view kNothingToExport = "nothing to export: add a seed first";
@@ -144,8 +145,11 @@ inline constexpr std::array kRules{
     Rule{{S::Seeding, S::Evolving, S::Paused}, {K::AddSeed, K::Erase}, Guard::Always, std::nullopt,
          {}, "evolving: an erase that empties the level set pauses"},
     Rule{{S::Inspect}, {K::Erase}, Guard::Never, std::nullopt, "place a seed before erasing"},
-    Rule{{S::Review}, {K::AddSeed, K::Erase}, Guard::Never, std::nullopt,
+    Rule{{S::Review}, {K::AddSeed, K::Erase, K::Correct}, Guard::Never, std::nullopt,
          "go back to steering to edit the surface"},
+    Rule{{S::Inspect, S::Seeding, S::Paused}, {K::Correct}, Guard::Always, S::Evolving, {},
+         "the first probes and seeds; an erase that leaves nothing stays"},
+    Rule{{S::Evolving}, {K::Correct}, Guard::Always, std::nullopt, {}, "from the current surface"},
     // The run.
     Rule{{S::Seeding, S::Paused}, {K::Run, K::ToggleRun}, Guard::LevelSet, S::Evolving,
          kNoLevelSetToRun},

@@ -78,7 +78,9 @@ Workflow::Outcome Workflow::handle(const model::Action& action) {
             out = std::visit([this](const auto& a) { return on(a); }, action);
             // The effect may have moved the state itself (an export ends in done, or back in
             // review); the table's next state is for the actions that do not.
-            if (out.accepted && verdict.next && status_.state == before) {
+            // Nothing evolves without a surface (an erase may have left none).
+            const bool runsEmpty = verdict.next == model::State::Evolving && !status_.hasLevelSet;
+            if (out.accepted && verdict.next && status_.state == before && !runsEmpty) {
                 enter(*verdict.next);
             }
         }

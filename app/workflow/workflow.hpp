@@ -110,6 +110,8 @@ class Workflow {
     Outcome on(const model::PageSlice& a);
     Outcome on(const model::SetSlice& a);
     Outcome on(const model::ShowSlices& a);
+    Outcome on(const model::Correct& a); // workflow_correct.cpp
+    Outcome first(const model::Correct& a);
     Outcome on(const model::Quit& a);
 
     // States and transitions (workflow.cpp).
@@ -128,6 +130,11 @@ class Workflow {
     // Parameters (workflow_params.cpp).
     Outcome changeParams(ParamValues next, std::string_view what,
                          std::optional<model::Param> coalesce);
+    // T and eps as a probe of `p` sets them (the probe's rule and the eps floor).
+    void takeProbe(ParamValues& values, const ProbeResult& p) const;
+    // T and eps widened to take in the tissue of `p` when it lies outside T +- eps (a positive
+    // correction where the front could not go); unchanged otherwise.
+    void takeInTissue(ParamValues& values, const ProbeResult& p) const;
     Outcome setParam(model::Param param, double value, std::string_view what);
     void applyParams(const ParamValues& values, bool force = false); // the engine, the status
     [[nodiscard]] ParamValues clamped(ParamValues values) const;
@@ -145,7 +152,14 @@ class Workflow {
     static void addExample(std::vector<model::Sphere>& examples, const model::Sphere& example);
 
     // The level set (workflow_edits.cpp).
+    // Why a sphere at `voxel` cannot be placed (a non-finite number, outside the scan), or "".
+    [[nodiscard]] std::string sphereProblem(const glm::dvec3& voxel, double radius) const;
+    // The sphere of an edit: `radius` voxels clamped to the brush's range, <= 0 the brush.
+    [[nodiscard]] model::Sphere brushSphere(const glm::dvec3& voxel, double radius) const;
     Outcome sphereEdit(const glm::dvec3& voxel, double radius, bool seed);
+    // An erase while steering: the erase and, when the engine has room, a barrier (a negative
+    // correction's). "" or why it could not stick.
+    std::string stickyErase(const model::Sphere& sphere);
     // `params`, when given, are applied after the edit and undone and redone with it: a seed's
     // inside example (applyEditParams).
     void editLevelSet(std::string_view what, const std::function<void()>& edit, int seeds,

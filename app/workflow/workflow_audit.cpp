@@ -76,6 +76,11 @@ nlohmann::json Workflow::resultOf(const model::Action& action) const {
                 return params();
             } else if constexpr (isOneOf<A, model::AddSeed, model::Erase, model::Restart>) {
                 return levelSet();
+            } else if constexpr (std::is_same_v<A, model::Correct>) {
+                nlohmann::json r = params();
+                r.update(levelSet());
+                r["barriers"] = engine_.barriers();
+                return r;
             } else if constexpr (isOneOf<A, model::Undo, model::Redo>) {
                 nlohmann::json r = params();
                 r.update(levelSet());

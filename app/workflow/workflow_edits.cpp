@@ -4,6 +4,7 @@
 #include "workflow/one_line.hpp"
 #include "workflow/workflow.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -118,9 +119,9 @@ void Workflow::applyEditParams(const ParamValues& values) {
     }
 }
 
-Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, bool seed) {
+std::string Workflow::sphereProblem(const glm::dvec3& voxel, double radius) const {
     if (!finite(voxel) || !std::isfinite(radius)) {
-        return no("a sphere needs a finite centre and radius");
+        return "a sphere needs a finite centre and radius";
     }
     const glm::ivec3 dims = status_.scan.dims;
     for (int a = 0; a < 3; ++a) {
@@ -129,27 +130,75 @@ Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, b
             msg << "sphere centre (" << voxel.x << ", " << voxel.y << ", " << voxel.z
                 << ") lies outside the scan (" << dims.x << " x " << dims.y << " x " << dims.z
                 << " voxels)";
-            return no(msg.str());
+            return msg.str();
         }
+    }
+    return {};
+}
+
+model::Sphere Workflow::brushSphere(const glm::dvec3& voxel, double radius) const {
+    const ParamRange& r = status_.ranges[indexOf(model::Param::Radius)];
+    const double rad =
+        radius > 0.0 ? clampTo(r, radius) : params_.values[indexOf(model::Param::Radius)];
+    return {glm::vec3(voxel), static_cast<float>(rad)};
+}
+
+std::string Workflow::stickyErase(const model::Sphere& sphere) {
+    engine_.erase(sphere);
+    if (engine_.addBarrier(sphere)) {
+        return {};
+    }
+    return "erased; the front may grow back there: " + std::to_string(engine_.barriers()) +
+           " erasers hold already (restart to clear them)";
+}
+
+Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, bool seed) {
+    if (std::string problem = sphereProblem(voxel, radius); !problem.empty()) {
+        return no(std::move(problem));
     }
     if (!seed && !status_.hasLevelSet) {
         return no("nothing to erase");
     }
-    const ParamRange& r = status_.ranges[indexOf(model::Param::Radius)];
-    const double rad =
-        radius > 0.0 ? clampTo(r, radius) : params_.values[indexOf(model::Param::Radius)];
-    const model::Sphere sphere{glm::vec3(voxel), static_cast<float>(rad)};
+    const model::Sphere sphere = brushSphere(voxel, radius);
+    // Once the front has run, an edit corrects it (docs/steering.md): the surface should follow
+    // the operator from then on, not undo the edit a few iterations later.
+    const bool correcting =
+        status_.state == model::State::Evolving || status_.state == model::State::Paused;
+    ParamValues next = params_;
     if (seed) {
         // The operator puts seeds in the structure, often where no probe was: classify's inside
         // examples too, as on the command line (docs/speed.md).
-        ParamValues next = params_;
         addExample(next.speed.inside, sphere);
+        if (correcting) {
+            // A seed where the front did not go: the tissue under it belongs in, or the front
+            // would fill the sphere and no more.
+            const double mm =
+                static_cast<double>(sphere.radius) *
+                std::min({status_.scan.spacing.x, status_.scan.spacing.y, status_.scan.spacing.z});
+            takeInTissue(next, engine_.probe(voxel, std::max(mm, 0.5)));
+        }
         editLevelSet(
             "add_seed", [&] { engine_.addSeed(sphere); }, status_.seeds + 1, status_.erasures,
             &next);
     } else {
+        std::string notice;
+        if (correcting) {
+            // The erased tissue is not the structure: classify's outside example too.
+            addExample(next.speed.outside, sphere);
+        }
         editLevelSet(
-            "erase", [&] { engine_.erase(sphere); }, status_.seeds, status_.erasures + 1);
+            "erase",
+            [&] {
+                if (correcting) {
+                    notice = stickyErase(sphere);
+                } else {
+                    engine_.erase(sphere);
+                }
+            },
+            status_.seeds, status_.erasures + 1, &next);
+        if (!notice.empty()) {
+            status_.message = notice;
+        }
     }
     if (status_.state == model::State::Evolving && !status_.hasLevelSet) {
         enter(model::State::Paused, "the level set is empty: add a seed");

@@ -167,11 +167,33 @@ Workflow::Outcome Workflow::on(const model::Probe& a) {
     if (auto example = exampleAt(a.voxel, radius)) {
         addExample(next.speed.inside, *example);
     }
-    next.values[indexOf(model::Param::T)] = p.mean;
-    next.values[indexOf(model::Param::Eps)] =
-        std::max(settings_.probeEpsFactor * p.stddev, settings_.epsFloor);
-    next.preset.clear();
+    takeProbe(next, p);
     return changeParams(std::move(next), "probe", std::nullopt);
+}
+
+void Workflow::takeProbe(ParamValues& values, const ProbeResult& p) const {
+    values.values[indexOf(model::Param::T)] = p.mean;
+    values.values[indexOf(model::Param::Eps)] =
+        std::max(settings_.probeEpsFactor * p.stddev, settings_.epsFloor);
+    values.preset.clear();
+}
+
+void Workflow::takeInTissue(ParamValues& values, const ProbeResult& p) const {
+    if (p.count == 0 || !std::isfinite(p.mean) || !std::isfinite(p.stddev)) {
+        return;
+    }
+    const double T = values.values[indexOf(model::Param::T)];
+    const double eps = values.values[indexOf(model::Param::Eps)];
+    if (std::abs(p.mean - T) <= eps) {
+        return; // the front can grow there already: the seed is enough
+    }
+    // The union of the two ranges, each as a probe takes it: the structure is both.
+    const double spread = std::max(settings_.probeEpsFactor * p.stddev, settings_.epsFloor);
+    const double lo = std::min(T - eps, p.mean - spread);
+    const double hi = std::max(T + eps, p.mean + spread);
+    values.values[indexOf(model::Param::T)] = 0.5 * (lo + hi);
+    values.values[indexOf(model::Param::Eps)] = 0.5 * (hi - lo);
+    values.preset.clear();
 }
 
 Workflow::Outcome Workflow::on(const model::ApplyPreset& a) {

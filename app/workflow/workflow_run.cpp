@@ -34,6 +34,11 @@ model::StepResult Workflow::evolve(int iterations) {
     }
     if (!status_.hasLevelSet) {
         enter(model::State::Paused, "the surface vanished: add a seed, or widen eps");
+    } else if (r.stopReason == model::StopReason::Leak && r.leak) {
+        const glm::ivec3 c(r.leak->centre());
+        enter(model::State::Paused, "the front broke out near (" + std::to_string(c.x) + ", " +
+                                        std::to_string(c.y) + ", " + std::to_string(c.z) +
+                                        "): erase there, or narrow eps, then run");
     } else if (r.converged) {
         enter(model::State::Paused,
               "converged after " + std::to_string(status_.iterations) + " iterations");

@@ -165,8 +165,18 @@ void FakeEngine::erase(const model::Sphere& sphere) {
     paint(sphere, 0);
 }
 
+bool FakeEngine::addBarrier(const model::Sphere& sphere) {
+    requireScan("addBarrier");
+    if (barriers_.size() >= model::kMaxBarriers) {
+        return false;
+    }
+    barriers_.push_back(sphere);
+    return true;
+}
+
 void FakeEngine::clearLevelSet() {
     requireScan("clearLevelSet");
+    barriers_.clear();
     std::fill(mask_.begin(), mask_.end(), std::uint8_t{0});
     inside_ = 0;
     iterations_ = 0;
@@ -256,7 +266,7 @@ workflow::SnapshotId FakeEngine::snapshot() {
         throw std::runtime_error(snapshotError);
     }
     const workflow::SnapshotId id = nextId_++;
-    snapshots_[id] = LevelSet{mask_, inside_, iterations_, time_};
+    snapshots_[id] = LevelSet{mask_, inside_, iterations_, time_, barriers_};
     return id;
 }
 
@@ -270,6 +280,7 @@ void FakeEngine::restore(workflow::SnapshotId id) {
     inside_ = it->second.inside;
     iterations_ = it->second.iterations;
     time_ = it->second.time;
+    barriers_ = it->second.barriers;
     changed();
 }
 

@@ -1,0 +1,80 @@
+#pragma once
+
+// The clicks protocol's robot operator (docs/steering.md), after the interactive 3D
+// segmentation challenge at CVPR 2025: it looks at the expert label only to choose where to
+// click. Pure functions on flat masks (non-zero inside, i fastest) with the scan's spacing in
+// mm, so the rule is tested on synthetic masks without a GPU.
+#include <cstddef>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <optional>
+#include <vector>
+
+namespace steerseg::bench {
+
+struct MaskGrid {
+    glm::ivec3 dims{0};
+    glm::dvec3 spacing{1.0}; // mm
+    [[nodiscard]] std::size_t count() const {
+        return static_cast<std::size_t>(dims.x) * static_cast<std::size_t>(dims.y) *
+               static_cast<std::size_t>(dims.z);
+    }
+};
+
+// Exact Euclidean distance in mm from every voxel to the nearest voxel where `sites` is
+// non-zero (0 on a site). With `beyondIsSite` the voxels just outside the grid count as sites
+// too (a region's distance to its boundary, the grid's edge included); without, a grid with no
+// site gives +infinity everywhere.
+std::vector<float> distanceToSitesMm(const MaskGrid& grid, const std::vector<std::uint8_t>& sites,
+                                     bool beyondIsSite);
+
+// The largest 26-connected component of `region`'s non-zero voxels (1 in it, else 0); of
+// components of equal size, the one whose first voxel comes first in storage order. All zero
+// when the region is empty.
+std::vector<std::uint8_t> largestComponent(const MaskGrid& grid,
+                                           const std::vector<std::uint8_t>& region);
+
+struct RobotClick {
+    glm::ivec3 voxel{0};
+    bool positive = true; // the label holds the voxel: add; else remove
+    double depthMm = 0.0; // its distance to the component's boundary
+    std::size_t componentVoxels = 0;
+};
+
+// The voxel of the largest component of `region` farthest from that component's boundary (mm;
+// ties: the first in storage order), positive where `label` is non-zero. nullopt for an empty
+// region.
+std::optional<RobotClick> deepestClick(const MaskGrid& grid,
+                                       const std::vector<std::uint8_t>& region,
+                                       const std::vector<std::uint8_t>& label);
+// The first prompt: the deepest voxel of the label's largest component.
+std::optional<RobotClick> initialClick(const MaskGrid& grid,
+                                       const std::vector<std::uint8_t>& label);
+// A correction: the deepest voxel of the largest component of mask != label; nullopt when the
+// mask is the label.
+std::optional<RobotClick> correctionClick(const MaskGrid& grid,
+                                          const std::vector<std::uint8_t>& mask,
+                                          const std::vector<std::uint8_t>& label);
+
+// The brush an operator would choose for a click: the largest sphere (in voxel units, as the
+// product's spheres are) that stays inside the component in mm, at least 1 voxel, at most
+// `maxRadius`.
+double brushRadius(const MaskGrid& grid, const RobotClick& click, double maxRadius);
+
+// Dice of two masks' non-zero voxels (two empty masks agree: 1).
+double dice(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b);
+// Normalised surface Dice at `toleranceMm`: the share of both surfaces' voxels (inside voxels
+// with a face neighbour outside, or on the grid's edge) within the tolerance of the other
+// surface. Two empty masks: 1; one empty: 0.
+double surfaceDice(const MaskGrid& grid, const std::vector<std::uint8_t>& a,
+                   const std::vector<std::uint8_t>& b, double toleranceMm);
+
+// Paint-only's edit: every voxel within `radius` voxels of `centre` set to `value`.
+void paintSphere(const MaskGrid& grid, std::vector<std::uint8_t>& mask, const glm::dvec3& centre,
+                 double radius, std::uint8_t value);
+
+// The area under the Dice curve over the first `points` predictions (trapezoid, unit steps:
+// at most points - 1), as the challenge reports it; fewer predictions count what there is.
+double diceAuc(const std::vector<double>& dices, std::size_t points = 6);
+
+} // namespace steerseg::bench

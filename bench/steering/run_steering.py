@@ -1,0 +1,158 @@
+#!/usr/bin/env python3
+"""The steering benchmark (docs/steering.md): the clicks protocol on every labelled case of
+bench/accuracy/cases.toml, the product (through the kiosk's workflow) and paint only in the same
+run of bench/steering_bench per case. Writes steering.json (every report), steering.md (the
+table) and steering.png (Dice against clicks, both curves, one panel a case) to --out.
+
+  run_steering.py --bench BIN [--data DIR] [--out DIR] [--cases FILE] [--only NAME[,NAME]]
+                  [--clicks N] [--max-iterations N]
+
+The cases file's operator inputs (seeds, probes) are not used: the robot makes every click.
+"""
+import argparse
+import datetime
+import json
+import subprocess
+import sys
+import time
+import tomllib
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+
+# The goals after 5 corrections (issue 27): tumours 0.85 (0.88 after 10), liver and the head
+# MR's brain 0.92, the MNI152 tissue classes 0.85; and the level set >= paint only + 0.10.
+GOAL_5 = {"tumour": 0.85, "tissue": 0.92}
+GOAL_5_TISSUE_CLASS = 0.85
+GOAL_10_TUMOUR = 0.88
+MARGIN = 0.10
+
+
+def goal_after_5(case):
+    if case["name"].startswith("mni152"):
+        return GOAL_5_TISSUE_CLASS
+    return GOAL_5[case["goal"]]
+
+
+def run_case(args, case, data, out):
+    report = out / f"{case['name']}.json"
+    cmd = [str(args.bench), "--input", str(data / case["scan"]), "--reference",
+           str(data / case["label"]), "--clicks", str(args.clicks), "--max-iterations",
+           str(args.max_iterations), "--report", str(report)]
+    if "label_value" in case:
+        cmd += ["--reference-label", str(case["label_value"])]
+    print(f"== {case['name']}", file=sys.stderr, flush=True)
+    start = time.monotonic()
+    done = subprocess.run(cmd, stdout=subprocess.DEVNULL)
+    if done.returncode != 0:
+        return {"name": case["name"], "error": f"steering_bench exited {done.returncode}"}
+    result = json.loads(report.read_text())
+    result["name"] = case["name"]
+    result["what"] = case.get("what", "")
+    result["wall_seconds"] = time.monotonic() - start
+    return result
+
+
+def fmt(x):
+    return "-" if x is None else f"{x:.3f}"
+
+
+def median(xs):
+    xs = sorted(xs)
+    if not xs:
+        return None
+    n = len(xs)
+    return xs[n // 2] if n % 2 else 0.5 * (xs[n // 2 - 1] + xs[n // 2])
+
+
+def table(results, cases):
+    lines = [
+        "| case | Dice 0 | after 5 | after 10 | paint only after 5 | goal after 5 | AUC (6) | "
+        "median s to stop | median s to first change | stops |",
+        "|---|---|---|---|---|---|---|---|---|---|",
+    ]
+    for r in results:
+        case = cases[r["name"]]
+        if "error" in r:
+            lines.append(f"| {r['name']} | {r['error']} |||||||||")
+            continue
+        s, b = r["summary"], r["baseline"]["summary"]
+        clicks = r["clicks"][1:] or r["clicks"]
+        stops = {}
+        for c in r["clicks"]:
+            stops[c["stop_reason"]] = stops.get(c["stop_reason"], 0) + 1
+        lines.append(
+            f"| {r['name']} | {fmt(s['dice_initial'])} | {fmt(s['dice_after_5'])} | "
+            f"{fmt(s['dice_after_10'])} | {fmt(b['dice_after_5'])} | {goal_after_5(case):.2f} | "
+            f"{s['dice_auc_6']:.2f} | {median([c['seconds'] for c in clicks]):.1f} | "
+            f"{median([c['first_change_seconds'] for c in clicks]):.2f} | "
+            + ", ".join(f"{k} {v}" for k, v in sorted(stops.items())) + " |")
+    return "\n".join(lines)
+
+
+def plot(results, path):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("no matplotlib (Debian: python3-matplotlib): no plot", file=sys.stderr)
+        return False
+    ok = [r for r in results if "error" not in r]
+    if not ok:
+        return False
+    cols = min(4, len(ok))
+    rows = (len(ok) + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(3.6 * cols, 3.0 * rows), squeeze=False)
+    for ax, r in zip(axes.flat, ok):
+        ax.plot([c["click"] for c in r["clicks"]], [c["dice"] for c in r["clicks"]], "o-",
+                label="level set")
+        base = r["baseline"]["clicks"]
+        ax.plot([c["click"] for c in base], [c["dice"] for c in base], "s--", label="paint only")
+        ax.set_title(r["name"], fontsize=9)
+        ax.set_ylim(0, 1)
+        ax.set_xlabel("corrections")
+        ax.set_ylabel("Dice")
+        ax.grid(alpha=0.3)
+    for ax in list(axes.flat)[len(ok):]:
+        ax.axis("off")
+    axes.flat[0].legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    return True
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--bench", required=True)
+    ap.add_argument("--data", default=str(HERE.parent.parent.parent / "shared" / "data"))
+    ap.add_argument("--out", default="out/steering")
+    ap.add_argument("--cases", default=str(HERE.parent / "accuracy" / "cases.toml"))
+    ap.add_argument("--only", default="")
+    ap.add_argument("--clicks", type=int, default=10)
+    ap.add_argument("--max-iterations", type=int, default=3000)
+    args = ap.parse_args()
+    data, out = Path(args.data), Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    cases = tomllib.loads(Path(args.cases).read_text())["case"]
+    if args.only:
+        wanted = set(args.only.split(","))
+        cases = [c for c in cases if c["name"] in wanted]
+    for c in cases:
+        if not (data / c["scan"]).exists():
+            sys.exit(f"{c['name']}: {data / c['scan']} is missing (--data, STEERSEG_DATA_DIR)")
+    results = [run_case(args, c, data, out) for c in cases]
+    by_name = {c["name"]: c for c in cases}
+    (out / "steering.json").write_text(json.dumps(results, indent=1) + "\n")
+    md = (f"Clicks protocol, {datetime.date.today()}: {args.clicks} corrections, at most "
+          f"{args.max_iterations} iterations after each.\n\n{table(results, by_name)}\n")
+    (out / "steering.md").write_text(md)
+    plotted = plot(results, out / "steering.png")
+    print(md)
+    if plotted:
+        print(f"plot: {out / 'steering.png'}")
+    return 1 if any("error" in r for r in results) else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,225 @@
+// The clicks protocol (docs/steering.md): a robot operator corrects the product's segmentation
+// of one scan towards its expert label, through the kiosk's own workflow and engine
+// (engine::ClickSession, the code `segment --click` runs), and in the same run the paint-only
+// baseline: the same robot with each click painted as a sphere of the same radius, no solver.
+//   steering_bench --input SCAN --reference LABEL [--reference-label N] [--clicks N]
+//                  [--paint-only] [--max-iterations N] [--config FILE] [--nsd-mm T]
+//                  --report R.json
+// The report: {"clicks": [...], "baseline": {"clicks": [...]}, "summary": {...}}, one entry a
+// click (0: the initial prompt) with its kind, voxel, radius, Dice, normalised surface Dice,
+// seconds from the click to the solver's stop and to its first visible change, stop reason.
+#include "config/config_loader.hpp"
+#include "core/mask_overlap.hpp"
+#include "engine/click_session.hpp"
+#include "files/file_write.hpp"
+#include "kiosk/settings_from_config.hpp"
+#include "platform/egl/offscreen_context.hpp"
+#include "scan/scan_reader.hpp"
+#include "steering/click_robot.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace steerseg;
+using Json = nlohmann::ordered_json;
+
+struct Options {
+    std::string input;
+    std::string reference;
+    int label = -1;
+    int clicks = 10;
+    bool paintOnly = false;
+    int maxIterations = 3000;
+    std::string config;
+    double nsdMm = 2.0;
+    std::string report;
+};
+
+Options parse(int argc, char** argv) {
+    Options o;
+    for (int a = 1; a < argc; ++a) {
+        const std::string name = argv[a];
+        if (name == "--paint-only") {
+            o.paintOnly = true;
+            continue;
+        }
+        if (a + 1 >= argc) {
+            throw std::invalid_argument(name + " needs a value");
+        }
+        const std::string value = argv[++a];
+        if (name == "--input") {
+            o.input = value;
+        } else if (name == "--reference") {
+            o.reference = value;
+        } else if (name == "--reference-label") {
+            o.label = std::stoi(value);
+        } else if (name == "--clicks") {
+            o.clicks = std::stoi(value);
+        } else if (name == "--max-iterations") {
+            o.maxIterations = std::stoi(value);
+        } else if (name == "--config") {
+            o.config = value;
+        } else if (name == "--nsd-mm") {
+            o.nsdMm = std::stod(value);
+        } else if (name == "--report") {
+            o.report = value;
+        } else {
+            throw std::invalid_argument("unknown option " + name);
+        }
+    }
+    if (o.input.empty() || o.reference.empty() || o.report.empty()) {
+        throw std::invalid_argument("give --input, --reference and --report");
+    }
+    if (o.clicks < 0 || o.clicks > 100 || o.maxIterations < 1) {
+        throw std::invalid_argument("--clicks 0..100, --max-iterations >= 1");
+    }
+    return o;
+}
+
+const char* kindOf(int click, bool positive) {
+    return click == 0 ? "initial" : (positive ? "positive" : "negative");
+}
+
+Json entry(int click, const bench::RobotClick& c, double radius, double dice, double nsd) {
+    Json j;
+    j["click"] = click;
+    j["kind"] = kindOf(click, c.positive);
+    j["voxel"] = {c.voxel.x, c.voxel.y, c.voxel.z};
+    j["radius"] = radius;
+    j["depth_mm"] = c.depthMm;
+    j["component_voxels"] = c.componentVoxels;
+    j["dice"] = dice;
+    j["nsd"] = nsd;
+    return j;
+}
+
+Json summary(const std::vector<double>& dices) {
+    Json s;
+    const auto after = [&dices](std::size_t k) -> Json {
+        return dices.empty() ? Json(nullptr) : Json(dices[std::min(k, dices.size() - 1)]);
+    };
+    s["dice_initial"] = after(0);
+    s["dice_after_5"] = after(5);
+    s["dice_after_10"] = after(10);
+    s["dice_auc_6"] = bench::diceAuc(dices);
+    return s;
+}
+
+// The robot's loop; `act` answers a click and returns the mask that follows, `note` adds the
+// product's own figures to the entry.
+template <typename Act>
+Json robot(const bench::MaskGrid& grid, const std::vector<std::uint8_t>& label, const Options& o,
+           double maxRadius, Act&& act) {
+    Json clicks = Json::array();
+    std::vector<double> dices;
+    std::optional<bench::RobotClick> c = bench::initialClick(grid, label);
+    for (int n = 0; c && n <= o.clicks; ++n) {
+        const double radius = bench::brushRadius(grid, *c, maxRadius);
+        Json extra = Json::object();
+        const std::vector<std::uint8_t> mask = act(n, *c, radius, extra);
+        const double d = bench::dice(mask, label);
+        Json j = entry(n, *c, radius, d, bench::surfaceDice(grid, mask, label, o.nsdMm));
+        j.update(extra);
+        std::fprintf(stderr, "  click %2d %-8s (%d, %d, %d) r %.1f: Dice %.3f%s\n", n,
+                     kindOf(n, c->positive), c->voxel.x, c->voxel.y, c->voxel.z, radius, d,
+                     extra.contains("stop_reason")
+                         ? (" " + extra["stop_reason"].get<std::string>() + " " +
+                            std::to_string(extra["seconds"].get<double>()) + " s")
+                               .c_str()
+                         : "");
+        clicks.push_back(std::move(j));
+        dices.push_back(d);
+        c = bench::correctionClick(grid, mask, label);
+    }
+    Json out;
+    out["clicks"] = std::move(clicks);
+    out["summary"] = summary(dices);
+    return out;
+}
+
+int run(const Options& o) {
+    const scan::LoadedScan reference = scan::readScan(o.reference);
+    const Geometry geometry = reference.volume.geometry();
+    const bench::MaskGrid grid{geometry.dims, geometry.spacing};
+    const std::vector<std::uint8_t> label = referenceVoxels(reference.volume, o.label);
+    // The workflow's brush range (param_ranges.cpp): at most half the smallest side.
+    const double maxRadius =
+        std::max(1.0, std::min({geometry.dims.x, geometry.dims.y, geometry.dims.z}) / 2.0);
+
+    std::fprintf(stderr, "paint only:\n");
+    std::vector<std::uint8_t> painted(grid.count(), 0);
+    Json baseline = robot(
+        grid, label, o, maxRadius, [&](int, const bench::RobotClick& c, double radius, Json&) {
+            bench::paintSphere(grid, painted, glm::dvec3(c.voxel), radius, c.positive ? 1 : 0);
+            return painted;
+        });
+    Json report;
+    report["input"] = o.input;
+    report["reference"] = o.reference;
+    report["reference_label"] = o.label;
+    report["nsd_tolerance_mm"] = o.nsdMm;
+    if (o.paintOnly) {
+        report["clicks"] = baseline["clicks"];
+        report["summary"] = baseline["summary"];
+    } else {
+        config::KioskConfig cfg = config::defaultConfig();
+        if (!o.config.empty()) {
+            const config::LoadedConfig loaded =
+                config::loadConfig({{o.config, true}}, [](std::string_view action) {
+                    return model::bindingAction(action, 1.0).has_value();
+                });
+            for (const config::ConfigProblem& p : loaded.problems) {
+                std::cerr << "config: " << config::describe(p) << '\n';
+            }
+            cfg = loaded.config;
+        }
+        auto context = platform::createOffscreenContext();
+        engine::ClickSession session(
+            o.input, kiosk::workflowSettings(cfg),
+            {cfg.speed.smoothIterations, cfg.speed.conductanceFactor, cfg.speed.kappaFactor});
+        if (session.scan().dims() != geometry.dims) {
+            throw std::runtime_error("the reference is not on the scan's grid");
+        }
+        std::fprintf(stderr, "level set:\n");
+        Json steered = robot(grid, label, o, maxRadius,
+                             [&](int, const bench::RobotClick& c, double radius, Json& extra) {
+                                 model::Correct click{glm::dvec3(c.voxel), c.positive, radius};
+                                 const engine::ClickOutcome r =
+                                     session.apply(click, o.maxIterations);
+                                 extra["seconds"] = r.seconds;
+                                 extra["first_change_seconds"] = r.firstChangeSeconds;
+                                 extra["stop_reason"] = r.stopReason;
+                                 extra["iterations"] = r.iterations;
+                                 extra["T"] = r.T;
+                                 extra["eps"] = r.eps;
+                                 extra["barriers"] = r.barriers;
+                                 return session.mask();
+                             });
+        report["clicks"] = steered["clicks"];
+        report["summary"] = steered["summary"];
+        report["baseline"] = baseline;
+    }
+    const std::string text = report.dump(2) + "\n";
+    files::writeFileAtomically(o.report, {std::as_bytes(std::span(text.data(), text.size()))});
+    std::printf("%s\n", report["summary"].dump().c_str());
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(parse(argc, argv));
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "steering_bench: %s\n", e.what());
+        return 1;
+    }
+}

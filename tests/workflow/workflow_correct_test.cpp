@@ -1,0 +1,113 @@
+// model::Correct: the operator's correction as the clicks protocol counts it (docs/steering.md).
+#include "support/workflow_rig.hpp"
+
+#include <gtest/gtest.h>
+
+namespace steerseg::test {
+namespace {
+
+using model::State;
+
+TEST(WorkflowCorrect, TheFirstProbesAndSeedsInOneUndoStepAndRuns) {
+    Rig r;
+    r.load();
+    const float T0 = r.status().params.T;
+    // The fake's probe reads -1000 + 2000 * i / 15 with a spread of 10; eps = max(2 x 10, 25).
+    ASSERT_TRUE(r.act(model::Correct{{8.0, 6.0, 4.0}, true, 2.0}).accepted);
+    EXPECT_EQ(r.state(), State::Evolving);
+    EXPECT_NEAR(r.status().params.T, -1000.0 + 2000.0 * 8.0 / 15.0, 1e-3);
+    EXPECT_NEAR(r.status().params.eps, 25.0, 1e-6);
+    EXPECT_TRUE(r.engine.inside({8, 6, 4}));
+    EXPECT_EQ(r.status().seeds, 1);
+    EXPECT_EQ(r.status().insideExamples.size(), 2U); // the probe's and the seed's
+    ASSERT_TRUE(r.act(model::Undo{}).accepted);
+    EXPECT_FALSE(r.status().hasLevelSet);
+    EXPECT_EQ(r.status().params.T, T0) << "the probe's T went with the seed";
+}
+
+TEST(WorkflowCorrect, TheFirstCannotRemove) {
+    Rig r;
+    r.load();
+    const auto out = r.act(model::Correct{{8.0, 6.0, 4.0}, false, 2.0});
+    EXPECT_FALSE(out.accepted);
+    EXPECT_NE(out.reason.find("first correction adds"), std::string::npos) << out.reason;
+    EXPECT_EQ(r.state(), State::Inspect);
+    EXPECT_FALSE(r.act(model::Correct{{80.0, 6.0, 4.0}, true, 2.0}).accepted) << "outside";
+}
+
+TEST(WorkflowCorrect, APositiveOneTakesInTheTissueTheFrontCouldNotReach) {
+    Rig r;
+    r.load();
+    ASSERT_TRUE(r.act(model::Correct{{8.0, 6.0, 4.0}, true, 2.0}).accepted);
+    ASSERT_TRUE(r.act(model::Pause{}).accepted);
+    const double lo = r.status().params.T - r.status().params.eps;
+    // i = 15 reads 1000, far above T + eps: the window widens to take it in (+- 25 around it).
+    ASSERT_TRUE(r.act(model::Correct{{15.0, 6.0, 4.0}, true, 1.0}).accepted);
+    EXPECT_EQ(r.state(), State::Evolving);
+    const double T = r.status().params.T;
+    const double eps = r.status().params.eps;
+    EXPECT_NEAR(T - eps, lo, 1e-2);
+    EXPECT_NEAR(T + eps, 1025.0, 1e-2);
+    // A seed whose tissue is within the window already leaves it alone.
+    ASSERT_TRUE(r.act(model::Correct{{14.0, 6.0, 4.0}, true, 1.0}).accepted);
+    EXPECT_NEAR(r.status().params.T, T, 1e-3);
+    EXPECT_EQ(r.status().seeds, 3);
+}
+
+TEST(WorkflowCorrect, ANegativeOneSticksAndUndoTakesTheBarrierBack) {
+    Rig r;
+    r.load();
+    ASSERT_TRUE(r.act(model::Correct{{8.0, 6.0, 4.0}, true, 3.0}).accepted);
+    ASSERT_TRUE(r.act(model::Pause{}).accepted);
+    ASSERT_TRUE(r.act(model::Correct{{10.0, 6.0, 4.0}, false, 1.0}).accepted);
+    EXPECT_EQ(r.state(), State::Evolving);
+    EXPECT_FALSE(r.engine.inside({10, 6, 4}));
+    ASSERT_EQ(r.engine.barrierSpheres().size(), 1U);
+    EXPECT_EQ(r.engine.barrierSpheres()[0].centre, glm::vec3(10.0F, 6.0F, 4.0F));
+    EXPECT_EQ(r.status().outsideExamples.size(), 1U);
+    EXPECT_EQ(r.status().erasures, 1);
+    ASSERT_TRUE(r.act(model::Undo{}).accepted);
+    EXPECT_EQ(r.engine.barriers(), 0);
+    EXPECT_TRUE(r.engine.inside({10, 6, 4}));
+    ASSERT_TRUE(r.act(model::Redo{}).accepted);
+    EXPECT_EQ(r.engine.barriers(), 1);
+    ASSERT_TRUE(r.act(model::Restart{}).accepted);
+    EXPECT_EQ(r.engine.barriers(), 0) << "a restart clears the no-go spheres with the surface";
+}
+
+TEST(WorkflowCorrect, AnEraseWhileSteeringSticksButNotBeforeTheRun) {
+    Rig r;
+    r.load();
+    r.seed({8.0, 6.0, 4.0}, 3.0);
+    ASSERT_TRUE(r.act(model::Erase{{9.0, 6.0, 4.0}, 1.0}).accepted);
+    EXPECT_EQ(r.engine.barriers(), 0) << "seeding: an erase shapes the start, nothing to hold";
+    ASSERT_TRUE(r.act(model::Run{}).accepted);
+    ASSERT_TRUE(r.act(model::Erase{{7.0, 6.0, 4.0}, 1.0}).accepted);
+    EXPECT_EQ(r.engine.barriers(), 1);
+}
+
+TEST(WorkflowCorrect, BeyondTheBarriersTheEraseStandsAndSaysSo) {
+    Rig r;
+    r.load();
+    ASSERT_TRUE(r.act(model::Correct{{8.0, 6.0, 4.0}, true, 6.0}).accepted);
+    for (std::size_t n = 0; n < model::kMaxBarriers; ++n) {
+        ASSERT_TRUE(r.act(model::Correct{{8.0, 6.0, 4.0}, true, 6.0}).accepted);
+        ASSERT_TRUE(
+            r.act(model::Correct{{4.0 + 0.5 * static_cast<double>(n), 6.0, 4.0}, false, 0.5})
+                .accepted);
+    }
+    EXPECT_EQ(r.engine.barriers(), static_cast<int>(model::kMaxBarriers));
+    ASSERT_TRUE(r.act(model::Correct{{8.0, 6.0, 4.0}, false, 1.0}).accepted);
+    EXPECT_FALSE(r.engine.inside({8, 6, 4}));
+    EXPECT_NE(r.status().message.find("may grow back"), std::string::npos) << r.status().message;
+}
+
+TEST(WorkflowCorrect, ReviewAndDoneRefuseIt) {
+    Rig r;
+    r.driveTo(State::Review);
+    EXPECT_FALSE(r.act(model::Correct{{8.0, 6.0, 4.0}, true, 1.0}).accepted);
+    EXPECT_EQ(r.state(), State::Review);
+}
+
+} // namespace
+} // namespace steerseg::test

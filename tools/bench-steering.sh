@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# The steering benchmark (docs/steering.md): the clicks protocol on every labelled case of
+# ../shared/data, the product through the kiosk's workflow against paint only, with the table
+# (steering.md) and the plot (steering.png) in the output folder. Or one case of any scan:
+#
+#   tools/bench-steering.sh [--out DIR] [run_steering.py options: --only NAMES --clicks N ...]
+#   tools/bench-steering.sh --input SCAN --reference LABEL [--reference-label N] [--clicks N]
+#                           [--paint-only] --report R.json
+#
+# Builds build/release's steering_bench (Release) if it is missing. Scans come from
+# STEERSEG_DATA_DIR (default ../shared/data).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+bench=$root/build/release/bench/steering_bench
+if [[ ! -x $bench ]]; then
+  "$root/tools/install-deps.sh" >&2
+  (cd "$root" && cmake --preset release -DSTEERSEG_BUILD_BENCH=ON >/dev/null &&
+    cmake --build --preset release -j "$(nproc)" --target steering_bench >&2)
+fi
+case ${1:-} in
+  -h|--help) sed -n '2,11p' "$0"; exit 0 ;;
+  --input) exec "$bench" "$@" ;;
+esac
+out=${STEERSEG_OUT:-out/steering}
+rest=()
+while (($#)); do
+  case $1 in
+    --out) out=${2:?--out needs a folder}; shift ;;
+    *) rest+=("$1") ;;
+  esac
+  shift
+done
+exec python3 "$root/bench/steering/run_steering.py" --bench "$bench" --out "$out" \
+  --data "${STEERSEG_DATA_DIR:-$root/../shared/data}" "${rest[@]}"
