@@ -1,0 +1,59 @@
+// `segment --click`: corrections replayed through the kiosk's workflow, and its refusals.
+#include "support/cli_run.hpp"
+
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace steerseg::test {
+namespace {
+
+std::string out(const char* name) {
+    return (std::filesystem::path(testing::TempDir()) / name).string();
+}
+
+TEST(SegmentClicks, BadClicksAndTheOptionsTheyReplaceAreRefused) {
+    struct Case {
+        const char* args;
+        const char* says;
+    };
+    for (const Case& c : {
+             Case{"--click 1,2,3", "expected 4 or 5 fields"},
+             Case{"--click 1,2,3,*", "must be + or -"},
+             Case{"--click 1,2,x,+", "--click's voxel index"},
+             Case{"--click 80,56,52,+,0", "radius must be > 0"},
+             Case{"--click 80,56,52,-", "first --click must be positive"},
+             Case{"--click 80,56,52,+ --seed 80,56,52,3", "--seed does not go with --click"},
+             Case{"--click 80,56,52,+ --converge", "--converge does not go with --click"},
+             Case{"--click 80,56,52,+ --max-iterations 0", "--max-iterations must be >= 1"},
+         }) {
+        const CliRun r = runSteerseg(std::string("segment --input builtin:sample --output ") +
+                                     out("clicks.nii.gz") + " " + c.args);
+        EXPECT_EQ(r.exitCode, 2) << c.args << "\n" << r.err;
+        EXPECT_NE(r.err.find(c.says), std::string::npos) << c.args << "\n" << r.err;
+    }
+    const CliRun far = runSteerseg("segment --input builtin:sample --output " +
+                                   out("clicks.nii.gz") + " --click 500,56,52,+");
+    EXPECT_NE(far.exitCode, 0);
+    EXPECT_NE(far.err.find("outside the scan"), std::string::npos) << far.err;
+}
+
+TEST(SegmentClicks, EachClickRunsFromTheSurfaceAndIsReported) {
+    const std::string mask = out("clicks.nii.gz");
+    const CliRun r = runSteerseg("segment --input builtin:sample --output " + mask +
+                                 " --click 80,56,52,+,3 --click 80,56,58,-,2 --max-iterations 40");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto report = nlohmann::json::parse(r.out);
+    ASSERT_EQ(report["clicks"].size(), 2U);
+    EXPECT_EQ(report["clicks"][0]["kind"], "initial");
+    EXPECT_EQ(report["clicks"][1]["kind"], "negative");
+    EXPECT_EQ(report["clicks"][1]["barriers"], 1);
+    EXPECT_LE(report["clicks"][0]["iterations"].get<int>(), 40);
+    EXPECT_GT(report["clicks"][1]["iterations"].get<int>(),
+              report["clicks"][0]["iterations"].get<int>())
+        << "the second click's run goes on from the first's";
+    EXPECT_TRUE(std::filesystem::exists(mask));
+}
+
+} // namespace
+} // namespace steerseg::test
