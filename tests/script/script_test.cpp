@@ -94,6 +94,14 @@ TEST(ScriptParse, OperatorActions) {
     EXPECT_DOUBLE_EQ(seed.radius, 4.0);
     EXPECT_DOUBLE_EQ(action<model::AddSeed>("seed 1 2 3").radius, 0.0); // the brush
     EXPECT_DOUBLE_EQ(action<model::Erase>("erase 4 5 6 2").radius, 2.0);
+    const auto click = action<model::Correct>("click 80 56 52 -");
+    EXPECT_EQ(click.voxel, glm::dvec3(80, 56, 52));
+    EXPECT_FALSE(click.positive);
+    EXPECT_DOUBLE_EQ(click.radius, 0.0); // the brush
+    EXPECT_TRUE(action<model::Correct>("click 1 2 3 + 2.5").positive);
+    EXPECT_DOUBLE_EQ(action<model::Correct>("click 1 2 3 + 2.5").radius, 2.5);
+    EXPECT_NE(parseError("click 1 2 3 *").find("give + (add) or - (remove)"), std::string::npos);
+    EXPECT_NE(parseError("click 1 2 3").find("+ or -"), std::string::npos);
     EXPECT_TRUE(action<model::SetEraseMode>("erase_mode on").erase);
     EXPECT_FALSE(action<model::SetEraseMode>("erase_mode off").erase);
     const auto set = action<model::SetParam>("set eps 35.5");

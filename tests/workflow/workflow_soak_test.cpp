@@ -62,7 +62,7 @@ class Generator {
 
     Action action() {
         // Weighted towards what an operator does most: steering, seeding, looking.
-        switch (integer(0, 44)) {
+        switch (integer(0, 46)) {
         case 0:
             return LoadScan{chance(0.05) ? "" : "scan.nii.gz"};
         case 1:
@@ -142,6 +142,9 @@ class Generator {
             return ClearExamples{};
         case 44:
             return SetOutsideMode{chance(0.5)};
+        case 45:
+        case 46:
+            return Correct{voxel(), chance(0.7), number(-1.0, 5.0)};
         default:
             return Run{};
         }
