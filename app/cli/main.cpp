@@ -68,6 +68,19 @@ constexpr Command kCommands[] = {
      "input devices and the configured ones they match, print decoded events and their bound "
      "actions, record raw streams, or decode a recording (docs/input-devices.md)",
      steerseg::cli::runInputMonitor},
+    {"send",
+     "send (--to PEER | --host H --port N --called-aet AE) [--aet AE] [--config FILE] FILE... | "
+     "send --outbox [--to PEER FILE...] [--wait S] [--config FILE]: C-STORE each DICOM file to a "
+     "peer, one line per file, status 0 only when the peer accepted every one; --outbox queues "
+     "them in the persistent outbox and delivers what is due, retrying for S seconds, status 0 "
+     "when the outbox is empty (docs/dicom-network.md)",
+     steerseg::cli::runSend},
+    {"listen",
+     "listen [--config FILE] [--aet AE] [--port N] [--store DIR] [--allow AE[@ADDRESS] ...] "
+     "[--quota-mb N]: the DICOM Storage SCP in the foreground until SIGTERM, filing what the "
+     "allowed callers send into DIR/<study>/<series>/; with no --allow, the [[dicom.peers]] "
+     "with receive = true",
+     steerseg::cli::runListen},
 };
 
 void printUsage(std::FILE* out) {

@@ -1,0 +1,28 @@
+#pragma once
+
+// The options `send` and `listen` share: the [dicom] section (system file, then --config FILE)
+// as the defaults, and the command line's words over it.
+#include "cli/args.hpp"
+#include "config/kiosk_config.hpp"
+#include "net/dicom_peer.hpp"
+#include "net/store_scp.hpp"
+
+#include <string>
+
+namespace steerseg::cli {
+
+// The system file and --config FILE (for [dicom] and [audit]); a problem in either is a
+// UsageError naming its place, so the node never runs on half a configuration.
+config::KioskConfig nodeConfig(const Args& args);
+
+// --to PEER (a [[dicom.peers]] name with send = true) or --host H --port N --called-aet AE.
+net::DicomPeer sendTarget(const Args& args, const config::DicomConfig& dicom);
+
+// --aet, else [dicom] aet.
+std::string ownAeTitle(const Args& args, const config::DicomConfig& dicom);
+
+// --aet, --port, --store, --allow AE[@ADDRESS] ..., --quota-mb over [dicom]; with no --allow,
+// the peers with receive = true.
+net::ScpSettings listenSettings(const Args& args, const config::DicomConfig& dicom);
+
+} // namespace steerseg::cli
