@@ -2,6 +2,7 @@
 // may call, how much one association may bring, how much disk must stay free.
 #include "net/store_scp.hpp"
 
+#include "exports/dicom_file_bytes.hpp"
 #include "files/file_write.hpp"
 #include "net/dcmtk_quiet.hpp"
 
@@ -9,7 +10,6 @@
 #include <dcmtk/config/osconfig.h> // must come first among DCMTK's headers
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
-#include <dcmtk/dcmdata/dcostrmb.h>
 #include <dcmtk/dcmdata/dcuid.h>
 #include <dcmtk/dcmdata/dcxfer.h>
 #include <dcmtk/dcmnet/dul.h>
@@ -41,25 +41,6 @@ std::string text(const DcmDataset& dataset, const DcmTagKey& tag) {
     OFString value;
     const_cast<DcmDataset&>(dataset).findAndGetOFString(tag, value);
     return value.c_str();
-}
-
-// The whole file (preamble, meta header in `xfer`, data set) in memory, in chunks.
-std::vector<std::byte> encodeFile(DcmFileFormat& file, E_TransferSyntax xfer, OFCondition& c) {
-    std::vector<char> chunk(std::size_t{1} << 20);
-    DcmOutputBufferStream stream(chunk.data(), static_cast<offile_off_t>(chunk.size()));
-    std::vector<std::byte> out;
-    file.transferInit();
-    do {
-        c = file.write(stream, xfer, EET_ExplicitLength, nullptr, EGL_recalcGL, EPD_noChange, 0, 0,
-                       0, EWM_createNewMeta);
-        void* data = nullptr;
-        offile_off_t length = 0;
-        stream.flushBuffer(data, length);
-        const auto* bytes = static_cast<const std::byte*>(data);
-        out.insert(out.end(), bytes, bytes + length);
-    } while (c == EC_StreamNotifyClient);
-    file.transferEnd();
-    return out;
 }
 
 } // namespace
@@ -223,7 +204,9 @@ class StorageScp::Provider : public DcmSCP {
         OFCondition c;
         DcmFileFormat fileFormat(dataset.release(), OFFalse);
         const E_TransferSyntax xfer = DcmXfer(info.acceptedTransferSyntax.c_str()).getXfer();
-        const std::vector<std::byte> bytes = encodeFile(fileFormat, xfer, c);
+        // In 1 MiB passes: the object is in memory once already, its encoding once more.
+        const std::vector<std::byte> bytes =
+            exports::dicomFileBytes(fileFormat, xfer, std::size_t{1} << 20, c);
         if (c.bad()) {
             report_("refused object" + from + ": cannot be encoded: " + c.text());
             return kCannotUnderstand;

@@ -4,7 +4,11 @@
 #include "net/net_harness.hpp"
 #include "support/test_data.hpp"
 
+#include <algorithm>
 #include <arpa/inet.h>
+#include <dcmtk/config/osconfig.h> // must come first among DCMTK's headers
+#include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmdata/dcfilefo.h>
 #include <gtest/gtest.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
@@ -92,6 +96,30 @@ TEST(NetListen, StoresAScannersSeriesAndAnswersEcho) {
         EXPECT_EQ(f.parent_path(), stored.front().parent_path()) << f;
     }
 
+    // An object larger than one encoding pass (1 MiB) arrives whole: a CT slice given 3 MiB of
+    // pixels (1024 x 1536 x 16 bit) of a known pattern.
+    DcmFileFormat big;
+    ASSERT_TRUE(big.loadFile((series / "DCM_IMG_00003.dcm").c_str()).good());
+    DcmDataset& data = *big.getDataset();
+    std::vector<Uint16> pixels(1024u * 1536u);
+    for (std::size_t n = 0; n < pixels.size(); ++n) {
+        pixels[n] = static_cast<Uint16>(n * 2654435761u >> 16);
+    }
+    data.putAndInsertUint16(DCM_Rows, 1536);
+    data.putAndInsertUint16(DCM_Columns, 1024);
+    data.putAndInsertUint16Array(DCM_PixelData, pixels.data(), pixels.size());
+    data.putAndInsertString(DCM_SOPInstanceUID, "1.2.826.0.1.3680043.10.1234.24.1");
+    ASSERT_TRUE(big.saveFile((dir / "big.dcm").c_str(), EXS_LittleEndianExplicit).good());
+    const Finished bigPush = node.storescu("SCANNER", dir / "big.dcm");
+    ASSERT_EQ(bigPush.status, 0) << bigPush.output << node.log();
+    DcmFileFormat received;
+    const fs::path bigPath = stored.front().parent_path() / "1.2.826.0.1.3680043.10.1234.24.1.dcm";
+    ASSERT_TRUE(received.loadFile(bigPath.c_str()).good()) << node.log();
+    const Uint16* back = nullptr;
+    unsigned long count = 0;
+    ASSERT_TRUE(received.getDataset()->findAndGetUint16Array(DCM_PixelData, back, &count).good());
+    ASSERT_EQ(count, pixels.size());
+    EXPECT_TRUE(std::equal(pixels.begin(), pixels.end(), back));
     // An address-bound caller from its address is let in too.
     EXPECT_EQ(node.echo("PACS").status, 0);
 
@@ -101,7 +129,7 @@ TEST(NetListen, StoresAScannersSeriesAndAnswersEcho) {
                               "title not allowed"),
               std::string::npos)
         << node.log();
-    EXPECT_EQ(filesBelow(dir / "store").size(), sent);
+    EXPECT_EQ(filesBelow(dir / "store").size(), sent + 1);
 
     EXPECT_EQ(node.process->stop(), 0);
     EXPECT_NE(node.log().find("stopped"), std::string::npos) << node.log();
