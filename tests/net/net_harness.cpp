@@ -14,8 +14,6 @@
 namespace steerseg::test {
 namespace {
 
-constexpr const char* kOrthanc = "/usr/sbin/Orthanc";
-
 int loopbackSocket(int port, bool connectTo) {
     const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
     if (fd < 0) {
@@ -31,6 +29,29 @@ int loopbackSocket(int port, bool connectTo) {
         return -1;
     }
     return fd;
+}
+
+// argv[0] found on PATH, both output streams appended to `log`.
+pid_t spawn(const std::vector<std::string>& argv, const std::filesystem::path& log) {
+    std::vector<char*> args;
+    for (const auto& a : argv) {
+        args.push_back(const_cast<char*>(a.c_str()));
+    }
+    args.push_back(nullptr);
+    const pid_t pid = ::fork();
+    if (pid < 0) {
+        throw std::runtime_error("fork failed");
+    }
+    if (pid == 0) {
+        const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+        if (fd >= 0) {
+            ::dup2(fd, 1);
+            ::dup2(fd, 2);
+        }
+        ::execvp(args[0], args.data());
+        ::_exit(127);
+    }
+    return pid;
 }
 
 } // namespace
@@ -59,26 +80,7 @@ bool waitUntil(const std::function<bool()>& ready, std::chrono::milliseconds tim
 }
 
 ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::filesystem::path& log)
-    : log_(log) {
-    std::vector<char*> args;
-    for (const auto& a : argv) {
-        args.push_back(const_cast<char*>(a.c_str()));
-    }
-    args.push_back(nullptr);
-    pid_ = ::fork();
-    if (pid_ < 0) {
-        throw std::runtime_error("fork failed");
-    }
-    if (pid_ == 0) {
-        const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-        if (fd >= 0) {
-            ::dup2(fd, 1);
-            ::dup2(fd, 2);
-        }
-        ::execv(args[0], args.data());
-        ::_exit(127);
-    }
-}
+    : pid_(spawn(argv, log)), log_(log) {}
 
 ChildProcess::~ChildProcess() {
     if (pid_ > 0) {
@@ -123,23 +125,8 @@ int ChildProcess::stop() {
 Finished runProgram(const std::vector<std::string>& argv, const std::filesystem::path& folder) {
     static int counter = 0;
     const auto log = folder / ("run-" + std::to_string(counter++) + ".log");
-    std::vector<char*> args;
-    for (const auto& a : argv) {
-        args.push_back(const_cast<char*>(a.c_str()));
-    }
-    args.push_back(nullptr);
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-        const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (fd >= 0) {
-            ::dup2(fd, 1);
-            ::dup2(fd, 2);
-        }
-        ::execvp(args[0], args.data());
-        ::_exit(127);
-    }
     int status = 0;
-    ::waitpid(pid, &status, 0);
+    ::waitpid(spawn(argv, log), &status, 0);
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readText(log)};
 }
 
@@ -166,13 +153,8 @@ std::optional<std::string> httpGet(int port, const std::string& path) {
     if (response.rfind("HTTP/1.1 200", 0) != 0 || headerEnd == std::string::npos) {
         return std::nullopt;
     }
-    std::string body = response.substr(headerEnd + 4);
-    // Orthanc answers with a length, never chunked, to a Connection: close request.
-    return body;
-}
-
-bool OrthancServer::available() {
-    return std::filesystem::exists(kOrthanc);
+    // Orthanc answers a Connection: close request with a length, never chunked.
+    return response.substr(headerEnd + 4);
 }
 
 OrthancServer::OrthancServer(const std::filesystem::path& folder)
@@ -196,7 +178,7 @@ OrthancServer::OrthancServer(const std::filesystem::path& folder)
 }
 
 void OrthancServer::start() {
-    process_.emplace(std::vector<std::string>{kOrthanc, (folder_ / "orthanc.json").string()},
+    process_.emplace(std::vector<std::string>{kProgram, (folder_ / "orthanc.json").string()},
                      folder_ / "orthanc.log");
     if (!waitUntil([&] { return httpGet(httpPort_, "/system").has_value(); },
                    std::chrono::seconds(20))) {

@@ -2,6 +2,7 @@
 
 // What the network tests run against: real processes on 127.0.0.1 (Orthanc, `steerseg listen`,
 // DCMTK's storescu and echoscu), each started on free loopback ports and stopped by the test.
+#include "support/test_data.hpp"
 #include "support/write_faults.hpp" // readText
 
 #include <chrono>
@@ -14,6 +15,17 @@
 #include <vector>
 
 namespace steerseg::test {
+
+// Skips the test where Orthanc or DCMTK's tools are missing, or fails it under
+// STEERSEG_REQUIRE_DATA=1 (CI installs them: tools/install-deps.sh).
+#define STEERSEG_REQUIRE_PROGRAM(path, package)                                                    \
+    if (!std::filesystem::exists(path)) {                                                          \
+        if (::steerseg::test::dataRequired()) {                                                    \
+            GTEST_FAIL() << path << " is missing (Debian " << package                              \
+                         << "; tools/install-deps.sh)";                                            \
+        }                                                                                          \
+        GTEST_SKIP() << path << " is missing (Debian " << package << "; tools/install-deps.sh)";   \
+    }
 
 // A TCP port on 127.0.0.1 that nothing listens on at the moment of asking.
 int freePort();
@@ -56,8 +68,7 @@ std::optional<std::string> httpGet(int port, const std::string& path);
 class OrthancServer {
   public:
     static constexpr const char* kAet = "ORTHANC";
-    // False where Orthanc is not installed (tools/install-deps.sh brings it).
-    static bool available();
+    static constexpr const char* kProgram = "/usr/sbin/Orthanc";
     explicit OrthancServer(const std::filesystem::path& folder);
     // Starts it again on the same ports and storage (after stop()); throws if it does not come up.
     void start();

@@ -19,18 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool haveDcmtkTools() {
-    return fs::exists("/usr/bin/storescu") && fs::exists("/usr/bin/echoscu");
-}
-
-#define STEERSEG_REQUIRE_DCMTK_TOOLS()                                                             \
-    if (!haveDcmtkTools()) {                                                                       \
-        if (dataRequired()) {                                                                      \
-            GTEST_FAIL() << "storescu/echoscu missing (Debian dcmtk; tools/install-deps.sh)";      \
-        }                                                                                          \
-        GTEST_SKIP() << "storescu/echoscu missing (Debian dcmtk; tools/install-deps.sh)";          \
-    }
-
 // `steerseg listen` on a free port, storing into <dir>/store, ready when it says so.
 struct Listener {
     fs::path dir;
@@ -76,7 +64,8 @@ std::vector<fs::path> filesBelow(const fs::path& root) {
 
 TEST(NetListen, StoresAScannersSeriesAndAnswersEcho) {
     STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
-    STEERSEG_REQUIRE_DCMTK_TOOLS();
+    STEERSEG_REQUIRE_PROGRAM("/usr/bin/storescu", "dcmtk");
+    STEERSEG_REQUIRE_PROGRAM("/usr/bin/echoscu", "dcmtk");
     const fs::path dir = tempDir("net-listen-series");
     Listener node(dir, {"--allow", "SCANNER", "--allow", "PACS@127.0.0.1"});
 
@@ -138,7 +127,8 @@ TEST(NetListen, StoresAScannersSeriesAndAnswersEcho) {
 
 TEST(NetListen, QuotaAndGarbageAreRefusedAndTheNodeKeepsServing) {
     STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
-    STEERSEG_REQUIRE_DCMTK_TOOLS();
+    STEERSEG_REQUIRE_PROGRAM("/usr/bin/storescu", "dcmtk");
+    STEERSEG_REQUIRE_PROGRAM("/usr/bin/echoscu", "dcmtk");
     const fs::path dir = tempDir("net-listen-quota");
     // The series is about 5 MB: a 1 MiB quota stops the association within its first objects.
     Listener node(dir, {"--allow", "SCANNER", "--quota-mb", "1"});

@@ -18,14 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-#define STEERSEG_REQUIRE_ORTHANC()                                                                 \
-    if (!OrthancServer::available()) {                                                             \
-        if (dataRequired()) {                                                                      \
-            GTEST_FAIL() << "Orthanc is not installed (tools/install-deps.sh brings it)";          \
-        }                                                                                          \
-        GTEST_SKIP() << "Orthanc is not installed (tools/install-deps.sh brings it)";              \
-    }
-
 std::size_t countLines(const std::string& text, const std::string& prefix) {
     std::size_t n = 0;
     for (std::size_t at = 0; at < text.size();) {
@@ -43,7 +35,7 @@ std::string sendTo(const OrthancServer& pacs, const std::string& files) {
 
 TEST(NetOrthanc, ExportedSegArrivesWithItsSourceStudyAndFrames) {
     STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
-    STEERSEG_REQUIRE_ORTHANC();
+    STEERSEG_REQUIRE_PROGRAM(OrthancServer::kProgram, "orthanc");
     const fs::path dir = tempDir("net-orthanc-seg");
     const scan::LoadedScan scan = scan::readScan(series);
     ASSERT_NE(scan.dicom, nullptr);
@@ -115,7 +107,7 @@ TEST(NetOrthanc, ExportedSegArrivesWithItsSourceStudyAndFrames) {
 
 TEST(NetOrthanc, RefusedConnectionsAndRejectedAssociationsFailEachFileOnItsLine) {
     STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
-    STEERSEG_REQUIRE_ORTHANC();
+    STEERSEG_REQUIRE_PROGRAM(OrthancServer::kProgram, "orthanc");
     const fs::path dir = tempDir("net-orthanc-refused");
     const std::string one = (series / "DCM_IMG_00000.dcm").string();
     const std::string two = (series / "DCM_IMG_00001.dcm").string();

@@ -21,12 +21,7 @@ using namespace std::chrono_literals;
 
 TEST(NetOutbox, WaitsForAStoppedPacsAndDeliversOnceAfterARestart) {
     STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
-    if (!OrthancServer::available()) {
-        if (dataRequired()) {
-            GTEST_FAIL() << "Orthanc is not installed (tools/install-deps.sh brings it)";
-        }
-        GTEST_SKIP() << "Orthanc is not installed (tools/install-deps.sh brings it)";
-    }
+    STEERSEG_REQUIRE_PROGRAM(OrthancServer::kProgram, "orthanc");
     const fs::path dir = tempDir("net-outbox");
     const fs::path object = series / "DCM_IMG_00007.dcm";
     OrthancServer pacs(dir);
@@ -94,12 +89,7 @@ TEST(NetOutbox, WaitsForAStoppedPacsAndDeliversOnceAfterARestart) {
 // stopped Orthanc; the next run delivers what it left, once.
 TEST(NetOutbox, AKilledSenderLeavesItsQueueToTheNextRun) {
     STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
-    if (!OrthancServer::available()) {
-        if (dataRequired()) {
-            GTEST_FAIL() << "Orthanc is not installed (tools/install-deps.sh brings it)";
-        }
-        GTEST_SKIP() << "Orthanc is not installed (tools/install-deps.sh brings it)";
-    }
+    STEERSEG_REQUIRE_PROGRAM(OrthancServer::kProgram, "orthanc");
     const fs::path dir = tempDir("net-outbox-kill");
     OrthancServer pacs(dir);
     pacs.stop();
