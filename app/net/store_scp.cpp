@@ -80,6 +80,12 @@ class StorageScp::Provider : public DcmSCP {
     }
 
     void open() {
+        std::error_code ec;
+        std::filesystem::create_directories(settings_.store, ec);
+        if (ec) {
+            throw ScpError("cannot create the store " + settings_.store.string() + ": " +
+                           ec.message());
+        }
         const OFCondition c = openListenPort();
         if (c.bad()) {
             throw ScpError("cannot listen on port " + std::to_string(settings_.port) + ": " +
@@ -112,8 +118,12 @@ class StorageScp::Provider : public DcmSCP {
                 return a.aet == callingAE.c_str() && (a.host.empty() || a.host == callingHost_);
             });
         if (!ok) {
+            const bool known =
+                std::any_of(settings_.allowed.begin(), settings_.allowed.end(),
+                            [&](const AllowedCaller& a) { return a.aet == callingAE.c_str(); });
             report_("rejected association from " + callingAet_ + " at " + callingHost_ +
-                    ": calling AE title not allowed");
+                    (known ? ": calling AE title not allowed from this address"
+                           : ": calling AE title not allowed"));
         }
         return ok;
     }
@@ -211,8 +221,8 @@ class StorageScp::Provider : public DcmSCP {
             report_("refused object" + from + ": cannot be encoded: " + c.text());
             return kCannotUnderstand;
         }
+        // Before any folder is made: a refused object leaves no empty series behind.
         std::error_code ec;
-        std::filesystem::create_directories(folder, ec);
         const auto space = std::filesystem::space(settings_.store, ec);
         if (!ec && space.available < bytes.size() + settings_.minFreeBytes) {
             report_("refused object" + from + ": the store has " +
@@ -220,6 +230,7 @@ class StorageScp::Provider : public DcmSCP {
                     std::to_string(settings_.minFreeBytes >> 20) + " MiB to keep");
             return kOutOfResources;
         }
+        std::filesystem::create_directories(folder, ec);
         try {
             files::writeFileAtomically(path, {std::span<const std::byte>(bytes)});
         } catch (const std::exception& e) {

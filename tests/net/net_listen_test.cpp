@@ -9,6 +9,7 @@
 #include <dcmtk/config/osconfig.h> // must come first among DCMTK's headers
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
@@ -158,6 +159,35 @@ TEST(NetListen, QuotaAndGarbageAreRefusedAndTheNodeKeepsServing) {
     const Finished echo = node.echo("SCANNER");
     EXPECT_EQ(echo.status, 0) << echo.output << node.log();
     EXPECT_TRUE(node.process->running());
+    EXPECT_EQ(node.process->stop(), 0);
+    fs::remove_all(dir);
+}
+
+// A store whose disk would keep less than min_free_mb: every object is refused with 0xA700 (out
+// of resources), nothing lands in the store, and an AE allowed only from elsewhere is turned
+// away.
+TEST(NetListen, AFullStoreRefusesEachObjectAndKeepsNothing) {
+    STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
+    STEERSEG_REQUIRE_PROGRAM("/usr/bin/storescu", "dcmtk");
+    const fs::path dir = tempDir("net-listen-full");
+    std::ofstream(dir / "node.toml")
+        << "[dicom]\nmin_free_mb = 1048576\n"
+           "[[dicom.peers]]\nname = \"ct\"\naet = \"SCANNER\"\n"
+           "host = \"ct\"\nreceive = true\n"
+           "[[dicom.peers]]\nname = \"pacs\"\naet = \"PACS\"\n"
+           "host = \"pacs\"\naddress = \"192.0.2.7\"\nreceive = true\n";
+    Listener node(dir, {"--config", (dir / "node.toml").string()});
+    const Finished pushed = node.storescu("SCANNER", series / "DCM_IMG_00000.dcm");
+    EXPECT_NE(pushed.status, 0) << pushed.output;
+    EXPECT_NE(node.log().find("refused object from SCANNER: the store has"), std::string::npos)
+        << node.log();
+    EXPECT_TRUE(filesBelow(dir / "store").empty());
+    const Finished elsewhere = node.echo("PACS");
+    EXPECT_NE(elsewhere.status, 0) << elsewhere.output;
+    EXPECT_NE(node.log().find("rejected association from PACS at 127.0.0.1: calling AE title not "
+                              "allowed from this address"),
+              std::string::npos)
+        << node.log();
     EXPECT_EQ(node.process->stop(), 0);
     fs::remove_all(dir);
 }
