@@ -58,32 +58,18 @@ int sendThroughOutbox(const Args& args, const config::KioskConfig& cfg,
     if (args.value("host") || args.value("port") || args.value("called-aet")) {
         throw UsageError("--outbox sends to configured peers only: give --to PEER");
     }
-    const auto peerNamed = [&](const std::string& name) -> std::optional<net::DicomPeer> {
-        for (const auto& p : dicom.peers) {
-            if (p.name == name && p.send) {
-                return net::DicomPeer{p.aet, p.host, p.port};
-            }
-        }
-        return std::nullopt;
-    };
     if (!files.empty() && !args.value("to")) {
         throw UsageError("--outbox with files needs --to PEER");
     }
     std::string target;
     if (const auto to = args.value("to")) {
+        // A name that is no send peer is the operator's mistake now, not a failed attempt later.
+        requireSendPeer(dicom, *to);
         target = *to;
-        if (!peerNamed(target)) {
-            throw UsageError("--to: no [[dicom.peers]] named '" + target + "' with send = true");
-        }
     }
+    const auto peerNamed = [&](const std::string& name) { return sendPeer(dicom, name); };
     workflow::AuditLog audit(cfg.audit.path);
-    const auto seconds = [](double s) {
-        return std::chrono::duration_cast<std::chrono::milliseconds>(
-            std::chrono::duration<double>(s));
-    };
-    net::Outbox outbox(dicom.outbox,
-                       {seconds(dicom.retryFirstSeconds), seconds(dicom.retryLongestSeconds)},
-                       &audit);
+    net::Outbox outbox = configuredOutbox(dicom, audit);
     for (const auto& file : files) {
         std::printf("queued %s as %s\n", file.c_str(), outbox.enqueue(file, target).c_str());
     }
@@ -101,7 +87,8 @@ int sendThroughOutbox(const Args& args, const config::KioskConfig& cfg,
         }
         std::fflush(stdout);
     };
-    const auto deadline = steady_clock::now() + seconds(waitSeconds);
+    const auto deadline = steady_clock::now() + std::chrono::duration_cast<steady_clock::duration>(
+                                                    std::chrono::duration<double>(waitSeconds));
     std::vector<net::OutboxEntry> left;
     while (true) {
         outbox.deliverDue(peerNamed, options, report);

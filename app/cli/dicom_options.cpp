@@ -4,8 +4,6 @@
 #include "model/action.hpp"
 #include "model/ae_title.hpp"
 
-#include <algorithm>
-
 namespace steerseg::cli {
 namespace {
 
@@ -25,6 +23,13 @@ int checkedPort(const Args& args, const std::string& name) {
 }
 
 } // namespace
+
+net::DicomPeer requireSendPeer(const config::DicomConfig& dicom, const std::string& name) {
+    if (auto peer = sendPeer(dicom, name)) {
+        return *peer;
+    }
+    throw UsageError("--to: no [[dicom.peers]] named '" + name + "' with send = true");
+}
 
 config::KioskConfig nodeConfig(const Args& args) {
     std::optional<std::filesystem::path> file;
@@ -51,13 +56,7 @@ net::DicomPeer sendTarget(const Args& args, const config::DicomConfig& dicom) {
         if (direct) {
             throw UsageError("give --to PEER or --host, --port and --called-aet, not both");
         }
-        const auto it =
-            std::find_if(dicom.peers.begin(), dicom.peers.end(),
-                         [&](const config::DicomPeerConfig& p) { return p.name == *name; });
-        if (it == dicom.peers.end() || !it->send) {
-            throw UsageError("--to: no [[dicom.peers]] named '" + *name + "' with send = true");
-        }
-        return {it->aet, it->host, it->port};
+        return requireSendPeer(dicom, *name);
     }
     if (!direct) {
         throw UsageError("give --to PEER, or --host, --port and --called-aet");
@@ -104,6 +103,24 @@ net::ScpSettings listenSettings(const Args& args, const config::DicomConfig& dic
         throw UsageError("nobody may send: give --allow AE or [[dicom.peers]] with receive = true");
     }
     return s;
+}
+
+std::optional<net::DicomPeer> sendPeer(const config::DicomConfig& dicom, const std::string& name) {
+    for (const auto& p : dicom.peers) {
+        if (p.name == name && p.send) {
+            return net::DicomPeer{p.aet, p.host, p.port};
+        }
+    }
+    return std::nullopt;
+}
+
+net::Outbox configuredOutbox(const config::DicomConfig& dicom, workflow::AuditLog& audit) {
+    const auto ms = [](double seconds) {
+        return std::chrono::duration_cast<std::chrono::milliseconds>(
+            std::chrono::duration<double>(seconds));
+    };
+    return net::Outbox(dicom.outbox, {ms(dicom.retryFirstSeconds), ms(dicom.retryLongestSeconds)},
+                       &audit);
 }
 
 } // namespace steerseg::cli

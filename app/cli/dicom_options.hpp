@@ -5,8 +5,10 @@
 #include "cli/args.hpp"
 #include "config/kiosk_config.hpp"
 #include "net/dicom_peer.hpp"
+#include "net/outbox.hpp"
 #include "net/store_scp.hpp"
 
+#include <optional>
 #include <string>
 
 namespace steerseg::cli {
@@ -24,5 +26,13 @@ std::string ownAeTitle(const Args& args, const config::DicomConfig& dicom);
 // --aet, --port, --store, --allow AE[@ADDRESS] ..., --quota-mb over [dicom]; with no --allow,
 // the peers with receive = true.
 net::ScpSettings listenSettings(const Args& args, const config::DicomConfig& dicom);
+
+// The [[dicom.peers]] entry named `name` with send = true, as an address; nullopt if none.
+std::optional<net::DicomPeer> sendPeer(const config::DicomConfig& dicom, const std::string& name);
+// The same, or a UsageError for --to naming it.
+net::DicomPeer requireSendPeer(const config::DicomConfig& dicom, const std::string& name);
+
+// The outbox of [dicom] (its folder and retry delays), each attempt recorded in `audit`.
+net::Outbox configuredOutbox(const config::DicomConfig& dicom, workflow::AuditLog& audit);
 
 } // namespace steerseg::cli

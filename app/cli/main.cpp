@@ -48,9 +48,11 @@ constexpr Command kCommands[] = {
      steerseg::cli::runSegment},
     {"export",
      "export --input SCAN --mask MASK --output OUT.nii.gz|.nii|.nrrd|.seg.nrrd|.dcm|.stl|.ply|.tif "
-     "[--format F] [--segment-name N --segment-color r,g,b --segment-label L]: a mask on the "
+     "[--format F] [--segment-name N --segment-color r,g,b --segment-label L] [--send PEER "
+     "[--config FILE]]: a mask on the "
      "scan's grid, again as a mask, a 3D Slicer segmentation, a closed surface mesh in LPS "
-     "millimetres or a TIFF stack (no GPU)",
+     "millimetres or a TIFF stack (no GPU); --send puts a DICOM SEG into the outbox for a "
+     "configured DICOM peer and sends it",
      steerseg::cli::runExport},
     {"kiosk",
      "kiosk [--platform auto|kms|window|offscreen] [--config FILE] [--scan PATH] [--script "

@@ -33,14 +33,11 @@ std::string sendTo(const OrthancServer& pacs, const std::string& files) {
            " --called-aet ORTHANC --aet STEERSEG " + files;
 }
 
-TEST(NetOrthanc, ExportedSegArrivesWithItsSourceStudyAndFrames) {
-    STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
-    STEERSEG_REQUIRE_PROGRAM(OrthancServer::kProgram, "orthanc");
-    const fs::path dir = tempDir("net-orthanc-seg");
-    const scan::LoadedScan scan = scan::readScan(series);
-    ASSERT_NE(scan.dicom, nullptr);
+// `steerseg export` of a ball in the middle of the scan (some slices with frames, some without)
+// as <dir>/seg.dcm, with `extra` options.
+CliRun exportSeg(const fs::path& dir, const fs::path& series, const scan::LoadedScan& scan,
+                 const std::string& extra) {
     const Geometry& g = scan.volume.geometry();
-    // A ball in the middle of the scan, so that some slices have frames and some do not.
     std::vector<std::uint8_t> mask(g.voxelCount());
     for (int k = 0; k < g.dims.z; ++k) {
         for (int j = 0; j < g.dims.y; ++j) {
@@ -51,9 +48,18 @@ TEST(NetOrthanc, ExportedSegArrivesWithItsSourceStudyAndFrames) {
         }
     }
     exports::writeMask(dir / "mask.nii.gz", g, mask);
-    const CliRun exported =
-        runSteerseg("export --input " + series.string() + " --mask " +
-                    (dir / "mask.nii.gz").string() + " --output " + (dir / "seg.dcm").string());
+    return runSteerseg("export --input " + series.string() + " --mask " +
+                       (dir / "mask.nii.gz").string() + " --output " + (dir / "seg.dcm").string() +
+                       extra);
+}
+
+TEST(NetOrthanc, ExportedSegArrivesWithItsSourceStudyAndFrames) {
+    STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
+    STEERSEG_REQUIRE_PROGRAM(OrthancServer::kProgram, "orthanc");
+    const fs::path dir = tempDir("net-orthanc-seg");
+    const scan::LoadedScan scan = scan::readScan(series);
+    ASSERT_NE(scan.dicom, nullptr);
+    const CliRun exported = exportSeg(dir, series, scan, "");
     ASSERT_EQ(exported.exitCode, 0) << exported.err;
 
     OrthancServer pacs(dir);
@@ -137,6 +143,50 @@ TEST(NetOrthanc, RefusedConnectionsAndRejectedAssociationsFailEachFileOnItsLine)
     const CliRun usage = runSteerseg("send --to pacs " + one);
     EXPECT_EQ(usage.exitCode, 2);
     EXPECT_NE(usage.err.find("no [[dicom.peers]] named 'pacs'"), std::string::npos) << usage.err;
+    fs::remove_all(dir);
+}
+
+// `steerseg export --send`: written first, then through the outbox; with the PACS down it waits
+// there (the export itself succeeds) and `send --outbox` delivers it once the PACS is back.
+TEST(NetOrthanc, ExportSendsItsSegThroughTheOutbox) {
+    STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
+    STEERSEG_REQUIRE_PROGRAM(OrthancServer::kProgram, "orthanc");
+    const fs::path dir = tempDir("net-orthanc-export-send");
+    const scan::LoadedScan scan = scan::readScan(series);
+    OrthancServer pacs(dir);
+    const fs::path config = dir / "node.toml";
+    std::ofstream(config) << "[audit]\npath = \"" << (dir / "audit.jsonl").string()
+                          << "\"\n[dicom]\noutbox = \"" << (dir / "outbox").string()
+                          << "\"\nretry_first_seconds = 0.2\n[[dicom.peers]]\nname = \"pacs\"\n"
+                             "aet = \"ORTHANC\"\nhost = \"127.0.0.1\"\nsend = true\nport = "
+                          << pacs.dicomPort() << "\n";
+    const std::string send = " --send pacs --config " + config.string();
+
+    const CliRun delivered = exportSeg(dir, series, scan, send);
+    ASSERT_EQ(delivered.exitCode, 0) << delivered.err;
+    const auto report = nlohmann::json::parse(delivered.out);
+    EXPECT_TRUE(report.at("delivered").get<bool>()) << delivered.out;
+    EXPECT_EQ(pacs.get("/instances").size(), 1u);
+
+    pacs.stop();
+    const CliRun waiting = exportSeg(dir, series, scan, send);
+    ASSERT_EQ(waiting.exitCode, 0) << waiting.err;
+    const auto queued = nlohmann::json::parse(waiting.out);
+    EXPECT_FALSE(queued.at("delivered").get<bool>());
+    EXPECT_NE(queued.at("waiting_because").get<std::string>().find("connection refused"),
+              std::string::npos)
+        << waiting.out;
+    pacs.start();
+    const CliRun drained = runSteerseg("send --outbox --wait 10 --config " + config.string());
+    EXPECT_EQ(drained.exitCode, 0) << drained.out << drained.err;
+    // The second export is a new SEG (new UIDs): two instances, each once.
+    EXPECT_EQ(pacs.get("/instances").size(), 2u);
+
+    const CliRun notSeg = runSteerseg("export --input " + series.string() + " --mask " +
+                                      (dir / "mask.nii.gz").string() + " --output " +
+                                      (dir / "m.nii.gz").string() + send);
+    EXPECT_EQ(notSeg.exitCode, 2);
+    EXPECT_NE(notSeg.err.find("only a DICOM SEG"), std::string::npos) << notSeg.err;
     fs::remove_all(dir);
 }
 
