@@ -79,6 +79,7 @@ net::ScpSettings listenSettings(const Args& args, const config::DicomConfig& dic
     s.store = args.value("store").value_or(dicom.store.string());
     s.associationQuotaBytes = static_cast<std::uint64_t>(dicom.associationQuotaMb) << 20;
     s.minFreeBytes = static_cast<std::uint64_t>(dicom.minFreeMb) << 20;
+    s.keepDays = dicom.keepDays;
     if (const auto quota = args.integer("quota-mb")) {
         if (*quota < 1 || *quota > 65536) {
             throw UsageError("--quota-mb: 1..65536, got " + std::to_string(*quota));

@@ -5,8 +5,10 @@
 #include "exports/dicom_file_bytes.hpp"
 #include "files/file_write.hpp"
 #include "net/dcmtk_quiet.hpp"
+#include "net/store_retention.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <dcmtk/config/osconfig.h> // must come first among DCMTK's headers
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
@@ -86,6 +88,7 @@ class StorageScp::Provider : public DcmSCP {
             throw ScpError("cannot create the store " + settings_.store.string() + ": " +
                            ec.message());
         }
+        prune();
         const OFCondition c = openListenPort();
         if (c.bad()) {
             throw ScpError("cannot listen on port " + std::to_string(settings_.port) + ": " +
@@ -159,7 +162,13 @@ class StorageScp::Provider : public DcmSCP {
         }
     }
 
-    OFBool stopAfterConnectionTimeout() override { return stopRequested(); }
+    // Once a second while no association is open: the hourly retention pass runs here.
+    OFBool stopAfterConnectionTimeout() override {
+        if (std::chrono::steady_clock::now() - lastPrune_ > std::chrono::hours(1)) {
+            prune();
+        }
+        return stopRequested();
+    }
     OFBool stopAfterCurrentAssociation() override { return stopRequested(); }
 
     void notifyAssociationTermination() override {
@@ -170,6 +179,18 @@ class StorageScp::Provider : public DcmSCP {
     }
 
   private:
+    void prune() {
+        lastPrune_ = std::chrono::steady_clock::now();
+        if (settings_.keepDays <= 0) {
+            return;
+        }
+        if (const int n = pruneStore(settings_.store, std::chrono::hours(24 * settings_.keepDays));
+            n > 0) {
+            report_("removed " + std::to_string(n) + " series older than " +
+                    std::to_string(settings_.keepDays) + " day(s)");
+        }
+    }
+
     bool stopRequested() const { return stop_ != nullptr && stop_->load(); }
 
     OFCondition store(T_DIMSE_C_StoreRQ& request, const DcmPresentationContextInfo& info) {
@@ -252,6 +273,7 @@ class StorageScp::Provider : public DcmSCP {
     std::uint64_t objectBytes_ = 0;
     bool overQuota_ = false;
     int stored_ = 0;
+    std::chrono::steady_clock::time_point lastPrune_;
 };
 
 StorageScp::StorageScp(ScpSettings settings, ScpReport report) {

@@ -34,6 +34,9 @@ struct ScpSettings {
     // less than this free after the write.
     std::uint64_t minFreeBytes = std::uint64_t{256} << 20;
     int timeoutSeconds = 30; // ACSE and DIMSE: a silent peer is dropped after this
+    // Received series older than this are removed when the SCP opens and hourly after
+    // (pruneStore); 0 keeps them.
+    int keepDays = 0;
 };
 
 class ScpError : public std::runtime_error {
