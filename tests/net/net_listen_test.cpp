@@ -63,10 +63,22 @@ std::vector<fs::path> filesBelow(const fs::path& root) {
     return found;
 }
 
-TEST(NetListen, StoresAScannersSeriesAndAnswersEcho) {
-    STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
-    STEERSEG_REQUIRE_PROGRAM("/usr/bin/storescu", "dcmtk");
-    STEERSEG_REQUIRE_PROGRAM("/usr/bin/echoscu", "dcmtk");
+// The scanner's side: a real CT series and DCMTK's storescu and echoscu.
+class NetListen : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        STEERSEG_REQUIRE_PROGRAM("/usr/bin/storescu", "dcmtk");
+        STEERSEG_REQUIRE_PROGRAM("/usr/bin/echoscu", "dcmtk");
+        const auto found = dataPath("lung-ct-ibsi/dicom/image");
+        if (!found) {
+            STEERSEG_SKIP_OR_FAIL_FOR_DATA("lung-ct-ibsi/dicom/image");
+        }
+        series = *found;
+    }
+    fs::path series;
+};
+
+TEST_F(NetListen, StoresAScannersSeriesAndAnswersEcho) {
     const fs::path dir = tempDir("net-listen-series");
     Listener node(dir, {"--allow", "SCANNER", "--allow", "PACS@127.0.0.1"});
 
@@ -126,10 +138,7 @@ TEST(NetListen, StoresAScannersSeriesAndAnswersEcho) {
     fs::remove_all(dir);
 }
 
-TEST(NetListen, QuotaAndGarbageAreRefusedAndTheNodeKeepsServing) {
-    STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
-    STEERSEG_REQUIRE_PROGRAM("/usr/bin/storescu", "dcmtk");
-    STEERSEG_REQUIRE_PROGRAM("/usr/bin/echoscu", "dcmtk");
+TEST_F(NetListen, QuotaAndGarbageAreRefusedAndTheNodeKeepsServing) {
     const fs::path dir = tempDir("net-listen-quota");
     // The series is about 5 MB: a 1 MiB quota stops the association within its first objects.
     Listener node(dir, {"--allow", "SCANNER", "--quota-mb", "1"});
@@ -166,9 +175,7 @@ TEST(NetListen, QuotaAndGarbageAreRefusedAndTheNodeKeepsServing) {
 // A store whose disk would keep less than min_free_mb: every object is refused with 0xA700 (out
 // of resources), nothing lands in the store, and an AE allowed only from elsewhere is turned
 // away.
-TEST(NetListen, AFullStoreRefusesEachObjectAndKeepsNothing) {
-    STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
-    STEERSEG_REQUIRE_PROGRAM("/usr/bin/storescu", "dcmtk");
+TEST_F(NetListen, AFullStoreRefusesEachObjectAndKeepsNothing) {
     const fs::path dir = tempDir("net-listen-full");
     std::ofstream(dir / "node.toml")
         << "[dicom]\nmin_free_mb = 1048576\n"
@@ -192,7 +199,7 @@ TEST(NetListen, AFullStoreRefusesEachObjectAndKeepsNothing) {
     fs::remove_all(dir);
 }
 
-TEST(NetListen, RefusesAStartItCannotServe) {
+TEST(NetListenOptions, RefusesAStartItCannotServe) {
     const fs::path dir = tempDir("net-listen-usage");
     const Finished nobody =
         runProgram({steersegBinary().string(), "listen", "--store", dir.string()}, dir);
