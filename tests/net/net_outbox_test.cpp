@@ -11,7 +11,6 @@
 
 #include <fstream>
 #include <gtest/gtest.h>
-#include <thread>
 
 namespace steerseg::test {
 namespace {
@@ -37,7 +36,10 @@ TEST(NetOutbox, WaitsForAStoppedPacsAndDeliversOnceAfterARestart) {
     pacs.stop();
     {
         workflow::AuditLog audit(dir / "audit.jsonl");
-        net::Outbox outbox(dir / "outbox", backoff, &audit);
+        // The console's clock stands still unless the test moves it: "not due yet" cannot
+        // depend on how long a loaded machine takes between two passes.
+        auto now = std::chrono::system_clock::now();
+        net::Outbox outbox(dir / "outbox", backoff, &audit, [&] { return now; });
         outbox.enqueue(object, "pacs");
         EXPECT_EQ(outbox.deliverDue(resolve, options), 0);
         const auto waiting = outbox.pending();
@@ -48,7 +50,7 @@ TEST(NetOutbox, WaitsForAStoppedPacsAndDeliversOnceAfterARestart) {
         // Not due again before its delay: a pass now sends nothing.
         EXPECT_EQ(outbox.deliverDue(resolve, options), 0);
         EXPECT_EQ(outbox.pending().at(0).attempts, 1);
-        std::this_thread::sleep_for(250ms);
+        now += 250ms;
         EXPECT_EQ(outbox.deliverDue(resolve, options), 0);
         EXPECT_EQ(outbox.pending().at(0).attempts, 2);
         EXPECT_EQ(outbox.delayAfter(2), 400ms);
