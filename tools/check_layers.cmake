@@ -7,6 +7,7 @@
 #   core  <-  gpu  <-  speed  <-  solver  <-  render  <-  session  (session: scan, exports too)
 #   model, core  <-  workflow  <-  config  <-  input
 #   workflow  <-  script, autosave;  workflow, session  <-  engine
+#   exports, workflow  <-  net (the DICOM network node)
 #   everything  <-  ui  <-  kiosk  <-  cli
 # ui/ sits at the root beside app/ (the design's top level) and is the module "ui".
 # platform/ is beside and below them all: it includes nothing of app/; the console's input and
@@ -29,12 +30,13 @@ set(allowed_input "model;core;workflow;config;input;platform")
 set(allowed_script "model;core;files;scan;workflow;script;platform")
 set(allowed_autosave "model;core;files;workflow;autosave")
 set(allowed_engine "model;core;files;scan;exports;gpu;speed;solver;render;session;workflow;engine")
+set(allowed_net "model;core;files;scan;exports;workflow;net")
 set(allowed_ui "model;core;gpu;speed;render;session;workflow;ui;platform")
-set(allowed_kiosk "model;core;files;scan;exports;gpu;speed;solver;render;session;workflow;config;input;script;autosave;engine;ui;kiosk;platform")
-set(allowed_cli "model;core;files;scan;exports;gpu;speed;solver;render;session;workflow;config;input;script;autosave;engine;ui;kiosk;cli;platform")
+set(allowed_kiosk "model;core;files;scan;exports;gpu;speed;solver;render;session;workflow;config;input;script;autosave;engine;net;ui;kiosk;platform")
+set(allowed_cli "model;core;files;scan;exports;gpu;speed;solver;render;session;workflow;config;input;script;autosave;engine;net;ui;kiosk;cli;platform")
 set(allowed_platform "platform")
 set(modules model core files scan exports gpu speed solver render session workflow config input
-  script autosave engine ui kiosk cli platform)
+  script autosave engine net ui kiosk cli platform)
 
 if(NOT ROOT)
   message(FATAL_ERROR "check_layers: give -DROOT=<source root>")

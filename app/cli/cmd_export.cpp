@@ -2,15 +2,18 @@
 // grid, as a mask or as a surface mesh. GL-free: it needs no GPU, only the two files.
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/dicom_options.hpp"
 #include "core/mask_inside.hpp"
 #include "core/volume.hpp"
 #include "exports/export_writer.hpp"
 #include "model/file_name.hpp"
 #include "scan/scan_reader.hpp"
+#include "workflow/audit_log.hpp"
 
 #include <algorithm>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <stdexcept>
 
 namespace steerseg::cli {
@@ -84,13 +87,60 @@ std::vector<std::uint8_t> readMaskFor(const std::string& path, const Geometry& s
     }
 }
 
+// --send PEER (docs/dicom-network.md): the written SEG goes into the persistent outbox for a
+// configured peer and is sent at once; what the peer did not take waits there for the next
+// `steerseg send --outbox`. Checked before anything is written.
+struct SendTarget {
+    std::string peer;
+    config::KioskConfig config;
+};
+
+std::optional<SendTarget> sendTargetFor(const Args& args, model::ExportFormat format) {
+    const auto peer = args.value("send");
+    if (!peer) {
+        if (args.value("config")) {
+            throw UsageError("--config goes with --send");
+        }
+        return std::nullopt;
+    }
+    if (format != model::ExportFormat::DicomSeg) {
+        throw UsageError("--send: only a DICOM SEG (.dcm) goes to a DICOM peer");
+    }
+    SendTarget target{*peer, nodeConfig(args)};
+    requireSendPeer(target.config.dicom, target.peer);
+    return target;
+}
+
+void sendExported(const SendTarget& target, const std::string& output,
+                  nlohmann::ordered_json& report) {
+    const config::DicomConfig& dicom = target.config.dicom;
+    workflow::AuditLog audit(target.config.audit.path);
+    net::Outbox outbox = configuredOutbox(dicom, audit);
+    const std::string id = outbox.enqueue(output, target.peer);
+    net::SendOptions options;
+    options.callingAet = dicom.aet;
+    std::optional<net::SendOutcome> outcome;
+    outbox.deliverDue([&](const std::string& name) { return sendPeer(dicom, name); }, options,
+                      [&](const net::OutboxEntry& e, const net::SendOutcome& o) {
+                          if (e.id == id) {
+                              outcome = o;
+                          }
+                      });
+    report["sent_to"] = target.peer;
+    report["outbox_id"] = id;
+    report["delivered"] = outcome && outcome->accepted;
+    if (!outcome || !outcome->accepted) {
+        report["waiting_because"] = outcome ? outcome->problem : "not due yet";
+    }
+}
+
 } // namespace
 
 int runExport(std::span<const std::string> words) {
-    const Args args(
-        words,
-        {"input", "mask", "output", "format", "segment-name", "segment-color", "segment-label"},
-        {});
+    const Args args(words,
+                    {"input", "mask", "output", "format", "segment-name", "segment-color",
+                     "segment-label", "send", "config"},
+                    {});
     if (!args.positional().empty()) {
         throw UsageError("unexpected argument '" + args.positional().front() + "'");
     }
@@ -99,6 +149,7 @@ int runExport(std::span<const std::string> words) {
     const std::string output = args.required("output");
     const model::ExportFormat format = chooseFormat(args, output);
     const exports::SegmentInfo segment = segmentFrom(args);
+    const std::optional<SendTarget> sendTo = sendTargetFor(args, format);
 
     const scan::LoadedScan scan = scan::readScan(input);
     const Geometry& geometry = scan.volume.geometry();
@@ -123,6 +174,9 @@ int runExport(std::span<const std::string> words) {
         report["note"] = written.note;
     }
     report["world"] = format == model::ExportFormat::Tiff ? "none (voxel order)" : "LPS";
+    if (sendTo) {
+        sendExported(*sendTo, output, report);
+    }
     std::printf("%s\n", report.dump(2).c_str());
     return 0;
 }

@@ -3,6 +3,7 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "cli/self_test_checks.hpp"
+#include "cli/self_test_dicom.hpp"
 #include "gpu/gl.hpp"
 #include "gpu/gl_error.hpp"
 #include "gpu/gpu_info.hpp"
@@ -177,6 +178,9 @@ int runSelfTest(std::span<const std::string> words) {
     results.push_back(checkWritableFolder("autosave folder", loaded.config.autosave.folder));
     results.push_back(checkControllers(findControllerNodes("/dev")));
     results.push_back(checkConfiguredControllers(loaded.config));
+    for (CheckResult& r : checkDicomNode(loaded.config.dicom)) {
+        results.push_back(std::move(r));
+    }
 
     std::fputs(formatReport(results).c_str(), stdout);
     return anyFailed(results) ? kExitFailure : kExitOk;

@@ -29,8 +29,10 @@ int runGpuInfo(std::span<const std::string> args);
 int runInfo(std::span<const std::string> args);
 int runInputMonitor(std::span<const std::string> args);
 int runKiosk(std::span<const std::string> args);
+int runListen(std::span<const std::string> args);
 int runRender(std::span<const std::string> args);
 int runSegment(std::span<const std::string> args);
 int runSelfTest(std::span<const std::string> args);
+int runSend(std::span<const std::string> args);
 
 } // namespace steerseg::cli

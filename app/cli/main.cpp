@@ -51,9 +51,11 @@ constexpr Command kCommands[] = {
      steerseg::cli::runSegment},
     {"export",
      "export --input SCAN --mask MASK --output OUT.nii.gz|.nii|.nrrd|.seg.nrrd|.dcm|.stl|.ply|.tif "
-     "[--format F] [--segment-name N --segment-color r,g,b --segment-label L]: a mask on the "
+     "[--format F] [--segment-name N --segment-color r,g,b --segment-label L] [--send PEER "
+     "[--config FILE]]: a mask on the "
      "scan's grid, again as a mask, a 3D Slicer segmentation, a closed surface mesh in LPS "
-     "millimetres or a TIFF stack (no GPU)",
+     "millimetres or a TIFF stack (no GPU); --send puts a DICOM SEG into the outbox for a "
+     "configured DICOM peer and sends it",
      steerseg::cli::runExport},
     {"kiosk",
      "kiosk [--platform auto|kms|window|offscreen] [--config FILE] [--scan PATH] [--script "
@@ -71,6 +73,19 @@ constexpr Command kCommands[] = {
      "input devices and the configured ones they match, print decoded events and their bound "
      "actions, record raw streams, or decode a recording (docs/input-devices.md)",
      steerseg::cli::runInputMonitor},
+    {"send",
+     "send (--to PEER | --host H --port N --called-aet AE) [--aet AE] [--config FILE] FILE... | "
+     "send --outbox [--to PEER FILE...] [--wait S] [--config FILE]: C-STORE each DICOM file to a "
+     "peer, one line per file, status 0 only when the peer accepted every one; --outbox queues "
+     "them in the persistent outbox and delivers what is due, retrying for S seconds, status 0 "
+     "when the outbox is empty (docs/dicom-network.md)",
+     steerseg::cli::runSend},
+    {"listen",
+     "listen [--config FILE] [--aet AE] [--port N] [--store DIR] [--allow AE[@ADDRESS] ...] "
+     "[--quota-mb N]: the DICOM Storage SCP in the foreground until SIGTERM, filing what the "
+     "allowed callers send into DIR/<study>/<series>/; with no --allow, the [[dicom.peers]] "
+     "with receive = true",
+     steerseg::cli::runListen},
 };
 
 void printUsage(std::FILE* out) {

@@ -136,6 +136,7 @@ std::vector<ConfigProblem> applyConfigText(KioskConfig& config, std::string_view
     section("export", detail::readExport, next.exports);
     section("audit", detail::readAudit, next.audit);
     section("autosave", detail::readAutosave, next.autosave);
+    section("dicom", detail::readDicom, next.dicom);
     if (const toml::table* bindings = top.table("bindings")) {
         detail::TableReader reader(*bindings, "bindings", sink);
         detail::readBindings(reader, next.bindings, check);

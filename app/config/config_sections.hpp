@@ -17,6 +17,7 @@ void readSpeed(TableReader& table, SpeedConfig& speed);
 void readExport(TableReader& table, ExportConfig& exports);
 void readAudit(TableReader& table, AuditConfig& audit);
 void readAutosave(TableReader& table, AutosaveConfig& autosave);
+void readDicom(TableReader& table, DicomConfig& dicom); // with its [[dicom.peers]]
 
 // [[preset]]: an entry whose name is already a preset changes the fields it gives; a new name
 // appends a preset and must give every field.

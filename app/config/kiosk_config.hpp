@@ -155,6 +155,34 @@ struct InputConfig {
     bool operator==(const InputConfig&) const = default;
 };
 
+// [dicom] (docs/dicom-network.md): the DICOM node, off unless `enabled`. A peer may send to the
+// console (`receive`), be a target of exports (`send`), or both.
+struct DicomPeerConfig {
+    std::string name; // how --to and the panel name it
+    std::string aet;
+    std::string host;
+    int port = 104;
+    std::string address; // receive: the caller's IP address to insist on, "" = any
+    bool receive = false;
+    bool send = false;
+    bool operator==(const DicomPeerConfig&) const = default;
+};
+
+struct DicomConfig {
+    bool enabled = false;
+    std::string aet = "STEERSEG";
+    int port = 11112;
+    std::filesystem::path store = "steerseg-incoming";
+    std::filesystem::path outbox = "steerseg-export/outbox";
+    int associationQuotaMb = 1024;      // bytes one association may bring (and hold in memory)
+    int minFreeMb = 256;                // refuse objects that would leave less free in the store
+    int keepDays = 7;                   // received series older than this are removed
+    double retryFirstSeconds = 5.0;     // the outbox's delay after a failed send ...
+    double retryLongestSeconds = 300.0; // ... doubled after each further one up to this
+    std::vector<DicomPeerConfig> peers; // a file's [[dicom.peers]] replaces the list
+    bool operator==(const DicomConfig&) const = default;
+};
+
 struct KioskConfig {
     DisplayConfig display;
     FrameConfig frame;
@@ -168,6 +196,7 @@ struct KioskConfig {
     std::vector<Preset> presets; // in the order the panel shows them
     BindingsConfig bindings;
     InputConfig input;
+    DicomConfig dicom;
     bool operator==(const KioskConfig&) const = default;
 };
 

@@ -3,6 +3,7 @@
 // written and how it was validated.
 #include "exports/dicom_seg_writer.hpp"
 
+#include "exports/dicom_file_bytes.hpp"
 #include "files/file_write.hpp"
 #include "scan/scan_reader.hpp"
 
@@ -11,7 +12,6 @@
 #include <cstdio>
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
-#include <dcmtk/dcmdata/dcostrmb.h>
 #include <dcmtk/dcmdata/dcuid.h>
 #include <dcmtk/dcmfg/fgderimg.h>
 #include <dcmtk/dcmfg/fgfracon.h>
@@ -333,21 +333,8 @@ std::vector<std::byte> encode(const std::filesystem::path& path, DcmFileFormat& 
     // meta header is built once; the loop only matters if the estimate falls short.
     const std::size_t estimate =
         file.getDataset()->calcElementLength(xfer, EET_ExplicitLength) + 64 * 1024;
-    std::vector<char> buffer(estimate);
-    DcmOutputBufferStream stream(buffer.data(), static_cast<offile_off_t>(buffer.size()));
-    std::vector<std::byte> out;
-    file.transferInit();
     OFCondition c;
-    do {
-        c = file.write(stream, xfer, EET_ExplicitLength, nullptr, EGL_recalcGL, EPD_noChange, 0, 0,
-                       0, EWM_createNewMeta);
-        void* data = nullptr;
-        offile_off_t length = 0;
-        stream.flushBuffer(data, length);
-        const auto* bytes = static_cast<const std::byte*>(data);
-        out.insert(out.end(), bytes, bytes + length);
-    } while (c == EC_StreamNotifyClient);
-    file.transferEnd();
+    std::vector<std::byte> out = dicomFileBytes(file, xfer, estimate, c);
     check(path, c, "encoding");
     return out;
 }

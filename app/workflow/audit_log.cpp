@@ -205,6 +205,21 @@ void AuditLog::transition(model::State from, model::State to, std::string_view c
     }
 }
 
+void AuditLog::send(std::string_view peer, std::string_view file, std::string_view sopInstanceUid,
+                    int attempt, bool accepted, std::string_view problem) {
+    try {
+        nlohmann::json r{{"event", "send"},    {"peer", peer},
+                         {"file", file},       {"sop_instance_uid", sopInstanceUid},
+                         {"attempt", attempt}, {"accepted", accepted}};
+        if (!accepted) {
+            r["problem"] = problem;
+        }
+        write(r);
+    } catch (const std::exception& e) {
+        fail(std::string("record failed: ") + e.what());
+    }
+}
+
 AuditLogContents readAuditLog(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) {

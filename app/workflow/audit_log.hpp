@@ -39,6 +39,11 @@ class AuditLog {
     void transition(model::State from, model::State to, std::string_view cause,
                     std::string_view scan, std::string_view message);
 
+    // One attempt to send `file` (a DICOM object, `sopInstanceUid`) to a DICOM peer: the
+    // outbox's record (docs/dicom-network.md). `problem`: "" when the peer accepted it.
+    void send(std::string_view peer, std::string_view file, std::string_view sopInstanceUid,
+              int attempt, bool accepted, std::string_view problem);
+
     [[nodiscard]] bool ok() const { return error_.empty(); }
     // The first failure, the first time it is asked for; nullopt afterwards and while all is well.
     std::optional<std::string> takeError();

@@ -16,8 +16,9 @@ long lineCount(const std::string& text) {
 }
 
 TEST(FaultsCliHelp, EveryCommandsHelpIsItsUsageAndZero) {
-    for (const std::string command : {"info", "gpu-info", "render", "segment", "export", "kiosk",
-                                      "self-test", "--self-test", "input-monitor"}) {
+    for (const std::string command :
+         {"info", "gpu-info", "render", "segment", "export", "kiosk", "self-test", "--self-test",
+          "input-monitor", "send", "listen"}) {
         for (const std::string flag : {"--help", "-h"}) {
             SCOPED_TRACE(command + " " + flag);
             const CliRun r = runSteerseg(command + " " + flag);

@@ -633,6 +633,51 @@ TEST_F(ConfigTest, BadInputDevices) {
                    6, "input.devices[2].name", "given twice");
 }
 
+TEST_F(ConfigTest, DicomNodeAndPeers) {
+    const config::LoadedConfig loaded = load({write(
+        "dicom.toml", "[dicom]\nenabled = true\naet = \"CONSOLE1\"\nport = 4242\n"
+                      "store = \"/srv/in\"\nassociation_quota_mb = 64\n"
+                      "[[dicom.peers]]\nname = \"pacs\"\naet = \"ORTHANC\"\nhost = \"10.0.0.5\"\n"
+                      "send = true\nreceive = true\naddress = \"10.0.0.5\"\n"
+                      "[[dicom.peers]]\nname = \"ct\"\naet = \"CT_SCANNER\"\nhost = \"ct\"\n"
+                      "port = 11112\nreceive = true\n")});
+    ASSERT_TRUE(loaded.problems.empty()) << describeAll(loaded.problems);
+    const config::DicomConfig& d = loaded.config.dicom;
+    EXPECT_TRUE(d.enabled);
+    EXPECT_EQ(d.aet, "CONSOLE1");
+    EXPECT_EQ(d.port, 4242);
+    EXPECT_EQ(d.store, fs::path("/srv/in"));
+    EXPECT_EQ(d.associationQuotaMb, 64);
+    ASSERT_EQ(d.peers.size(), 2U);
+    EXPECT_EQ(d.peers[0], (config::DicomPeerConfig{"pacs", "ORTHANC", "10.0.0.5", 104, "10.0.0.5",
+                                                   true, true}));
+    EXPECT_EQ(d.peers[1].port, 11112);
+    EXPECT_FALSE(d.peers[1].send);
+    EXPECT_FALSE(config::defaultConfig().dicom.enabled); // off unless a site turns it on
+}
+
+TEST_F(ConfigTest, BadDicomValuesAreRefusedWithTheirPlace) {
+    expectRejected("[dicom]\naet = \"THIS-IS-TOO-LONG-X\"\n", 2, "dicom.aet", "1 to 16");
+    expectRejected("[dicom]\naet = \"A\\\\B\"\n", 2, "dicom.aet", "no backslash");
+    expectRejected("[dicom]\nport = 70000\n", 2, "dicom.port", "at most 65535");
+    expectRejected("[dicom]\nport = \"104\"\n", 2, "dicom.port", "expected an integer");
+    expectRejected("[dicom]\nstore = \"\"\n", 2, "dicom.store", "must not be empty");
+    expectRejected("[dicom]\nassociation_quota_mb = 0\n", 2, "dicom.association_quota_mb",
+                   "at least 1");
+    expectRejected("[dicom]\ntls = true\n", 2, "dicom.tls", "TLS is not supported yet");
+    expectRejected("[dicom]\nlisten = true\n", 2, "dicom.listen", "");
+    expectRejected("[[dicom.peers]]\nname = \"pacs\"\naet = \"PACS\"\nhost = \"pacs host\"\n"
+                   "send = true\n",
+                   4, "dicom.peers[1].host", "without blanks");
+    expectRejected("[[dicom.peers]]\nname = \"pacs\"\naet = \"PACS\"\nhost = \"h\"\n", 1,
+                   "dicom.peers[1].receive", "receive = true");
+    expectRejected("[[dicom.peers]]\nname = \"pacs\"\naet = \"PACS\"\nsend = true\n", 1,
+                   "dicom.peers[1].host", "is missing");
+    expectRejected("[[dicom.peers]]\nname = \"a\"\naet = \"A\"\nhost = \"h\"\nsend = true\n"
+                   "[[dicom.peers]]\nname = \"a\"\naet = \"B\"\nhost = \"h\"\nsend = true\n",
+                   7, "dicom.peers[2].name", "given twice");
+}
+
 TEST(ConfigNames, InputDeviceKindsRoundTrip) {
     for (const auto kind : {config::InputDeviceKind::Shuttle, config::InputDeviceKind::Radial,
                             config::InputDeviceKind::PowerMate, config::InputDeviceKind::GpioInput,

@@ -1,0 +1,127 @@
+#include "cli/dicom_options.hpp"
+
+#include "config/config_loader.hpp"
+#include "model/action.hpp"
+#include "model/ae_title.hpp"
+
+namespace steerseg::cli {
+namespace {
+
+std::string checkedAeTitle(const std::string& aet, const std::string& option) {
+    if (const std::string problem = model::aeTitleProblem(aet); !problem.empty()) {
+        throw UsageError(option + ": '" + aet + "': " + problem);
+    }
+    return aet;
+}
+
+int checkedPort(const Args& args, const std::string& name) {
+    const long long port = *args.integer(name);
+    if (port < 1 || port > 65535) {
+        throw UsageError("--" + name + ": a port is 1..65535, got " + std::to_string(port));
+    }
+    return static_cast<int>(port);
+}
+
+} // namespace
+
+net::DicomPeer requireSendPeer(const config::DicomConfig& dicom, const std::string& name) {
+    if (auto peer = sendPeer(dicom, name)) {
+        return *peer;
+    }
+    throw UsageError("--to: no [[dicom.peers]] named '" + name + "' with send = true");
+}
+
+config::KioskConfig nodeConfig(const Args& args) {
+    std::optional<std::filesystem::path> file;
+    if (const auto c = args.value("config")) {
+        file = *c;
+    }
+    const config::BindingCheck bindable = [](std::string_view action) {
+        return model::bindingAction(action, 1.0).has_value();
+    };
+    const config::LoadedConfig loaded =
+        config::loadConfig(config::kioskConfigSources(file), bindable);
+    if (!loaded.problems.empty()) {
+        throw UsageError(config::describe(loaded.problems.front()) +
+                         (loaded.problems.size() > 1
+                              ? " (and " + std::to_string(loaded.problems.size() - 1) + " more)"
+                              : ""));
+    }
+    return loaded.config;
+}
+
+net::DicomPeer sendTarget(const Args& args, const config::DicomConfig& dicom) {
+    const bool direct = args.value("host") || args.value("port") || args.value("called-aet");
+    if (const auto name = args.value("to")) {
+        if (direct) {
+            throw UsageError("give --to PEER or --host, --port and --called-aet, not both");
+        }
+        return requireSendPeer(dicom, *name);
+    }
+    if (!direct) {
+        throw UsageError("give --to PEER, or --host, --port and --called-aet");
+    }
+    net::DicomPeer peer;
+    peer.host = args.required("host");
+    peer.port = checkedPort(args, "port");
+    peer.aet = checkedAeTitle(args.required("called-aet"), "--called-aet");
+    return peer;
+}
+
+std::string ownAeTitle(const Args& args, const config::DicomConfig& dicom) {
+    return checkedAeTitle(args.value("aet").value_or(dicom.aet), "--aet");
+}
+
+net::ScpSettings listenSettings(const Args& args, const config::DicomConfig& dicom) {
+    net::ScpSettings s;
+    s.aet = ownAeTitle(args, dicom);
+    s.port = args.value("port") ? checkedPort(args, "port") : dicom.port;
+    s.store = args.value("store").value_or(dicom.store.string());
+    s.associationQuotaBytes = static_cast<std::uint64_t>(dicom.associationQuotaMb) << 20;
+    s.minFreeBytes = static_cast<std::uint64_t>(dicom.minFreeMb) << 20;
+    s.keepDays = dicom.keepDays;
+    if (const auto quota = args.integer("quota-mb")) {
+        if (*quota < 1 || *quota > 65536) {
+            throw UsageError("--quota-mb: 1..65536, got " + std::to_string(*quota));
+        }
+        s.associationQuotaBytes = static_cast<std::uint64_t>(*quota) << 20;
+    }
+    const std::vector<std::string> allow = args.values("allow");
+    for (const std::string& word : allow) {
+        const auto at = word.find('@');
+        net::AllowedCaller caller{checkedAeTitle(word.substr(0, at), "--allow"),
+                                  at == std::string::npos ? "" : word.substr(at + 1)};
+        s.allowed.push_back(std::move(caller));
+    }
+    if (allow.empty()) {
+        for (const auto& peer : dicom.peers) {
+            if (peer.receive) {
+                s.allowed.push_back({peer.aet, peer.address});
+            }
+        }
+    }
+    if (s.allowed.empty()) {
+        throw UsageError("nobody may send: give --allow AE or [[dicom.peers]] with receive = true");
+    }
+    return s;
+}
+
+std::optional<net::DicomPeer> sendPeer(const config::DicomConfig& dicom, const std::string& name) {
+    for (const auto& p : dicom.peers) {
+        if (p.name == name && p.send) {
+            return net::DicomPeer{p.aet, p.host, p.port};
+        }
+    }
+    return std::nullopt;
+}
+
+net::Outbox configuredOutbox(const config::DicomConfig& dicom, workflow::AuditLog& audit) {
+    const auto ms = [](double seconds) {
+        return std::chrono::duration_cast<std::chrono::milliseconds>(
+            std::chrono::duration<double>(seconds));
+    };
+    return net::Outbox(dicom.outbox, {ms(dicom.retryFirstSeconds), ms(dicom.retryLongestSeconds)},
+                       &audit);
+}
+
+} // namespace steerseg::cli

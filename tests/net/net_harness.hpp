@@ -1,0 +1,88 @@
+#pragma once
+
+// What the network tests run against: real processes on 127.0.0.1 (Orthanc, `steerseg listen`,
+// DCMTK's storescu and echoscu), each started on free loopback ports and stopped by the test.
+#include "support/test_data.hpp"
+#include "support/write_faults.hpp" // readText
+
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <sys/types.h>
+#include <vector>
+
+namespace steerseg::test {
+
+// Skips the test where Orthanc or DCMTK's tools are missing, or fails it under
+// STEERSEG_REQUIRE_DATA=1 (CI installs them: tools/install-deps.sh).
+#define STEERSEG_REQUIRE_PROGRAM(path, package)                                                    \
+    if (!std::filesystem::exists(path)) {                                                          \
+        if (::steerseg::test::dataRequired()) {                                                    \
+            GTEST_FAIL() << path << " is missing (Debian " << package                              \
+                         << "; tools/install-deps.sh)";                                            \
+        }                                                                                          \
+        GTEST_SKIP() << path << " is missing (Debian " << package << "; tools/install-deps.sh)";   \
+    }
+
+// A TCP port on 127.0.0.1 that nothing listens on at the moment of asking.
+int freePort();
+
+// Polls `ready` every 50 ms until it holds or `timeout` passes.
+bool waitUntil(const std::function<bool()>& ready, std::chrono::milliseconds timeout);
+
+// A child process with stdout and stderr in `log`; SIGTERM and reaped by stop() or at the end.
+class ChildProcess {
+  public:
+    ChildProcess(const std::vector<std::string>& argv, const std::filesystem::path& log);
+    ~ChildProcess();
+    ChildProcess(const ChildProcess&) = delete;
+    ChildProcess& operator=(const ChildProcess&) = delete;
+    // SIGTERM, then the exit status (-1 if it did not exit normally within 10 s: then SIGKILL).
+    int stop();
+    [[nodiscard]] bool running();
+    // kill -9: no handler runs, nothing is flushed or cleaned up (stop() then reaps it).
+    void killHard();
+    [[nodiscard]] std::string log() const { return readText(log_); }
+
+  private:
+    pid_t pid_ = -1;
+    std::filesystem::path log_;
+};
+
+// A program run to its end: exit status (-1 when killed) and its output, both streams.
+struct Finished {
+    int status = -1;
+    std::string output;
+};
+Finished runProgram(const std::vector<std::string>& argv, const std::filesystem::path& folder);
+
+// The body of GET http://127.0.0.1:port/path (HTTP/1.1, Connection: close), or nullopt when the
+// connection fails or the status is not 200.
+std::optional<std::string> httpGet(int port, const std::string& path);
+
+// Orthanc (Debian's package) with its own configuration and storage in `folder`: DICOM and HTTP
+// on free loopback ports, no remote access, no plug-ins. Waits for its REST API.
+class OrthancServer {
+  public:
+    static constexpr const char* kAet = "ORTHANC";
+    static constexpr const char* kProgram = "/usr/sbin/Orthanc";
+    explicit OrthancServer(const std::filesystem::path& folder);
+    // Starts it again on the same ports and storage (after stop()); throws if it does not come up.
+    void start();
+    void stop();
+    [[nodiscard]] int dicomPort() const { return dicomPort_; }
+    [[nodiscard]] int httpPort() const { return httpPort_; }
+    // GET of the REST API as JSON; throws when it fails.
+    nlohmann::json get(const std::string& path) const;
+
+  private:
+    std::filesystem::path folder_;
+    int dicomPort_ = 0;
+    int httpPort_ = 0;
+    std::optional<ChildProcess> process_;
+};
+
+} // namespace steerseg::test
