@@ -140,9 +140,8 @@ struct ShowSlices { // which two orientations the slice views show
 // The operator's correction tap, as the clicks protocol counts it (docs/steering.md): a tap in
 // add mode (positive) or remove mode (negative) that the surface should follow at once. The
 // first one, on a scan without a level set, probes and seeds there; after it a positive one is
-// a seed that also teaches the speed the tissue under it, a negative one an erase that sticks
-// (a barrier and an outside example). Either way the solver then runs from the current
-// surface. The same as AddSeed or Erase followed by Run, in one undo step.
+// a seed, a negative one an erase that sticks (a barrier and an outside example). Either way
+// the solver then runs from the current surface: AddSeed or Erase and Run, one undo step.
 struct Correct {
     glm::dvec3 voxel{0.0};
     bool positive = true;

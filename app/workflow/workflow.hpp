@@ -132,9 +132,6 @@ class Workflow {
                          std::optional<model::Param> coalesce);
     // T and eps as a probe of `p` sets them (the probe's rule and the eps floor).
     void takeProbe(ParamValues& values, const ProbeResult& p) const;
-    // T and eps widened to take in the tissue of `p` when it lies outside T +- eps (a positive
-    // correction where the front could not go); unchanged otherwise.
-    void takeInTissue(ParamValues& values, const ProbeResult& p) const;
     Outcome setParam(model::Param param, double value, std::string_view what);
     void applyParams(const ParamValues& values, bool force = false); // the engine, the status
     [[nodiscard]] ParamValues clamped(ParamValues values) const;

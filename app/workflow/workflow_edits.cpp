@@ -4,7 +4,6 @@
 #include "workflow/one_line.hpp"
 #include "workflow/workflow.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -168,15 +167,9 @@ Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, b
     if (seed) {
         // The operator puts seeds in the structure, often where no probe was: classify's inside
         // examples too, as on the command line (docs/speed.md).
+        // T and eps stay: widening them to the seed's tissue let the front leak on a real liver
+        // (docs/steering.md), and one seed should not undo what the others reached.
         addExample(next.speed.inside, sphere);
-        if (correcting) {
-            // A seed where the front did not go: the tissue under it belongs in, or the front
-            // would fill the sphere and no more.
-            const double mm =
-                static_cast<double>(sphere.radius) *
-                std::min({status_.scan.spacing.x, status_.scan.spacing.y, status_.scan.spacing.z});
-            takeInTissue(next, engine_.probe(voxel, std::max(mm, 0.5)));
-        }
         editLevelSet(
             "add_seed", [&] { engine_.addSeed(sphere); }, status_.seeds + 1, status_.erasures,
             &next);

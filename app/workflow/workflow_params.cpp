@@ -178,24 +178,6 @@ void Workflow::takeProbe(ParamValues& values, const ProbeResult& p) const {
     values.preset.clear();
 }
 
-void Workflow::takeInTissue(ParamValues& values, const ProbeResult& p) const {
-    if (p.count == 0 || !std::isfinite(p.mean) || !std::isfinite(p.stddev)) {
-        return;
-    }
-    const double T = values.values[indexOf(model::Param::T)];
-    const double eps = values.values[indexOf(model::Param::Eps)];
-    if (std::abs(p.mean - T) <= eps) {
-        return; // the front can grow there already: the seed is enough
-    }
-    // The union of the two ranges, each as a probe takes it: the structure is both.
-    const double spread = std::max(settings_.probeEpsFactor * p.stddev, settings_.epsFloor);
-    const double lo = std::min(T - eps, p.mean - spread);
-    const double hi = std::max(T + eps, p.mean + spread);
-    values.values[indexOf(model::Param::T)] = 0.5 * (lo + hi);
-    values.values[indexOf(model::Param::Eps)] = 0.5 * (hi - lo);
-    values.preset.clear();
-}
-
 Workflow::Outcome Workflow::on(const model::ApplyPreset& a) {
     const auto it = std::find_if(settings_.presets.begin(), settings_.presets.end(),
                                  [&](const TissuePreset& p) { return p.name == a.name; });
