@@ -60,6 +60,8 @@ template <class T> constexpr std::string_view nameOf() {
         return "clear_examples";
     } else if constexpr (std::is_same_v<T, SetOutsideMode>) {
         return "set_outside_mode";
+    } else if constexpr (std::is_same_v<T, PaintStroke>) {
+        return "paint_stroke";
     } else if constexpr (std::is_same_v<T, Run>) {
         return "run";
     } else if constexpr (std::is_same_v<T, Pause>) {
@@ -232,6 +234,27 @@ std::string_view sliceAxisName(SliceAxis axis) {
     return "unknown";
 }
 
+std::string_view strokeModeName(StrokeMode mode) {
+    switch (mode) {
+    case StrokeMode::Add:
+        return "add";
+    case StrokeMode::Erase:
+        return "erase";
+    case StrokeMode::Outside:
+        return "outside";
+    }
+    return "unknown";
+}
+
+std::optional<StrokeMode> strokeModeFromName(std::string_view name) {
+    for (const StrokeMode m : {StrokeMode::Add, StrokeMode::Erase, StrokeMode::Outside}) {
+        if (strokeModeName(m) == name) {
+            return m;
+        }
+    }
+    return std::nullopt;
+}
+
 std::string_view actionName(const Action& action) {
     return std::visit([](const auto& a) { return nameOf<std::decay_t<decltype(a)>>(); }, action);
 }
@@ -257,6 +280,7 @@ static_assert(std::is_same_v<TypeOf<ActionKind::SetSpeed>, SetSpeed>);
 static_assert(std::is_same_v<TypeOf<ActionKind::MarkOutside>, MarkOutside>);
 static_assert(std::is_same_v<TypeOf<ActionKind::ClearExamples>, ClearExamples>);
 static_assert(std::is_same_v<TypeOf<ActionKind::SetOutsideMode>, SetOutsideMode>);
+static_assert(std::is_same_v<TypeOf<ActionKind::PaintStroke>, PaintStroke>);
 static_assert(std::is_same_v<TypeOf<ActionKind::Run>, Run>);
 static_assert(std::is_same_v<TypeOf<ActionKind::Pause>, Pause>);
 static_assert(std::is_same_v<TypeOf<ActionKind::ToggleRun>, ToggleRun>);
