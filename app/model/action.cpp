@@ -11,6 +11,8 @@ namespace steerseg::model {
 namespace {
 
 constexpr std::array<std::string_view, kParamCount> kParamNames{"T", "eps", "alpha", "radius"};
+// In StrokeMode's order.
+constexpr std::array<std::string_view, 3> kStrokeModeNames{"add", "erase", "outside"};
 
 // Knobs and keys deliver detents; these turn one detent into the view's own units.
 constexpr double kRotateDegreesPerStep = 5.0;
@@ -235,24 +237,16 @@ std::string_view sliceAxisName(SliceAxis axis) {
 }
 
 std::string_view strokeModeName(StrokeMode mode) {
-    switch (mode) {
-    case StrokeMode::Add:
-        return "add";
-    case StrokeMode::Erase:
-        return "erase";
-    case StrokeMode::Outside:
-        return "outside";
-    }
-    return "unknown";
+    const auto i = static_cast<std::size_t>(mode);
+    return i < kStrokeModeNames.size() ? kStrokeModeNames[i] : std::string_view("unknown");
 }
 
 std::optional<StrokeMode> strokeModeFromName(std::string_view name) {
-    for (const StrokeMode m : {StrokeMode::Add, StrokeMode::Erase, StrokeMode::Outside}) {
-        if (strokeModeName(m) == name) {
-            return m;
-        }
+    const auto* at = std::find(kStrokeModeNames.begin(), kStrokeModeNames.end(), name);
+    if (at == kStrokeModeNames.end()) {
+        return std::nullopt;
     }
-    return std::nullopt;
+    return static_cast<StrokeMode>(at - kStrokeModeNames.begin());
 }
 
 std::string_view actionName(const Action& action) {
