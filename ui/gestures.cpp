@@ -187,6 +187,10 @@ void GestureRecognizer::pointerUp(int slot, double time, std::vector<Gesture>& o
         Gesture g = make(Gesture::Kind::Tap, time);
         g.position = start_;
         out.push_back(g);
+    } else if (mode_ == Mode::Dragging && slot == primary_) {
+        Gesture g = make(Gesture::Kind::Drag, time);
+        g.lifted = true;
+        out.push_back(g);
     } else if (mode_ == Mode::Pinching) {
         mode_ = Mode::Cancelled; // the finger left behind neither taps nor drags
     }

@@ -22,7 +22,9 @@ struct Gesture {
     enum class Kind {
         Tap,       // down and up within the slop, sooner than a long press
         LongPress, // held still: reported once, while still held
-        Drag,      // one finger moved beyond the slop: `delta` since the last Drag
+        Drag,      // one finger moved beyond the slop: `delta` since the last Drag; a last
+                   // one with `lifted` when that finger lifts (not when a second finger
+                   // turns the drag into a pinch: a painted stroke then has no end)
         Pinch,     // two fingers: `scale` since the last Pinch (> 1 = apart), about `position`
         Wheel,     // `wheel` detents at `position`
     };
@@ -33,6 +35,7 @@ struct Gesture {
     glm::dvec2 delta{0.0};    // Drag
     double scale = 1.0;       // Pinch
     double wheel = 0.0;       // Wheel
+    bool lifted = false;      // Drag: the finger lifted here (delta 0), the drag is over
     double time = 0.0;
 };
 

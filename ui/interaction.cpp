@@ -16,6 +16,31 @@ bool scanShown(State s) {
     return s != State::NoScan && s != State::Loading;
 }
 
+// What a one-finger drag paints in: what a tap would place (its sphere along the path), or
+// nothing where a tap places none (inspect's probe, review), and the drag pages.
+std::optional<model::StrokeMode> paintMode(const workflow::Status& status) {
+    const model::ActionKinds offered = workflow::offeredActions(status.state);
+    if (!offered.contains(ActionKind::PaintStroke)) {
+        return std::nullopt;
+    }
+    if (status.outsideMode && offered.contains(ActionKind::MarkOutside)) {
+        return model::StrokeMode::Outside;
+    }
+    if (status.state == State::Inspect) {
+        return std::nullopt;
+    }
+    if (status.eraseMode) {
+        return offered.contains(ActionKind::Erase) ? std::optional(model::StrokeMode::Erase)
+                                                   : std::nullopt;
+    }
+    return offered.contains(ActionKind::AddSeed) ? std::optional(model::StrokeMode::Add)
+                                                 : std::nullopt;
+}
+
+// Successive points closer than this (voxels) add nothing: a finger at rest, or moving within
+// one voxel, sends one point.
+constexpr double kMinPointStep = 0.5;
+
 } // namespace
 
 InteractionConfig interactionConfig(double dpi, double probeRadiusMm) {
@@ -34,7 +59,13 @@ Interaction::Interaction(InteractionConfig config) : config_(config) {}
 
 std::vector<Action> Interaction::onGesture(const Gesture& g, const ScreenState& screen,
                                            const workflow::Status& status) {
+    if (stroke_ && g.id != stroke_->id) {
+        // Another gesture began before the stroke's finger lifted (a second finger made it a
+        // pinch): the operator meant something else, and nothing is painted.
+        stroke_.reset();
+    }
     if (!scanShown(status.state)) {
+        stroke_.reset();
         return {};
     }
     switch (regionAt(screen.layout, g.start.x, g.start.y)) {
@@ -103,15 +134,68 @@ std::vector<Action> Interaction::onSlice(const Gesture& g, const SliceView& view
         if (g.id != dragId_) {
             dragId_ = g.id;
             dragSlices_ = 0.0;
+            if (const std::optional<model::StrokeMode> mode = paintMode(status)) {
+                stroke_ = Stroke{g.id, *mode, {}, {}};
+                // The stroke begins where the finger went down, not where it left the slop.
+                Gesture down = g;
+                down.position = g.start;
+                paint(down, view, status);
+            }
+        }
+        if (stroke_) {
+            return paint(g, view, status);
         }
         // Dragging up goes up through the slices, like pushing a stack of films away.
         return page(axis, dragSlices_, -g.delta.y / config_.pxPerSlice);
     case Gesture::Kind::Wheel:
         return page(axis, wheelSlices_, g.wheel);
     case Gesture::Kind::Pinch:
-        break;
+        // Two fingers dragging together page, whatever a one-finger drag does.
+        if (g.id != pinchId_) {
+            pinchId_ = g.id;
+            pinchSlices_ = 0.0;
+        }
+        return page(axis, pinchSlices_, -g.delta.y / config_.pxPerSlice);
     }
     return {};
+}
+
+std::vector<Action> Interaction::paint(const Gesture& g, const SliceView& view,
+                                       const workflow::Status& status) {
+    Stroke& s = *stroke_;
+    const std::optional<glm::dvec3> voxel = voxelAtScreen(view, g.position);
+    // Beside the scan the brush lifts; the path goes on where the finger comes back. Within the
+    // scan's outer half voxel the point moves onto the nearest voxel centre the workflow takes.
+    if (voxel && insideScan(*voxel, status.scan.dims)) {
+        const glm::dvec3 p = glm::clamp(*voxel, glm::dvec3(0.0), glm::dvec3(status.scan.dims - 1));
+        if (s.points.empty() || glm::length(p - s.points.back()) >= kMinPointStep) {
+            s.points.push_back(p);
+            s.screen.push_back(g.position);
+        }
+    }
+    std::vector<Action> out;
+    if (g.lifted || s.points.size() >= model::kMaxStrokePoints) {
+        if (!s.points.empty()) {
+            out.emplace_back(model::PaintStroke{s.mode, s.points, 0.0});
+        }
+        if (g.lifted) {
+            stroke_.reset();
+        } else {
+            // A scribble longer than one stroke goes on as the next, from where this one ended.
+            s.points = {s.points.back()};
+            s.screen = {s.screen.back()};
+        }
+    }
+    return out;
+}
+
+const std::vector<glm::dvec2>& Interaction::strokePath() const {
+    static const std::vector<glm::dvec2> kNone;
+    return stroke_ ? stroke_->screen : kNone;
+}
+
+std::optional<model::StrokeMode> Interaction::strokeMode() const {
+    return stroke_ ? std::optional(stroke_->mode) : std::nullopt;
 }
 
 std::vector<Action> Interaction::onView3d(const Gesture& g) {

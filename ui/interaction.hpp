@@ -4,6 +4,11 @@
 // status and the slice views as drawn -> workflow actions. The workflow decides whether an
 // action applies; this only names the operator's intent (a tap on a slice while seeding is a
 // seed at the voxel under the finger). Taps on the panel belong to ImGui, not here.
+// A one-finger drag on a slice paints where a tap would place a sphere (add, erase or outside
+// mode): the path is collected while the finger moves and sent as ONE model::PaintStroke when
+// it lifts, so the stroke is one undo step, one audit record and one retraining of classify
+// (retraining per piece would stall every frame of the drag); a second finger landing cancels
+// it. Elsewhere (inspect's probing, review) a one-finger drag pages; two fingers page always.
 #include "model/action.hpp"
 #include "ui/gestures.hpp"
 #include "ui/layout.hpp"
@@ -11,6 +16,7 @@
 #include "ui/slice_mapping.hpp"
 #include "workflow/status.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace steerseg::ui {
@@ -31,7 +37,20 @@ class Interaction {
     std::vector<model::Action> onGesture(const Gesture& gesture, const ScreenState& screen,
                                          const workflow::Status& status);
 
+    // The stroke being painted, in screen pixels as the finger went (empty when none), for the
+    // screen to draw under the finger until it lifts; and its mode.
+    [[nodiscard]] const std::vector<glm::dvec2>& strokePath() const;
+    [[nodiscard]] std::optional<model::StrokeMode> strokeMode() const;
+
   private:
+    struct Stroke {
+        int id = -1; // the drag's
+        model::StrokeMode mode = model::StrokeMode::Add;
+        std::vector<glm::dvec3> points; // voxels, within the scan
+        std::vector<glm::dvec2> screen;
+    };
+    std::vector<model::Action> paint(const Gesture& g, const SliceView& view,
+                                     const workflow::Status& status);
     std::vector<model::Action> onSlice(const Gesture& g, const SliceView& view,
                                        model::SliceAxis axis, const workflow::Status& status);
     std::vector<model::Action> onView3d(const Gesture& g);
@@ -42,6 +61,9 @@ class Interaction {
     int dragId_ = -1; // the drag whose paging remainder `dragSlices_` holds
     double dragSlices_ = 0.0;
     double wheelSlices_ = 0.0; // fractional detents (touchpads) carried between events
+    int pinchId_ = -1;         // the two-finger drag whose paging remainder `pinchSlices_` holds
+    double pinchSlices_ = 0.0;
+    std::optional<Stroke> stroke_;
 };
 
 } // namespace steerseg::ui

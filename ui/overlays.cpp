@@ -42,4 +42,27 @@ void drawViewCaptions(const ImGuiLayer& layer, const ScreenState& screen,
     }
 }
 
+void drawStrokePath(const ImGuiLayer& layer, const std::vector<glm::dvec2>& path,
+                    model::StrokeMode mode) {
+    if (path.empty()) {
+        return;
+    }
+    ImU32 colour = IM_COL32(80, 220, 80, 200); // add: the seeds' green
+    if (mode == model::StrokeMode::Erase) {
+        colour = IM_COL32(235, 70, 70, 200);
+    } else if (mode == model::StrokeMode::Outside) {
+        colour = IM_COL32(80, 150, 255, 200);
+    }
+    std::vector<ImVec2> points;
+    points.reserve(path.size());
+    for (const glm::dvec2& p : path) {
+        points.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
+    }
+    const auto width = static_cast<float>(0.12 * layer.touchPx());
+    ImDrawList* list = ImGui::GetForegroundDrawList();
+    list->AddPolyline(points.data(), static_cast<int>(points.size()), colour, ImDrawFlags_None,
+                      width);
+    list->AddCircleFilled(points.back(), width, colour);
+}
+
 } // namespace steerseg::ui

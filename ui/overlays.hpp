@@ -1,14 +1,23 @@
 #pragma once
 
-// Captions over the views ("3D", "Axial  slice 41/80", "Coronal — speed  12/80"), drawn with
-// ImGui's foreground draw list between ImGuiLayer::beginFrame and endFrame.
+// Captions over the views ("3D", "Axial  slice 41/80", "Coronal — speed  12/80") and the path
+// of a stroke being painted, drawn with ImGui's foreground draw list between
+// ImGuiLayer::beginFrame and endFrame.
 #include "ui/imgui_layer.hpp"
 #include "ui/screen_state.hpp"
 #include "workflow/status.hpp"
+
+#include <glm/glm.hpp>
+#include <vector>
 
 namespace steerseg::ui {
 
 void drawViewCaptions(const ImGuiLayer& layer, const ScreenState& screen,
                       const workflow::Status& status);
+
+// The finger's path while a stroke is painted (Interaction::strokePath), in the mode's colour,
+// so the operator sees the stroke before it lifts and is applied.
+void drawStrokePath(const ImGuiLayer& layer, const std::vector<glm::dvec2>& path,
+                    model::StrokeMode mode);
 
 } // namespace steerseg::ui

@@ -124,16 +124,22 @@ void addSpeed(const workflow::Status& st, PanelModel& m) {
     const std::size_t inside = st.insideExamples.size();
     const std::size_t outside = st.outsideExamples.size();
     m.examples = std::to_string(inside) + " inside, " + std::to_string(outside) + " outside";
+    const std::size_t paintedIn = st.paintedInside.size();
+    const std::size_t paintedOut = st.paintedOutside.size();
+    if (paintedIn + paintedOut > 0) {
+        m.examples += "; painted " + std::to_string(paintedIn) + " inside, " +
+                      std::to_string(paintedOut) + " outside spheres";
+    }
     m.exampleTools.push_back({st.outsideMode ? "Outside: on" : "Outside: off",
                               model::SetOutsideMode{!st.outsideMode}, st.outsideMode});
     m.exampleTools.push_back({"Clear examples", model::ClearExamples{}, false,
                               st.allowed.contains(model::ActionKind::ClearExamples)});
     if (st.speedInForce != model::SpeedKind::Classify) {
         std::string needs;
-        if (inside == 0) {
+        if (inside + paintedIn == 0) {
             needs = "an inside example (a probe or a seed)";
         }
-        if (outside == 0) {
+        if (outside + paintedOut == 0) {
             needs += std::string(needs.empty() ? "" : " and ") + "an outside example";
         }
         m.speedNote = "Classify needs " + needs + "; " +

@@ -47,6 +47,9 @@ std::vector<model::Action> TouchUi::drawFrame(const glm::ivec2& screenSize, doub
         out.push_back(std::move(a));
     }
     drawViewCaptions(layer_, screen, status);
+    if (const std::optional<model::StrokeMode> mode = interaction_.strokeMode()) {
+        drawStrokePath(layer_, interaction_.strokePath(), *mode);
+    }
     promptButtons_.clear();
     if (prompt_) {
         PromptFrame drawn = drawPrompt(layer_, *prompt_, screen.layout.panel);

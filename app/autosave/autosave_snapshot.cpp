@@ -69,7 +69,8 @@ nlohmann::json spheres(const std::vector<model::Sphere>& list) {
     return out;
 }
 
-std::vector<model::Sphere> readSpheres(const nlohmann::json& params, const char* key) {
+std::vector<model::Sphere> readSpheres(const nlohmann::json& params, const char* key,
+                                       std::size_t most = model::kMaxExamples) {
     std::vector<model::Sphere> out;
     if (!params.contains(key)) {
         return out;
@@ -78,7 +79,7 @@ std::vector<model::Sphere> readSpheres(const nlohmann::json& params, const char*
         out.push_back({{e.at(0).get<float>(), e.at(1).get<float>(), e.at(2).get<float>()},
                        e.at(3).get<float>()});
     }
-    if (out.size() > model::kMaxExamples) {
+    if (out.size() > most) {
         throw AutosaveFormatError(std::string("more ") + key + " examples than a session keeps");
     }
     return out;
@@ -102,7 +103,9 @@ nlohmann::json metadata(const AutosaveSnapshot& s) {
                           {"speed", model::speedKindName(s.params.speed.kind)},
                           {"speed_fallback", model::speedKindName(s.params.fallback)},
                           {"inside", spheres(s.params.speed.inside)},
-                          {"outside", spheres(s.params.speed.outside)}};
+                          {"outside", spheres(s.params.speed.outside)},
+                          {"painted_inside", spheres(s.params.speed.paintedInside)},
+                          {"painted_outside", spheres(s.params.speed.paintedOutside)}};
     for (int i = 0; i < model::kParamCount; ++i) {
         const auto p = static_cast<model::Param>(i);
         params[std::string(model::paramName(p))] = s.params.values[workflow::indexOf(p)];
@@ -168,6 +171,11 @@ void readMetadata(const nlohmann::json& j, AutosaveSnapshot& s) {
     s.params.fallback = readSpeed(params, "speed_fallback");
     s.params.speed.inside = readSpheres(params, "inside");
     s.params.speed.outside = readSpheres(params, "outside");
+    // Snapshots from before painted strokes have none.
+    s.params.speed.paintedInside =
+        readSpheres(params, "painted_inside", workflow::kMaxPaintedExamples);
+    s.params.speed.paintedOutside =
+        readSpheres(params, "painted_outside", workflow::kMaxPaintedExamples);
     for (int i = 0; i < model::kParamCount; ++i) {
         const auto p = static_cast<model::Param>(i);
         s.params.values[workflow::indexOf(p)] =

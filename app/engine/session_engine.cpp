@@ -264,8 +264,13 @@ void SessionEngine::setSpeed(const workflow::SpeedChoice& choice) {
         settings = edgeSettings();
     }
     settings.kind = choice.kind;
+    // The classifier samples from the union of a class's spheres: taps and strokes alike.
     settings.inside = choice.inside;
+    settings.inside.insert(settings.inside.end(), choice.paintedInside.begin(),
+                           choice.paintedInside.end());
     settings.outside = choice.outside;
+    settings.outside.insert(settings.outside.end(), choice.paintedOutside.begin(),
+                            choice.paintedOutside.end());
     // Preprocessing and training run here, on the frame loop (a blocking step: docs/speed.md).
     s.setSpeed(settings);
     changed();

@@ -11,6 +11,8 @@ namespace steerseg::model {
 namespace {
 
 constexpr std::array<std::string_view, kParamCount> kParamNames{"T", "eps", "alpha", "radius"};
+// In StrokeMode's order.
+constexpr std::array<std::string_view, 3> kStrokeModeNames{"add", "erase", "outside"};
 
 // Knobs and keys deliver detents; these turn one detent into the view's own units.
 constexpr double kRotateDegreesPerStep = 5.0;
@@ -60,6 +62,8 @@ template <class T> constexpr std::string_view nameOf() {
         return "clear_examples";
     } else if constexpr (std::is_same_v<T, SetOutsideMode>) {
         return "set_outside_mode";
+    } else if constexpr (std::is_same_v<T, PaintStroke>) {
+        return "paint_stroke";
     } else if constexpr (std::is_same_v<T, Run>) {
         return "run";
     } else if constexpr (std::is_same_v<T, Pause>) {
@@ -234,6 +238,19 @@ std::string_view sliceAxisName(SliceAxis axis) {
     return "unknown";
 }
 
+std::string_view strokeModeName(StrokeMode mode) {
+    const auto i = static_cast<std::size_t>(mode);
+    return i < kStrokeModeNames.size() ? kStrokeModeNames[i] : std::string_view("unknown");
+}
+
+std::optional<StrokeMode> strokeModeFromName(std::string_view name) {
+    const auto* at = std::find(kStrokeModeNames.begin(), kStrokeModeNames.end(), name);
+    if (at == kStrokeModeNames.end()) {
+        return std::nullopt;
+    }
+    return static_cast<StrokeMode>(at - kStrokeModeNames.begin());
+}
+
 std::string_view actionName(const Action& action) {
     return std::visit([](const auto& a) { return nameOf<std::decay_t<decltype(a)>>(); }, action);
 }
@@ -259,6 +276,7 @@ static_assert(std::is_same_v<TypeOf<ActionKind::SetSpeed>, SetSpeed>);
 static_assert(std::is_same_v<TypeOf<ActionKind::MarkOutside>, MarkOutside>);
 static_assert(std::is_same_v<TypeOf<ActionKind::ClearExamples>, ClearExamples>);
 static_assert(std::is_same_v<TypeOf<ActionKind::SetOutsideMode>, SetOutsideMode>);
+static_assert(std::is_same_v<TypeOf<ActionKind::PaintStroke>, PaintStroke>);
 static_assert(std::is_same_v<TypeOf<ActionKind::Run>, Run>);
 static_assert(std::is_same_v<TypeOf<ActionKind::Pause>, Pause>);
 static_assert(std::is_same_v<TypeOf<ActionKind::ToggleRun>, ToggleRun>);

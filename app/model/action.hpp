@@ -101,6 +101,20 @@ struct SetOutsideMode { // a tap on a slice marks an outside example in outside 
     bool outside = false;
 };
 inline constexpr std::size_t kMaxExamples = 6; // three probes and three seeds, say
+// A drag on a slice in add, erase or outside mode (docs/ui.md): the brush along the finger's
+// path, as ITK-SNAP's, one undo step for the whole stroke. Add seeds and teaches classify inside,
+// erase cuts, outside teaches classify outside; the classifier learns from every painted voxel
+// (sampled), not only from the newest kMaxExamples taps. Points are voxel-index centres in the
+// order the finger passed them; the workflow fills the gaps between successive ones.
+enum class StrokeMode { Add, Erase, Outside };
+std::string_view strokeModeName(StrokeMode mode); // "add", "erase", "outside"
+std::optional<StrokeMode> strokeModeFromName(std::string_view name);
+struct PaintStroke {
+    StrokeMode mode = StrokeMode::Add;
+    std::vector<glm::dvec3> points;
+    double radius = 0.0; // voxels; <= 0: the brush radius (Param::Radius)
+};
+inline constexpr std::size_t kMaxStrokePoints = 4096; // the screen sends longer drags in pieces
 struct Run {};
 struct Pause {};
 struct ToggleRun {}; // run if stopped, pause if running (a PowerMate press, the space bar)
@@ -152,9 +166,9 @@ struct Quit {};
 using Action =
     std::variant<LoadScan, Probe, ApplyPreset, SetParam, NudgeParam, NudgeSelected, SelectParam,
                  CycleParam, SetWindow, AddSeed, Erase, SetEraseMode, SetSpeed, MarkOutside,
-                 ClearExamples, SetOutsideMode, Run, Pause, ToggleRun, Finish, Resume, Export, Undo,
-                 Redo, Restart, Proceed, Back, Dismiss, RotateView, ZoomView, PageSlice, SetSlice,
-                 ShowSlices, Correct, Quit>;
+                 ClearExamples, SetOutsideMode, PaintStroke, Run, Pause, ToggleRun, Finish, Resume,
+                 Export, Undo, Redo, Restart, Proceed, Back, Dismiss, RotateView, ZoomView,
+                 PageSlice, SetSlice, ShowSlices, Correct, Quit>;
 
 // "load_scan", "probe", ... (snake_case of the type): the audit log's and scripts' names.
 std::string_view actionName(const Action& action);
@@ -178,6 +192,7 @@ enum class ActionKind {
     MarkOutside,
     ClearExamples,
     SetOutsideMode,
+    PaintStroke,
     Run,
     Pause,
     ToggleRun,

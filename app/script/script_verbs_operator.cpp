@@ -2,6 +2,9 @@
 #include "script/script_verbs.hpp"
 #include "script/script_words.hpp"
 
+#include <optional>
+#include <string>
+
 namespace steerseg::script::detail {
 
 namespace {
@@ -65,6 +68,31 @@ StepKind click(Words& w) {
     }
     w.finish("click I J K +|- [RADIUS_VOXELS]");
     return actionStep(c);
+}
+
+// A painted stroke through the given voxels: what a drag on a slice sends (docs/ui.md).
+StepKind stroke(Words& w) {
+    const char* usage = "stroke add|erase|outside RADIUS|brush I J K [I J K ...]";
+    const std::string name = w.text("add, erase or outside");
+    const std::optional<model::StrokeMode> mode = model::strokeModeFromName(name);
+    if (!mode) {
+        throw LineError("stroke '" + name +
+                        "': give add, erase or outside (usage: " + std::string(usage) + ")");
+    }
+    model::PaintStroke p;
+    p.mode = *mode;
+    if (!w.accept("brush")) {
+        p.radius = w.number("the radius (voxels) or brush", 0.1, 10000.0);
+    }
+    do {
+        if (p.points.size() == model::kMaxStrokePoints) {
+            throw LineError("a stroke of more than " + std::to_string(model::kMaxStrokePoints) +
+                            " points: split it into several");
+        }
+        p.points.push_back(voxelWords(w));
+    } while (!w.empty());
+    w.finish(usage);
+    return actionStep(std::move(p));
 }
 
 StepKind eraseMode(Words& w) {
@@ -227,6 +255,7 @@ void addOperatorVerbs(VerbTable& table) {
         {"erase", sphere<model::Erase>("erase I J K [RADIUS_VOXELS]")},
         {"erase_mode", eraseMode},
         {"click", click},
+        {"stroke", stroke},
         {"speed", speedVerb},
         {"outside", outside},
         {"outside_mode", outsideMode},

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace steerseg::speed {
 
@@ -37,11 +39,13 @@ ExampleVoxels exampleVoxels(std::span<const Example> examples, glm::ivec3 dims,
         throw std::invalid_argument("classifier speed: empty scan " + dimsText(dims) +
                                     " or no samples allowed");
     }
-    ExampleVoxels result;
-    SplitMix rng(seed);
-    for (std::size_t s = 0; s < examples.size(); ++s) {
-        const Example& e = examples[s];
-        // The sphere's box clipped to the scan, in double so that a huge radius cannot overflow.
+    // Each sphere's box clipped to the scan, in double so that a huge radius cannot overflow;
+    // empty boxes (hi < lo) for spheres beside the scan.
+    std::vector<std::pair<glm::ivec3, glm::ivec3>> boxes;
+    boxes.reserve(examples.size());
+    glm::ivec3 unionLo = dims;
+    glm::ivec3 unionHi(-1);
+    for (const Example& e : examples) {
         glm::ivec3 lo;
         glm::ivec3 hi;
         for (int a = 0; a < 3; ++a) {
@@ -52,17 +56,40 @@ ExampleVoxels exampleVoxels(std::span<const Example> examples, glm::ivec3 dims,
             hi[a] = static_cast<int>(
                 std::clamp(std::floor(c + r), -1.0, static_cast<double>(dims[a] - 1)));
         }
+        boxes.emplace_back(lo, hi);
+        if (glm::all(glm::lessThanEqual(lo, hi))) {
+            unionLo = glm::min(unionLo, lo);
+            unionHi = glm::max(unionHi, hi);
+        }
+    }
+    // Overlapping spheres: a voxel counts for the first sphere holding it. One bit per voxel of
+    // the spheres' common box, so the cost follows their volume however many there are (a
+    // painted stroke brings thousands).
+    const glm::ivec3 extent = glm::max(unionHi - unionLo + 1, glm::ivec3(0));
+    std::vector<bool> seen(static_cast<std::size_t>(extent.x) * static_cast<std::size_t>(extent.y) *
+                           static_cast<std::size_t>(extent.z));
+    ExampleVoxels result;
+    SplitMix rng(seed);
+    for (std::size_t s = 0; s < examples.size(); ++s) {
+        const Example& e = examples[s];
+        const auto [lo, hi] = boxes[s];
         for (int k = lo.z; k <= hi.z; ++k) {
             for (int j = lo.y; j <= hi.y; ++j) {
                 for (int i = lo.x; i <= hi.x; ++i) {
                     const glm::ivec3 v(i, j, k);
-                    // Overlapping spheres: a voxel counts for the first sphere holding it.
-                    if (!contains(e, v) ||
-                        std::any_of(examples.begin(),
-                                    examples.begin() + static_cast<std::ptrdiff_t>(s),
-                                    [&](const Example& earlier) { return contains(earlier, v); })) {
+                    if (!contains(e, v)) {
                         continue;
                     }
+                    const glm::ivec3 d = v - unionLo;
+                    const std::size_t bit =
+                        static_cast<std::size_t>(d.x) +
+                        static_cast<std::size_t>(extent.x) *
+                            (static_cast<std::size_t>(d.y) +
+                             static_cast<std::size_t>(extent.y) * static_cast<std::size_t>(d.z));
+                    if (seen[bit]) {
+                        continue;
+                    }
+                    seen[bit] = true;
                     if (result.voxels.size() < maxSamples) {
                         result.voxels.push_back(v);
                     } else {

@@ -24,7 +24,9 @@ struct ExampleVoxels {
 
 // The voxels of the scan inside any of `examples` (each counted once), subsampled without
 // replacement to at most `maxSamples` by a seeded reservoir, so the choice is spread over every
-// sphere and the same for a seed. `what` ("inside", "outside") names the class in messages.
+// sphere and the same for a seed. The cost follows the spheres' volume, not their number
+// squared: a painted stroke brings thousands of overlapping dabs. `what` ("inside", "outside")
+// names the class in messages.
 // Throws std::invalid_argument for no examples, a centre or radius that is not finite, a
 // negative radius, or examples that cover no voxel of the scan.
 ExampleVoxels exampleVoxels(std::span<const Example> examples, glm::ivec3 dims,

@@ -3,6 +3,7 @@
 #include "model/speed_kind.hpp"
 #include "workflow/utc_time.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -68,6 +69,21 @@ nlohmann::json values(const model::MarkOutside& a) {
 }
 nlohmann::json values(const model::SetOutsideMode& a) {
     return {{"outside", a.outside}};
+}
+// A stroke's path, evenly thinned to at most this many points (the first and the last kept): a
+// long scribble must not make a line of the log megabytes long.
+constexpr std::size_t kLoggedStrokePoints = 256;
+nlohmann::json values(const model::PaintStroke& a) {
+    nlohmann::json points = nlohmann::json::array();
+    const std::size_t n = a.points.size();
+    const std::size_t logged = std::min(n, kLoggedStrokePoints);
+    for (std::size_t i = 0; i < logged; ++i) {
+        points.push_back(vec(a.points[logged < 2 ? i : i * (n - 1) / (logged - 1)]));
+    }
+    return {{"mode", model::strokeModeName(a.mode)},
+            {"radius", a.radius},
+            {"point_count", n},
+            {"points", points}};
 }
 nlohmann::json values(const model::Export& a) {
     return {{"path", a.path}};

@@ -7,6 +7,7 @@
 #include "model/solver_types.hpp"
 #include "model/speed_kind.hpp" // the enum only: the workflow links no speed code
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -41,14 +42,24 @@ struct ProbeResult {
 
 // The data term the engine should run (docs/speed.md). Threshold and Edge read T, eps and alpha
 // (setParams); Classify reads alpha and is trained on the examples, spheres in voxels: inside
-// from the operator's probes, outside from the outside marks. The workflow passes examples only
-// to Classify, and only when it has both kinds.
+// from the operator's probes, outside from the outside marks, and the dabs of painted strokes
+// (model::PaintStroke), every one of which counts where taps count only as the newest
+// kMaxExamples. The classifier samples its training voxels from the union of a class's spheres.
+// The workflow passes examples only to Classify, and only when it has both kinds.
 struct SpeedChoice {
     model::SpeedKind kind = model::SpeedKind::Threshold;
     std::vector<model::Sphere> inside;
     std::vector<model::Sphere> outside;
+    // `= {}`: a choice written as {kind, inside, outside} (the tapped examples only) stays valid.
+    std::vector<model::Sphere> paintedInside = {}; // at most kMaxPaintedExamples, oldest first
+    std::vector<model::Sphere> paintedOutside = {};
     bool operator==(const SpeedChoice& other) const;
+    [[nodiscard]] bool hasInside() const { return !inside.empty() || !paintedInside.empty(); }
+    [[nodiscard]] bool hasOutside() const { return !outside.empty() || !paintedOutside.empty(); }
 };
+// Dabs of painted strokes kept per class: a long session's strokes stay bounded in memory (and in
+// every undo entry's copy of the parameters); the classifier samples voxels from them anyway.
+inline constexpr std::size_t kMaxPaintedExamples = 4096;
 
 inline bool SpeedChoice::operator==(const SpeedChoice& other) const {
     const auto same = [](const std::vector<model::Sphere>& a, const std::vector<model::Sphere>& b) {
@@ -62,7 +73,8 @@ inline bool SpeedChoice::operator==(const SpeedChoice& other) const {
         }
         return true;
     };
-    return kind == other.kind && same(inside, other.inside) && same(outside, other.outside);
+    return kind == other.kind && same(inside, other.inside) && same(outside, other.outside) &&
+           same(paintedInside, other.paintedInside) && same(paintedOutside, other.paintedOutside);
 }
 
 // A copy of the level set that undo can go back to.

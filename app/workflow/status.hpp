@@ -54,6 +54,9 @@ struct Status {
     model::SpeedKind speedInForce = model::SpeedKind::Threshold;
     std::vector<model::Sphere> insideExamples; // voxels, oldest first (at most kMaxExamples)
     std::vector<model::Sphere> outsideExamples;
+    // The dabs of painted strokes (model::PaintStroke), oldest first: every one trains classify.
+    std::vector<model::Sphere> paintedInside;
+    std::vector<model::Sphere> paintedOutside;
     bool hasLevelSet = false;
     bool unexported = false; // the level set changed since its last export (a load must wait)
     // What the workflow would accept now, by the transition table (transition_table.hpp) and

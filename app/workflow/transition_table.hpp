@@ -50,7 +50,8 @@ struct Facts {
 // The same facts as a status shows them (a status built by hand, a test's).
 inline Facts factsOf(const Status& status) {
     return {status.hasLevelSet, status.unexported, status.canUndo, status.canRedo,
-            !status.insideExamples.empty() || !status.outsideExamples.empty()};
+            !status.insideExamples.empty() || !status.outsideExamples.empty() ||
+                !status.paintedInside.empty() || !status.paintedOutside.empty()};
 }
 
 enum class Guard { Always, Never, LevelSet, NoUnexportedWork, CanUndo, CanRedo, Examples };
@@ -121,7 +122,7 @@ constexpr model::ActionKinds with(model::ActionKinds kinds, model::ActionKinds m
 // review and done refuse.
 inline constexpr model::ActionKinds kSteerAll = with(kSteer, {K::ClearExamples});
 inline constexpr model::ActionKinds kExportedRefused =
-    with(kSteerAll, {K::AddSeed, K::Erase, K::Correct});
+    with(kSteerAll, {K::AddSeed, K::Erase, K::PaintStroke, K::Correct});
 
 inline constexpr std::string_view kNoLevelSetToRun = "no level set to evolve: add a seed first";
 inline constexpr std::string_view kNothingToExport = "nothing to export: add a seed first";
@@ -145,11 +146,15 @@ inline constexpr std::array kRules{
     Rule{{S::Seeding, S::Evolving, S::Paused}, {K::AddSeed, K::Erase}, Guard::Always, std::nullopt,
          {}, "evolving: an erase that empties the level set pauses"},
     Rule{{S::Inspect}, {K::Erase}, Guard::Never, std::nullopt, "place a seed before erasing"},
-    Rule{{S::Review}, {K::AddSeed, K::Erase, K::Correct}, Guard::Never, std::nullopt,
+    Rule{{S::Review}, {K::AddSeed, K::Erase, K::PaintStroke, K::Correct}, Guard::Never, std::nullopt,
          "go back to steering to edit the surface"},
     Rule{{S::Inspect, S::Seeding, S::Paused}, {K::Correct}, Guard::Always, S::Evolving, {},
          "the first probes and seeds; an erase that leaves nothing stays"},
     Rule{{S::Evolving}, {K::Correct}, Guard::Always, std::nullopt, {}, "from the current surface"},
+    // A stroke is the brush along a path in the mode it names; its own code refuses what that
+    // mode's sphere would (an erase with nothing to erase).
+    Rule{kSteering, {K::PaintStroke}, Guard::Always, std::nullopt, {},
+         "add from inspect goes to seeding; evolving: an erase that empties the level set pauses"},
     // The run.
     Rule{{S::Seeding, S::Paused}, {K::Run, K::ToggleRun}, Guard::LevelSet, S::Evolving,
          kNoLevelSetToRun},

@@ -159,8 +159,7 @@ bool Workflow::unexportedWork() const {
 
 Facts Workflow::facts() const {
     return {status_.hasLevelSet, unexportedWork(), undo_.undoTop() != nullptr,
-            undo_.redoTop() != nullptr,
-            !params_.speed.inside.empty() || !params_.speed.outside.empty()};
+            undo_.redoTop() != nullptr, params_.speed.hasInside() || params_.speed.hasOutside()};
 }
 
 void Workflow::refreshAllowed() {
@@ -216,6 +215,8 @@ void Workflow::forgetScan() {
     status_.outsideMode = false;
     status_.insideExamples.clear(); // the next scan's examples start with its first probe
     status_.outsideExamples.clear();
+    status_.paintedInside.clear();
+    status_.paintedOutside.clear();
     status_.view = ViewState{};
 }
 

@@ -93,6 +93,7 @@ class Workflow {
     Outcome on(const model::MarkOutside& a);
     Outcome on(const model::ClearExamples& a);
     Outcome on(const model::SetOutsideMode& a);
+    Outcome on(const model::PaintStroke& a); // workflow_strokes.cpp
     Outcome on(const model::Run& a);
     Outcome on(const model::Pause& a);
     Outcome on(const model::ToggleRun& a);

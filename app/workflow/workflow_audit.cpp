@@ -81,6 +81,12 @@ nlohmann::json Workflow::resultOf(const model::Action& action) const {
                 r.update(levelSet());
                 r["barriers"] = engine_.barriers();
                 return r;
+            } else if constexpr (std::is_same_v<A, model::PaintStroke>) {
+                nlohmann::json r = levelSet();
+                r.update(speed());
+                r["painted_inside"] = status_.paintedInside.size();
+                r["painted_outside"] = status_.paintedOutside.size();
+                return r;
             } else if constexpr (isOneOf<A, model::Undo, model::Redo>) {
                 nlohmann::json r = params();
                 r.update(levelSet());

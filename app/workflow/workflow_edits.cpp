@@ -73,7 +73,13 @@ void Workflow::editLevelSet(std::string_view what, const std::function<void()>& 
     try {
         edit();
     } catch (...) {
+        // An edit of many spheres (a stroke) may fail part way: none of it stays.
+        try {
+            restoreMark(before);
+        } catch (...) {
+        }
         releaseSnapshot(before.snapshot);
+        refreshEngineStatus();
         throw;
     }
     LevelSetMark after;

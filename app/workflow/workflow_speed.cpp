@@ -16,12 +16,16 @@ namespace steerseg::workflow {
 SpeedChoice Workflow::speedFor(const ParamValues& values) {
     const SpeedChoice& chosen = values.speed;
     if (chosen.kind == model::SpeedKind::Classify) {
-        if (!chosen.inside.empty() && !chosen.outside.empty()) {
+        if (chosen.hasInside() && chosen.hasOutside()) {
             return chosen;
         }
-        return SpeedChoice{values.fallback, {}, {}};
+        SpeedChoice waiting;
+        waiting.kind = values.fallback;
+        return waiting;
     }
-    return SpeedChoice{chosen.kind, {}, {}};
+    SpeedChoice plain;
+    plain.kind = chosen.kind;
+    return plain;
 }
 
 std::optional<model::Sphere> Workflow::exampleAt(const glm::dvec3& voxel, double radiusMm) const {
@@ -49,6 +53,8 @@ void Workflow::showSpeed(const ParamValues& values, model::SpeedKind inForce) {
     status_.speedInForce = inForce;
     status_.insideExamples = values.speed.inside;
     status_.outsideExamples = values.speed.outside;
+    status_.paintedInside = values.speed.paintedInside;
+    status_.paintedOutside = values.speed.paintedOutside;
 }
 
 Workflow::Outcome Workflow::on(const model::SetSpeed& a) {
@@ -93,6 +99,8 @@ Workflow::Outcome Workflow::on(const model::ClearExamples&) {
     ParamValues next = params_;
     next.speed.inside.clear();
     next.speed.outside.clear();
+    next.speed.paintedInside.clear();
+    next.speed.paintedOutside.clear();
     Outcome out = changeParams(std::move(next), "clear_examples", std::nullopt);
     if (status_.speed == model::SpeedKind::Classify) {
         status_.message = "examples cleared: the " +

@@ -364,6 +364,31 @@ TEST(ScriptParse, EveryBadLineIsNamedOnce) {
         << errors;
 }
 
+TEST(ScriptParse, StrokeReplaysADrag) {
+    const auto add = action<model::PaintStroke>("stroke add 2.5 1 2 3 4 5 6 7 8 9");
+    EXPECT_EQ(add.mode, model::StrokeMode::Add);
+    EXPECT_DOUBLE_EQ(add.radius, 2.5);
+    EXPECT_EQ(add.points, (std::vector<glm::dvec3>{{1, 2, 3}, {4, 5, 6}, {7, 8, 9}}));
+    const auto erase = action<model::PaintStroke>("stroke erase brush 1 2 3");
+    EXPECT_EQ(erase.mode, model::StrokeMode::Erase);
+    EXPECT_DOUBLE_EQ(erase.radius, 0.0) << "the brush";
+    EXPECT_EQ(erase.points.size(), 1U);
+    EXPECT_EQ(action<model::PaintStroke>("stroke outside 3 0 0 0").mode,
+              model::StrokeMode::Outside);
+    const std::string errors = parseError("stroke paint 2 1 2 3\n"
+                                          "stroke add 2 1 2\n"
+                                          "stroke add brush\n"
+                                          "stroke add 0 1 2 3\n"
+                                          "stroke outside 2 1 2 nan\n");
+    for (const std::string e :
+         {"s.session:1: stroke 'paint': give add, erase or outside", "s.session:2: ",
+          "s.session:3: ", "s.session:4: the radius (voxels) or brush '0' is outside",
+          "s.session:5: the voxel's k must be a finite number, not 'nan'"}) {
+        EXPECT_NE(errors.find(e), std::string::npos) << "missing: " << e << "\nin:\n" << errors;
+    }
+    EXPECT_EQ(std::count(errors.begin(), errors.end(), '\n') + 1, 5) << errors;
+}
+
 TEST(ScriptParse, WholeFileProblems) {
     EXPECT_EQ(parseError("# only a comment\n\n"), "s.session: the script has no steps");
     EXPECT_EQ(parseError(std::string("run\0pause", 9)),

@@ -72,6 +72,41 @@ std::string message(const std::vector<Example>& examples) {
     return "accepted";
 }
 
+// A painted stroke's dabs: thousands of overlapping spheres along a path, partly beside the
+// scan. Every voxel of their union counts once, and the sample spreads over the whole path.
+TEST(SpeedExampleVoxels, ManyOverlappingDabsOfAStroke) {
+    constexpr glm::ivec3 big{64, 48, 8};
+    std::vector<Example> dabs;
+    for (int d = 0; d < 3000; ++d) {
+        const float t = static_cast<float>(d) / 3000.0F;
+        dabs.push_back(
+            {glm::vec3(-4.0F + 72.0F * t, 24.0F + 20.0F * std::sin(6.0F * t), 4.0F), 2.0F});
+    }
+    std::size_t union_ = 0;
+    for (int k = 0; k < big.z; ++k) {
+        for (int j = 0; j < big.y; ++j) {
+            for (int i = 0; i < big.x; ++i) {
+                const glm::vec3 v(static_cast<float>(i), static_cast<float>(j),
+                                  static_cast<float>(k));
+                union_ += std::any_of(dabs.begin(), dabs.end(), [&](const Example& e) {
+                    const glm::dvec3 d = glm::dvec3(v) - glm::dvec3(e.centre);
+                    return glm::dot(d, d) <= 4.0;
+                });
+            }
+        }
+    }
+    const ExampleVoxels got = exampleVoxels(dabs, big, 400, 7, "inside");
+    EXPECT_EQ(got.covered, union_);
+    EXPECT_EQ(got.voxels.size(), 400U);
+    std::vector<glm::ivec3> unique = got.voxels;
+    unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
+    EXPECT_EQ(unique.size(), got.voxels.size());
+    const auto [lo, hi] = std::minmax_element(got.voxels.begin(), got.voxels.end(),
+                                              [](glm::ivec3 a, glm::ivec3 b) { return a.x < b.x; });
+    EXPECT_LT(lo->x, 6) << "the stroke's start is sampled";
+    EXPECT_GT(hi->x, 57) << "and its end";
+}
+
 TEST(SpeedExampleVoxels, RefusesBadExamples) {
     EXPECT_EQ(message({}), "classifier speed: no inside examples");
     EXPECT_EQ(message({{glm::vec3(-10.0F), 3.0F}}),

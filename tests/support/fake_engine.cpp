@@ -199,13 +199,14 @@ void FakeEngine::setParams(const model::LevelSetParams& p) {
 void FakeEngine::setSpeed(const workflow::SpeedChoice& choice) {
     requireScan("setSpeed");
     const bool classify = choice.kind == model::SpeedKind::Classify;
-    if (classify && (choice.inside.empty() || choice.outside.empty())) {
+    if (classify && (!choice.hasInside() || !choice.hasOutside())) {
         misused("setSpeed classify without an example of each kind");
     }
-    if (!classify && (!choice.inside.empty() || !choice.outside.empty())) {
+    if (!classify && (choice.hasInside() || choice.hasOutside())) {
         misused("setSpeed with examples for a speed that learns nothing");
     }
-    for (const auto* list : {&choice.inside, &choice.outside}) {
+    for (const auto* list :
+         {&choice.inside, &choice.outside, &choice.paintedInside, &choice.paintedOutside}) {
         for (const model::Sphere& s : *list) {
             for (int a = 0; a < 3; ++a) {
                 if (!std::isfinite(s.centre[a]) || s.centre[a] < 0.0F ||

@@ -85,7 +85,31 @@ TEST(UiGestures, DragBeyondSlopReportsDeltas) {
     EXPECT_EQ(b[0].delta, glm::dvec2(-10, 18));
     EXPECT_EQ(b[0].id, a[0].id);
     EXPECT_TRUE(r.update(5.0).empty()) << "a drag never becomes a long press";
-    EXPECT_TRUE(r.feed(ev(Kind::PointerUp, 5.1, 90, 130)).empty());
+    EXPECT_FALSE(b[0].lifted);
+    // Lifting the finger ends the drag (a painted stroke is applied then), where it last was.
+    const auto up = r.feed(ev(Kind::PointerUp, 5.1, 90, 130));
+    ASSERT_EQ(up.size(), 1U);
+    EXPECT_EQ(up[0].kind, GK::Drag);
+    EXPECT_TRUE(up[0].lifted);
+    EXPECT_EQ(up[0].id, a[0].id);
+    EXPECT_EQ(up[0].delta, glm::dvec2(0, 0));
+    EXPECT_EQ(up[0].position, glm::dvec2(90, 130));
+}
+
+TEST(UiGestures, ADragJoinedByASecondFingerNeverLifts) {
+    ui::GestureRecognizer r(config());
+    r.feed(ev(Kind::PointerDown, 0.0, 100, 100, 0));
+    const auto drag = r.feed(ev(Kind::PointerMove, 0.02, 100, 130, 0));
+    ASSERT_EQ(drag.size(), 1U);
+    r.feed(ev(Kind::PointerDown, 0.05, 200, 130, 1));
+    const auto pinch = r.feed(ev(Kind::PointerMove, 0.06, 100, 150, 0));
+    ASSERT_EQ(pinch.size(), 1U);
+    EXPECT_EQ(pinch[0].kind, GK::Pinch);
+    EXPECT_NE(pinch[0].id, drag[0].id);
+    // Two fingers dragging together: the centre's motion, for paging a slice.
+    EXPECT_EQ(pinch[0].delta, glm::dvec2(0, 10));
+    EXPECT_TRUE(r.feed(ev(Kind::PointerUp, 0.1, 100, 150, 0)).empty());
+    EXPECT_TRUE(r.feed(ev(Kind::PointerUp, 0.1, 200, 130, 1)).empty());
 }
 
 TEST(UiGestures, PinchReportsScaleAndCentre) {

@@ -163,7 +163,7 @@ TEST(UiInteraction, TapBesideTheScanOrOnThePanelDoesNothing) {
                     .empty());
 }
 
-TEST(UiInteraction, VerticalDragOnASlicePages) {
+TEST(UiInteraction, VerticalDragOnASlicePagesWhereATapPlacesNoSphere) {
     ui::InteractionConfig config;
     config.pxPerSlice = 10.0;
     ui::Interaction in(config);
@@ -172,16 +172,135 @@ TEST(UiInteraction, VerticalDragOnASlicePages) {
     std::vector<Action> all;
     for (int i = 0; i < 7; ++i) {
         g.delta = {1.0, -5.0}; // up, 35 px in all
-        for (const Action& a : in.onGesture(g, s, status(State::Evolving))) {
+        for (const Action& a : in.onGesture(g, s, status(State::Review))) {
             all.push_back(a);
         }
     }
+    g.delta = {0.0, 0.0};
+    g.lifted = true;
+    EXPECT_TRUE(in.onGesture(g, s, status(State::Review)).empty());
     EXPECT_EQ(pagedBy(all, model::SliceAxis::Axial), 3);
     // A new drag starts from no remainder; down pages back, on the second view's axis.
     ui::Gesture down = gesture(ui::Gesture::Kind::Drag, centreOf(s.layout.slice2), 8);
     down.delta = {0.0, 25.0};
     EXPECT_EQ(pagedBy(in.onGesture(down, s, status(State::Inspect)), model::SliceAxis::Coronal),
               -2);
+}
+
+// A one-finger drag in `state` from `from` by `steps` moves of `step` px, then the lift.
+std::vector<Action> drag(ui::Interaction& in, const ui::ScreenState& s, const workflow::Status& st,
+                         glm::dvec2 from, glm::dvec2 step, int steps) {
+    static int id = 100; // each drag is a gesture of its own
+    std::vector<Action> out;
+    ui::Gesture g = gesture(ui::Gesture::Kind::Drag, from, ++id);
+    for (int i = 1; i <= steps; ++i) {
+        g.position = from + static_cast<double>(i) * step;
+        g.delta = step;
+        for (Action& a : in.onGesture(g, s, st)) {
+            out.push_back(std::move(a));
+        }
+        EXPECT_TRUE(out.empty()) << "nothing is painted before the finger lifts";
+    }
+    g.delta = {0.0, 0.0};
+    g.lifted = true;
+    for (Action& a : in.onGesture(g, s, st)) {
+        out.push_back(std::move(a));
+    }
+    return out;
+}
+
+TEST(UiInteraction, ADragPaintsOneStrokeWhenTheFingerLifts) {
+    ui::Interaction in;
+    const ui::ScreenState s = screen();
+    const glm::dvec2 from = centreOf(s.layout.slice1) - glm::dvec2(60.0, 0.0);
+    for (State state : {State::Seeding, State::Evolving, State::Paused}) {
+        const auto out = drag(in, s, status(state), from, {12.0, 3.0}, 10);
+        ASSERT_EQ(out.size(), 1U) << static_cast<int>(state);
+        const auto* stroke = std::get_if<model::PaintStroke>(&out[0]);
+        ASSERT_NE(stroke, nullptr);
+        EXPECT_EQ(stroke->mode, model::StrokeMode::Add);
+        EXPECT_LE(stroke->radius, 0.0) << "the brush radius";
+        ASSERT_EQ(stroke->points.size(), 11U) << "where it went down, and each move";
+        EXPECT_NEAR(glm::length(stroke->points.front() - *ui::voxelAtScreen(*s.slice1, from)), 0.0,
+                    1e-12);
+        const glm::dvec2 end = from + 10.0 * glm::dvec2(12.0, 3.0);
+        EXPECT_NEAR(glm::length(stroke->points.back() - *ui::voxelAtScreen(*s.slice1, end)), 0.0,
+                    1e-12);
+        for (const glm::dvec3& p : stroke->points) {
+            EXPECT_EQ(p.z, s.slice1->frame.slice) << "on the shown slice";
+        }
+        EXPECT_TRUE(in.strokePath().empty()) << "the stroke is over";
+    }
+    workflow::Status erasing = status(State::Paused);
+    erasing.eraseMode = true;
+    auto out = drag(in, s, erasing, from, {12.0, 0.0}, 3);
+    ASSERT_EQ(out.size(), 1U);
+    EXPECT_EQ(std::get<model::PaintStroke>(out[0]).mode, model::StrokeMode::Erase);
+    for (State state : {State::Inspect, State::Seeding}) {
+        workflow::Status outside = status(state);
+        outside.outsideMode = true;
+        out = drag(in, s, outside, from, {12.0, 0.0}, 3);
+        ASSERT_EQ(out.size(), 1U);
+        EXPECT_EQ(std::get<model::PaintStroke>(out[0]).mode, model::StrokeMode::Outside);
+    }
+}
+
+TEST(UiInteraction, TheStrokeIsDrawnWhileTheFingerIsDown) {
+    ui::Interaction in;
+    const ui::ScreenState s = screen();
+    const glm::dvec2 from = centreOf(s.layout.slice2);
+    ui::Gesture g = gesture(ui::Gesture::Kind::Drag, from, 3);
+    g.position = from + glm::dvec2(20.0, 0.0);
+    EXPECT_TRUE(in.onGesture(g, s, status(State::Paused)).empty());
+    EXPECT_EQ(in.strokePath(), (std::vector<glm::dvec2>{from, g.position}));
+    EXPECT_EQ(in.strokeMode(), model::StrokeMode::Add);
+}
+
+TEST(UiInteraction, ASecondFingerCancelsTheStrokeAndPages) {
+    ui::InteractionConfig config;
+    config.pxPerSlice = 10.0;
+    ui::Interaction in(config);
+    const ui::ScreenState s = screen();
+    const glm::dvec2 at = centreOf(s.layout.slice1);
+    ui::Gesture g = gesture(ui::Gesture::Kind::Drag, at, 4);
+    g.position = at + glm::dvec2(30.0, 0.0);
+    EXPECT_TRUE(in.onGesture(g, s, status(State::Seeding)).empty());
+    EXPECT_FALSE(in.strokePath().empty());
+    // The second finger: a pinch, whose centre's motion pages (two fingers page in every mode).
+    ui::Gesture pinch = gesture(ui::Gesture::Kind::Pinch, at, 5);
+    std::vector<Action> paged;
+    for (int i = 0; i < 3; ++i) {
+        pinch.delta = {0.0, -10.0};
+        for (Action& a : in.onGesture(pinch, s, status(State::Seeding))) {
+            paged.push_back(std::move(a));
+        }
+    }
+    EXPECT_TRUE(in.strokePath().empty()) << "nothing is painted";
+    EXPECT_EQ(pagedBy(paged, model::SliceAxis::Axial), 3);
+}
+
+TEST(UiInteraction, ALongScribbleIsSentInStrokesOfAtMostTheLimit) {
+    ui::Interaction in;
+    const ui::ScreenState s = screen();
+    const workflow::Status st = status(State::Paused);
+    const glm::dvec2 at = centreOf(s.layout.slice1) - glm::dvec2(60.0, 0.0);
+    std::vector<Action> out;
+    ui::Gesture g = gesture(ui::Gesture::Kind::Drag, at, 9);
+    for (std::size_t i = 1; i <= model::kMaxStrokePoints + 10; ++i) {
+        // Back and forth over 120 px: every move lands on another voxel.
+        g.position = at + glm::dvec2(i % 2 == 1 ? 120.0 : 0.0, 0.0);
+        for (Action& a : in.onGesture(g, s, st)) {
+            out.push_back(std::move(a));
+        }
+    }
+    ASSERT_EQ(out.size(), 1U) << "the first stroke went when it was full";
+    const auto& first = std::get<model::PaintStroke>(out[0]);
+    EXPECT_EQ(first.points.size(), model::kMaxStrokePoints);
+    g.lifted = true;
+    const auto rest = in.onGesture(g, s, st);
+    ASSERT_EQ(rest.size(), 1U);
+    const auto& second = std::get<model::PaintStroke>(rest[0]);
+    EXPECT_EQ(second.points.front(), first.points.back()) << "the next goes on where it ended";
 }
 
 TEST(UiInteraction, WheelOnASlicePagesAndCarriesFractions) {

@@ -229,6 +229,15 @@ TEST(UiPanelModel, ClassifyShowsItsExamplesAndTools) {
     m = modelOf(st);
     EXPECT_EQ(m.examples, "1 inside, 3 outside");
     EXPECT_TRUE(m.speedNote.empty()) << "the classifier runs";
+
+    // A painted stroke's spheres are examples too: only the outside one is missing.
+    st.insideExamples.clear();
+    st.outsideExamples.clear();
+    st.paintedInside.resize(40);
+    st.speedInForce = model::SpeedKind::Threshold;
+    m = modelOf(st);
+    EXPECT_EQ(m.examples, "0 inside, 0 outside; painted 40 inside, 0 outside spheres");
+    EXPECT_EQ(m.speedNote, "Classify needs an outside example; threshold runs until then.");
 }
 
 TEST(UiPanelModel, UndoGreyedWithNothingToUndo) {

@@ -62,7 +62,7 @@ class Generator {
 
     Action action() {
         // Weighted towards what an operator does most: steering, seeding, looking.
-        switch (integer(0, 46)) {
+        switch (integer(0, 47)) {
         case 0:
             return LoadScan{chance(0.05) ? "" : "scan.nii.gz"};
         case 1:
@@ -143,7 +143,17 @@ class Generator {
         case 44:
             return SetOutsideMode{chance(0.5)};
         case 45:
-        case 46:
+        case 46: {
+            model::PaintStroke stroke{
+                static_cast<model::StrokeMode>(chance(0.01) ? 7 : integer(0, 2)),
+                {},
+                number(-1.0, 5.0)};
+            for (int p = integer(chance(0.01) ? 0 : 1, 4); p > 0; --p) {
+                stroke.points.push_back(voxel());
+            }
+            return stroke;
+        }
+        case 47:
             return Correct{voxel(), chance(0.7), number(-1.0, 5.0)};
         default:
             return Run{};

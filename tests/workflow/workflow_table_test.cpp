@@ -129,6 +129,9 @@ Action sample(ActionKind kind) {
         return MarkOutside{{2.0, 2.0, 2.0}, 2.0};
     case ActionKind::SetOutsideMode:
         return SetOutsideMode{true};
+    case ActionKind::PaintStroke: // outside: a stroke no state refuses for its mode's sake
+        return model::PaintStroke{
+            model::StrokeMode::Outside, {{2.0, 2.0, 2.0}, {5.0, 2.0, 2.0}}, 1.0};
     case ActionKind::ShowSlices:
         return ShowSlices{SliceAxis::Sagittal, SliceAxis::Axial};
     case ActionKind::RotateView:
