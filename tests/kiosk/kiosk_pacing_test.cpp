@@ -1,6 +1,7 @@
 // The frame loop's pacing decisions, without a GPU: how many solver iterations fit a frame and
-// how a slow view is previewed and refined in bands.
+// how a slow view is previewed and refined in bands, and how the split follows the operator.
 #include "kiosk/iteration_budget.hpp"
+#include "kiosk/operator_pacing.hpp"
 #include "kiosk/view_refiner.hpp"
 
 #include <algorithm>
@@ -82,6 +83,73 @@ TEST(IterationBudget, ClampsAndIgnoresNonsense) {
     EXPECT_THROW(IterationBudget(1.0, 0.02, 1, 2), std::invalid_argument);
     EXPECT_THROW(IterationBudget(0.5, 0.0, 1, 2), std::invalid_argument);
     EXPECT_THROW(IterationBudget(0.5, 0.02, 3, 2), std::invalid_argument);
+}
+
+TEST(IterationBudget, ASliceFillsItsTimeAndGrowsNoFasterThanItDoubles) {
+    IterationBudget budget(0.5, 0.033, 1, 64);
+    EXPECT_EQ(budget.forSlice(0.25), 1); // nothing measured yet
+    budget.record(1, 0.002);
+    // 2 ms an iteration: a quarter second holds 125, reached by doubling from the last count.
+    std::vector<int> counts;
+    for (int n = 0; n < 10; ++n) {
+        counts.push_back(budget.forSlice(0.25));
+        budget.record(counts.back(), counts.back() * 0.002);
+    }
+    EXPECT_EQ(counts.front(), 2);
+    EXPECT_EQ(counts.back(), 125);
+    for (std::size_t n = 1; n < counts.size(); ++n) {
+        EXPECT_LE(counts[n], 2 * counts[n - 1]);
+    }
+    // Not bounded by the per-frame maximum (64): the operator is not waiting on the frame.
+    EXPECT_GT(budget.forSlice(0.25), 64);
+    EXPECT_EQ(budget.forSlice(0.0), 1);
+    IterationBudget fixed(0.5, 0.033, 8, 8);
+    fixed.record(8, 0.008);
+    EXPECT_EQ(fixed.forSlice(0.25), 8);
+}
+
+// Nobody touching anything: the solver's slices make up most of the time, with a preview
+// (and the panel) between them a few times a second; the first input turns the split back.
+TEST(OperatorPacing, QuietGivesTheSolverMostOfTheMachineAndInputTurnsItBack) {
+    kiosk::OperatorPacing pacing;
+    IterationBudget budget(0.5, 0.033, 1, 64);
+    budget.record(1, 0.004);
+    pacing.input(0.0);
+    double now = 0.0;
+    double solver = 0.0;
+    int frames = 0;
+    double last = 0.033;
+    const double drawing = 0.030; // a preview, the panel and the present
+    while (now < 10.0) {
+        const double slice = pacing.solverSlice(now);
+        const int n = slice > 0.0 ? budget.forSlice(slice) : budget.next(last);
+        budget.record(n, n * 0.004);
+        last = drawing + n * 0.004;
+        solver += n * 0.004;
+        now += last;
+        ++frames;
+    }
+    EXPECT_GT(solver / now, 0.8);
+    EXPECT_GT(frames / now, 3.0); // previews a few times a second
+    EXPECT_TRUE(pacing.quiet(now));
+    pacing.input(now);
+    EXPECT_FALSE(pacing.quiet(now + 0.1));
+    EXPECT_EQ(pacing.solverSlice(now + 0.1), 0.0);
+    EXPECT_TRUE(pacing.quiet(now + 0.6));
+}
+
+TEST(OperatorPacing, TilesGrowOnceQuietOrAwaitedAndTheScreenIsComposedWhenItChanges) {
+    kiosk::OperatorPacing pacing;
+    pacing.input(1.0);
+    EXPECT_DOUBLE_EQ(pacing.refineSeconds(1.1, 0.02, false), 0.02);
+    EXPECT_DOUBLE_EQ(pacing.refineSeconds(1.1, 0.02, true), 0.1);
+    EXPECT_DOUBLE_EQ(pacing.refineSeconds(2.0, 0.02, false), 0.1);
+    EXPECT_DOUBLE_EQ(pacing.refineSeconds(2.0, 0.5, false), 0.5);
+    EXPECT_TRUE(pacing.screenDue(2.0, false)); // never composed
+    EXPECT_FALSE(pacing.screenDue(2.1, false));
+    EXPECT_TRUE(pacing.screenDue(2.1, true));
+    EXPECT_FALSE(pacing.screenDue(2.3, false));
+    EXPECT_TRUE(pacing.screenDue(2.4, false)); // the interval is up
 }
 
 // A model of a software rasteriser: 20 microseconds per pixel.
