@@ -209,6 +209,33 @@ TEST(ViewRefiner, PreviewsFitTheFrameThenTilesCompleteTheFullPicture) {
     EXPECT_EQ(refiner.plan(full, frame).kind, ViewRefiner::Plan::Preview);
 }
 
+// The first preview pays for compiling the shader (seconds for a few thousand pixels); the
+// tiles after it, with a dispatch's fixed cost on top of the per-pixel one, must still grow to
+// fill their time within a few frames, not stay at 8x8 pixels (the refinement at a twentieth
+// of the renderer's speed the issue measured).
+TEST(ViewRefiner, TilesGrowToTheirTimeAfterASlowFirstPreview) {
+    ViewRefiner refiner(0.5);
+    const glm::ivec2 full(800, 600);
+    ViewRefiner::Plan p = refiner.plan(full, 0.02);
+    ASSERT_EQ(p.kind, ViewRefiner::Plan::Preview);
+    refiner.drawn(p, 5.0); // the compile
+    const double fixed = 0.003;
+    int frames = 0;
+    double total = 0.0;
+    while (!refiner.fullReady()) {
+        p = refiner.plan(full, 0.1);
+        ASSERT_EQ(p.kind, ViewRefiner::Plan::Tile);
+        const double spent = fixed + cost(p);
+        EXPECT_LE(spent, 0.2 + fixed); // at most twice its time
+        total += spent;
+        refiner.drawn(p, spent);
+        ASSERT_LT(++frames, 400) << "the tiles never grew";
+    }
+    // 800x600 at 20 us a pixel is 9.6 s: in tiles of about 0.1 s, the fixed costs a few %.
+    EXPECT_LT(frames, 170);
+    EXPECT_LT(total, 1.1 * kSecondsPerPixel * full.x * full.y);
+}
+
 TEST(ViewRefiner, AFastMachineDrawsTheFullPictureAsItsPreview) {
     ViewRefiner refiner(1.0);
     const glm::ivec2 full(1920, 1080);
