@@ -18,7 +18,7 @@ class OperatorPacing {
   public:
     struct Settings {
         double quietAfter = 0.5;
-        double solverSlice = 0.25;
+        double solverSlice = 0.5;
         double refineSlice = 0.1;
         double screenInterval = 0.25;
     };

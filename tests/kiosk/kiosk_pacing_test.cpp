@@ -130,7 +130,7 @@ TEST(OperatorPacing, QuietGivesTheSolverMostOfTheMachineAndInputTurnsItBack) {
         ++frames;
     }
     EXPECT_GT(solver / now, 0.8);
-    EXPECT_GT(frames / now, 3.0); // previews a few times a second
+    EXPECT_GT(frames / now, 1.5); // a preview or two a second
     EXPECT_TRUE(pacing.quiet(now));
     pacing.input(now);
     EXPECT_FALSE(pacing.quiet(now + 0.1));
