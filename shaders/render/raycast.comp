@@ -344,9 +344,10 @@ void main() {
             acc = vec4(colour, 1.0);
         } else {
             // A fixed per-pixel offset of the sample lattice (interleaved gradient noise) turns
-            // wood-grain aliasing into fine, deterministic noise.
-            // The same offset in every frame, so a still picture does not shimmer.
-            float lead = stepMm * fract(52.9829189 * fract(dot(vec2(pixel), vec2(0.06711056, 0.00583715))));
+            // wood-grain aliasing into fine noise, the same in every frame, so a still picture
+            // does not shimmer.
+            float ign = fract(dot(vec2(pixel), vec2(0.06711056, 0.00583715)));
+            float lead = stepMm * fract(52.9829189 * ign);
             float t = span.x + lead;
 #if HAS_SURFACE
             if (surfaceMode == 1 && roiMode == 0) {
