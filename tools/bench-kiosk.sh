@@ -33,7 +33,7 @@ while (($#)); do
     --sizes) sizes=${2:?--sizes needs WxH[,WxH...]}; shift ;;
     --out) out=${2:?--out needs a folder}; shift ;;
     --bin) bin=${2:?--bin needs the steerseg binary}; shift ;;
-    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
     *) echo "bench-kiosk: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
