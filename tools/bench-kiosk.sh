@@ -6,6 +6,13 @@
 # latency percentiles, solver iterations per second evolving, pixels per second drawn.
 # Writes bench-kiosk.md (the table) and bench-kiosk.json (the same figures and the kiosk's
 # --stats files) to the output folder.
+# Besides (not with --small), at the first size, ratios measured in the same run:
+# - untouched: the kiosk's iterations per second evolving with nobody touching anything
+#   (bench/kiosk/untouched.session, 10 s) over `steerseg segment`'s on the same scan, parameters
+#   and iteration count;
+# - still: the wait of a full-screen `frame` once still (bench/kiosk/still.session, the view
+#   turned and the frame asked for at once) over render_frame_bench drawing the same views
+#   (the 3D view with its surface and the two slices, at the kiosk's sizes) whole.
 #
 #   tools/bench-kiosk.sh [--small] [--sizes WxH[,WxH...]] [--out DIR] [--bin STEERSEG]
 #
@@ -26,7 +33,7 @@ while (($#)); do
     --sizes) sizes=${2:?--sizes needs WxH[,WxH...]}; shift ;;
     --out) out=${2:?--out needs a folder}; shift ;;
     --bin) bin=${2:?--bin needs the steerseg binary}; shift ;;
-    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
     *) echo "bench-kiosk: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
@@ -83,14 +90,42 @@ for s in "${size_list[@]}"; do
     exit 1
   fi
 done
+
+# The ratios (see the top): the kiosk and its parts on the same scan, in this run.
+ratios=""
+if ((!small)); then
+  s=${size_list[0]}
+  for name in untouched still; do
+    echo "bench-kiosk: $s: $bin kiosk --script bench/kiosk/$name.session" | tee -a "$log" >&2
+    if ! (cd "$out" && "$bin" kiosk --platform offscreen --script "$root/bench/kiosk/$name.session" \
+      --frames "$out/frames-$name" --size "$s" --stats "$out/stats-$name.json" --allow-root >>"$log" 2>&1); then
+      tail -n 20 "$log" >&2
+      echo "bench-kiosk: the kiosk failed on $name.session (log: $log)" >&2
+      exit 1
+    fi
+  done
+  n=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["iterations"])' "$out/stats-untouched.json")
+  echo "bench-kiosk: $bin segment, $n iterations" | tee -a "$log" >&2
+  "$bin" segment --input builtin:sample --seed 64,84,48,3 --T 420 --eps 150 --alpha 0.3 \
+    --iterations "$n" --output "$out/segment-untouched.nii.gz" --report "$out/segment-untouched.json" >>"$log" 2>&1
+  frame_bench=$(dirname "$bin")/bench/render_frame_bench
+  if [[ ! -x $frame_bench ]]; then
+    (cd "$root" && cmake --build --preset release --target render_frame_bench >&2)
+  fi
+  read -r w3 h3 ws hs < <(python3 -c 'import json,sys; v=json.load(open(sys.argv[1]))["view_sizes"]; print(*v[0], *v[1])' \
+    "$out/stats-still.json")
+  "$frame_bench" --frames 2 --size "${w3}x${h3}" --view 3d+surface >"$out/frame-bench-3d.txt" 2>>"$log"
+  "$frame_bench" --frames 2 --size "${ws}x${hs}" --view axial+contour >"$out/frame-bench-slice.txt" 2>>"$log"
+  ratios="$out/stats-untouched.json $out/segment-untouched.json $out/stats-still.json $out/frame-bench-3d.txt $out/frame-bench-slice.txt"
+fi
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 
 planned=$( ((small)) && echo 3 || echo 10)
 python3 - "$out" "$renderer" "$small" "$planned" "$(($(date +%s) - started))" "$load_before" "$load_after" \
-  "${size_list[@]}" <<'EOF'
+  "$ratios" "${size_list[@]}" <<'EOF'
 import json, pathlib, sys
 out, renderer, small, planned = pathlib.Path(sys.argv[1]), sys.argv[2], sys.argv[3] == "1", float(sys.argv[4])
-seconds, load_before, load_after, sizes = int(sys.argv[5]), sys.argv[6], sys.argv[7], sys.argv[8:]
+seconds, load_before, load_after, ratio_files, sizes = int(sys.argv[5]), sys.argv[6], sys.argv[7], sys.argv[8].split(), sys.argv[9:]
 software = any(s in renderer for s in ("llvmpipe", "softpipe", "SwiftShader")) or not renderer
 rows = []
 for size in sizes:
@@ -115,8 +150,29 @@ for size in sizes:
                  # compositing, present, the script).
                  "share_solver": round(st["solver_seconds"] / frames, 3) if frames else None,
                  "share_draw": round(st["draw_seconds"] / frames, 3) if frames else None})
+ratios = None
+if ratio_files:
+    untouched, segment, still = (json.loads(pathlib.Path(f).read_text()) for f in ratio_files[:3])
+
+    def bench_ms(path, case):
+        # render_frame_bench's row: "CASE WxH MEDIAN_MS CPU_MS ...".
+        for line in pathlib.Path(path).read_text().splitlines():
+            f = line.split()
+            if len(f) > 2 and f[0] == case:
+                return float(f[2])
+        sys.exit(f"bench-kiosk: no {case} frame time in {path}")
+
+    whole = (bench_ms(ratio_files[3], "3d+surface") + 2 * bench_ms(ratio_files[4], "axial+contour")) / 1e3
+    waits = still["frame_waits_s"]
+    if not waits:
+        sys.exit("bench-kiosk: still.session wrote no frame")
+    ratios = {"kiosk_iterations_per_second_untouched": round(untouched["iterations_per_second"], 1),
+              "segment_iterations_per_second": round(segment["iterations_per_second"], 1),
+              "untouched_over_segment": round(untouched["iterations_per_second"] / segment["iterations_per_second"], 2),
+              "still_frame_seconds": round(waits[-1], 2), "render_frame_bench_seconds": round(whole, 2),
+              "still_frame_over_bench": round(waits[-1] / whole, 2), "view_sizes": still["view_sizes"]}
 report = {"renderer": renderer, "software_renderer": software, "small": small, "seconds": seconds,
-          "load_before": load_before, "load_after": load_after, "sizes": rows}
+          "load_before": load_before, "load_after": load_after, "sizes": rows, "ratios": ratios}
 (out / "bench-kiosk.json").write_text(json.dumps(report, indent=2) + "\n")
 
 def pct(p):
@@ -130,6 +186,14 @@ for r in rows:
     md.append(f"| {r['size']} | {r['renderer']} | {pct(r['frames_evolving'])} | {pct(r['frames_idle'])} | "
               f"{pct(r['latency'])} | {r['iterations_per_second']:g} | {r['megapixels_per_second']:g} | "
               f"{r['share_solver']:.0%} / {r['share_draw']:.0%} |")
+if ratios:
+    md += ["", "| ratio (same run, " + sizes[0] + ") | kiosk | its part | ratio |", "|---|---|---|---|",
+           f"| iterations/s untouched / `steerseg segment` (sample, same parameters and count) | "
+           f"{ratios['kiosk_iterations_per_second_untouched']:g} | {ratios['segment_iterations_per_second']:g} | "
+           f"{ratios['untouched_over_segment']:g} |",
+           f"| full-screen `frame` once still, s / render_frame_bench, same views whole | "
+           f"{ratios['still_frame_seconds']:g} | {ratios['render_frame_bench_seconds']:g} | "
+           f"{ratios['still_frame_over_bench']:g} |"]
 (out / "bench-kiosk.md").write_text("\n".join(md) + "\n")
 EOF
 cat "$out/bench-kiosk.md"

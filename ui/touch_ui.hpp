@@ -52,6 +52,8 @@ class TouchUi {
     [[nodiscard]] const std::vector<Rect>& promptButtons() const { return promptButtons_; }
     [[nodiscard]] const ImGuiLayer& layer() const { return layer_; }
     [[nodiscard]] const Panel& panel() const { return panel_; }
+    // A finger or button is down: a long press may come due without a new event.
+    [[nodiscard]] bool pressing() const { return gestures_.pointersDown() > 0; }
 
   private:
     ImGuiLayer layer_;

@@ -61,6 +61,11 @@ void FrameStats::write(const std::filesystem::path& path, const std::string& des
     j["solver_seconds"] = solverSeconds_;
     j["draw_seconds"] = drawSeconds_;
     j["pixels_per_second"] = drawSeconds_ > 0.0 ? pixels_ / drawSeconds_ : 0.0;
+    j["frame_waits_s"] = frameWaits_;
+    j["view_sizes"] = nlohmann::json::array();
+    for (const auto& [w, h] : viewSizes_) {
+        j["view_sizes"].push_back({w, h});
+    }
     std::ofstream out(path);
     out << j.dump(2) << '\n';
     if (!out) {

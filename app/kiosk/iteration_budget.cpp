@@ -33,10 +33,23 @@ int IterationBudget::next(double lastFrameSeconds) {
     return static_cast<int>(std::clamp(fit, static_cast<double>(min_), static_cast<double>(max_)));
 }
 
+int IterationBudget::forSlice(double seconds) const {
+    // A fixed count (min = max) stays fixed: runs that must stop at the same count (tests).
+    if (perIteration_ <= 0.0 || !(seconds > 0.0) || min_ == max_) {
+        return min_;
+    }
+    // At most twice the last call's count: the estimate lags a front that starts to grow, and
+    // a slice sized by it must not turn into a stall.
+    const double most = std::max(2.0 * lastCount_, static_cast<double>(min_));
+    return static_cast<int>(
+        std::clamp(std::floor(seconds / perIteration_), static_cast<double>(min_), most));
+}
+
 void IterationBudget::record(int iterations, double seconds) {
     if (iterations <= 0 || !std::isfinite(seconds) || seconds < 0.0) {
         return;
     }
+    lastCount_ = iterations;
     const double sample = seconds / iterations;
     constexpr double kWeight = 0.3;
     perIteration_ =

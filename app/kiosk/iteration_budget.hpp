@@ -18,6 +18,10 @@ class IterationBudget {
     // This frame's iterations given how long the last frame took; 0 = let this frame go by
     // (the solver has had its share).
     [[nodiscard]] int next(double lastFrameSeconds);
+    // The iterations that fit `seconds` (a slice of the machine while nobody touches it,
+    // OperatorPacing), at least the minimum; not bounded by the per-frame maximum, which keeps
+    // frames short while the operator acts, unless min = max (a fixed count).
+    [[nodiscard]] int forSlice(double seconds) const;
     void record(int iterations, double seconds);
     [[nodiscard]] double secondsPerIteration() const { return perIteration_; }
 
@@ -28,6 +32,7 @@ class IterationBudget {
     int max_;
     double perIteration_ = 0.0; // 0: nothing measured yet
     double credit_ = 0.0;       // seconds of solver time earned and not yet spent
+    int lastCount_ = 0;         // the iterations of the last record()
 };
 
 } // namespace steerseg::kiosk

@@ -10,6 +10,7 @@
 #include "kiosk/iteration_budget.hpp"
 #include "kiosk/kiosk_script_sink.hpp"
 #include "kiosk/kiosk_startup.hpp"
+#include "kiosk/operator_pacing.hpp"
 #include "kiosk/screen_compositor.hpp"
 #include "kiosk/service_status.hpp"
 #include "kiosk/session_autosave.hpp"
@@ -83,10 +84,13 @@ class Kiosk {
         const Clock::time_point frameStart = Clock::now();
         now_ = secondsSince(start_);
         const bool hadInput = pollInput();
+        if (hadInput) {
+            pacing_.input(now_);
+        }
         applyActions();
         stepSolver();
         autosave();
-        drawScreen();
+        drawScreen(hadInput);
         present(frameStart);
         service_.framePresented(flow_.status());
         saveFrames();
@@ -107,6 +111,9 @@ class Kiosk {
         }
         out << stats_.summary() << '\n';
         if (options_.stats) {
+            const ui::Layout l = layout();
+            stats_.viewSizes(
+                {{l.view3d.w, l.view3d.h}, {l.slice1.w, l.slice1.h}, {l.slice2.w, l.slice2.h}});
             stats_.write(*options_.stats, info_.description);
         }
     }
@@ -138,6 +145,9 @@ class Kiosk {
             // A script's device-level events stand for the display's: physical pixels.
             for (auto& e : sink_.events) {
                 events_.push_back(std::move(e));
+            }
+            if (pendingFrames_.empty() && !sink_.frames.empty()) {
+                framesAskedAt_ = now_;
             }
             for (auto& f : sink_.frames) {
                 pendingFrames_.push_back(std::move(f));
@@ -236,7 +246,10 @@ class Kiosk {
         if (!evolving_) {
             return;
         }
-        if (const int n = budget_.next(lastFrameSeconds_); n > 0) {
+        // Nobody touching anything: the solver takes a slice of the machine between previews.
+        const double slice = pacing_.solverSlice(now_);
+        if (const int n = slice > 0.0 ? budget_.forSlice(slice) : budget_.next(lastFrameSeconds_);
+            n > 0) {
             const Clock::time_point t = Clock::now();
             const model::StepResult r = flow_.evolve(n);
             const double evolved = secondsSince(t);
@@ -262,10 +275,11 @@ class Kiosk {
     }
 
     // The views into the logical screen, then the panel on top; the panel's buttons act on the
-    // next frame.
-    void drawScreen() {
-        screen_.begin({0.08F, 0.08F, 0.09F});
-        screenState_ = {layout(), {}, {}};
+    // next frame. Not composed when nothing on it changed (a refinement tile drawn off screen,
+    // no input; OperatorPacing::screenDue): the panel and the views are not redrawn per tile.
+    void drawScreen(bool hadInput) {
+        bool changed = hadInput || evolving_ || touch_.pressing() || !pendingFrames_.empty() ||
+                       engine_.session() == nullptr || flow_.state() != composedState_;
         if (session::Session* session = engine_.session()) {
             if (engine_.scansAttached() != shownScan_) {
                 painter_.reset();
@@ -274,11 +288,22 @@ class Kiosk {
             // The views get what the solver and the panel leave of the frame.
             const double left =
                 std::max(frameBudget_ - solverSeconds_ - panelSeconds_, frameBudget_ * 0.25);
-            screenState_ =
-                painter_.paint(*session, flow_.status(), engine_.levelSetVersion(),
-                               engine_.speedVersion(), screenState_.layout, left, screen_);
+            changed = painter_.draw(*session, flow_.status(), engine_.levelSetVersion(),
+                                    engine_.speedVersion(), layout(), left,
+                                    pacing_.refineSeconds(now_, left, !pendingFrames_.empty())) ||
+                      changed;
             const auto [pixels, seconds] = painter_.takeDrawn();
             stats_.drawn(pixels, seconds);
+        }
+        composed_ = pacing_.screenDue(now_, changed);
+        if (!composed_) {
+            return;
+        }
+        composedState_ = flow_.state();
+        screen_.begin({0.08F, 0.08F, 0.09F});
+        screenState_ = {layout(), {}, {}};
+        if (session::Session* session = engine_.session()) {
+            screenState_ = painter_.compose(*session, screenState_.layout, screen_);
         }
         panelStart_ = Clock::now();
         glBindFramebuffer(GL_FRAMEBUFFER, screen_.framebuffer());
@@ -291,10 +316,12 @@ class Kiosk {
     }
 
     void present(Clock::time_point frameStart) {
-        screen_.present(display_->framebuffer(), physical_);
-        glFinish(); // the panel's and the present's cost, for the next frame's split
-        panelSeconds_ = 0.8 * panelSeconds_ + 0.2 * secondsSince(panelStart_);
-        display_->present();
+        if (composed_) {
+            screen_.present(display_->framebuffer(), physical_);
+            glFinish(); // the panel's and the present's cost, for the next frame's split
+            panelSeconds_ = 0.8 * panelSeconds_ + 0.2 * secondsSince(panelStart_);
+            display_->present();
+        }
         lastFrameSeconds_ = secondsSince(frameStart);
         if (engine_.session() != nullptr) { // frames showing a scan: not the wait for a load
             stats_.frame(lastFrameSeconds_, evolving_);
@@ -319,6 +346,7 @@ class Kiosk {
             exports::writeImage(path, picture);
         }
         pendingFrames_.clear();
+        stats_.frameWait(secondsSince(start_) - framesAskedAt_);
     }
 
     std::optional<std::string> stopReason() {
@@ -373,6 +401,7 @@ class Kiosk {
     input::KeyBindings keys_;
     input::InputHub hub_;
     IterationBudget budget_;
+    OperatorPacing pacing_;
     ViewPainter painter_;
     FrameStats stats_;
     KioskScriptSink sink_;
@@ -391,9 +420,13 @@ class Kiosk {
     bool evolving_ = false;
     double solverSeconds_ = 0.0;
     double panelSeconds_ = 0.0; // the panel, composition and present: an average over frames
+    bool composed_ = false;     // this frame composed and presents the screen
+    model::State composedState_ = model::State::NoScan;
     Clock::time_point panelStart_{};
     double lastFrameSeconds_ = 0.0;
     double inputSince_ = -1.0; // the poll that brought the oldest input not yet on screen
+    // When the script asked for the pending frames.
+    double framesAskedAt_ = 0.0;
     int exitCode_ = 0;
 };
 

@@ -81,15 +81,12 @@ std::pair<double, double> ViewPainter::takeDrawn() {
     return out;
 }
 
-void ViewPainter::paintView(View& view, session::Session& session, render::ViewParams params,
-                            const std::string& signature, double seconds) {
-    if (signature != view.signature) {
-        view.signature = signature;
-        view.refiner.changed();
-    }
-    const ViewRefiner::Plan plan = view.refiner.plan(params.size, seconds);
+bool ViewPainter::paintView(View& view, session::Session& session, render::ViewParams params,
+                            double seconds, double refineSeconds) {
+    const ViewRefiner::Plan plan =
+        view.refiner.plan(params.size, view.refiner.dirty() ? seconds : refineSeconds);
     if (plan.kind == ViewRefiner::Plan::Nothing) {
-        return;
+        return false;
     }
     params.size = plan.size;
     if (plan.kind == ViewRefiner::Plan::Preview) {
@@ -113,38 +110,65 @@ void ViewPainter::paintView(View& view, session::Session& session, render::ViewP
     if (plan.kind == ViewRefiner::Plan::Preview || view.refiner.fullReady()) {
         view.shownTarget = params.target;
         view.shownFrame = frame;
+        return true;
     }
+    return false;
 }
 
-ui::ScreenState ViewPainter::paint(session::Session& session, const workflow::Status& status,
-                                   std::uint64_t levelSetVersion, std::uint64_t speedVersion,
-                                   const ui::Layout& layout, double seconds,
-                                   ScreenCompositor& screen) {
+bool ViewPainter::draw(session::Session& session, const workflow::Status& status,
+                       std::uint64_t levelSetVersion, std::uint64_t speedVersion,
+                       const ui::Layout& layout, double seconds, double refineSeconds) {
     const std::array<ui::Rect, 3> rects{layout.view3d, layout.slice1, layout.slice2};
     const std::array<model::SliceAxis, 2> axes{status.view.first, status.view.second};
+    std::array<std::optional<render::ViewParams>, 3> params;
+    std::array<bool, 3> due{};
+    double dueShare = 0.0;
     for (std::size_t n = 0; n < views_.size(); ++n) {
         const glm::ivec2 size = rectSize(rects[n]);
         if (size.x <= 0 || size.y <= 0) {
             continue;
         }
+        std::string signature;
         if (n == kVolume) {
-            paintView(views_[n], session, engine::volumeViewParams(session, status, size),
-                      volumeSignature(status, levelSetVersion, size), seconds * kShare[n]);
+            params[n] = engine::volumeViewParams(session, status, size);
+            signature = volumeSignature(status, levelSetVersion, size);
         } else {
             const bool speed = n == kSecond;
             const model::SliceAxis axis = axes[n - 1];
-            paintView(views_[n], session,
-                      engine::sliceViewParams(session, status, axis, speed, size),
-                      sliceSignature(status, levelSetVersion, size, axis,
-                                     speed ? std::optional(speedVersion) : std::nullopt),
-                      seconds * kShare[n]);
+            params[n] = engine::sliceViewParams(session, status, axis, speed, size);
+            signature = sliceSignature(status, levelSetVersion, size, axis,
+                                       speed ? std::optional(speedVersion) : std::nullopt);
+        }
+        View& view = views_[n];
+        if (signature != view.signature) {
+            view.signature = signature;
+            view.refiner.changed();
+        }
+        due[n] = view.refiner.dirty() || !view.refiner.fullReady();
+        dueShare += due[n] ? kShare[n] : 0.0;
+    }
+    // The time goes to the views with work, in proportion to their shares: a view that is
+    // complete leaves its part to the others' tiles.
+    bool changed = false;
+    for (std::size_t n = 0; n < views_.size(); ++n) {
+        if (params[n] && due[n]) {
+            const double part = kShare[n] / dueShare;
+            changed =
+                paintView(views_[n], session, *params[n], seconds * part, refineSeconds * part) ||
+                changed;
         }
     }
+    return changed;
+}
+
+ui::ScreenState ViewPainter::compose(session::Session& session, const ui::Layout& layout,
+                                     ScreenCompositor& screen) const {
+    const std::array<ui::Rect, 3> rects{layout.view3d, layout.slice1, layout.slice2};
     ui::ScreenState state;
     state.layout = layout;
     for (std::size_t n = 0; n < views_.size(); ++n) {
         const View& v = views_[n];
-        if (v.shownTarget < 0) {
+        if (v.shownTarget < 0 || rects[n].w <= 0 || rects[n].h <= 0) {
             continue;
         }
         const glm::ivec2 size = session.pictureSize(v.shownTarget);

@@ -24,12 +24,17 @@ class ViewPainter {
   public:
     explicit ViewPainter(double interactiveScale);
 
-    // Draws what is due within `seconds`, then every view's latest picture into its rect.
-    // Returns where the slice views are and which slice frames their pictures show. A change
-    // of levelSetVersion redraws every view, of speedVersion the speed view.
-    ui::ScreenState paint(session::Session& session, const workflow::Status& status,
-                          std::uint64_t levelSetVersion, std::uint64_t speedVersion,
-                          const ui::Layout& layout, double seconds, ScreenCompositor& screen);
+    // Draws what is due: previews within `seconds`, refinement tiles within `refineSeconds`
+    // (OperatorPacing: more once nobody touches anything), shared by the views that have
+    // work. A change of levelSetVersion redraws every view, of speedVersion the speed view.
+    // Returns whether a picture on screen changed (a preview, a completed full picture).
+    bool draw(session::Session& session, const workflow::Status& status,
+              std::uint64_t levelSetVersion, std::uint64_t speedVersion, const ui::Layout& layout,
+              double seconds, double refineSeconds);
+    // Every view's latest picture into its rect. Returns where the slice views are and which
+    // slice frames their pictures show.
+    ui::ScreenState compose(session::Session& session, const ui::Layout& layout,
+                            ScreenCompositor& screen) const;
     // Every view shows its full-resolution picture of the current state.
     [[nodiscard]] bool settled() const;
     // A new scan: nothing drawn is valid any more.
@@ -46,8 +51,9 @@ class ViewPainter {
         int shownTarget = -1; // -1: nothing drawn since the last reset
         std::optional<render::SliceFrame> shownFrame;
     };
-    void paintView(View& view, session::Session& session, render::ViewParams params,
-                   const std::string& signature, double seconds);
+    // Draws what is due for one view; true when its picture on screen changed.
+    bool paintView(View& view, session::Session& session, render::ViewParams params, double seconds,
+                   double refineSeconds);
 
     std::array<View, 3> views_;
     double drawnPixels_ = 0.0;

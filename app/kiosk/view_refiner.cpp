@@ -75,14 +75,21 @@ void ViewRefiner::drawn(const Plan& plan, double seconds) {
     const glm::ivec2 drawnSize =
         plan.kind == Plan::Tile ? glm::ivec2(plan.region.z, plan.region.w) : plan.size;
     const double pixels = static_cast<double>(drawnSize.x) * drawnSize.y;
-    // A tiny draw is mostly the dispatch's fixed cost: it says little about the next, larger
-    // one, once there is an estimate. The estimate rises at once with a slow draw and falls
-    // slowly, so the next tile errs on the side of the frame's budget.
+    // A tiny draw is mostly the dispatch's fixed cost: it cannot say the next, larger one
+    // costs more per pixel, once there is an estimate. The estimate rises at once with a slow
+    // draw (a tile through the head after one through air) and falls by at most half per draw,
+    // so the next tile overruns its time by at most twice. Any draw may lower it: its fixed
+    // cost only makes it look dearer. (Only rising with large draws and falling slowly, a
+    // first preview that paid for compiling the shader left the tiles at 8x8 pixels for good:
+    // the refinement ran at a twentieth of the renderer's speed.)
     const bool telling = pixels >= kTellingPixels || secondsPerPixel_ <= 0.0;
-    if (pixels > 0.0 && telling && std::isfinite(seconds) && seconds >= 0.0) {
+    if (pixels > 0.0 && std::isfinite(seconds) && seconds >= 0.0) {
         const double sample = seconds / pixels;
-        secondsPerPixel_ =
-            sample > secondsPerPixel_ ? sample : 0.9 * secondsPerPixel_ + 0.1 * sample;
+        if (sample > secondsPerPixel_) {
+            secondsPerPixel_ = telling ? sample : secondsPerPixel_;
+        } else {
+            secondsPerPixel_ = std::max(sample, 0.5 * secondsPerPixel_);
+        }
     }
     if (plan.kind == Plan::Preview) {
         dirty_ = false;

@@ -32,6 +32,8 @@ class ViewRefiner {
     [[nodiscard]] bool fullReady() const { return fullReady_; }
     // Something has been drawn since the last change (a preview or the full picture).
     [[nodiscard]] bool anyReady() const { return previewReady_ || fullReady_; }
+    // A change waits for its preview.
+    [[nodiscard]] bool dirty() const { return dirty_; }
     [[nodiscard]] double secondsPerPixel() const { return secondsPerPixel_; }
 
   private:

@@ -104,7 +104,7 @@ void Session::setMask(std::span<const std::uint8_t> inside) {
                                     " voxels but the scan " +
                                     std::to_string(scan_.geometry().voxelCount()));
     }
-    gpu_->solver.initFromMask(inside);
+    gpu_->solver.initFromSmoothMask(inside);
     hasLevelSet_ = std::any_of(inside.begin(), inside.end(), [](std::uint8_t v) { return v != 0; });
 }
 

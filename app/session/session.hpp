@@ -66,7 +66,9 @@ class Session {
     // std::runtime_error naming the file when it cannot be read or its grid differs.
     void startFromMask(const std::filesystem::path& mask);
     // Replaces the level set with `inside` (non-zero = inside, i fastest, one byte per voxel of
-    // the scan): undo and resume go back to a mask they kept. All zero leaves no level set.
+    // the scan): undo and resume go back to a mask they kept. Its phi is rounded off between
+    // the voxels (solver::smoothMaskPhi: drawn smooth, the same voxels inside). All zero
+    // leaves no level set.
     // std::invalid_argument for a mask of the wrong size.
     void setMask(std::span<const std::uint8_t> inside);
     void clearLevelSet();

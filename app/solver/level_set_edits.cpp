@@ -42,6 +42,10 @@ void LevelSetSolver::initFromMask(std::span<const std::uint8_t> mask) {
     uploadPhi(maskToPhi(mask, dims_));
 }
 
+void LevelSetSolver::initFromSmoothMask(std::span<const std::uint8_t> mask) {
+    uploadPhi(smoothMaskPhi(mask, dims_));
+}
+
 void LevelSetSolver::addSphere(const model::Sphere& sphere) {
     editSphere(sphere, true);
 }

@@ -76,6 +76,9 @@ class LevelSetSolver {
     // `intensities`: the scan's real-unit values, i fastest (the solver keeps no host copy).
     void initFromThreshold(std::span<const float> intensities, float lo, float hi);
     void initFromMask(std::span<const std::uint8_t> mask);
+    // The same voxels inside, from smoothMaskPhi: a surface rounded off between them, for a
+    // mask that stands for a smooth surface (a file, an autosave) and is drawn as one.
+    void initFromSmoothMask(std::span<const std::uint8_t> mask);
 
     // n iterations (fewer never: a pool that runs out is grown and the rest re-run).
     model::StepResult step(int n);

@@ -4,6 +4,7 @@
 #include "solver/phi_stencil.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -64,6 +65,36 @@ std::vector<float> maskToPhi(std::span<const std::uint8_t> mask, const glm::ivec
     std::vector<float> phi(mask.size());
     for (std::size_t n = 0; n < mask.size(); ++n) {
         phi[n] = mask[n] != 0 ? -magnitude[n] : magnitude[n];
+    }
+    return phi;
+}
+
+std::vector<float> smoothMaskPhi(std::span<const std::uint8_t> mask, const glm::ivec3& d) {
+    std::vector<float> phi = maskToPhi(mask, d);
+    std::vector<float> next(phi.size());
+    const std::array<std::size_t, 3> stride{1, static_cast<std::size_t>(d.x),
+                                            static_cast<std::size_t>(d.x) * d.y};
+    for (int pass = 0; pass < 2; ++pass) {
+        for (int axis = 0; axis < 3; ++axis) {
+            const int n = d[axis];
+            for (int k = 0; k < d.z; ++k) {
+                for (int j = 0; j < d.y; ++j) {
+                    for (int i = 0; i < d.x; ++i) {
+                        const int at = glm::ivec3(i, j, k)[axis];
+                        const std::size_t c = linearIndex(d, i, j, k);
+                        // The volume's faces repeat their voxel.
+                        const float lo = at > 0 ? phi[c - stride[axis]] : phi[c];
+                        const float hi = at + 1 < n ? phi[c + stride[axis]] : phi[c];
+                        next[c] = 0.25F * lo + 0.5F * phi[c] + 0.25F * hi;
+                    }
+                }
+            }
+            phi.swap(next);
+        }
+    }
+    constexpr float kSide = 0.05F;
+    for (std::size_t n = 0; n < phi.size(); ++n) {
+        phi[n] = mask[n] != 0 ? std::min(phi[n], -kSide) : std::max(phi[n], kSide);
     }
     return phi;
 }

@@ -17,6 +17,12 @@ namespace steerseg::solver {
 // std::invalid_argument when mask.size() does not match dims.
 std::vector<float> maskToPhi(std::span<const std::uint8_t> mask, const glm::ivec3& dims);
 
+// maskToPhi lightly smoothed (a [1 2 1] / 4 filter twice along each axis, about a voxel's
+// Gaussian), every voxel kept on its side (|phi| >= 0.05): the same mask at the voxel centres,
+// but a level set whose zero surface rounds the voxels' staircase off between them, so a mask
+// (a --mask file, a resumed session) is drawn as smoothly as a level set the solver evolved.
+std::vector<float> smoothMaskPhi(std::span<const std::uint8_t> mask, const glm::ivec3& dims);
+
 // 1 where lo <= value <= hi. Throws std::invalid_argument for lo > hi or NaN bounds.
 std::vector<std::uint8_t> thresholdMask(std::span<const float> values, float lo, float hi);
 

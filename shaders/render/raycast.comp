@@ -97,9 +97,9 @@ void composite(inout vec4 acc, vec3 colour, float alpha) {
     acc.a += (1.0 - acc.a) * alpha;
 }
 
-// The scan's sample at p composited into acc, its opacity scaled by `weight` (the region of
-// interest); true once the ray is opaque.
-bool addScanSample(inout vec4 acc, vec3 p, float weight, vec3 rayWorld) {
+// The scan's sample at p, standing for `len` millimetres of the ray, composited into acc, its
+// opacity scaled by `weight` (the region of interest); true once the ray is opaque.
+bool addScanSample(inout vec4 acc, vec3 p, float len, float weight, vec3 rayWorld) {
     float v = scanAt(p);
 #if !GRADIENT_TEXTURE
     // The value alone may already rule the sample out (no six fetches for the gradient). With
@@ -120,7 +120,7 @@ bool addScanSample(inout vec4 acc, vec3 p, float weight, vec3 rayWorld) {
     vec2 uv = (vec2(v, gm) * vec2(float(TF_BINS - 1), float(TF_GRADIENT_BINS - 1)) + 0.5) /
               vec2(float(TF_BINS), float(TF_GRADIENT_BINS));
     vec4 tf = texture(tfLut, uv);
-    float alpha = (1.0 - pow(1.0 - min(tf.a, 0.999), stepMm)) * weight;
+    float alpha = (1.0 - pow(1.0 - min(tf.a, 0.999), len)) * weight;
     if (alpha > 0.001) {
         composite(acc, shade(tf.rgb, g, rayWorld), alpha);
         return acc.a > 0.98;
@@ -132,8 +132,21 @@ ivec3 blockAt(vec3 p, ivec3 grid) {
     return clamp(ivec3(floor((p + 0.5) / 8.0)), ivec3(0), grid - 1);
 }
 
+// The length of ray the sample at t stands for. Samples stand for stepMm each from the ray's
+// entry (`lead` before the first, the jitter); the last one, where the ray leaves the volume
+// or the clip plane at tEnd, for what is left. The ray's opacity then follows its length
+// through a uniform region exactly: a whole sample more or less on neighbouring rays is what
+// draws rings (wood grain) where that length crosses a multiple of the step, and noise where
+// the first sample is jittered. `exact` 0: every sample a whole step (the scan up to a
+// surface, which decides where the ray ends).
+float sampleLength(float t, float tEnd, float lead, float exact) {
+    float last = step(tEnd, t + stepMm) * exact;
+    return mix(stepMm, tEnd - t + lead, last);
+}
+
 // The scan alone from t to tEnd (exclusive), skipping blocks with nothing visible.
-void marchScan(inout vec4 acc, vec3 origin, vec3 dir, vec3 rayWorld, float t, float tEnd) {
+void marchScan(inout vec4 acc, vec3 origin, vec3 dir, vec3 rayWorld, float t, float tEnd,
+               float lead, float exact) {
     // A ray stays in a block for many samples: its skip-grid verdict is looked up once.
     ivec3 grid = textureSize(skipGrid, 0);
     ivec3 block = ivec3(-1);
@@ -146,7 +159,7 @@ void marchScan(inout vec4 acc, vec3 origin, vec3 dir, vec3 rayWorld, float t, fl
             blockUsed = blockOccupied(b);
         }
         if (blockUsed) {
-            if (addScanSample(acc, p, 1.0, rayWorld)) {
+            if (addScanSample(acc, p, sampleLength(t, tEnd, lead, exact), 1.0, rayWorld)) {
                 return;
             }
         } else {
@@ -218,7 +231,11 @@ float firstCrossing(vec3 origin, vec3 dir, float t, float tEnd) {
     return -1.0;
 }
 
-// The shaded surface where phi crosses zero between the samples at t - stepMm and t.
+// The shaded surface where phi crosses zero between the samples at t - stepMm and t: the
+// crossing of trilinear phi by bisection, then of the smooth phi (phiSmooth) by Newton steps
+// along the ray from there, shaded with the smooth phi's gradient. The Newton steps stay
+// within a voxel of the trilinear crossing (the B-spline's zero lies within a voxel of it:
+// it reproduces linear phi exactly); a grazing ray keeps the trilinear crossing.
 vec3 surfaceColour(vec3 origin, vec3 dir, vec3 rayWorld, float t) {
     float a = t - stepMm;
     float b = t;
@@ -233,13 +250,26 @@ vec3 surfaceColour(vec3 origin, vec3 dir, vec3 rayWorld, float t) {
             b = m;
         }
     }
-    vec3 hit = origin + 0.5 * (a + b) * dir;
-    return shade(SURFACE_COLOUR, phiGradient(hit), rayWorld);
+    float tLinear = 0.5 * (a + b);
+    float reach = 1.0 / max(length(dir), 1e-6); // millimetres along the ray per voxel
+    float tHit = tLinear;
+    vec3 grad = vec3(0.0);
+    // One call site in a loop (each call site is 64 pool reads of code): evaluate, then step.
+    for (int i = 0; i < 3; ++i) {
+        float f = phiSmooth(origin + tHit * dir, grad);
+        float slope = dot(grad, dir); // dphi / dt
+        if (i < 2) {
+            tHit = clamp(tHit - f / (abs(slope) > 1e-6 ? slope : 1e30), tLinear - reach,
+                         tLinear + reach);
+        }
+    }
+    return shade(SURFACE_COLOUR, grad, rayWorld);
 }
 
 // The scan and the surface together: a translucent surface, or the surface as region of
 // interest.
-void marchWithSurface(inout vec4 acc, vec3 origin, vec3 dir, vec3 rayWorld, float t, float tEnd) {
+void marchWithSurface(inout vec4 acc, vec3 origin, vec3 dir, vec3 rayWorld, float t, float tEnd,
+                      float lead) {
     ivec3 grid = textureSize(skipGrid, 0);
     ivec3 block = ivec3(-1);
     bool blockUsed = false;
@@ -262,7 +292,8 @@ void marchWithSurface(inout vec4 acc, vec3 origin, vec3 dir, vec3 rayWorld, floa
         }
         // Outside the surface the scan is hidden (inside only) or dimmed.
         float weight = phi > 0.0 ? (roiMode == 1 ? 0.0 : (roiMode == 2 ? dimFactor : 1.0)) : 1.0;
-        if (blockUsed && weight > 0.0 && addScanSample(acc, p, weight, rayWorld)) {
+        if (blockUsed && weight > 0.0 &&
+            addScanSample(acc, p, sampleLength(t, tEnd, lead, 1.0), weight, rayWorld)) {
             return;
         }
         t += stepMm;
@@ -313,24 +344,30 @@ void main() {
             acc = vec4(colour, 1.0);
         } else {
             // A fixed per-pixel offset of the sample lattice (interleaved gradient noise) turns
-            // wood-grain aliasing into fine, deterministic noise.
-            float jitter = fract(52.9829189 * fract(dot(vec2(pixel), vec2(0.06711056, 0.00583715))));
-            float t = span.x + jitter * stepMm;
+            // wood-grain aliasing into fine noise, the same in every frame, so a still picture
+            // does not shimmer.
+            float ign = fract(dot(vec2(pixel), vec2(0.06711056, 0.00583715)));
+            float lead = stepMm * fract(52.9829189 * ign);
+            float t = span.x + lead;
 #if HAS_SURFACE
             if (surfaceMode == 1 && roiMode == 0) {
                 // An opaque surface and no region of interest: find the surface first, then
                 // march the scan up to it without the level set's code in the loop.
                 float tHit = firstCrossing(origin, dir, t, span.y);
                 // Half a step short of the hit: the samples before it, however t was rounded.
-                marchScan(acc, origin, dir, rayWorld, t, tHit < 0.0 ? span.y : tHit - 0.5 * stepMm);
+                if (tHit < 0.0) {
+                    marchScan(acc, origin, dir, rayWorld, t, span.y, lead, 1.0);
+                } else {
+                    marchScan(acc, origin, dir, rayWorld, t, tHit - 0.5 * stepMm, lead, 0.0);
+                }
                 if (tHit >= 0.0 && acc.a <= 0.98) {
                     composite(acc, surfaceColour(origin, dir, rayWorld, tHit), 1.0);
                 }
             } else {
-                marchWithSurface(acc, origin, dir, rayWorld, t, span.y);
+                marchWithSurface(acc, origin, dir, rayWorld, t, span.y, lead);
             }
 #else
-            marchScan(acc, origin, dir, rayWorld, t, span.y);
+            marchScan(acc, origin, dir, rayWorld, t, span.y, lead, 1.0);
 #endif
         }
     }

@@ -39,6 +39,8 @@ TEST(FrameStats, WritesRatesOverTheTimeEvolvingAndDrawing) {
     stats.iterations(10, 0.1);
     stats.drawn(2e6, 0.5);
     stats.latency(0.3);
+    stats.frameWait(1.5);
+    stats.viewSizes({{640, 400}, {320, 200}, {320, 200}});
     const auto path = std::filesystem::temp_directory_path() / "steerseg_frame_stats_test.json";
     stats.write(path, "offscreen 8x8");
     const nlohmann::json j = nlohmann::json::parse(std::ifstream(path));
@@ -53,6 +55,9 @@ TEST(FrameStats, WritesRatesOverTheTimeEvolvingAndDrawing) {
     EXPECT_NEAR(j["draw_seconds"].get<double>(), 0.5, 1e-12);
     EXPECT_NEAR(j["pixels_per_second"].get<double>(), 4e6, 1e-3);
     EXPECT_NEAR(j["latency"]["p50_ms"].get<double>(), 300.0, 1e-9);
+    EXPECT_EQ(j["frame_waits_s"], nlohmann::json::array({1.5}));
+    EXPECT_EQ(j["view_sizes"][0], nlohmann::json::array({640, 400}));
+    EXPECT_EQ(j["view_sizes"].size(), 3U);
 }
 
 TEST(FrameStats, NothingEvolvingGivesNoRateAndABadPathThrows) {

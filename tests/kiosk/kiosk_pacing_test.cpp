@@ -1,6 +1,7 @@
 // The frame loop's pacing decisions, without a GPU: how many solver iterations fit a frame and
-// how a slow view is previewed and refined in bands.
+// how a slow view is previewed and refined in bands, and how the split follows the operator.
 #include "kiosk/iteration_budget.hpp"
+#include "kiosk/operator_pacing.hpp"
 #include "kiosk/view_refiner.hpp"
 
 #include <algorithm>
@@ -84,6 +85,73 @@ TEST(IterationBudget, ClampsAndIgnoresNonsense) {
     EXPECT_THROW(IterationBudget(0.5, 0.02, 3, 2), std::invalid_argument);
 }
 
+TEST(IterationBudget, ASliceFillsItsTimeAndGrowsNoFasterThanItDoubles) {
+    IterationBudget budget(0.5, 0.033, 1, 64);
+    EXPECT_EQ(budget.forSlice(0.25), 1); // nothing measured yet
+    budget.record(1, 0.002);
+    // 2 ms an iteration: a quarter second holds 125, reached by doubling from the last count.
+    std::vector<int> counts;
+    for (int n = 0; n < 10; ++n) {
+        counts.push_back(budget.forSlice(0.25));
+        budget.record(counts.back(), counts.back() * 0.002);
+    }
+    EXPECT_EQ(counts.front(), 2);
+    EXPECT_EQ(counts.back(), 125);
+    for (std::size_t n = 1; n < counts.size(); ++n) {
+        EXPECT_LE(counts[n], 2 * counts[n - 1]);
+    }
+    // Not bounded by the per-frame maximum (64): the operator is not waiting on the frame.
+    EXPECT_GT(budget.forSlice(0.25), 64);
+    EXPECT_EQ(budget.forSlice(0.0), 1);
+    IterationBudget fixed(0.5, 0.033, 8, 8);
+    fixed.record(8, 0.008);
+    EXPECT_EQ(fixed.forSlice(0.25), 8);
+}
+
+// Nobody touching anything: the solver's slices make up most of the time, with a preview
+// (and the panel) between them a few times a second; the first input turns the split back.
+TEST(OperatorPacing, QuietGivesTheSolverMostOfTheMachineAndInputTurnsItBack) {
+    kiosk::OperatorPacing pacing;
+    IterationBudget budget(0.5, 0.033, 1, 64);
+    budget.record(1, 0.004);
+    pacing.input(0.0);
+    double now = 0.0;
+    double solver = 0.0;
+    int frames = 0;
+    double last = 0.033;
+    const double drawing = 0.030; // a preview, the panel and the present
+    while (now < 10.0) {
+        const double slice = pacing.solverSlice(now);
+        const int n = slice > 0.0 ? budget.forSlice(slice) : budget.next(last);
+        budget.record(n, n * 0.004);
+        last = drawing + n * 0.004;
+        solver += n * 0.004;
+        now += last;
+        ++frames;
+    }
+    EXPECT_GT(solver / now, 0.8);
+    EXPECT_GT(frames / now, 1.5); // a preview or two a second
+    EXPECT_TRUE(pacing.quiet(now));
+    pacing.input(now);
+    EXPECT_FALSE(pacing.quiet(now + 0.1));
+    EXPECT_EQ(pacing.solverSlice(now + 0.1), 0.0);
+    EXPECT_TRUE(pacing.quiet(now + 0.6));
+}
+
+TEST(OperatorPacing, TilesGrowOnceQuietOrAwaitedAndTheScreenIsComposedWhenItChanges) {
+    kiosk::OperatorPacing pacing;
+    pacing.input(1.0);
+    EXPECT_DOUBLE_EQ(pacing.refineSeconds(1.1, 0.02, false), 0.02);
+    EXPECT_DOUBLE_EQ(pacing.refineSeconds(1.1, 0.02, true), 0.1);
+    EXPECT_DOUBLE_EQ(pacing.refineSeconds(2.0, 0.02, false), 0.1);
+    EXPECT_DOUBLE_EQ(pacing.refineSeconds(2.0, 0.5, false), 0.5);
+    EXPECT_TRUE(pacing.screenDue(2.0, false)); // never composed
+    EXPECT_FALSE(pacing.screenDue(2.1, false));
+    EXPECT_TRUE(pacing.screenDue(2.1, true));
+    EXPECT_FALSE(pacing.screenDue(2.3, false));
+    EXPECT_TRUE(pacing.screenDue(2.4, false)); // the interval is up
+}
+
 // A model of a software rasteriser: 20 microseconds per pixel.
 constexpr double kSecondsPerPixel = 20e-6;
 
@@ -139,6 +207,33 @@ TEST(ViewRefiner, PreviewsFitTheFrameThenTilesCompleteTheFullPicture) {
     refiner.changed();
     EXPECT_FALSE(refiner.fullReady());
     EXPECT_EQ(refiner.plan(full, frame).kind, ViewRefiner::Plan::Preview);
+}
+
+// The first preview pays for compiling the shader (seconds for a few thousand pixels); the
+// tiles after it, with a dispatch's fixed cost on top of the per-pixel one, must still grow to
+// fill their time within a few frames, not stay at 8x8 pixels (the refinement at a twentieth
+// of the renderer's speed the issue measured).
+TEST(ViewRefiner, TilesGrowToTheirTimeAfterASlowFirstPreview) {
+    ViewRefiner refiner(0.5);
+    const glm::ivec2 full(800, 600);
+    ViewRefiner::Plan p = refiner.plan(full, 0.02);
+    ASSERT_EQ(p.kind, ViewRefiner::Plan::Preview);
+    refiner.drawn(p, 5.0); // the compile
+    const double fixed = 0.003;
+    int frames = 0;
+    double total = 0.0;
+    while (!refiner.fullReady()) {
+        p = refiner.plan(full, 0.1);
+        ASSERT_EQ(p.kind, ViewRefiner::Plan::Tile);
+        const double spent = fixed + cost(p);
+        EXPECT_LE(spent, 0.2 + fixed); // at most twice its time
+        total += spent;
+        refiner.drawn(p, spent);
+        ASSERT_LT(++frames, 400) << "the tiles never grew";
+    }
+    // 800x600 at 20 us a pixel is 9.6 s: in tiles of about 0.1 s, the fixed costs a few %.
+    EXPECT_LT(frames, 170);
+    EXPECT_LT(total, 1.1 * kSecondsPerPixel * full.x * full.y);
 }
 
 TEST(ViewRefiner, AFastMachineDrawsTheFullPictureAsItsPreview) {
