@@ -188,7 +188,7 @@ int main(int argc, char** argv) {
                 log << "# iteration time gained lost front\n";
                 solver.setCheckObserver([&log](const solver::FrontCheck& c) {
                     log << c.iteration << ' ' << c.time << ' ' << c.gained << ' ' << c.lost << ' '
-                        << c.front << '\n';
+                        << c.front << std::endl; // a long run's series can be watched
                 });
             }
             glFinish();

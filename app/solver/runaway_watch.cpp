@@ -10,6 +10,18 @@ void RunawayWatch::reset() {
     *this = RunawayWatch{factor_};
 }
 
+double RunawayWatch::pace(double net, double frontIterations) {
+    recent_[static_cast<std::size_t>(recentCount_ % kPaceChecks)] = {net, frontIterations};
+    ++recentCount_;
+    double voxels = 0.0;
+    double span = 0.0;
+    for (int n = 0; n < std::min(recentCount_, kPaceChecks); ++n) {
+        voxels += recent_[static_cast<std::size_t>(n)].first;
+        span += recent_[static_cast<std::size_t>(n)].second;
+    }
+    return voxels / span;
+}
+
 std::optional<model::LeakSite> RunawayWatch::observe(const FrontCheck& check) {
     if (!started_ || check.iteration <= lastIteration_) {
         // The first check sets the clock; one without iterations (a zero step) says nothing.
@@ -23,18 +35,24 @@ std::optional<model::LeakSite> RunawayWatch::observe(const FrontCheck& check) {
         return std::nullopt;
     }
     const double front = static_cast<double>(check.front);
+    const auto net = static_cast<double>(check.net());
     if (!slowed_) {
-        const double speed = static_cast<double>(check.net()) / (front * iterations);
         if (++checks_ < 2) {
             return std::nullopt; // a new seed's first interval sets no peak
         }
+        const double speed = net / (front * iterations);
         peak_ = std::max(peak_, speed);
         if (peak_ > 0.0 && speed <= kSlowedFraction * peak_) {
             slowed_ = true;
+            pace(net, front * iterations); // the reference pace starts here
             const double area = front / 2.0;
             bound_ = std::pow(area, 1.5) / (6.0 * std::sqrt(std::numbers::pi));
         }
         return std::nullopt;
+    }
+    const double recent = pace(net, front * iterations);
+    if (recentCount_ == kPaceChecks) {
+        reference_ = recent; // over the slowdown's check and the next
     }
     since_ += check.net();
     if (check.gained > 0) {
@@ -43,7 +61,7 @@ std::optional<model::LeakSite> RunawayWatch::observe(const FrontCheck& check) {
         haveBox_ = true;
     }
     ratio_ = static_cast<double>(since_) / bound_;
-    if (ratio_ <= factor_ || !haveBox_) {
+    if (recentCount_ < kPaceChecks || ratio_ <= factor_ || recent < reference_ || !haveBox_) {
         return std::nullopt;
     }
     // Said once, as LeakWatch does, until the operator acts (reset).

@@ -3,35 +3,41 @@
 #include "model/solver_types.hpp"
 #include "solver/front_check.hpp"
 
+#include <array>
 #include <cstdint>
 #include <optional>
+#include <utility>
 
 namespace steerseg::solver {
 
 // Tells a runaway fill from the growth of a structure, where LeakWatch's jump never comes: a
 // front that spills into tissue of the same intensity along a wide contact grows on without
-// ever slowing and speeding up again. What gives it away is the volume it adds after most of
-// its front has stopped. Pure (no GL), tested on series.
+// ever slowing and speeding up again. What gives it away is that after most of its front has
+// stopped it adds more than the structure could hold, and does so without slowing down, while
+// a front that fills a bounded structure decelerates as more of it reaches the edge. Pure (no
+// GL), tested on series.
 //
-// - Slowed: the front's mean speed (net voxels gained per front voxel and iteration, i.e. its
-//   mean displacement per step) fell to kSlowedFraction of its peak or below: most of the front
-//   has reached the structure's edge. The peak is taken from the second check on (a new seed's
-//   first interval holds its start).
-// - Bound: at that check, the front F voxels (both sides of the surface) bound a surface of
-//   about F / 2 voxel faces, and no body with a surface of area A holds more than a ball with
-//   that area, A^(3/2) / (6 sqrt(pi)) voxels (the isoperimetric inequality): whatever the
-//   structure's shape, that is the most it can hold.
-// - Runaway: the net voxels gained since the slowdown exceed `factor` times that bound (1 by
-//   default, model::SolverOptions::runawayFactor),
-//   i.e. after its front stopped the segmentation grew by more than any body that front could
-//   enclose (a compact structure more than doubled; a thin or branching one, whose front holds
-//   far less than the bound, much more). Its site is the box of the voxels that came inside
-//   since the slowdown.
+// - Pace: the front's mean speed, the net voxels gained per front voxel and iteration (its mean
+//   displacement per step), over the last kPaceChecks checks (one check is noise).
+// - Slowed: one check's pace fell to kSlowedFraction of the peak or below: most of the front
+//   has reached an edge. The peak is taken from the second check on (a new seed's first
+//   interval holds its start). The pace over that check and the next kPaceChecks - 1 is the
+//   reference.
+// - Bound: at that check, the front's F voxels (both sides of the surface) bound about F / 2
+//   voxel faces, and no body with a surface of A faces holds more than the ball with that
+//   surface, A^(3/2) / (6 sqrt(pi)) voxels (the isoperimetric inequality). A structure cut by
+//   the scan's border has surface there that is no front, so this is a size, not a strict bound:
+//   the liver's front filled 4x it after slowing (tests/data/growth), but ever more slowly.
+// - Runaway: the net voxels gained since the slowdown exceed `factor` times the bound (1 by
+//   default, model::SolverOptions::runawayFactor) while the pace is at least the reference:
+//   the fill added more than a body of that front holds and did not decelerate doing so. Its
+//   site is the box of the voxels that came inside since the slowdown.
 // Every quantity is in voxels and iterations: the rule holds for any speed's units (the time
 // step makes the fastest front voxel move half a voxel a step) and any structure's size.
 class RunawayWatch {
   public:
     static constexpr double kSlowedFraction = 0.2;
+    static constexpr int kPaceChecks = 4;
 
     explicit RunawayWatch(double factor) : factor_(factor) {}
 
@@ -42,6 +48,9 @@ class RunawayWatch {
     [[nodiscard]] double lastRatio() const { return ratio_; }
 
   private:
+    // Adds a check and returns the pace over the last kPaceChecks.
+    double pace(double net, double frontIterations);
+
     double factor_;
     bool started_ = false;
     int lastIteration_ = 0;
@@ -52,6 +61,11 @@ class RunawayWatch {
     double bound_ = 0.0;
     std::int64_t since_ = 0; // net voxels gained since the slowdown
     double ratio_ = 0.0;
+    // The last checks' net voxels and front voxel-iterations since the slowdown, oldest
+    // overwritten.
+    std::array<std::pair<double, double>, kPaceChecks> recent_{};
+    int recentCount_ = 0;
+    double reference_ = 0.0; // the pace from the slowdown on
     bool haveBox_ = false;
     glm::ivec3 boxLo_{0};
     glm::ivec3 boxHi_{0};

@@ -1,5 +1,6 @@
 // The runaway rule on front series (no GPU): a fill that stops, or creeps, or fills a second,
 // smaller part is no runaway; one that spills on into tissue of the same intensity is.
+#include "front_series.hpp"
 #include "solver/runaway_watch.hpp"
 
 #include <cmath>
@@ -149,6 +150,32 @@ TEST(RunawayWatch, ASlowCreepAlongTheEdgeIsNoRunaway) {
     EXPECT_FALSE(feed(watch, checks));
 }
 
+TEST(RunawayWatch, AFillThatGrowsOnEverMoreSlowlyIsNoRunaway) {
+    // A ball of radius 10 whose front keeps gaining 200 voxels a check while it spreads (30 more
+    // front voxels a check) for 300 checks: 60,000 voxels, 14x the ball, but ever more slowly.
+    Series s = fill(10.0, 3.0, 0);
+    std::vector<FrontCheck> checks = s.checks;
+    for (int n = 0; n < 300; ++n) {
+        FrontCheck c = checks.back();
+        c.iteration += kCheck;
+        c.gained = 250;
+        c.lost = 50;
+        c.front += 30;
+        checks.push_back(c);
+    }
+    RunawayWatch watch(1.0);
+    EXPECT_FALSE(feed(watch, checks));
+}
+
+TEST(RunawayWatch, TheLiversFillIsNoRunaway) {
+    // It slows to a fifth of its first pace at iteration 540 and then gains 4x the ball its
+    // front had (its top and bottom are cut by the scan's border, where no front is counted),
+    // but its pace falls from 0.003 to 0.00007 voxel an iteration on the way.
+    RunawayWatch watch(1.0);
+    EXPECT_FALSE(feed(watch, frontSeries("liver_threshold_fill.txt")));
+    EXPECT_GT(watch.lastRatio(), 3.0);
+}
+
 TEST(RunawayWatch, NoIterationsSayNothing) {
     RunawayWatch watch(1.0);
     FrontCheck c;
@@ -157,6 +184,13 @@ TEST(RunawayWatch, NoIterationsSayNothing) {
     for (int n = 0; n < 10; ++n) {
         EXPECT_FALSE(watch.observe(c));
     }
+}
+
+TEST(RunawayWatch, ARealFrontThatSlowsIsNoRunaway) {
+    // The lung tumour's threshold front: it slows to a fifth of its first checks' pace at
+    // iteration 1196 and gains 0.39 of its bound by the cap.
+    RunawayWatch watch(1.0);
+    EXPECT_FALSE(feed(watch, frontSeries("lung_threshold_slowing.txt")));
 }
 
 } // namespace

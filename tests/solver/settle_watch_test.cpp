@@ -1,5 +1,6 @@
 // The settle rule on front series (no GPU): a jittering front has settled, a creeping one and
 // one that pauses between two growths have not.
+#include "front_series.hpp"
 #include "solver/settle_watch.hpp"
 
 #include <cstdint>
@@ -120,6 +121,36 @@ TEST(SettleWatch, ChecksWithoutIterationsAreIgnored) {
     for (int n = 0; n < 40; ++n) {
         EXPECT_FALSE(watch.observe(c)) << "no iteration, no window";
     }
+}
+
+// The iteration at which a recorded run would have settled, if it did.
+std::optional<int> settledAt(const std::string& name) {
+    SettleWatch watch(kWindow, kTolerance);
+    for (const FrontCheck& c : frontSeries(name)) {
+        if (watch.observe(c)) {
+            return c.iteration;
+        }
+    }
+    return std::nullopt;
+}
+
+TEST(SettleWatch, ARealFrontThatSlowsSettlesOnlyAtItsEnd) {
+    // The lung tumour's threshold front gains 200-350 voxels a check for 2000 iterations, then
+    // slows to 34 at the 3000 cap: settled once it gains under ~1000 in a window (0.05 of its
+    // front of 21,000), not while it still grows.
+    const auto at = settledAt("lung_threshold_slowing.txt");
+    ASSERT_TRUE(at.has_value());
+    EXPECT_GE(*at, 2600);
+    EXPECT_LE(*at, 3000);
+}
+
+TEST(SettleWatch, TheLiversSlowFillSettlesWhenItBarelyMoves) {
+    // 200 voxels a check on a front of 5,000-10,000 for 2000 iterations, then ever fewer:
+    // settled when the window's gain falls below 0.05 of the front (~50 voxels a check on its
+    // 15,000), in the last quarter of the 6500-iteration run.
+    const auto at = settledAt("liver_threshold_fill.txt");
+    ASSERT_TRUE(at.has_value());
+    EXPECT_GE(*at, 4500);
 }
 
 } // namespace
