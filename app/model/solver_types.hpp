@@ -32,9 +32,12 @@ struct SolverOptions {
     // through a narrow neck into tissue of the same intensity (LeakWatch).
     bool stopOnLeak = false;
     // With stopOnLeak, also a runaway fill (solver::RunawayWatch): after the front's mean speed
-    // fell to a fifth of its peak, it gained more than runawayFactor times the largest volume
-    // the front it had then could enclose. 0: only the jump above.
-    float runawayFactor = 1.0F;
+    // fell to a fifth of its peak, it gained more than runawayFactor times the volume a ball
+    // with that front holds, at no lower a rate than when it slowed. 0: only the jump above.
+    // Twice, not once: the front misses the surface a scan's border cuts, so a structure can
+    // hold more than the ball (the liver's fill reached 4x it, at a rate that had fallen 16 %
+    // by 2x and not at all by 1x: tests/data/growth).
+    float runawayFactor = 2.0F;
     // Sleeping bricks (docs/solver.md): a brick none of whose voxels moved by more than
     // sleepTolerance voxels in each of sleepAfter steps in a row is skipped until a neighbour's
     // face, an edit or a parameter change wakes it. Per step, not per unit of time: the step is

@@ -10,12 +10,12 @@ void RunawayWatch::reset() {
     *this = RunawayWatch{factor_};
 }
 
-double RunawayWatch::pace(double net, double frontIterations) {
-    recent_[static_cast<std::size_t>(recentCount_ % kPaceChecks)] = {net, frontIterations};
+double RunawayWatch::rate(double net, double iterations) {
+    recent_[static_cast<std::size_t>(recentCount_ % kRateChecks)] = {net, iterations};
     ++recentCount_;
     double voxels = 0.0;
     double span = 0.0;
-    for (int n = 0; n < std::min(recentCount_, kPaceChecks); ++n) {
+    for (int n = 0; n < std::min(recentCount_, kRateChecks); ++n) {
         voxels += recent_[static_cast<std::size_t>(n)].first;
         span += recent_[static_cast<std::size_t>(n)].second;
     }
@@ -44,14 +44,14 @@ std::optional<model::LeakSite> RunawayWatch::observe(const FrontCheck& check) {
         peak_ = std::max(peak_, speed);
         if (peak_ > 0.0 && speed <= kSlowedFraction * peak_) {
             slowed_ = true;
-            pace(net, front * iterations); // the reference pace starts here
+            rate(net, iterations); // the reference rate starts here
             const double area = front / 2.0;
             bound_ = std::pow(area, 1.5) / (6.0 * std::sqrt(std::numbers::pi));
         }
         return std::nullopt;
     }
-    const double recent = pace(net, front * iterations);
-    if (recentCount_ == kPaceChecks) {
+    const double recent = rate(net, iterations);
+    if (recentCount_ == kRateChecks) {
         reference_ = recent; // over the slowdown's check and the next
     }
     since_ += check.net();
@@ -61,7 +61,7 @@ std::optional<model::LeakSite> RunawayWatch::observe(const FrontCheck& check) {
         haveBox_ = true;
     }
     ratio_ = static_cast<double>(since_) / bound_;
-    if (recentCount_ < kPaceChecks || ratio_ <= factor_ || recent < reference_ || !haveBox_) {
+    if (recentCount_ < kRateChecks || ratio_ <= factor_ || recent < reference_ || !haveBox_) {
         return std::nullopt;
     }
     // Said once, as LeakWatch does, until the operator acts (reset).

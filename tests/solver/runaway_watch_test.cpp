@@ -17,6 +17,7 @@ using solver::FrontCheck;
 using solver::RunawayWatch;
 
 constexpr int kCheck = 16;
+constexpr double kFactor = 2.0; // model::SolverOptions::runawayFactor
 constexpr double kPi = std::numbers::pi;
 
 double ballVolume(double r) {
@@ -72,12 +73,12 @@ Series fill(double r, double pace = 4.0, int rest = 40) {
 
 TEST(RunawayWatch, AFillThatStopsIsNoRunaway) {
     for (const double r : {8.0, 20.0, 60.0}) {
-        RunawayWatch watch(1.0);
+        RunawayWatch watch(kFactor);
         EXPECT_FALSE(feed(watch, fill(r).checks)) << "ball of radius " << r;
     }
 }
 
-TEST(RunawayWatch, AFillThatSpillsOnIsARunawayOnceItDoubled) {
+TEST(RunawayWatch, AFillThatSpillsOnIsARunawayOnceItTripled) {
     // The structure (r = 12) is full at check 3; from there, a region of the same intensity
     // beside it fills from a neck at the same pace, and goes on to 5 times the structure.
     Series s = fill(12.0, 3.0, 0);
@@ -85,12 +86,13 @@ TEST(RunawayWatch, AFillThatSpillsOnIsARunawayOnceItDoubled) {
     for (double rho = 1.0; rho < 12.0 * std::cbrt(5.0); rho += 1.0) {
         s.add(12.0, rho);
     }
-    RunawayWatch watch(1.0);
+    RunawayWatch watch(kFactor);
     const auto at = feed(watch, s.checks);
     ASSERT_TRUE(at.has_value());
     // The bound is the volume a ball with the front at the slowdown holds, just above the
-    // structure's (the spill's first voxels are in that front): said as the spill passes it.
-    const int passed = full + 12; // rho = 13
+    // structure's (the spill's first voxels are in that front): said as the spill passes
+    // twice it, at rho = 16 (2.4 times the structure).
+    const int passed = full + 15;
     EXPECT_GE(*at, passed - 1);
     EXPECT_LE(*at, passed + 1);
 }
@@ -100,7 +102,7 @@ TEST(RunawayWatch, TheSiteIsWhereTheFrontGrewSinceTheSlowdown) {
     for (double rho = 1.0; rho < 30.0; rho += 1.0) {
         s.add(12.0, rho);
     }
-    RunawayWatch watch(1.0);
+    RunawayWatch watch(kFactor);
     std::optional<model::LeakSite> site;
     for (const FrontCheck& c : s.checks) {
         if ((site = watch.observe(c))) {
@@ -130,7 +132,7 @@ TEST(RunawayWatch, ASmallerSecondPartIsNoRunaway) {
     for (int n = 0; n < 40; ++n) {
         s.add(20.0, 15.0);
     }
-    RunawayWatch watch(1.0);
+    RunawayWatch watch(kFactor);
     EXPECT_FALSE(feed(watch, s.checks));
 }
 
@@ -138,7 +140,7 @@ TEST(RunawayWatch, ASlowCreepAlongTheEdgeIsNoRunaway) {
     // A filled ball of radius 25 whose front creeps on at 20 voxels a check for 600 checks
     // (12,000 voxels against its 65,450: the liver's threshold front into its vessels).
     Series s = fill(25.0, 3.0, 2);
-    RunawayWatch watch(1.0);
+    RunawayWatch watch(kFactor);
     std::vector<FrontCheck> checks = s.checks;
     for (int n = 0; n < 600; ++n) {
         FrontCheck c = checks.back();
@@ -151,33 +153,40 @@ TEST(RunawayWatch, ASlowCreepAlongTheEdgeIsNoRunaway) {
 }
 
 TEST(RunawayWatch, AFillThatGrowsOnEverMoreSlowlyIsNoRunaway) {
-    // A ball of radius 10 whose front keeps gaining 200 voxels a check while it spreads (30 more
-    // front voxels a check) for 300 checks: 60,000 voxels, 14x the ball, but ever more slowly.
+    // A ball of radius 10 whose front spreads (30 more front voxels a check) and gains 300
+    // voxels a check, one fewer each check: 45,000 voxels, 10x the ball, but ever more slowly.
     Series s = fill(10.0, 3.0, 0);
     std::vector<FrontCheck> checks = s.checks;
-    for (int n = 0; n < 300; ++n) {
+    for (std::uint32_t n = 0; n < 300; ++n) {
         FrontCheck c = checks.back();
         c.iteration += kCheck;
-        c.gained = 250;
+        c.gained = 50 + (300 - n);
         c.lost = 50;
         c.front += 30;
         checks.push_back(c);
     }
-    RunawayWatch watch(1.0);
+    RunawayWatch watch(kFactor);
     EXPECT_FALSE(feed(watch, checks));
+    // At a steady 250 a check instead, the same spread is a runaway.
+    for (std::size_t n = s.checks.size(); n < checks.size(); ++n) {
+        checks[n].gained = 300;
+    }
+    RunawayWatch steady(kFactor);
+    EXPECT_TRUE(feed(steady, checks));
 }
 
 TEST(RunawayWatch, TheLiversFillIsNoRunaway) {
     // It slows to a fifth of its first pace at iteration 540 and then gains 4x the ball its
     // front had (its top and bottom are cut by the scan's border, where no front is counted),
-    // but its pace falls from 0.003 to 0.00007 voxel an iteration on the way.
-    RunawayWatch watch(1.0);
+    // at a rate that stays near its reference (13.5 voxels an iteration) up to 1x and has fallen
+    // by 16 % at 2x.
+    RunawayWatch watch(kFactor);
     EXPECT_FALSE(feed(watch, frontSeries("liver_threshold_fill.txt")));
     EXPECT_GT(watch.lastRatio(), 3.0);
 }
 
 TEST(RunawayWatch, NoIterationsSayNothing) {
-    RunawayWatch watch(1.0);
+    RunawayWatch watch(kFactor);
     FrontCheck c;
     c.front = 100;
     c.gained = 1000;
@@ -189,7 +198,7 @@ TEST(RunawayWatch, NoIterationsSayNothing) {
 TEST(RunawayWatch, ARealFrontThatSlowsIsNoRunaway) {
     // The lung tumour's threshold front: it slows to a fifth of its first checks' pace at
     // iteration 1196 and gains 0.39 of its bound by the cap.
-    RunawayWatch watch(1.0);
+    RunawayWatch watch(kFactor);
     EXPECT_FALSE(feed(watch, frontSeries("lung_threshold_slowing.txt")));
 }
 
