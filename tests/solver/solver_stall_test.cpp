@@ -1,8 +1,8 @@
 // The pool-stall path (the band outruns the free slots between two pool checks) and the stop
 // reason of the step calls.
 #include "solver/level_set_solver.hpp"
-#include "support/gpu_fixture.hpp"
 #include "support/solver_test_support.hpp"
+#include "support/gpu_fixture.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
 // Courant factor (dt -> 0.91 here: the seed's centre oscillates), alpha = 0 at twice the
 // diffusion limit (every voxel flips).
 #include "solver/level_set_solver.hpp"
-#include "support/gpu_fixture.hpp"
 #include "support/solver_test_support.hpp"
+#include "support/gpu_fixture.hpp"
 
 #include <algorithm>
 #include <cmath>
