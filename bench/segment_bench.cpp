@@ -6,11 +6,19 @@
 //                 [--max-iterations N] [--repeat N] [--compare MASK] [--trace N]
 //                 [--dense 1] [--brick 4|8|16] [--check N] [--dump-phi FILE]
 //                 [--sleep 0|1] [--sleep-tolerance V] [--against-awake 1]
+//                 [--converge 1] [--stop-on-leak 1] [--growth-log FILE] [--compare-label N]
+//                 [--settle-iterations N] [--settle-displacement V] [--runaway-factor V]
 // Each run prints iterations/s beside the voxels visited per iteration and the front's voxels
 // (sleeping bricks, docs/solver.md). --against-awake 1 adds one run with sleeping off and the
 // Dice between its mask and the last run's.
 // --dump-phi writes phi after the trace as raw float32, i fastest, to diff two runs voxel by
 // voxel.
+// --converge 1 runs to the solver's own stop (converged, or a leak with --stop-on-leak 1) or
+// --max-iterations instead of to --time. --growth-log writes the first run's checks (iteration,
+// evolved time, voxels gained, lost, front voxels: solver::FrontCheck), the series the stop
+// rules are tested on (tests/data/growth). --compare-label N compares with label N of --compare
+// rather than with its non-zero voxels. --settle-iterations 0 turns the settle rule off (the
+// convergence rule before it, for comparisons); --runaway-factor 0 the runaway watch.
 // --trace N steps one iteration at a time for N iterations and prints the evolved time and a
 // checksum of phi after each: two runs of it show where a driver stops being deterministic.
 #include "bench/bench_scan.hpp"
@@ -21,6 +29,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -44,6 +53,9 @@ struct Options {
     model::SolverOptions solver;
     std::string dumpPhi;
     bool againstAwake = false;
+    bool converge = false;
+    std::string growthLog;
+    int compareLabel = -1;
 };
 
 model::Sphere parseSeed(const std::string& text) {
@@ -92,14 +104,28 @@ Options parse(int argc, char** argv) {
             o.dumpPhi = value;
         } else if (key == "--trace") {
             o.trace = std::clamp(std::stoi(value), 0, 100000);
+        } else if (key == "--converge") {
+            o.converge = value == "1";
+        } else if (key == "--stop-on-leak") {
+            o.solver.stopOnLeak = value == "1";
+        } else if (key == "--settle-iterations") {
+            o.solver.settleIterations = std::stoi(value);
+        } else if (key == "--settle-displacement") {
+            o.solver.settleDisplacement = std::stof(value);
+        } else if (key == "--runaway-factor") {
+            o.solver.runawayFactor = std::stof(value);
+        } else if (key == "--growth-log") {
+            o.growthLog = value;
+        } else if (key == "--compare-label") {
+            o.compareLabel = std::stoi(value);
         } else if (key == "--compare") {
             o.compare = value;
         } else {
             throw std::invalid_argument("unknown option " + key);
         }
     }
-    if (o.scan.empty() || o.seeds.empty() || !(o.time >= 0.0F)) {
-        throw std::invalid_argument("give --scan, at least one --seed and --time");
+    if (o.scan.empty() || o.seeds.empty() || !(o.time >= 0.0F || o.converge)) {
+        throw std::invalid_argument("give --scan, at least one --seed and --time or --converge 1");
     }
     return o;
 }
@@ -156,9 +182,19 @@ int main(int argc, char** argv) {
                 solver.addSphere(s);
             }
             solver.setParams(o.params);
+            std::ofstream log;
+            if (run == 0 && !o.growthLog.empty()) {
+                log.open(o.growthLog);
+                log << "# iteration time gained lost front\n";
+                solver.setCheckObserver([&log](const solver::FrontCheck& c) {
+                    log << c.iteration << ' ' << c.time << ' ' << c.gained << ' ' << c.lost << ' '
+                        << c.front << std::endl; // a long run's series can be watched
+                });
+            }
             glFinish();
             const auto start = std::chrono::steady_clock::now();
-            const model::StepResult r = solver.evolveUntil(o.time, o.maxIterations);
+            const model::StepResult r = o.converge ? solver.runUntilConverged(o.maxIterations)
+                                                   : solver.evolveUntil(o.time, o.maxIterations);
             glFinish();
             const double elapsed =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -172,16 +208,19 @@ int main(int argc, char** argv) {
             for (std::size_t n = 0; n < mask.size(); ++n) {
                 inside += mask[n];
                 if (!o.compare.empty()) {
-                    const bool in = reference.rescale().apply(reference.storedAt(n)) > 0.5;
+                    const double label = reference.rescale().apply(reference.storedAt(n));
+                    const bool in =
+                        o.compareLabel < 0 ? label > 0.5 : std::lround(label) == o.compareLabel;
                     referenceInside += in ? 1 : 0;
                     overlap += (in && mask[n] != 0) ? 1 : 0;
                 }
             }
             const model::SolverStats st = solver.stats();
-            std::printf("run %d%s: %d iterations, t = %.4f, %.4f s (%.1f it/s), %zu voxels "
+            std::printf("run %d%s: %s, %d iterations, t = %.4f, %.4f s (%.1f it/s), %zu voxels "
                         "inside, %.0f voxels visited per iteration, %u front voxels, %u of %u "
                         "bricks awake at the end",
-                        run + 1, awakeRun ? " (sleeping off)" : "", r.iterations,
+                        run + 1, awakeRun ? " (sleeping off)" : "",
+                        model::stopReasonName(r.stopReason), r.iterations,
                         static_cast<double>(r.evolvedTime), elapsed, r.iterations / elapsed, inside,
                         st.visitedVoxelsPerIteration, st.frontVoxels, st.activeBricks,
                         st.bandBricks);

@@ -22,9 +22,22 @@ struct SolverOptions {
     // strongly negative speed elsewhere takes tiny steps).
     int convergeIterations = 20;
     float convergeTime = 0.5F;
+    // Converged too (solver::SettleWatch, which says why these values): the net voxels the
+    // front gained over the last settleIterations iterations, spread over the front, are fewer
+    // than settleDisplacement voxels. A front held by noise keeps flipping voxels at its edges
+    // and never meets the rule above. settleIterations = 0: only the rule above.
+    int settleIterations = 256;
+    float settleDisplacement = 0.05F;
     // Stop (StopReason::Leak) when the front's growth jumps after a slowdown: the surface broke
     // through a narrow neck into tissue of the same intensity (LeakWatch).
     bool stopOnLeak = false;
+    // With stopOnLeak, also a runaway fill (solver::RunawayWatch): after the front's mean speed
+    // fell to a fifth of its peak, it gained more than runawayFactor times the volume a ball
+    // with that front holds, at no lower a rate than when it slowed. 0: only the jump above.
+    // Twice, not once: the front misses the surface a scan's border cuts, so a structure can
+    // hold more than the ball (the liver's fill reached 4x it, at a rate that had fallen 16 %
+    // by 2x and not at all by 1x: tests/data/growth).
+    float runawayFactor = 2.0F;
     // Sleeping bricks (docs/solver.md): a brick none of whose voxels moved by more than
     // sleepTolerance voxels in each of sleepAfter steps in a row is skipped until a neighbour's
     // face, an edit or a parameter change wakes it. Per step, not per unit of time: the step is

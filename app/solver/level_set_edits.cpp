@@ -116,7 +116,10 @@ void LevelSetSolver::noteChange() {
     pool_->writeControl(ctrl);
     known_ = ctrl;
     converged_ = false;
+    settled_ = false;
     leakWatch_.reset();
+    settleWatch_.reset();
+    runawayWatch_.reset();
 }
 
 void LevelSetSolver::addBarrier(const model::Sphere& sphere) {

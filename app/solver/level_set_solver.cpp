@@ -45,7 +45,9 @@ LevelSetSolver::LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own,
                                const gpu::ScanTexture* borrowed,
                                const model::SolverOptions& options)
     : ownScan_(std::move(own)), scan_(ownScan_ ? ownScan_.get() : borrowed), dims_(scan_->dims()),
-      options_(options) {
+      options_(options), settleWatch_(std::max(options.settleIterations, 1),
+                                      static_cast<double>(options.settleDisplacement)),
+      runawayWatch_(static_cast<double>(options.runawayFactor)) {
     gpu::GlStateGuard guard;
     const glm::ivec3 dims = dims_;
     if (options_.brickSize == 0) {
@@ -62,6 +64,11 @@ LevelSetSolver::LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own,
     if (options_.sleepAfter < 1 || options_.sleepAfter > 255 ||
         !(options_.sleepTolerance >= 0.0F)) {
         throw std::invalid_argument("sleepAfter must be 1..255 and sleepTolerance >= 0");
+    }
+    if (options_.settleIterations < 0 || !(options_.settleDisplacement >= 0.0F) ||
+        !(options_.runawayFactor >= 0.0F)) {
+        throw std::invalid_argument(
+            "settleIterations, settleDisplacement and runawayFactor must be >= 0");
     }
     const std::size_t voxels = static_cast<std::size_t>(dims.x) * static_cast<std::size_t>(dims.y) *
                                static_cast<std::size_t>(dims.z);
@@ -244,6 +251,7 @@ model::StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bo
         }
         takeVisits(ctrl);
         leak = watchGrowth(ctrl);
+        converged_ = converged_ || settled_;
         if ((untilConverged && converged_) || done < chunk || leak) {
             break; // converged, the time limit stopped the steps, or a leak
         }
@@ -293,11 +301,22 @@ std::optional<model::LeakSite> LevelSetSolver::watchGrowth(ControlBlock& ctrl) {
             glm::ivec3(static_cast<int>(ctrl.gainHi[0]), static_cast<int>(ctrl.gainHi[1]),
                        static_cast<int>(ctrl.gainHi[2]));
     }
+    const FrontCheck check{sample.iteration, sample.time,   ctrl.gained,  ctrl.lost,
+                           ctrl.frontVoxels, sample.gainLo, sample.gainHi};
+    if (checkObserver_) {
+        checkObserver_(check);
+    }
     detail::clearGrowth(ctrl);
     pool_->writeControl(ctrl);
+    settled_ = options_.settleIterations > 0 && settleWatch_.observe(check);
     std::optional<model::LeakSite> leak = leakWatch_.observe(sample);
+    std::optional<model::LeakSite> runaway =
+        options_.runawayFactor > 0.0F ? runawayWatch_.observe(check) : std::nullopt;
     stats_.growthRate = static_cast<float>(leakWatch_.lastRate());
-    return options_.stopOnLeak ? leak : std::nullopt;
+    if (!options_.stopOnLeak) {
+        return std::nullopt;
+    }
+    return leak ? leak : runaway;
 }
 
 // Keeps a margin of free slots for the band's advance until the next check, and gives memory

@@ -7,14 +7,19 @@
 #include "model/solver_types.hpp"
 #include "solver/brick_pool_view.hpp"
 #include "solver/control_block.hpp"
+#include "solver/front_check.hpp"
 #include "solver/leak_watch.hpp"
+#include "solver/runaway_watch.hpp"
+#include "solver/settle_watch.hpp"
 #include "speed/speed_inputs.hpp"
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace steerseg::solver {
@@ -98,6 +103,11 @@ class LevelSetSolver {
     [[nodiscard]] const gpu::ScanTexture& scan() const { return *scan_; }
     [[nodiscard]] model::SolverStats stats() const;
     [[nodiscard]] const glm::ivec3& dims() const { return dims_; }
+    // Called with every check's counters (benchmarks record series for tests/data/growth);
+    // an empty function stops it.
+    void setCheckObserver(std::function<void(const FrontCheck&)> observer) {
+        checkObserver_ = std::move(observer);
+    }
 
   private:
     LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own, const gpu::ScanTexture* borrowed,
@@ -113,6 +123,7 @@ class LevelSetSolver {
     void uploadPhi(std::span<const float> phi);
     void noteChange();
     void uploadBarriers();
+    // The leak watch's and the settle watch's check; sets settled_.
     std::optional<model::LeakSite> watchGrowth(detail::ControlBlock& ctrl);
     void takeVisits(detail::ControlBlock& ctrl);
     bool managePool(const detail::ControlBlock& ctrl);
@@ -137,9 +148,13 @@ class LevelSetSolver {
     std::uint32_t lastUsed_ = 0;                // used slots at the last pool check
     std::optional<detail::ControlBlock> known_; // the GPU's control block, when known
     bool converged_ = false;
+    bool settled_ = false; // SettleWatch at the last check
     bool wakePending_ = true;
     std::vector<model::Sphere> barriers_;
     LeakWatch leakWatch_;
+    SettleWatch settleWatch_;
+    RunawayWatch runawayWatch_;
+    std::function<void(const FrontCheck&)> checkObserver_;
 };
 
 } // namespace steerseg::solver
