@@ -3,6 +3,7 @@
 #include "cli/commands.hpp"
 #include "cli/segmentation_options.hpp"
 #include "core/mask_overlap.hpp"
+#include "files/file_write.hpp"
 #include "gpu/gpu_info.hpp"
 #include "model/export_format.hpp"
 #include "platform/egl/offscreen_context.hpp"
@@ -13,6 +14,7 @@
 #include <cstdio>
 #include <fstream>
 #include <optional>
+#include <span>
 #include <stdexcept>
 
 namespace steerseg::cli {
@@ -75,11 +77,8 @@ int runSegment(std::span<const std::string> words) {
         session, run, mask,
         {input, output, gpu::queryGpuInfo().renderer, request.params, reference});
     if (const auto report = args.value("report")) {
-        std::ofstream out(*report);
-        out << text << "\n";
-        if (!out) {
-            throw files::WriteError(*report, "cannot write the report");
-        }
+        const std::string line = text + "\n";
+        files::writeFileAtomically(*report, {std::as_bytes(std::span(line))});
     }
     std::printf("%s\n", text.c_str());
     return 0;

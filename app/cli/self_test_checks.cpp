@@ -1,5 +1,7 @@
 #include "cli/self_test_checks.hpp"
 
+#include "files/file_append.hpp"
+#include "files/file_error.hpp"
 #include "platform/input/node_access.hpp"
 
 #include <algorithm>
@@ -94,6 +96,15 @@ CheckResult checkWritableFolder(const std::string& name, const std::filesystem::
                 {}};
     }
     return {name, CheckLevel::Ok, where + " writable", {}};
+}
+
+CheckResult checkAuditLog(const std::filesystem::path& path) {
+    try {
+        const files::AppendFile file(path);
+    } catch (const files::WriteError& e) {
+        return {"audit log", CheckLevel::Fail, std::string(e.what()) + " (cannot append)", {}};
+    }
+    return {"audit log", CheckLevel::Ok, absoluteText(path) + " opens for append", {}};
 }
 
 std::vector<ControllerNode> findControllerNodes(const std::filesystem::path& devRoot) {

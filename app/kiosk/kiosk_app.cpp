@@ -73,6 +73,9 @@ class Kiosk {
           painter_(cfg.frame.interactiveScale), frameBudget_(cfg.frame.budgetMs * 1e-3),
           start_(Clock::now()) {
         screenState_.layout = layout();
+        if (const auto note = audit_.takeRepairNote()) {
+            err_ << kLogPrefix << *note << '\n';
+        }
         if (!options.scan.empty() && !player_ && !autosave_.resuming()) {
             actions_.emplace_back(model::LoadScan{options.scan});
         }
@@ -84,6 +87,7 @@ class Kiosk {
         now_ = secondsSince(start_);
         const bool hadInput = pollInput();
         applyActions();
+        reportAudit();
         stepSolver();
         autosave();
         drawScreen();
@@ -99,12 +103,18 @@ class Kiosk {
 
     [[nodiscard]] int exitCode() const { return exitCode_; }
 
+    // The journal hears of each outage of the audit log and its end once; the screen shows it
+    // all along (Status::auditProblem).
+    void reportAudit() {
+        if (const auto error = audit_.takeError()) {
+            err_ << kLogPrefix << *error << '\n';
+        }
+    }
+
     void finish(std::ostream& out) {
         service_.stopping();
         autosave_.finish(flow_, engine_);
-        if (const auto error = audit_.takeError()) {
-            err_ << "steerseg kiosk: audit log: " << *error << '\n';
-        }
+        reportAudit();
         out << stats_.summary() << '\n';
         if (options_.stats) {
             stats_.write(*options_.stats, info_.description);
