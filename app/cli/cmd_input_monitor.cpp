@@ -240,7 +240,7 @@ int live(const config::KioskConfig& cfg, std::optional<double> maxSeconds,
                         input::liveInputBackend(std::cout, ""), true, std::cout, limits);
     Printer printer(std::cout);
     printer.attach(hub);
-    std::optional<std::string> recordError;
+    std::optional<files::WriteError> recordError;
     if (record) {
         hub.setRecordObserver([&record, &recordError](const platform::input::RawRecord& r) {
             if (recordError) {
@@ -249,7 +249,7 @@ int live(const config::KioskConfig& cfg, std::optional<double> maxSeconds,
             try {
                 record->append(platform::input::formatRecordLine(r) + '\n');
             } catch (const files::WriteError& e) {
-                recordError = e.what();
+                recordError = e; // the records before it are kept
             }
         });
     }
@@ -272,7 +272,7 @@ int live(const config::KioskConfig& cfg, std::optional<double> maxSeconds,
     }
     std::signal(SIGINT, previous);
     if (recordError) {
-        throw std::runtime_error(*recordError + " (the records before it are kept)");
+        throw *recordError;
     }
     if (record) {
         std::cout << "recorded to " << *recordFile << '\n';
