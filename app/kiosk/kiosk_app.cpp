@@ -3,6 +3,7 @@
 #include "config/config_loader.hpp"
 #include "engine/session_engine.hpp"
 #include "exports/image_file.hpp"
+#include "files/file_error.hpp"
 #include "input/input_backend.hpp"
 #include "input/input_hub.hpp"
 #include "input/key_bindings.hpp"
@@ -118,6 +119,13 @@ class Kiosk {
         out << stats_.summary() << '\n';
         if (options_.stats) {
             stats_.write(*options_.stats, info_.description);
+        }
+        if (!audit_.ok()) {
+            // The records held for the log end with the process: a session without its audit
+            // trail does not end as a success (exit 4, as for any output not written).
+            throw files::WriteError(audit_.path(), std::to_string(audit_.held()) +
+                                                       " audit records could not be written (" +
+                                                       audit_.problem() + ")");
         }
     }
 

@@ -153,12 +153,6 @@ AuditLog::AuditLog(std::filesystem::path path, WallClock wall, SteadyClock stead
     }
     opened_ = steady_();
     lastTry_ = opened_;
-    try {
-        repairNote_ = repairTornTail(path_);
-    } catch (const std::exception& e) {
-        fail(e.what());
-        return;
-    }
     flush();
 }
 
@@ -189,6 +183,11 @@ void AuditLog::flush() {
     lastTry_ = steady_();
     try {
         if (!file_) {
+            // Before every opening, the first and each after an outage: no record may be glued
+            // onto a torn line.
+            if (auto note = repairTornTail(path_)) {
+                repairNote_ = std::move(note);
+            }
             file_ = std::make_unique<files::AppendFile>(path_);
         }
         while (!held_.empty()) {
