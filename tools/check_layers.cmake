@@ -5,7 +5,7 @@
 # allowed itself and the modules listed for it, no more (docs/architecture.md draws them):
 #   model  <-  core  <-  files  <-  scan  <-  exports
 #   core  <-  gpu  <-  speed  <-  solver  <-  render  <-  session  (session: scan, exports too)
-#   model, core  <-  workflow  <-  config  <-  input
+#   model, core, files  <-  workflow  <-  config  <-  input
 #   workflow  <-  script, autosave;  workflow, session  <-  engine
 #   exports, workflow  <-  net (the DICOM network node)
 #   everything  <-  ui  <-  kiosk  <-  cli
@@ -24,7 +24,7 @@ set(allowed_speed "model;core;gpu;speed")
 set(allowed_solver "model;core;gpu;speed;solver")
 set(allowed_render "model;core;gpu;speed;solver;render")
 set(allowed_session "model;core;files;scan;exports;gpu;speed;solver;render;session")
-set(allowed_workflow "model;core;workflow")
+set(allowed_workflow "model;core;files;workflow")
 set(allowed_config "model;core;workflow;config")
 set(allowed_input "model;core;workflow;config;input;platform")
 set(allowed_script "model;core;files;scan;workflow;script;platform")

@@ -42,6 +42,11 @@ class Drawer {
                       IM_COL32_WHITE, m.banner.c_str());
         ImGui::PopFont();
         ImGui::Dummy(ImVec2(w, h));
+        if (!m.auditAlarm.empty()) {
+            ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
+            ImGui::TextWrapped("%s", m.auditAlarm.c_str());
+            ImGui::PopStyleColor();
+        }
         if (!m.scanName.empty()) {
             ImGui::TextDisabled("%s", m.scanName.c_str());
         }

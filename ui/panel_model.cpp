@@ -252,6 +252,12 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
     }
     m.message = st.message;
     m.error = s == State::Error;
+    if (!st.auditProblem.empty()) {
+        m.auditAlarm =
+            "AUDIT LOG NOT WRITTEN: " + st.auditProblem +
+            (st.auditAcknowledged ? ". Acknowledged: exports are recorded once it can be written."
+                                  : ". Export waits for an acknowledgement.");
+    }
     if (s == State::Done && !st.exportedPath.empty() && m.message.empty()) {
         m.message = "Saved to " + st.exportedPath;
     }
@@ -344,6 +350,9 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
 
     if (s == State::Error) {
         m.nav.push_back({"Dismiss", model::Dismiss{}});
+    }
+    if (st.allowed.contains(ActionKind::AcknowledgeAudit)) {
+        m.nav.push_back({"Acknowledge: no audit log", model::AcknowledgeAudit{}});
     }
     if (offered.contains(ActionKind::Back)) {
         const char* label = s == State::Review ? "Back: steer"

@@ -49,6 +49,8 @@ struct PanelModel {
     std::string hint; // what to do next
     std::string message;
     bool error = false;
+    // The audit log cannot be written: shown above all else until it can ("" = it can).
+    std::string auditAlarm;
     std::optional<double> progress; // Loading: 0..1, < 0 when unknown
     std::vector<Readout> readouts;
     std::vector<ParamRow> params;

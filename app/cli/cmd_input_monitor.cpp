@@ -8,6 +8,9 @@
 #include "cli/commands.hpp"
 #include "cli/kiosk_config_file.hpp"
 #include "config/config_loader.hpp"
+#include "files/file_append.hpp"
+#include "files/file_error.hpp"
+#include "files/file_write.hpp"
 #include "input/input_backend.hpp"
 #include "input/input_hub.hpp"
 #include "platform/input/recording.hpp"
@@ -20,6 +23,9 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <memory>
+#include <optional>
+#include <span>
 #include <sstream>
 #include <thread>
 #include <variant>
@@ -32,6 +38,7 @@ using platform::input::AttachedDevice;
 using platform::input::ControlEvent;
 using platform::input::DeviceSpec;
 
+constexpr std::string_view kRecordingHeader = "# steerseg input recording 1\n";
 constexpr double kFrameSeconds = 1.0 / 100.0; // the monitor's poll rate, live and replayed
 constexpr double kReplayTail = 1.0;           // after a replay's last record: a held ring's repeats
 
@@ -208,22 +215,28 @@ int live(const config::KioskConfig& cfg, std::optional<double> maxSeconds,
          const std::optional<std::string>& recordFile) {
     const std::vector<DeviceSpec> specs = input::deviceSpecs(cfg.input.devices);
     listAttached(specs, std::cout);
-    std::ofstream record;
+    // Appended record by record and synced, so a crash or a full disk keeps what came before.
+    std::unique_ptr<files::AppendFile> record;
     if (recordFile) {
-        record.open(*recordFile, std::ios::binary | std::ios::trunc);
-        if (!record) {
-            throw files::WriteError(*recordFile, "cannot write the recording");
-        }
-        record << "# steerseg input recording 1\n";
+        files::writeFileAtomically(*recordFile, {std::as_bytes(std::span(kRecordingHeader))});
+        record = std::make_unique<files::AppendFile>(*recordFile);
     }
     input::InputHubLimits limits;
     input::InputHub hub(specs, input::ControlBindings(cfg.bindings.knobs, cfg.bindings.buttons),
                         input::liveInputBackend(std::cout, ""), true, std::cout, limits);
     Printer printer(std::cout);
     printer.attach(hub);
-    if (record.is_open()) {
-        hub.setRecordObserver([&record](const platform::input::RawRecord& r) {
-            record << platform::input::formatRecordLine(r) << '\n';
+    std::optional<files::WriteError> recordError;
+    if (record) {
+        hub.setRecordObserver([&record, &recordError](const platform::input::RawRecord& r) {
+            if (recordError) {
+                return;
+            }
+            try {
+                record->append(platform::input::formatRecordLine(r) + '\n');
+            } catch (const files::WriteError& e) {
+                recordError = e; // the records before it are kept
+            }
         });
     }
     std::cout << "watching " << specs.size() << " configured devices";
@@ -244,11 +257,10 @@ int live(const config::KioskConfig& cfg, std::optional<double> maxSeconds,
         std::this_thread::sleep_for(std::chrono::duration<double>(kFrameSeconds));
     }
     std::signal(SIGINT, previous);
-    if (record.is_open()) {
-        record.flush();
-        if (!record) {
-            throw files::WriteError(*recordFile, "writing the recording failed");
-        }
+    if (recordError) {
+        throw *recordError;
+    }
+    if (record) {
         std::cout << "recorded to " << *recordFile << '\n';
     }
     return kExitOk;

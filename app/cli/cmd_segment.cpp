@@ -4,6 +4,7 @@
 #include "cli/segment_clicks.hpp"
 #include "cli/segmentation_options.hpp"
 #include "core/mask_overlap.hpp"
+#include "files/file_write.hpp"
 #include "gpu/gpu_info.hpp"
 #include "model/export_format.hpp"
 #include "platform/egl/offscreen_context.hpp"
@@ -13,6 +14,7 @@
 
 #include <cstdio>
 #include <optional>
+#include <span>
 #include <stdexcept>
 
 namespace steerseg::cli {

@@ -174,6 +174,7 @@ int runSelfTest(std::span<const std::string> words) {
             auditFolder = ".";
         }
         results.push_back(checkWritableFolder("audit log folder", auditFolder));
+        results.push_back(checkAuditLog(loaded.config.audit.path));
     }
     results.push_back(checkWritableFolder("autosave folder", loaded.config.autosave.folder));
     results.push_back(checkControllers(findControllerNodes("/dev")));

@@ -96,6 +96,29 @@ CheckResult checkWritableFolder(const std::string& name, const std::filesystem::
     return {name, CheckLevel::Ok, where + " writable", {}};
 }
 
+CheckResult checkAuditLog(const std::filesystem::path& path) {
+    const std::string where = absoluteText(path);
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) {
+        // Not created here: a file made by a self-test run as root would be root's, and the
+        // service could not append to it. The folder's check shows a new file can be made.
+        return {"audit log", CheckLevel::Ok, where + " not there yet (the kiosk creates it)", {}};
+    }
+    const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+    if (fd < 0) {
+        const int error = errno;
+        std::string why = systemError(error);
+        if (error == EISDIR) {
+            why = "a folder of that name is in the way";
+        } else if (error == EACCES || error == EPERM) {
+            why = "this user may not append to it (permission denied)";
+        }
+        return {"audit log", CheckLevel::Fail, where + ": cannot append (" + why + ")", {}};
+    }
+    ::close(fd);
+    return {"audit log", CheckLevel::Ok, where + " opens for append", {}};
+}
+
 std::vector<ControllerNode> findControllerNodes(const std::filesystem::path& devRoot) {
     std::vector<ControllerNode> nodes;
     const auto scan = [&](const std::filesystem::path& dir, const std::string& prefix,

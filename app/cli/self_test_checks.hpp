@@ -28,6 +28,11 @@ CheckResult checkConfig(const config::LoadedConfig& loaded);
 // the kiosk will do there, as this user. Fail with the step and the system's reason.
 CheckResult checkWritableFolder(const std::string& name, const std::filesystem::path& folder);
 
+// Opens an existing audit log for append as the kiosk does, writing nothing and creating
+// nothing: Fail when the service could not (the file not this user's to write, a folder of that
+// name, a read-only mount), which the folder's check alone does not show.
+CheckResult checkAuditLog(const std::filesystem::path& path);
+
 // Device nodes controllers may sit behind, below `devRoot` (/dev): hidraw*, input/event*,
 // gpiochip*, and whether this process may open each for reading and writing.
 struct ControllerNode {

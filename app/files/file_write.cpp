@@ -1,6 +1,7 @@
 #include "files/file_write.hpp"
 
 #include "files/file_error.hpp"
+#include "files/io_faults.hpp"
 
 #include <atomic>
 #include <cerrno>
@@ -106,13 +107,15 @@ std::string causeText(int error, const std::filesystem::path& folder, std::size_
     }
     case ENOTDIR:
         return where + " is not a folder";
+    case EISDIR:
+        return "a folder of that name is in the way";
     default:
         return "cannot write to " + where + ": " + std::strerror(error);
     }
 }
 
 [[noreturn]] void fail(const std::filesystem::path& path, int error, std::size_t unwritten) {
-    throw WriteError(path, causeText(error, folderOf(path), unwritten));
+    failWrite(path, error, unwritten);
 }
 
 std::size_t totalSize(std::initializer_list<std::span<const std::byte>> pieces) {
@@ -133,7 +136,9 @@ int createTemporary(const std::filesystem::path& path, std::size_t bytes,
     for (int attempt = 0; attempt < 100; ++attempt) {
         temp = folder / ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()) +
                          "-" + std::to_string(counter++));
-        const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+        const int fd = unlessInjected(IoCall::Open, [&] {
+            return ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+        });
         if (fd >= 0) {
             return fd;
         }
@@ -151,7 +156,7 @@ void syncFolder(const std::filesystem::path& path) {
         fail(path, errno, 0);
     }
     // EINVAL: a file system that cannot sync a folder (some FUSE ones); nothing more to do.
-    const int rc = ::fsync(fd);
+    const int rc = unlessInjected(IoCall::SyncFolder, [&] { return ::fsync(fd); });
     const int error = errno;
     ::close(fd);
     if (rc != 0 && error != EINVAL) {
@@ -161,13 +166,18 @@ void syncFolder(const std::filesystem::path& path) {
 
 } // namespace
 
+void failWrite(const std::filesystem::path& path, int error, std::size_t unwritten) {
+    throw WriteError(path, causeText(error, folderOf(path), unwritten));
+}
+
 void writeAllTo(int fd, const std::filesystem::path& path,
                 std::initializer_list<std::span<const std::byte>> pieces) {
     std::size_t unwritten = totalSize(pieces);
     for (const auto& piece : pieces) {
         std::span<const std::byte> rest = piece;
         while (!rest.empty()) {
-            const ssize_t n = ::write(fd, rest.data(), rest.size());
+            const ssize_t n = unlessInjected(IoCall::Write,
+                                             [&] { return ::write(fd, rest.data(), rest.size()); });
             if (n < 0) {
                 if (errno == EINTR) {
                     continue;
@@ -197,7 +207,7 @@ void writeFileAtomically(const std::filesystem::path& path,
     try {
         writeAllTo(fd, path, pieces);
         // Delayed allocation can report a full disk only here, at fsync or close.
-        if (::fsync(fd) != 0) {
+        if (unlessInjected(IoCall::Sync, [&] { return ::fsync(fd); }) != 0) {
             fail(path, errno, totalSize(pieces));
         }
         const int rc = ::close(fd);
@@ -205,12 +215,9 @@ void writeFileAtomically(const std::filesystem::path& path,
         if (rc != 0) {
             fail(path, errno, totalSize(pieces));
         }
-        if (::rename(temp.c_str(), path.c_str()) != 0) {
-            const int error = errno;
-            if (error == EISDIR) {
-                throw WriteError(path, "a folder of that name is in the way");
-            }
-            fail(path, error, 0);
+        if (unlessInjected(IoCall::Rename, [&] { return ::rename(temp.c_str(), path.c_str()); }) !=
+            0) {
+            fail(path, errno, 0);
         }
     } catch (...) {
         discard();

@@ -43,4 +43,7 @@ void writeFileAtomically(const std::filesystem::path& path,
 void writeAllTo(int fd, const std::filesystem::path& path,
                 std::initializer_list<std::span<const std::byte>> pieces);
 
+// Throws the files::WriteError for `error` (an errno) writing `path`, in the one-line words above.
+[[noreturn]] void failWrite(const std::filesystem::path& path, int error, std::size_t unwritten);
+
 } // namespace steerseg::files

@@ -1,9 +1,12 @@
 #include "kiosk/frame_stats.hpp"
 
+#include "files/file_write.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 
@@ -66,11 +69,8 @@ void FrameStats::write(const std::filesystem::path& path, const std::string& des
     for (const auto& [w, h] : viewSizes_) {
         j["view_sizes"].push_back({w, h});
     }
-    std::ofstream out(path);
-    out << j.dump(2) << '\n';
-    if (!out) {
-        throw std::runtime_error(path.string() + ": cannot write the frame statistics");
-    }
+    const std::string text = j.dump(2) + '\n';
+    files::writeFileAtomically(path, {std::as_bytes(std::span(text))});
 }
 
 std::string FrameStats::summary() const {

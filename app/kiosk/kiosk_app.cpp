@@ -3,6 +3,7 @@
 #include "config/config_loader.hpp"
 #include "engine/session_engine.hpp"
 #include "exports/image_file.hpp"
+#include "files/file_error.hpp"
 #include "input/input_backend.hpp"
 #include "input/input_hub.hpp"
 #include "input/key_bindings.hpp"
@@ -74,6 +75,9 @@ class Kiosk {
           painter_(cfg.frame.interactiveScale), frameBudget_(cfg.frame.budgetMs * 1e-3),
           start_(Clock::now()) {
         screenState_.layout = layout();
+        if (const auto note = audit_.takeRepairNote()) {
+            err_ << kLogPrefix << *note << '\n';
+        }
         if (!options.scan.empty() && !player_ && !autosave_.resuming()) {
             actions_.emplace_back(model::LoadScan{options.scan});
         }
@@ -88,6 +92,7 @@ class Kiosk {
             pacing_.input(now_);
         }
         applyActions();
+        reportAudit();
         stepSolver();
         autosave();
         drawScreen(hadInput);
@@ -103,18 +108,31 @@ class Kiosk {
 
     [[nodiscard]] int exitCode() const { return exitCode_; }
 
+    // The journal hears of each outage of the audit log and its end once; the screen shows it
+    // all along (Status::auditProblem).
+    void reportAudit() {
+        if (const auto error = audit_.takeError()) {
+            err_ << kLogPrefix << *error << '\n';
+        }
+    }
+
     void finish(std::ostream& out) {
         service_.stopping();
         autosave_.finish(flow_, engine_);
-        if (const auto error = audit_.takeError()) {
-            err_ << "steerseg kiosk: audit log: " << *error << '\n';
-        }
+        reportAudit();
         out << stats_.summary() << '\n';
         if (options_.stats) {
             const ui::Layout l = layout();
             stats_.viewSizes(
                 {{l.view3d.w, l.view3d.h}, {l.slice1.w, l.slice1.h}, {l.slice2.w, l.slice2.h}});
             stats_.write(*options_.stats, info_.description);
+        }
+        if (!audit_.ok()) {
+            // The records held for the log end with the process: a session without its audit
+            // trail does not end as a success (exit 4, as for any output not written).
+            throw files::WriteError(audit_.path(), std::to_string(audit_.held()) +
+                                                       " audit records could not be written (" +
+                                                       audit_.problem() + ")");
         }
     }
 

@@ -88,6 +88,8 @@ template <class T> constexpr std::string_view nameOf() {
         return "back";
     } else if constexpr (std::is_same_v<T, Dismiss>) {
         return "dismiss";
+    } else if constexpr (std::is_same_v<T, AcknowledgeAudit>) {
+        return "acknowledge_audit";
     } else if constexpr (std::is_same_v<T, RotateView>) {
         return "rotate_view";
     } else if constexpr (std::is_same_v<T, ZoomView>) {
@@ -128,6 +130,7 @@ const std::vector<Binding>& bindings() {
         {"proceed", [](double) -> Action { return Proceed{}; }},
         {"back", [](double) -> Action { return Back{}; }},
         {"dismiss", [](double) -> Action { return Dismiss{}; }},
+        {"acknowledge_audit", [](double) -> Action { return AcknowledgeAudit{}; }},
         {"quit", [](double) -> Action { return Quit{}; }},
         {"erase_mode:on", [](double) -> Action { return SetEraseMode{true}; }},
         {"erase_mode:off", [](double) -> Action { return SetEraseMode{false}; }},
@@ -289,6 +292,7 @@ static_assert(std::is_same_v<TypeOf<ActionKind::Restart>, Restart>);
 static_assert(std::is_same_v<TypeOf<ActionKind::Proceed>, Proceed>);
 static_assert(std::is_same_v<TypeOf<ActionKind::Back>, Back>);
 static_assert(std::is_same_v<TypeOf<ActionKind::Dismiss>, Dismiss>);
+static_assert(std::is_same_v<TypeOf<ActionKind::AcknowledgeAudit>, AcknowledgeAudit>);
 static_assert(std::is_same_v<TypeOf<ActionKind::RotateView>, RotateView>);
 static_assert(std::is_same_v<TypeOf<ActionKind::ZoomView>, ZoomView>);
 static_assert(std::is_same_v<TypeOf<ActionKind::PageSlice>, PageSlice>);

@@ -131,6 +131,9 @@ struct Restart {}; // drop the level set and go back to seeding (undoable)
 struct Proceed {};
 struct Back {};
 struct Dismiss {}; // acknowledge an error
+// The operator knows the audit log cannot be written and exports anyway (recorded in the log
+// once it can be written again); until then export is refused.
+struct AcknowledgeAudit {};
 // View state.
 struct RotateView { // 3D view, degrees
     double yaw = 0.0;
@@ -167,8 +170,8 @@ using Action =
     std::variant<LoadScan, Probe, ApplyPreset, SetParam, NudgeParam, NudgeSelected, SelectParam,
                  CycleParam, SetWindow, AddSeed, Erase, SetEraseMode, SetSpeed, MarkOutside,
                  ClearExamples, SetOutsideMode, PaintStroke, Run, Pause, ToggleRun, Finish, Resume,
-                 Export, Undo, Redo, Restart, Proceed, Back, Dismiss, RotateView, ZoomView,
-                 PageSlice, SetSlice, ShowSlices, Correct, Quit>;
+                 Export, Undo, Redo, Restart, Proceed, Back, Dismiss, AcknowledgeAudit, RotateView,
+                 ZoomView, PageSlice, SetSlice, ShowSlices, Correct, Quit>;
 
 // "load_scan", "probe", ... (snake_case of the type): the audit log's and scripts' names.
 std::string_view actionName(const Action& action);
@@ -205,6 +208,7 @@ enum class ActionKind {
     Proceed,
     Back,
     Dismiss,
+    AcknowledgeAudit,
     RotateView,
     ZoomView,
     PageSlice,

@@ -277,6 +277,7 @@ void addOperatorVerbs(VerbTable& table) {
         {"proceed", plain<model::Proceed>("proceed")},
         {"back", plain<model::Back>("back")},
         {"dismiss", plain<model::Dismiss>("dismiss")},
+        {"acknowledge_audit", plain<model::AcknowledgeAudit>("acknowledge_audit")},
         {"quit", plain<model::Quit>("quit")},
         {"rotate", rotate},
         {"zoom", zoom},

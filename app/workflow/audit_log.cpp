@@ -1,5 +1,7 @@
 #include "workflow/audit_log.hpp"
 
+#include "files/file_append.hpp"
+#include "files/file_error.hpp"
 #include "model/speed_kind.hpp"
 #include "workflow/utc_time.hpp"
 
@@ -113,6 +115,55 @@ nlohmann::json actionValues(const model::Action& action) {
     return std::visit([](const auto& a) { return values(a); }, action);
 }
 
+namespace {
+
+constexpr std::size_t kMaxHeld = 100000; // a day of a busy console's records, a few tens of MB
+constexpr std::chrono::seconds kRetryEvery{1};
+
+std::string readAll(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+}
+
+bool wholeRecord(const std::string& line) {
+    try {
+        return nlohmann::json::parse(line).is_object();
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
+} // namespace
+
+std::optional<std::string> repairTornTail(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) {
+        return std::nullopt;
+    }
+    const std::string text = readAll(path);
+    const std::size_t cut =
+        text.find_last_of('\n') == std::string::npos ? 0 : text.find_last_of('\n') + 1;
+    const std::string tail = text.substr(cut);
+    if (tail.empty()) {
+        return std::nullopt;
+    }
+    if (wholeRecord(tail)) {
+        files::AppendFile(path).append("\n");
+        return "audit log " + path.string() + ": the last record lacked its newline; added";
+    }
+    std::filesystem::path aside = path;
+    aside += ".torn";
+    files::AppendFile(aside).append(tail + "\n");
+    std::filesystem::resize_file(path, cut, ec);
+    if (ec) {
+        throw files::WriteError(path, "cannot cut off the torn last record: " + ec.message());
+    }
+    return "audit log " + path.string() + ": a torn last record (" + std::to_string(tail.size()) +
+           " bytes, from a crash) moved to " + aside.string();
+}
+
 AuditLog::AuditLog(std::filesystem::path path, WallClock wall, SteadyClock steady)
     : path_(std::move(path)), wall_(std::move(wall)), steady_(std::move(steady)) {
     if (!wall_) {
@@ -122,49 +173,69 @@ AuditLog::AuditLog(std::filesystem::path path, WallClock wall, SteadyClock stead
         steady_ = [] { return std::chrono::steady_clock::now(); };
     }
     opened_ = steady_();
-    std::error_code ec;
-    if (path_.has_parent_path()) {
-        std::filesystem::create_directories(path_.parent_path(), ec); // fopen names the failure
-    }
-    file_ = std::fopen(path_.c_str(), "a+");
-    if (file_ == nullptr) {
-        fail(std::string("cannot open it: ") + std::strerror(errno));
-        return;
-    }
-    // A crash may have torn the last line: the first new record must not be glued onto it.
-    if (std::filesystem::is_regular_file(path_, ec) && std::fseek(file_, -1, SEEK_END) == 0 &&
-        std::fgetc(file_) != '\n') {
-        std::fseek(file_, 0, SEEK_END);
-        if (std::fputc('\n', file_) == EOF || std::fflush(file_) != 0) {
-            fail(std::string("write failed: ") + std::strerror(errno));
-        }
-    }
+    lastTry_ = opened_;
+    flush();
 }
 
-AuditLog::~AuditLog() {
-    if (file_ != nullptr) {
-        std::fclose(file_);
-    }
-}
+AuditLog::~AuditLog() = default;
 
 void AuditLog::fail(const std::string& what) {
-    if (error_.empty()) {
-        error_ = "audit log " + path_.string() + ": " + what;
+    if (problem_.empty()) {
+        untold_.push_back("audit log " + what);
     }
+    problem_ = "audit log " + what;
+    file_.reset(); // reopened on the next try: the file may have been replaced meanwhile
 }
 
 std::optional<std::string> AuditLog::takeError() {
-    if (error_.empty() || reported_) {
+    if (untold_.empty()) {
         return std::nullopt;
     }
-    reported_ = true;
-    return error_;
+    std::string oldest = std::move(untold_.front());
+    untold_.pop_front();
+    return oldest;
+}
+
+std::optional<std::string> AuditLog::takeRepairNote() {
+    return std::exchange(repairNote_, std::nullopt);
+}
+
+void AuditLog::flush() {
+    lastTry_ = steady_();
+    try {
+        if (!file_) {
+            // Before every opening, the first and each after an outage: no record may be glued
+            // onto a torn line.
+            if (auto note = repairTornTail(path_)) {
+                repairNote_ = std::move(note);
+            }
+            file_ = std::make_unique<files::AppendFile>(path_);
+        }
+        while (!held_.empty()) {
+            file_->append(held_.front());
+            held_.pop_front();
+        }
+    } catch (const std::exception& e) {
+        fail(e.what());
+        return;
+    }
+    if (!problem_.empty()) {
+        untold_.push_back("audit log " + path_.string() + ": written again" +
+                          (dropped_ > 0
+                               ? ", " + std::to_string(dropped_) + " records lost meanwhile"
+                               : std::string()));
+        problem_.clear();
+        dropped_ = 0;
+    }
+}
+
+void AuditLog::retry() {
+    if (!problem_.empty() && steady_() - lastTry_ >= kRetryEvery) {
+        flush();
+    }
 }
 
 void AuditLog::write(nlohmann::json& record) {
-    if (file_ == nullptr) {
-        return;
-    }
     try {
         const std::chrono::duration<double> since = steady_() - opened_;
         record["time"] = isoUtc(wall_());
@@ -172,14 +243,16 @@ void AuditLog::write(nlohmann::json& record) {
         // Paths and names come from operators and scripts: bad UTF-8 is replaced, not thrown.
         std::string line = record.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
         line += '\n';
-        if (std::fwrite(line.data(), 1, line.size(), file_) != line.size() ||
-            std::fflush(file_) != 0) {
-            fail(std::string("write failed: ") + std::strerror(errno));
-            std::clearerr(file_);
+        if (held_.size() >= kMaxHeld) {
+            held_.pop_front();
+            ++dropped_;
         }
+        held_.push_back(std::move(line));
     } catch (const std::exception& e) {
-        fail(std::string("record failed: ") + e.what());
+        fail(path_.string() + ": record failed: " + e.what());
+        return;
     }
+    flush();
 }
 
 void AuditLog::action(model::State state, const model::Action& action, const nlohmann::json& result,
@@ -199,7 +272,7 @@ void AuditLog::action(model::State state, const model::Action& action, const nlo
         }
         write(r);
     } catch (const std::exception& e) {
-        fail(std::string("record failed: ") + e.what());
+        fail(path_.string() + ": record failed: " + e.what());
     }
 }
 
@@ -217,7 +290,7 @@ void AuditLog::transition(model::State from, model::State to, std::string_view c
         }
         write(r);
     } catch (const std::exception& e) {
-        fail(std::string("record failed: ") + e.what());
+        fail(path_.string() + ": record failed: " + e.what());
     }
 }
 
@@ -232,7 +305,7 @@ void AuditLog::send(std::string_view peer, std::string_view file, std::string_vi
         }
         write(r);
     } catch (const std::exception& e) {
-        fail(std::string("record failed: ") + e.what());
+        fail(path_.string() + ": record failed: " + e.what());
     }
 }
 

@@ -40,6 +40,10 @@ struct DeviceLink {
 struct Status {
     model::State state = model::State::NoScan;
     std::string message; // the last error or notice for the operator ("" = none)
+    // Why the audit log cannot be written ("" while it is): the screen shows it until it clears,
+    // whatever the message; export waits for AcknowledgeAudit meanwhile.
+    std::string auditProblem;
+    bool auditAcknowledged = false;
     double loadProgress = 0.0;
     ScanInfo scan;
     model::LevelSetParams params;

@@ -46,11 +46,16 @@ std::string transitionTableMarkdown() {
                       "|---|---|---|---|---|---|\n";
     for (const Rule& r : transitionRules()) {
         const bool never = r.guard == Guard::Never;
-        const std::string_view needs = r.guard == Guard::Always ? "" : guardName(r.guard);
+        std::string needs(r.guard == Guard::Always ? "" : guardName(r.guard));
+        std::string refusal(r.refusal);
+        if (r.also != Guard::Always) {
+            needs += "; " + std::string(guardName(r.also));
+            refusal += "; " + std::string(r.alsoRefusal);
+        }
         const std::string next = never    ? ""
                                  : r.next ? std::string(model::stateName(*r.next))
                                           : "same";
-        out += row(statesText(r.states), actionsText(r.actions), needs, next, r.refusal, r.note);
+        out += row(statesText(r.states), actionsText(r.actions), needs, next, refusal, r.note);
     }
     for (const StateDefault& d : stateDefaults()) {
         out += row(std::string(model::stateName(d.state)), "any other", guardName(Guard::Never), "",

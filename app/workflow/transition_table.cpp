@@ -62,6 +62,10 @@ std::string_view guardName(Guard guard) {
         return "something to redo";
     case Guard::Examples:
         return "examples";
+    case Guard::AuditKept:
+        return "the audit log written or its loss acknowledged";
+    case Guard::AuditLost:
+        return "the audit log not written, not acknowledged";
     }
     return "?";
 }
@@ -79,6 +83,9 @@ Verdict decide(model::State state, model::ActionKind kind, const Facts& facts) {
     }
     if (!holds(rule->guard, facts)) {
         return {false, std::nullopt, refusalIn(state, rule->refusal)};
+    }
+    if (!holds(rule->also, facts)) {
+        return {false, std::nullopt, refusalIn(state, rule->alsoRefusal)};
     }
     return {true, rule->next, {}};
 }

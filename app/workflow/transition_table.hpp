@@ -45,16 +45,33 @@ struct Facts {
     bool unexported = false;
     bool canUndo = false;
     bool canRedo = false;
-    bool examples = false; // classify has an inside or an outside example
+    bool examples = false;          // classify has an inside or an outside example
+    bool auditLost = false;         // the audit log cannot be written now
+    bool auditAcknowledged = false; // ... and the operator said to export anyway
 };
 // The same facts as a status shows them (a status built by hand, a test's).
 inline Facts factsOf(const Status& status) {
-    return {status.hasLevelSet, status.unexported, status.canUndo, status.canRedo,
+    return {status.hasLevelSet,
+            status.unexported,
+            status.canUndo,
+            status.canRedo,
             !status.insideExamples.empty() || !status.outsideExamples.empty() ||
-                !status.paintedInside.empty() || !status.paintedOutside.empty()};
+                !status.paintedInside.empty() || !status.paintedOutside.empty(),
+            !status.auditProblem.empty(),
+            status.auditAcknowledged};
 }
 
-enum class Guard { Always, Never, LevelSet, NoUnexportedWork, CanUndo, CanRedo, Examples };
+enum class Guard {
+    Always,
+    Never,
+    LevelSet,
+    NoUnexportedWork,
+    CanUndo,
+    CanRedo,
+    Examples,
+    AuditKept, // the audit log is written, or the operator acknowledged that it cannot be
+    AuditLost, // the audit log cannot be written and that is not acknowledged yet
+};
 std::string_view guardName(Guard guard); // the docs' words: "always", "level set", ...
 constexpr bool holds(Guard guard, const Facts& facts) {
     switch (guard) {
@@ -72,6 +89,10 @@ constexpr bool holds(Guard guard, const Facts& facts) {
         return facts.canRedo;
     case Guard::Examples:
         return facts.examples;
+    case Guard::AuditKept:
+        return !facts.auditLost || facts.auditAcknowledged;
+    case Guard::AuditLost:
+        return facts.auditLost && !facts.auditAcknowledged;
     }
     return false;
 }
@@ -84,6 +105,9 @@ struct Rule {
     std::optional<model::State> next;
     std::string_view refusal; // when the guard fails; "{state}" stands for the state's name
     std::string_view note = {};
+    // A second condition with its own refusal, checked after the first (export: the audit).
+    Guard also = Guard::Always;
+    std::string_view alsoRefusal = {};
 };
 
 // The refusal of every action kind no rule names in a state.
@@ -128,6 +152,8 @@ inline constexpr std::string_view kNoLevelSetToRun = "no level set to evolve: ad
 inline constexpr std::string_view kNothingToExport = "nothing to export: add a seed first";
 inline constexpr std::string_view kExportNote =
     "then done; a failure goes back to review with the writer's message, the work kept";
+inline constexpr std::string_view kAuditLost =
+    "the audit log cannot be written: acknowledge (acknowledge_audit) to export without it";
 
 // clang-format off
 inline constexpr std::array kRules{
@@ -182,8 +208,9 @@ inline constexpr std::array kRules{
          {K::Resume}, Guard::Never, std::nullopt, "resume goes from review back to steering"},
     // Export.
     Rule{{S::Review, S::Paused}, {K::Export}, Guard::LevelSet, S::Exporting, kNothingToExport,
-         kExportNote},
-    Rule{{S::Review}, {K::Proceed}, Guard::LevelSet, S::Exporting, kNothingToExport, kExportNote},
+         kExportNote, Guard::AuditKept, kAuditLost},
+    Rule{{S::Review}, {K::Proceed}, Guard::LevelSet, S::Exporting, kNothingToExport, kExportNote,
+         Guard::AuditKept, kAuditLost},
     Rule{{S::Inspect, S::Seeding, S::Evolving, S::Done}, {K::Export}, Guard::Never, std::nullopt,
          "export from review (or paused)"},
     // Undo, restart.
@@ -209,6 +236,9 @@ inline constexpr std::array kRules{
     Rule{kAll, {K::Dismiss}, Guard::Always, std::nullopt, {},
          "clears the notice; error goes to paused with a level set, inspect with a scan, else no_scan"},
     Rule{kAll, {K::Quit}, Guard::Always, std::nullopt, {}, "quitRequested()"},
+    Rule{kAll, {K::AcknowledgeAudit}, Guard::AuditLost, std::nullopt,
+         "the audit log is written: nothing to acknowledge",
+         "export goes on without the audit log until it is written again; recorded in it then"},
 };
 
 inline constexpr std::array kDefaults{
@@ -237,7 +267,7 @@ Verdict decide(model::State state, model::ActionKind kind, const Facts& facts);
 constexpr model::ActionKinds allowedActions(model::State state, const Facts& facts) {
     model::ActionKinds out;
     for (const Rule& r : transitionRules()) {
-        if (r.states.contains(state) && holds(r.guard, facts)) {
+        if (r.states.contains(state) && holds(r.guard, facts) && holds(r.also, facts)) {
             out.insert(r.actions);
         }
     }

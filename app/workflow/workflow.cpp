@@ -96,10 +96,16 @@ Workflow::Outcome Workflow::handle(const model::Action& action) {
     }
     refreshAllowed();
     record(action, before, out);
+    refreshAllowed(); // the record may have found the audit log lost, or written again
     return out;
 }
 
 void Workflow::update() {
+    if (audit_ != nullptr && !audit_->ok()) {
+        audit_->retry();
+        noteAuditError();
+        refreshAllowed();
+    }
     if (status_.state != model::State::Loading) {
         return;
     }
@@ -158,8 +164,13 @@ bool Workflow::unexportedWork() const {
 }
 
 Facts Workflow::facts() const {
-    return {status_.hasLevelSet, unexportedWork(), undo_.undoTop() != nullptr,
-            undo_.redoTop() != nullptr, params_.speed.hasInside() || params_.speed.hasOutside()};
+    return {status_.hasLevelSet,
+            unexportedWork(),
+            undo_.undoTop() != nullptr,
+            undo_.redoTop() != nullptr,
+            params_.speed.hasInside() || params_.speed.hasOutside(),
+            !status_.auditProblem.empty(),
+            status_.auditAcknowledged};
 }
 
 void Workflow::refreshAllowed() {
@@ -168,10 +179,13 @@ void Workflow::refreshAllowed() {
     status_.allowed = allowedActions(status_.state, facts());
 }
 
+// The audit's problem is the status's own line, not the message: the next notice must not
+// replace it. Its acknowledgement lasts while the log stays lost.
 void Workflow::noteAuditError() {
     if (audit_ != nullptr) {
-        if (auto e = audit_->takeError()) {
-            status_.message = *e;
+        status_.auditProblem = audit_->problem();
+        if (status_.auditProblem.empty()) {
+            status_.auditAcknowledged = false;
         }
     }
 }
@@ -289,6 +303,11 @@ Workflow::Outcome Workflow::on(const model::Dismiss&) {
             enter(model::State::Inspect);
         }
     }
+    return ok();
+}
+
+Workflow::Outcome Workflow::on(const model::AcknowledgeAudit&) {
+    status_.auditAcknowledged = true;
     return ok();
 }
 

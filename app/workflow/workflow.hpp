@@ -106,6 +106,7 @@ class Workflow {
     Outcome on(const model::Proceed& a);
     Outcome on(const model::Back& a);
     Outcome on(const model::Dismiss& a);
+    Outcome on(const model::AcknowledgeAudit& a);
     Outcome on(const model::RotateView& a);
     Outcome on(const model::ZoomView& a);
     Outcome on(const model::PageSlice& a);

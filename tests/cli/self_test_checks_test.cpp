@@ -1,6 +1,7 @@
 // `steerseg --self-test`'s GL-free checks: folders, config, controller nodes, the report.
 #include "cli/self_test_checks.hpp"
 #include "support/test_data.hpp"
+#include "support/unprivileged.hpp"
 
 #include <fstream>
 #include <gtest/gtest.h>
@@ -46,6 +47,35 @@ TEST(SelfTestFolders, AFolderThatRefusesFilesFails) {
     const cli::CheckResult r = cli::checkWritableFolder("autosave folder", folder);
     EXPECT_EQ(r.level, CheckLevel::Fail);
     EXPECT_NE(r.detail.find("cannot create a file"), std::string::npos) << r.detail;
+}
+
+// Issue 25, item 1: the audit file itself, opened for append as the service opens it; the folder's
+// check passes in each of these cases.
+TEST(SelfTestAuditLog, OpensTheFileForAppendAsTheServiceWould) {
+    const auto dir = tempDir("self-test-audit");
+    const cli::CheckResult fresh = cli::checkAuditLog(dir / "audit.jsonl");
+    EXPECT_EQ(fresh.level, CheckLevel::Ok) << fresh.detail;
+    // Not created: one made by a self-test as root would be root's, not the service's.
+    EXPECT_FALSE(std::filesystem::exists(dir / "audit.jsonl"));
+    // A folder of that name.
+    std::filesystem::create_directories(dir / "folder.jsonl");
+    const cli::CheckResult folder = cli::checkAuditLog(dir / "folder.jsonl");
+    EXPECT_EQ(folder.level, CheckLevel::Fail);
+    EXPECT_NE(folder.detail.find("a folder of that name is in the way"), std::string::npos)
+        << folder.detail;
+    EXPECT_EQ(cli::checkWritableFolder("audit log folder", dir).level, CheckLevel::Ok);
+    // A file the service user may read but not write, in a folder it may write.
+    std::filesystem::permissions(dir, std::filesystem::perms::all);
+    std::ofstream(dir / "theirs.jsonl") << "{}\n";
+    std::filesystem::permissions(dir / "theirs.jsonl", std::filesystem::perms::owner_read |
+                                                           std::filesystem::perms::owner_write |
+                                                           std::filesystem::perms::others_read);
+    const std::string level = runUnprivileged([&] {
+        const cli::CheckResult r = cli::checkAuditLog(dir / "theirs.jsonl");
+        return std::string(r.level == CheckLevel::Fail ? "fail: " : "pass: ") + r.detail;
+    });
+    EXPECT_EQ(level.rfind("fail: ", 0), 0u) << level;
+    EXPECT_NE(level.find("may not append to it (permission denied)"), std::string::npos) << level;
 }
 
 TEST(SelfTestConfig, ProblemsFailWithEachListed) {

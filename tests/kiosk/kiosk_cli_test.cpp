@@ -182,6 +182,20 @@ TEST_F(KioskCli, TruncatedScanLeavesNoScan) {
     EXPECT_EQ(again.exitCode, 0) << again.err;
 }
 
+// Issue 25, item 1: a lost audit log refuses export until acknowledged, and the session ends
+// with status 4 and the records that never reached it counted, not 0.
+TEST_F(KioskCli, ALostAuditLogRefusesExportUntilAcknowledgedAndExitsFour) {
+    std::filesystem::create_directories(dir / "steerseg-export" / "audit.jsonl");
+    const CliRun r = session("load builtin:sample\nwait loaded timeout 30\nseed 64 64 48 4\n"
+                             "finish\nexport a.nii.gz\nexpect state review\n"
+                             "expect message contains acknowledge\nacknowledge_audit\n"
+                             "export a.nii.gz\nwait state done timeout 30\n");
+    EXPECT_EQ(r.exitCode, 4) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "a.nii.gz")) << r.err;
+    EXPECT_NE(r.err.find("a folder of that name is in the way"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("audit records could not be written"), std::string::npos) << r.err;
+}
+
 TEST_F(KioskCli, UnwritableOutputsAreFour) {
     writeText(dir / "file", "not a folder");
     const CliRun under = session("frame a.png\n", "--frames " + (dir / "file/frames").string());

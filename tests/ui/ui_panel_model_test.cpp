@@ -109,6 +109,25 @@ TEST(UiPanelModel, EveryMeaningfulActionIsReachableByTouch) {
     }
 }
 
+// Issue 25, item 1: a lost audit log stays above whatever message the state shows, and the panel
+// offers the acknowledgement export waits for.
+TEST(UiPanelModel, ALostAuditLogStaysAboveTheMessageAndOffersTheAcknowledgement) {
+    workflow::Status st = status(State::Review);
+    st.message = "exported to /x/out.nii.gz";
+    st.auditProblem = "audit log /var/lib/steerseg/audit.jsonl: the disk is full";
+    ui::PanelModel m = modelOf(st);
+    EXPECT_NE(m.auditAlarm.find("the disk is full"), std::string::npos) << m.auditAlarm;
+    EXPECT_EQ(m.message, st.message);
+    const std::set<std::size_t> got = kinds(ui::reachableActions(m));
+    EXPECT_TRUE(got.count(indexOf<model::AcknowledgeAudit>()));
+    st.auditAcknowledged = true;
+    m = modelOf(st);
+    EXPECT_NE(m.auditAlarm.find("Acknowledged"), std::string::npos) << m.auditAlarm;
+    EXPECT_FALSE(kinds(ui::reachableActions(m)).count(indexOf<model::AcknowledgeAudit>()));
+    st.auditProblem.clear();
+    EXPECT_TRUE(modelOf(st).auditAlarm.empty());
+}
+
 TEST(UiPanelModel, ProceedIsLabelledForTheState) {
     EXPECT_EQ(ui::proceedLabel(State::Inspect), "Seed");
     EXPECT_EQ(ui::proceedLabel(State::Seeding), "Run");

@@ -90,23 +90,36 @@ TEST(AuditLogRead, MissingFileIsOneClearError) {
     }
 }
 
-// A log reopened after a crash goes on on a line of its own: the torn line stays torn (and is
-// skipped), every record written since reads back.
-TEST(AuditLogRead, ReopenedLogContinuesAfterATornLine) {
+// Issue 25, item 4: a log reopened after a crash moves the torn fragment to <log>.torn and cuts
+// the log back to its last whole line, so it stays valid JSON lines.
+TEST(AuditLogRead, ReopenedLogMovesATornLineAside) {
     const fs::path path = freshFile("continued.jsonl");
+    fs::path aside = path;
+    aside += ".torn";
+    fs::remove(aside);
     writeText(path, "{\"n\":1}\n{\"event\":\"act");
     {
         AuditLog log(path);
         ASSERT_TRUE(log.ok());
+        const auto note = log.takeRepairNote();
+        ASSERT_TRUE(note.has_value());
+        EXPECT_NE(note->find(aside.string()), std::string::npos) << *note;
         log.transition(State::NoScan, State::Loading, "load_scan", "s", "");
     }
-    const std::string text = readText(path);
-    EXPECT_NE(text.find("{\"event\":\"act\n{"), std::string::npos) << text;
     const AuditLogContents read = readAuditLog(path);
     ASSERT_EQ(read.records.size(), 2U);
     EXPECT_EQ(read.records[1]["to"], "loading");
-    ASSERT_EQ(read.problems.size(), 1U); // the old torn line, now in the middle
+    EXPECT_TRUE(read.problems.empty());
     EXPECT_FALSE(read.torn);
+    EXPECT_EQ(readText(aside), "{\"event\":\"act\n");
+}
+
+TEST(AuditLogRead, AWholeLastRecordOnlyGetsItsNewline) {
+    const fs::path path = freshFile("whole-repaired.jsonl");
+    writeText(path, "{\"n\":1}\n{\"n\":2}");
+    EXPECT_TRUE(repairTornTail(path).has_value());
+    EXPECT_EQ(readText(path), "{\"n\":1}\n{\"n\":2}\n");
+    EXPECT_FALSE(repairTornTail(path).has_value());
 }
 
 } // namespace

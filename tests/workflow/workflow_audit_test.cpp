@@ -106,29 +106,82 @@ TEST(WorkflowAudit, AnUnwritableLogIsReportedOnceAndNeverThrows) {
     AuditLog log("/dev/null/audit.jsonl");
     EXPECT_FALSE(log.ok());
     Rig rig(testSettings(), &log);
-    EXPECT_NE(rig.status().message.find("/dev/null/audit.jsonl"), std::string::npos);
+    EXPECT_NE(rig.status().auditProblem.find("/dev/null/audit.jsonl"), std::string::npos);
     rig.load();
     rig.seed();
     EXPECT_EQ(rig.state(), State::Seeding);
-    EXPECT_FALSE(log.takeError().has_value()); // already reported
+    ASSERT_TRUE(log.takeError().has_value()); // for the journal, once
+    EXPECT_FALSE(log.takeError().has_value());
 }
 
-TEST(WorkflowAudit, AWriteFailureIsReportedOnce) {
-    if (!fs::exists("/dev/full")) {
-        GTEST_SKIP() << "no /dev/full here";
-    }
-    AuditLog log("/dev/full");
-    ASSERT_TRUE(log.ok()); // opening works; writing does not
+// Issue 25, item 1: the loss of the audit trail stays on screen through every notice until the
+// log can be written again, and export waits for the operator's acknowledgement, which the log
+// records (with everything held meanwhile) once it can be written.
+TEST(WorkflowAudit, ALostLogStaysOnScreenAndExportWaitsForAcknowledgement) {
+    const fs::path dir = fs::path(testing::TempDir()) / "workflow-audit-lost";
+    fs::remove_all(dir);
+    const fs::path path = dir / "audit.jsonl";
+    fs::create_directories(path); // a folder where the file should be
+    double now = 0.0;
+    AuditLog log(path, fixedTime, [&] { return steadyAt(now); });
+    ASSERT_FALSE(log.ok());
     Rig rig(testSettings(), &log);
-    ASSERT_TRUE(rig.act(LoadScan{"fake.nii.gz"}).accepted);
-    EXPECT_FALSE(log.ok());
-    EXPECT_NE(rig.status().message.find("write failed"), std::string::npos) << rig.status().message;
-    ASSERT_TRUE(rig.act(Dismiss{}).accepted); // the operator has read it
-    for (int i = 0; i < 3; ++i) {
-        rig.wf->update();
+    rig.driveTo(State::Paused);
+    ASSERT_FALSE(rig.act(Resume{}).accepted); // a notice of its own
+    EXPECT_FALSE(rig.status().message.empty());
+    ASSERT_TRUE(rig.act(Finish{}).accepted);
+    EXPECT_NE(rig.status().auditProblem.find("a folder of that name is in the way"),
+              std::string::npos)
+        << rig.status().auditProblem;
+    EXPECT_FALSE(rig.status().allowed.contains(ActionKind::Export));
+    EXPECT_TRUE(rig.status().allowed.contains(ActionKind::AcknowledgeAudit));
+    const auto refused = rig.act(Export{"out.nii.gz"});
+    ASSERT_FALSE(refused.accepted);
+    EXPECT_NE(refused.reason.find("acknowledge"), std::string::npos) << refused.reason;
+    EXPECT_EQ(rig.engine.exports.size(), 0U);
+    EXPECT_FALSE(rig.status().auditProblem.empty());
+
+    ASSERT_TRUE(rig.act(AcknowledgeAudit{}).accepted);
+    EXPECT_TRUE(rig.status().auditAcknowledged);
+    ASSERT_TRUE(rig.act(Export{"out.nii.gz"}).accepted);
+    EXPECT_EQ(rig.state(), State::Done);
+    EXPECT_FALSE(rig.status().auditProblem.empty()) << "replaced by the export's notice";
+
+    // The folder goes: within a second of retries everything held is written, in order.
+    fs::remove(path);
+    rig.wf->update();
+    EXPECT_FALSE(log.ok()) << "retried within the second";
+    now = 2.0;
+    rig.wf->update();
+    ASSERT_TRUE(log.ok()) << log.problem();
+    EXPECT_TRUE(rig.status().auditProblem.empty());
+    EXPECT_FALSE(rig.status().auditAcknowledged);
+    EXPECT_FALSE(rig.status().allowed.contains(ActionKind::AcknowledgeAudit));
+    const std::vector<nlohmann::json> lines = readLines(path);
+    ASSERT_GE(lines.size(), 10U);
+    EXPECT_EQ(lines.front()["action"], "load_scan");
+    bool acknowledged = false;
+    bool exported = false;
+    for (const nlohmann::json& j : lines) {
+        acknowledged |= j.value("action", "") == "acknowledge_audit" && j["accepted"] == true;
+        exported |= acknowledged && j.value("action", "") == "export" && j["accepted"] == true;
     }
-    EXPECT_EQ(rig.state(), State::Inspect);
-    EXPECT_TRUE(rig.status().message.empty()) << "reported twice: " << rig.status().message;
+    EXPECT_TRUE(acknowledged && exported);
+    ASSERT_TRUE(log.takeError().has_value()); // the outage
+    const auto back = log.takeError();        // and its end, for the journal
+    ASSERT_TRUE(back.has_value());
+    EXPECT_NE(back->find("written again"), std::string::npos) << *back;
+}
+
+TEST(WorkflowAudit, NothingToAcknowledgeWhileTheLogIsWritten) {
+    const fs::path path = fs::path(testing::TempDir()) / "workflow-audit-kept.jsonl";
+    AuditLog log(path);
+    Rig rig(testSettings(), &log);
+    rig.driveTo(State::Review);
+    const auto refused = rig.act(AcknowledgeAudit{});
+    EXPECT_FALSE(refused.accepted);
+    EXPECT_NE(refused.reason.find("nothing to acknowledge"), std::string::npos);
+    EXPECT_TRUE(rig.act(Export{"out.nii.gz"}).accepted);
 }
 
 TEST(WorkflowAudit, ActionValuesNameEveryArgument) {

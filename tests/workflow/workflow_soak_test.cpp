@@ -330,7 +330,10 @@ TEST(WorkflowSoak, RandomActionsKeepEveryInvariant) {
             EXPECT_GT(w.visits[static_cast<std::size_t>(s)], 100) << stateName(s);
         }
         for (std::size_t i = 0; i < w.accepted.size(); ++i) {
-            EXPECT_GT(w.accepted[i], 0) << "action " << i << " never accepted";
+            // acknowledge_audit has a use only while the audit log is lost (workflow_audit_test).
+            if (static_cast<model::ActionKind>(i) != model::ActionKind::AcknowledgeAudit) {
+                EXPECT_GT(w.accepted[i], 0) << "action " << i << " never accepted";
+            }
         }
     }
 }

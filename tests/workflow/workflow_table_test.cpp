@@ -64,11 +64,16 @@ TEST(WorkflowTable, RulesSayWhyExactlyWhenTheyCanRefuse) {
     // Everything is accepted somewhere (else a kind would be dead vocabulary).
     Facts all;
     all.levelSet = all.canUndo = all.canRedo = all.examples = true;
+    Facts auditLost = all; // acknowledge_audit has a use only then
+    auditLost.auditLost = true;
     for (std::size_t k = 0; k < kActionKindCount; ++k) {
         bool somewhere = false;
         for (std::size_t s = 0; s < kStateCount; ++s) {
-            somewhere =
-                somewhere || decide(static_cast<State>(s), static_cast<ActionKind>(k), all).allowed;
+            for (const Facts& facts : {all, auditLost}) {
+                somewhere =
+                    somewhere ||
+                    decide(static_cast<State>(s), static_cast<ActionKind>(k), facts).allowed;
+            }
         }
         EXPECT_TRUE(somewhere) << actionKindName(static_cast<ActionKind>(k));
     }
