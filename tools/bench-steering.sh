@@ -21,6 +21,14 @@ case ${1:-} in
   -h|--help) sed -n '2,11p' "$0"; exit 0 ;;
   --input) exec "$bench" "$@" ;;
 esac
+# The plot wants Debian's matplotlib, so Debian's python (a pyenv one would not see it).
+py=python3
+[[ -x /usr/bin/python3 ]] && py=/usr/bin/python3
+if ! "$py" -c 'import matplotlib' 2>/dev/null; then
+  sudo_cmd=""; [[ $(id -u) -ne 0 ]] && sudo_cmd=sudo
+  $sudo_cmd env DEBIAN_FRONTEND=noninteractive apt-get install -y -q python3-matplotlib >&2 ||
+    echo "bench-steering: no python3-matplotlib: the table without the plot" >&2
+fi
 out=${STEERSEG_OUT:-out/steering}
 rest=()
 while (($#)); do
@@ -30,5 +38,5 @@ while (($#)); do
   esac
   shift
 done
-exec python3 "$root/bench/steering/run_steering.py" --bench "$bench" --out "$out" \
+exec "$py" "$root/bench/steering/run_steering.py" --bench "$bench" --out "$out" \
   --data "${STEERSEG_DATA_DIR:-$root/../shared/data}" "${rest[@]}"
