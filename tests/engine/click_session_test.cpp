@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <gtest/gtest.h>
+#include <string>
 
 namespace steerseg::test {
 namespace {
@@ -27,7 +28,10 @@ std::filesystem::path dumbbell() {
     }
     Geometry g;
     g.dims = d;
-    const auto path = std::filesystem::temp_directory_path() / "steerseg_dumbbell.nii";
+    // One file per test: CTest runs the tests of this binary side by side.
+    const auto path = std::filesystem::temp_directory_path() /
+                      (std::string("steerseg_dumbbell_") +
+                       testing::UnitTest::GetInstance()->current_test_info()->name() + ".nii");
     NiftiOptions o;
     o.datatype = 16; // float32
     writeFile(path, niftiFile(g, encodeSamples(v, "float32"), o));
