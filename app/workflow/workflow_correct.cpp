@@ -1,9 +1,10 @@
 // The operator's correction (model::Correct): the clicks protocol's unit (docs/steering.md). The
 // first one, on a scan without a level set, does what an operator's first taps do: probe
 // there (T and eps from the tissue), seed there; a later one is the seed or the erase of a tap
-// in add or remove mode while steering (workflow_edits.cpp: a seed takes in its tissue, an
-// erase sticks).
+// in add or remove mode while steering (workflow_edits.cpp: an erase then sticks).
 #include "workflow/workflow.hpp"
+
+#include <cmath>
 
 namespace steerseg::workflow {
 

@@ -172,8 +172,8 @@ Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, b
     ParamValues next = params_;
     if (seed) {
         // The operator puts seeds in the structure, often where no probe was: classify's inside
-        // examples too, as on the command line (docs/speed.md).
-        // T and eps stay: widening them to the seed's tissue let the front leak on a real liver
+        // examples too, as on the command line (docs/speed.md). T and eps stay even while
+        // correcting: widening them to the seed's tissue let a real liver's front leak
         // (docs/steering.md), and one seed should not undo what the others reached.
         addExample(next.speed.inside, sphere);
         editLevelSet(
