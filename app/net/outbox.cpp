@@ -81,7 +81,15 @@ std::string Outbox::enqueue(const fs::path& file, const std::string& peer) {
     }
     OutboxEntry entry{id, peer, fs::absolute(file), folder_ / (id + ".dcm"), 0, clock_(), ""};
     files::writeFileAtomically(entry.object, {std::span<const std::byte>(bytes)});
-    writeRecord(entry);
+    try {
+        writeRecord(entry);
+    } catch (...) {
+        // An object without its record would never be sent nor listed: take it back, so a
+        // failed enqueue leaves the outbox as it was (the caller has the error).
+        std::error_code ec;
+        fs::remove(entry.object, ec);
+        throw;
+    }
     return id;
 }
 

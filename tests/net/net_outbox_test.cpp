@@ -3,6 +3,7 @@
 // delivered once Orthanc is back, exactly once in Orthanc's instance list, every attempt in the
 // audit log.
 #include "files/file_error.hpp"
+#include "files/io_faults.hpp"
 #include "net/net_harness.hpp"
 #include "net/outbox.hpp"
 #include "support/cli_run.hpp"
@@ -140,6 +141,42 @@ TEST(NetOutbox, AnUnknownPeerAndADamagedRecordAreReportedNotThrown) {
     ASSERT_EQ(problems.size(), 1u);
     EXPECT_NE(problems[0].find("123-0.json: not an outbox record"), std::string::npos);
     EXPECT_THROW(outbox.enqueue(dir / "missing.dcm", "gone"), files::FileError);
+    fs::remove_all(dir);
+}
+
+// The fault-injection suite's rule (docs/reliability.md) on the outbox's two files: a failure
+// at any write call of an enqueue leaves no entry, no half of one and no temporary, and the
+// same enqueue succeeds once the fault is gone.
+TEST(NetOutbox, AFailedEnqueueLeavesNothingAndARetryWorks) {
+    STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
+    const fs::path dir = tempDir("net-outbox-faults");
+    const fs::path object = series / "DCM_IMG_00000.dcm";
+    net::Outbox outbox(dir / "outbox", {10ms, 10ms});
+    for (const files::IoCall call : {files::IoCall::Open, files::IoCall::Write,
+                                     files::IoCall::Sync, files::IoCall::Rename}) {
+        std::size_t calls = 0;
+        {
+            const files::IoFault count(call, -1, 0);
+            outbox.enqueue(object, "pacs");
+            calls = count.calls(call);
+        }
+        fs::remove_all(dir / "outbox");
+        fs::create_directories(dir / "outbox");
+        ASSERT_GE(calls, 2u) << "the object and its record";
+        for (std::size_t nth = 0; nth < calls; ++nth) {
+            SCOPED_TRACE("call " + std::to_string(static_cast<int>(call)) + " #" +
+                         std::to_string(nth));
+            {
+                const files::IoFault fault(call, static_cast<int>(nth), EIO);
+                EXPECT_THROW(outbox.enqueue(object, "pacs"), files::WriteError);
+            }
+            EXPECT_TRUE(fs::is_empty(dir / "outbox")) << "no entry, half entry or temporary";
+            outbox.enqueue(object, "pacs");
+            EXPECT_EQ(outbox.pending().size(), 1u);
+            fs::remove_all(dir / "outbox");
+            fs::create_directories(dir / "outbox");
+        }
+    }
     fs::remove_all(dir);
 }
 
