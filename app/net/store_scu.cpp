@@ -4,13 +4,13 @@
 
 #include "net/dcmtk_quiet.hpp"
 
+#include <cstdio>
 #include <dcmtk/config/osconfig.h> // must come first among DCMTK's headers
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
 #include <dcmtk/dcmdata/dcmetinf.h>
 #include <dcmtk/dcmdata/dcuid.h>
 #include <dcmtk/dcmnet/scu.h>
-#include <cstdio>
 #include <optional>
 #include <set>
 #include <utility>

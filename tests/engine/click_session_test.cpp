@@ -21,7 +21,8 @@ std::filesystem::path dumbbell() {
                 const glm::dvec3 p(i, j, k);
                 const bool a = glm::length(p - glm::dvec3(12, 16, 16)) <= 8.0;
                 const bool b = glm::length(p - glm::dvec3(36, 16, 16)) <= 8.0;
-                const bool neck = i >= 18 && i <= 30 && glm::length(glm::dvec2(j - 16, k - 16)) <= 2.5;
+                const bool neck =
+                    i >= 18 && i <= 30 && glm::length(glm::dvec2(j - 16, k - 16)) <= 2.5;
                 v[static_cast<std::size_t>(i + d.x * (j + d.y * k))] = a || b || neck ? 100.0 : 0.0;
             }
         }

@@ -75,7 +75,8 @@ TEST_F(KioskCli, BadOptionsAreTwo) {
 // No DRM device here: the failing step in one line, exit 3 (no display).
 TEST_F(KioskCli, KmsWithoutADrmDeviceIsThree) {
     if (std::filesystem::exists("/dev/dri")) {
-        GTEST_SKIP() << "/dev/dri exists: the KMS display may open here (platform_kms_display tests it)";
+        GTEST_SKIP()
+            << "/dev/dri exists: the KMS display may open here (platform_kms_display tests it)";
     }
     const CliRun r = runSteerseg("kiosk --allow-root --platform kms --size 320x200");
     EXPECT_EQ(r.exitCode, 3) << r.err;

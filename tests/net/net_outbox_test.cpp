@@ -152,8 +152,8 @@ TEST(NetOutbox, AFailedEnqueueLeavesNothingAndARetryWorks) {
     const fs::path dir = tempDir("net-outbox-faults");
     const fs::path object = series / "DCM_IMG_00000.dcm";
     net::Outbox outbox(dir / "outbox", {10ms, 10ms});
-    for (const files::IoCall call : {files::IoCall::Open, files::IoCall::Write,
-                                     files::IoCall::Sync, files::IoCall::Rename}) {
+    for (const files::IoCall call :
+         {files::IoCall::Open, files::IoCall::Write, files::IoCall::Sync, files::IoCall::Rename}) {
         std::size_t calls = 0;
         {
             const files::IoFault count(call, -1, 0);
