@@ -173,9 +173,7 @@ int run(const Options& o) {
         config::KioskConfig cfg = config::defaultConfig();
         if (!o.config.empty()) {
             const config::LoadedConfig loaded =
-                config::loadConfig({{o.config, true}}, [](std::string_view action) {
-                    return model::bindingAction(action, 1.0).has_value();
-                });
+                config::loadConfig({{o.config, true}}, model::isBindable);
             for (const config::ConfigProblem& p : loaded.problems) {
                 std::cerr << "config: " << config::describe(p) << '\n';
             }

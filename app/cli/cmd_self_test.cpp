@@ -161,9 +161,7 @@ int runSelfTest(std::span<const std::string> words) {
         results.push_back(checkShaders());
     }
 
-    const config::BindingCheck bindable = [](std::string_view action) {
-        return model::bindingAction(action, 1.0).has_value();
-    };
+    const config::BindingCheck bindable = model::isBindable;
     const config::LoadedConfig loaded =
         config::loadConfig(config::kioskConfigSources(configFile), bindable);
     results.push_back(checkConfig(loaded));

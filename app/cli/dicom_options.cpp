@@ -36,9 +36,7 @@ config::KioskConfig nodeConfig(const Args& args) {
     if (const auto c = args.value("config")) {
         file = *c;
     }
-    const config::BindingCheck bindable = [](std::string_view action) {
-        return model::bindingAction(action, 1.0).has_value();
-    };
+    const config::BindingCheck bindable = model::isBindable;
     const config::LoadedConfig loaded =
         config::loadConfig(config::kioskConfigSources(file), bindable);
     if (!loaded.problems.empty()) {

@@ -8,9 +8,7 @@ namespace steerseg::cli {
 
 config::LoadedConfig readKioskConfig(const std::optional<std::string>& file,
                                      const std::string& command, std::ostream& err) {
-    const config::BindingCheck check = [](std::string_view action) {
-        return model::bindingAction(action, 1.0).has_value();
-    };
+    const config::BindingCheck check = model::isBindable;
     std::optional<std::filesystem::path> path;
     if (file) {
         path = *file;

@@ -47,9 +47,7 @@ void StopSignals::requestStop() {
 }
 
 config::LoadedConfig readConfig(const KioskOptions& options, std::ostream& err) {
-    const config::BindingCheck check = [](std::string_view action) {
-        return model::bindingAction(action, 1.0).has_value();
-    };
+    const config::BindingCheck check = model::isBindable;
     config::LoadedConfig loaded =
         config::loadConfig(config::kioskConfigSources(options.config), check);
     for (const config::ConfigProblem& p : loaded.problems) {

@@ -320,6 +320,10 @@ std::string_view actionKindName(ActionKind kind) {
     return i < kKindNames.size() ? kKindNames[i] : std::string_view("?");
 }
 
+bool isBindable(std::string_view name) {
+    return bindingAction(name, 1.0).has_value();
+}
+
 std::optional<Action> bindingAction(std::string_view name, double steps) {
     // A NaN or infinite step has no meaning for any control; the caller names the binding.
     if (!std::isfinite(steps)) {

@@ -251,6 +251,8 @@ static_assert(kActionKindCount <= 64, "ActionKinds holds one bit per kind");
 // nullopt for a name that is not bindable (or a step that is not finite); bindableNames() lists
 // them for the config's message.
 std::optional<Action> bindingAction(std::string_view name, double steps);
+// Whether a binding may name `name`: config's BindingCheck wherever the config is read.
+bool isBindable(std::string_view name);
 const std::vector<std::string_view>& bindableNames();
 
 } // namespace steerseg::model

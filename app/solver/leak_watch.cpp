@@ -8,18 +8,6 @@ void LeakWatch::reset() {
     *this = LeakWatch{};
 }
 
-double LeakWatch::calmRate(double elapsed, double net) {
-    calm_[static_cast<std::size_t>(calmCount_ % kFloorChecks)] = {elapsed, net};
-    ++calmCount_;
-    double time = 0.0;
-    double voxels = 0.0;
-    for (int n = 0; n < std::min(calmCount_, kFloorChecks); ++n) {
-        time += calm_[static_cast<std::size_t>(n)].first;
-        voxels += calm_[static_cast<std::size_t>(n)].second;
-    }
-    return voxels / time;
-}
-
 std::optional<model::LeakSite> LeakWatch::observe(const GrowthSample& sample) {
     if (!haveTime_ || !(sample.time > lastTime_)) {
         // The first sample, or no evolution since the last (a zero time step): no rate yet.
@@ -42,13 +30,13 @@ std::optional<model::LeakSite> LeakWatch::observe(const GrowthSample& sample) {
     if (!slowed_) {
         if (rate <= kSlowedFraction * peak_) {
             slowed_ = true;
-            floor_ = std::max(calmRate(elapsed, net), 0.0);
+            floor_ = std::max(calm_.add(net, elapsed), 0.0);
         }
         return std::nullopt;
     }
     const bool jump = rate >= floor_ + kJumpFraction * peak_ && rate >= kJumpFactor * floor_;
     if (!jump) {
-        floor_ = std::min(floor_, std::max(calmRate(elapsed, net), 0.0));
+        floor_ = std::min(floor_, std::max(calm_.add(net, elapsed), 0.0));
         jumpRun_ = 0;
         haveBox_ = false;
         return std::nullopt;

@@ -1,11 +1,10 @@
 #pragma once
 
 #include "model/solver_types.hpp"
+#include "solver/windowed_rate.hpp"
 
-#include <array>
 #include <cstdint>
 #include <optional>
-#include <utility>
 
 namespace steerseg::solver {
 
@@ -48,9 +47,6 @@ class LeakWatch {
     [[nodiscard]] double lastRate() const { return lastRate_; }
 
   private:
-    // Adds a calm check and returns the rate over the last kFloorChecks of them.
-    double calmRate(double elapsed, double net);
-
     int samples_ = 0;
     bool said_ = false;
     bool haveTime_ = false;
@@ -59,9 +55,8 @@ class LeakWatch {
     double peak_ = 0.0;
     bool slowed_ = false;
     double floor_ = 0.0;
-    // The last calm checks since the slowdown (evolved time, net voxels), oldest overwritten.
-    std::array<std::pair<double, double>, kFloorChecks> calm_{};
-    int calmCount_ = 0;
+    // The calm checks since the slowdown: net voxels over evolved time.
+    WindowedRate<kFloorChecks> calm_;
     int jumpRun_ = 0;
     bool haveBox_ = false;
     glm::ivec3 boxLo_{0};

@@ -10,18 +10,6 @@ void RunawayWatch::reset() {
     *this = RunawayWatch{factor_};
 }
 
-double RunawayWatch::rate(double net, double iterations) {
-    recent_[static_cast<std::size_t>(recentCount_ % kRateChecks)] = {net, iterations};
-    ++recentCount_;
-    double voxels = 0.0;
-    double span = 0.0;
-    for (int n = 0; n < std::min(recentCount_, kRateChecks); ++n) {
-        voxels += recent_[static_cast<std::size_t>(n)].first;
-        span += recent_[static_cast<std::size_t>(n)].second;
-    }
-    return voxels / span;
-}
-
 std::optional<model::LeakSite> RunawayWatch::observe(const FrontCheck& check) {
     if (!started_ || check.iteration <= lastIteration_) {
         // The first check sets the clock; one without iterations (a zero step) says nothing.
@@ -44,14 +32,14 @@ std::optional<model::LeakSite> RunawayWatch::observe(const FrontCheck& check) {
         peak_ = std::max(peak_, speed);
         if (peak_ > 0.0 && speed <= kSlowedFraction * peak_) {
             slowed_ = true;
-            rate(net, iterations); // the reference rate starts here
+            recent_.add(net, iterations); // the reference rate starts here
             const double area = front / 2.0;
             bound_ = std::pow(area, 1.5) / (6.0 * std::sqrt(std::numbers::pi));
         }
         return std::nullopt;
     }
-    const double recent = rate(net, iterations);
-    if (recentCount_ == kRateChecks) {
+    const double recent = recent_.add(net, iterations);
+    if (recent_.count() == kRateChecks) {
         reference_ = recent; // over the slowdown's check and the next
     }
     since_ += check.net();
@@ -61,7 +49,7 @@ std::optional<model::LeakSite> RunawayWatch::observe(const FrontCheck& check) {
         haveBox_ = true;
     }
     ratio_ = static_cast<double>(since_) / bound_;
-    if (recentCount_ < kRateChecks || ratio_ <= factor_ || recent < reference_ || !haveBox_) {
+    if (recent_.count() < kRateChecks || ratio_ <= factor_ || recent < reference_ || !haveBox_) {
         return std::nullopt;
     }
     // Said once, as LeakWatch does, until the operator acts (reset).

@@ -2,11 +2,10 @@
 
 #include "model/solver_types.hpp"
 #include "solver/front_check.hpp"
+#include "solver/windowed_rate.hpp"
 
-#include <array>
 #include <cstdint>
 #include <optional>
-#include <utility>
 
 namespace steerseg::solver {
 
@@ -47,9 +46,6 @@ class RunawayWatch {
     [[nodiscard]] double lastRatio() const { return ratio_; }
 
   private:
-    // Adds a check and returns the rate over the last kRateChecks.
-    double rate(double net, double iterations);
-
     double factor_;
     bool started_ = false;
     int lastIteration_ = 0;
@@ -60,9 +56,8 @@ class RunawayWatch {
     double bound_ = 0.0;
     std::int64_t since_ = 0; // net voxels gained since the slowdown
     double ratio_ = 0.0;
-    // The last checks' net voxels and iterations since the slowdown, oldest overwritten.
-    std::array<std::pair<double, double>, kRateChecks> recent_{};
-    int recentCount_ = 0;
+    // The checks since the slowdown: net voxels per iteration.
+    WindowedRate<kRateChecks> recent_;
     double reference_ = 0.0; // the rate from the slowdown on
     bool haveBox_ = false;
     glm::ivec3 boxLo_{0};
