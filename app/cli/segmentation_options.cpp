@@ -245,7 +245,7 @@ void applySegmentation(session::Session& session, const SegmentationRequest& req
         session.erase(s);
     }
     for (const model::Sphere& s : request.barriers) {
-        session.addBarrier(s);
+        session.addBarrier({s, false});
     }
     session.setParams(request.params);
     session.setSpeed(request.speed);

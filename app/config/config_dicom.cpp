@@ -40,7 +40,10 @@ bool readPeer(TableReader& t, DicomPeerConfig& peer) {
         }
         return true;
     };
-    bool good = required("name") & required("aet") & required("host");
+    // Every missing key is reported, so no short-circuit.
+    bool good = required("name");
+    good = required("aet") && good;
+    good = required("host") && good;
     if (auto v = t.text("name", [](std::string_view n) {
             return isControlName(n) ? "" : "must be 1 to 32 of a-z, 0-9 and _";
         })) {

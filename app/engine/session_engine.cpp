@@ -208,21 +208,21 @@ void SessionEngine::erase(const model::Sphere& sphere) {
     changed();
 }
 
-bool SessionEngine::addBarrier(const model::Sphere& sphere) {
+bool SessionEngine::addBarrier(const model::Barrier& barrier) {
     if (barriers_.size() >= model::kMaxBarriers) {
         return false;
     }
-    requireSession().addBarrier(sphere);
-    barriers_.push_back(sphere);
+    requireSession().addBarrier(barrier);
+    barriers_.push_back(barrier);
     changed();
     return true;
 }
 
-void SessionEngine::setBarriers(const std::vector<model::Sphere>& barriers) {
+void SessionEngine::setBarriers(const std::vector<model::Barrier>& barriers) {
     session::Session& s = requireSession();
     s.clearBarriers();
     barriers_.clear();
-    for (const model::Sphere& b : barriers) {
+    for (const model::Barrier& b : barriers) {
         s.addBarrier(b);
         barriers_.push_back(b);
     }

@@ -43,7 +43,7 @@ class SessionEngine final : public workflow::Engine {
                                               double radiusMm) const override;
     void addSeed(const model::Sphere& sphere) override;
     void erase(const model::Sphere& sphere) override;
-    bool addBarrier(const model::Sphere& sphere) override;
+    bool addBarrier(const model::Barrier& barrier) override;
     [[nodiscard]] int barriers() const override { return static_cast<int>(barriers_.size()); }
     void clearLevelSet() override;
     [[nodiscard]] bool hasLevelSet() const override;
@@ -98,11 +98,11 @@ class SessionEngine final : public workflow::Engine {
     // A level set as undo keeps it: the mask (empty runs: none) and the barriers in force.
     struct Snapshot {
         MaskRuns mask;
-        std::vector<model::Sphere> barriers;
+        std::vector<model::Barrier> barriers;
     };
-    void setBarriers(const std::vector<model::Sphere>& barriers);
+    void setBarriers(const std::vector<model::Barrier>& barriers);
     std::map<workflow::SnapshotId, Snapshot> snapshots_;
-    std::vector<model::Sphere> barriers_; // as the solver holds them
+    std::vector<model::Barrier> barriers_; // as the solver holds them
     workflow::SnapshotId nextSnapshot_ = 1;
     std::uint64_t version_ = 0;
     std::uint64_t attached_ = 0;

@@ -68,7 +68,16 @@ inline float sphereDistance(const Sphere& s, const glm::vec3& voxel) {
 
 std::string describe(const LevelSetParams& params);
 
-// Barrier spheres one run may hold (uniforms of shaders/solver/barrier_speed.glsl).
+// A sphere whose side of the surface the operator fixed for the rest of the run
+// (shaders/solver/barrier_speed.glsl): the front never enters a blocking one (an erase that
+// sticks, a leak's neck) and never leaves a keeping one (an added correction in tissue the
+// speed calls outside, which would otherwise recede the moment the front runs again).
+struct Barrier {
+    Sphere sphere;
+    bool keep = false;
+};
+
+// Barrier spheres one run may hold, of both kinds together (the shader's uniform array).
 inline constexpr std::size_t kMaxBarriers = 16;
 
 } // namespace steerseg::model

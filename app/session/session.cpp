@@ -77,8 +77,8 @@ void Session::erase(const model::Sphere& sphere) {
     gpu_->solver.removeSphere(sphere);
 }
 
-void Session::addBarrier(const model::Sphere& sphere) {
-    gpu_->solver.addBarrier(sphere);
+void Session::addBarrier(const model::Barrier& barrier) {
+    gpu_->solver.addBarrier(barrier);
 }
 
 void Session::clearBarriers() {

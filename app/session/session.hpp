@@ -60,7 +60,7 @@ class Session {
     void erase(const model::Sphere& sphere);
     // A barrier: an erase that stays a no-go region for the rest of the run (a leak's neck).
     // At most model::kMaxBarriers; std::invalid_argument beyond.
-    void addBarrier(const model::Sphere& sphere);
+    void addBarrier(const model::Barrier& barrier);
     void clearBarriers();
     // A mask on the scan's grid (inside where > 0.5) replaces the level set. Throws
     // std::runtime_error naming the file when it cannot be read or its grid differs.

@@ -122,16 +122,20 @@ void LevelSetSolver::noteChange() {
     runawayWatch_.reset();
 }
 
-void LevelSetSolver::addBarrier(const model::Sphere& sphere) {
-    model::validateSphere(sphere, dims_);
+void LevelSetSolver::addBarrier(const model::Barrier& barrier) {
+    model::validateSphere(barrier.sphere, dims_);
     if (barriers_.size() >= model::kMaxBarriers) {
         throw std::invalid_argument("at most " + std::to_string(model::kMaxBarriers) +
                                     " barriers (clear them to place others)");
     }
-    barriers_.push_back(sphere);
+    barriers_.push_back(barrier);
     uploadBarriers();
-    // The surface already inside the barrier is cut away at once, as an erase would.
-    removeSphere(sphere);
+    // The sphere takes its side at once, as a seed or an erase would.
+    if (barrier.keep) {
+        addSphere(barrier.sphere);
+    } else {
+        removeSphere(barrier.sphere);
+    }
 }
 
 void LevelSetSolver::clearBarriers() {
@@ -143,11 +147,15 @@ void LevelSetSolver::clearBarriers() {
 // Sets the barrier uniforms of the passes that evaluate the speed (barrier_speed.glsl).
 void LevelSetSolver::uploadBarriers() {
     std::vector<float> packed;
-    for (const model::Sphere& b : barriers_) {
-        packed.insert(packed.end(), {b.centre.x, b.centre.y, b.centre.z, b.radius});
+    for (const model::Barrier& b : barriers_) {
+        // The shader tells a keeping sphere by its negative radius.
+        const model::Sphere& s = b.sphere;
+        packed.insert(packed.end(),
+                      {s.centre.x, s.centre.y, s.centre.z, b.keep ? -s.radius : s.radius});
     }
     // alpha * hold = 1 + 3 (1 - alpha) outweighs the curvature term's pull (at most a few
-    // voxels^-1 on a voxel-scale bump), so the front recedes from a barrier. alpha = 0 has no
+    // voxels^-1 on a voxel-scale bump), so the front recedes from a blocking barrier and
+    // advances through a keeping one. alpha = 0 has no
     // data term for a barrier to act through.
     const float alpha = haveParams_ ? params_.alpha : 1.0F;
     const float hold = alpha > 0.0F ? (1.0F + 3.0F * (1.0F - alpha)) / alpha : 0.0F;

@@ -71,12 +71,13 @@ class LevelSetSolver {
     // Sphere edits (voxel indices, radius in voxels), between any two iterations.
     void addSphere(const model::Sphere& sphere);
     void removeSphere(const model::Sphere& sphere);
-    // Barriers: spheres the surface may not enter for the rest of the run (a leak's neck,
-    // shaders/solver/barrier_speed.glsl). Adding one also cuts the surface out of it. At most
+    // Barriers: spheres the surface may not enter (a leak's neck) or may not leave (a kept
+    // correction) for the rest of the run (shaders/solver/barrier_speed.glsl). Adding one also
+    // cuts the surface out of a blocking sphere, or fills a keeping one, at once. At most
     // kMaxBarriers (std::invalid_argument beyond, or for a sphere validateSphere refuses).
-    void addBarrier(const model::Sphere& sphere);
+    void addBarrier(const model::Barrier& barrier);
     void clearBarriers();
-    [[nodiscard]] const std::vector<model::Sphere>& barriers() const { return barriers_; }
+    [[nodiscard]] const std::vector<model::Barrier>& barriers() const { return barriers_; }
     // Replace the level set.
     // `intensities`: the scan's real-unit values, i fastest (the solver keeps no host copy).
     void initFromThreshold(std::span<const float> intensities, float lo, float hi);
@@ -150,7 +151,7 @@ class LevelSetSolver {
     bool converged_ = false;
     bool settled_ = false; // SettleWatch at the last check
     bool wakePending_ = true;
-    std::vector<model::Sphere> barriers_;
+    std::vector<model::Barrier> barriers_;
     LeakWatch leakWatch_;
     SettleWatch settleWatch_;
     RunawayWatch runawayWatch_;

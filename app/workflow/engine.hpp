@@ -96,10 +96,11 @@ class Engine {
     // Sphere edits; std::invalid_argument for a sphere outside the scan.
     virtual void addSeed(const model::Sphere& sphere) = 0;
     virtual void erase(const model::Sphere& sphere) = 0;
-    // A no-go sphere for the rest of the run, so that an erase sticks (a negative correction):
-    // part of the level set's state, kept by snapshots and cleared with it. False when the
-    // engine holds its most (model::kMaxBarriers) already: the erase stands, without it.
-    virtual bool addBarrier(const model::Sphere& sphere) = 0;
+    // A sphere held on its side for the rest of the run, so that a correction sticks (an erase
+    // blocks, an added seed keeps): part of the level set's state, kept by snapshots and
+    // cleared with it. False when the engine holds its most (model::kMaxBarriers) already: the
+    // edit stands, without it.
+    virtual bool addBarrier(const model::Barrier& barrier) = 0;
     [[nodiscard]] virtual int barriers() const = 0;
     virtual void clearLevelSet() = 0;
     [[nodiscard]] virtual bool hasLevelSet() const = 0;

@@ -156,9 +156,10 @@ class Workflow {
     // The sphere of an edit: `radius` voxels clamped to the brush's range, <= 0 the brush.
     [[nodiscard]] model::Sphere brushSphere(const glm::dvec3& voxel, double radius) const;
     Outcome sphereEdit(const glm::dvec3& voxel, double radius, bool seed);
-    // An erase while steering: the erase and, when the engine has room, a barrier (a negative
-    // correction's). "" or why it could not stick.
-    std::string stickyErase(const model::Sphere& sphere);
+    // A seed or an erase while steering (a correction): the edit and, when the engine has
+    // room, a barrier that holds the sphere on its side (keeping or blocking). "" or why it
+    // could not stick.
+    std::string stickyEdit(const model::Sphere& sphere, bool seed);
     // `params`, when given, are applied after the edit and undone and redone with it: a seed's
     // inside example (applyEditParams).
     void editLevelSet(std::string_view what, const std::function<void()>& edit, int seeds,

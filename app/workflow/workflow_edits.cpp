@@ -148,13 +148,18 @@ model::Sphere Workflow::brushSphere(const glm::dvec3& voxel, double radius) cons
     return {glm::vec3(voxel), static_cast<float>(rad)};
 }
 
-std::string Workflow::stickyErase(const model::Sphere& sphere) {
-    engine_.erase(sphere);
-    if (engine_.addBarrier(sphere)) {
+std::string Workflow::stickyEdit(const model::Sphere& sphere, bool seed) {
+    if (seed) {
+        engine_.addSeed(sphere);
+    } else {
+        engine_.erase(sphere);
+    }
+    if (engine_.addBarrier({sphere, seed})) {
         return {};
     }
-    return "erased; the front may grow back there: " + std::to_string(engine_.barriers()) +
-           " erasers hold already (restart to clear them)";
+    return std::string(seed ? "added; the front may leave it again: "
+                            : "erased; the front may grow back there: ") +
+           std::to_string(engine_.barriers()) + " corrections hold already (restart to clear them)";
 }
 
 Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, bool seed) {
@@ -176,28 +181,25 @@ Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, b
         // correcting: widening them to the seed's tissue let a real liver's front leak
         // (docs/steering.md), and one seed should not undo what the others reached.
         addExample(next.speed.inside, sphere);
-        editLevelSet(
-            "add_seed", [&] { engine_.addSeed(sphere); }, status_.seeds + 1, status_.erasures,
-            &next);
-    } else {
-        std::string notice;
-        if (correcting) {
-            // The erased tissue is not the structure: classify's outside example too.
-            addExample(next.speed.outside, sphere);
-        }
-        editLevelSet(
-            "erase",
-            [&] {
-                if (correcting) {
-                    notice = stickyErase(sphere);
-                } else {
-                    engine_.erase(sphere);
-                }
-            },
-            status_.seeds, status_.erasures + 1, &next);
-        if (!notice.empty()) {
-            status_.message = notice;
-        }
+    } else if (correcting) {
+        // The erased tissue is not the structure: classify's outside example too.
+        addExample(next.speed.outside, sphere);
+    }
+    std::string notice;
+    editLevelSet(
+        seed ? "add_seed" : "erase",
+        [&] {
+            if (correcting) {
+                notice = stickyEdit(sphere, seed);
+            } else if (seed) {
+                engine_.addSeed(sphere);
+            } else {
+                engine_.erase(sphere);
+            }
+        },
+        status_.seeds + (seed ? 1 : 0), status_.erasures + (seed ? 0 : 1), &next);
+    if (!notice.empty()) {
+        status_.message = notice;
     }
     if (status_.state == model::State::Evolving && !status_.hasLevelSet) {
         enter(model::State::Paused, "the level set is empty: add a seed");

@@ -97,7 +97,7 @@ TEST_F(SolverLeakTest, ABarrierOnTheNeckKeepsTheFrontOutOfTheOtherBall) {
     LevelSetSolver solver(volume, kDims, watching());
     solver.setParams(kParams);
     solver.addSphere({kBallA, 3.0F});
-    solver.addBarrier({{kNeckMiddleX, 16.0F, 16.0F}, 3.0F});
+    solver.addBarrier({{{kNeckMiddleX, 16.0F, 16.0F}, 3.0F}});
     const StepResult r = solver.runUntilConverged(3000);
     EXPECT_EQ(r.stopReason, StopReason::Converged) << stopReasonName(r.stopReason);
     EXPECT_EQ(insideBeyondNeck(solver.readMask()), 0U);
@@ -116,20 +116,56 @@ TEST_F(SolverLeakTest, ABarrierPlacedAfterTheLeakCutsTheFrontBackAndHolds) {
     ASSERT_EQ(solver.runUntilConverged(3000).stopReason, StopReason::Leak);
     // The operator erases what leaked, from the neck's middle on, and closes the neck.
     solver.removeSphere({kBallB, kBallB.x - kNeckMiddleX + 1.0F});
-    solver.addBarrier({{kNeckMiddleX, 16.0F, 16.0F}, 3.0F});
+    solver.addBarrier({{{kNeckMiddleX, 16.0F, 16.0F}, 3.0F}});
     const StepResult r = solver.runUntilConverged(3000);
     EXPECT_EQ(r.stopReason, StopReason::Converged) << stopReasonName(r.stopReason);
     EXPECT_EQ(insideBeyondNeck(solver.readMask()), 0U);
+}
+
+// A positive correction in tissue the threshold calls outside: a plain seed there recedes, a
+// keeping sphere holds its voxels while the front grows on elsewhere, and a blocking sphere
+// placed over part of it later wins there (the newest barrier decides).
+TEST_F(SolverLeakTest, AKeepingSphereStaysInsideWhereTheScanSaysOutside) {
+    const std::vector<float> volume = dumbbell();
+    const glm::vec3 outside{36.0F, 16.0F, 6.0F}; // background, between the balls below the neck
+    const auto inAt = [&](const std::vector<std::uint8_t>& m, glm::vec3 p) {
+        return m[voxelIndex(kDims, static_cast<int>(p.x), static_cast<int>(p.y),
+                            static_cast<int>(p.z))];
+    };
+    LevelSetSolver plain(volume, kDims);
+    plain.setParams(kParams);
+    plain.addSphere({kBallA, 3.0F});
+    plain.addSphere({outside, 3.0F});
+    plain.runUntilConverged(2000);
+    EXPECT_EQ(inAt(plain.readMask(), outside), 0) << "a plain seed in the background recedes";
+
+    LevelSetSolver kept(volume, kDims);
+    kept.setParams(kParams);
+    kept.addSphere({kBallA, 3.0F});
+    kept.addBarrier({{outside, 3.0F}, true});
+    EXPECT_EQ(inAt(kept.readMask(), outside), 1) << "a keeping sphere is inside at once";
+    kept.runUntilConverged(2000);
+    const std::vector<std::uint8_t> m = kept.readMask();
+    EXPECT_EQ(inAt(m, outside), 1);
+    EXPECT_EQ(inAt(m, outside + glm::vec3(2.0F, 0.0F, 0.0F)), 1) << "its whole sphere stays";
+    EXPECT_EQ(inAt(m, outside + glm::vec3(0.0F, 0.0F, 5.0F)), 0) << "and the front goes no further";
+    EXPECT_EQ(inAt(m, kBallA + glm::vec3(9.0F, 0.0F, 0.0F)), 1) << "the rest grows as before";
+
+    kept.addBarrier({{outside, 1.5F}, false});
+    kept.runUntilConverged(500);
+    EXPECT_EQ(inAt(kept.readMask(), outside), 0)
+        << "the newer, blocking sphere wins where both hold";
+    EXPECT_EQ(kept.stats().barriers, 2);
 }
 
 TEST_F(SolverLeakTest, RefusesMoreBarriersThanTheShaderHolds) {
     const std::vector<float> volume(countOf(kDims), 0.0F);
     LevelSetSolver solver(volume, kDims);
     for (std::size_t n = 0; n < kMaxBarriers; ++n) {
-        solver.addBarrier({{10.0F + static_cast<float>(n), 16.0F, 16.0F}, 1.0F});
+        solver.addBarrier({{{10.0F + static_cast<float>(n), 16.0F, 16.0F}, 1.0F}});
     }
-    EXPECT_THROW(solver.addBarrier({{40.0F, 16.0F, 16.0F}, 1.0F}), std::invalid_argument);
-    EXPECT_THROW(solver.addBarrier({{400.0F, 16.0F, 16.0F}, 1.0F}), std::invalid_argument);
+    EXPECT_THROW(solver.addBarrier({{{40.0F, 16.0F, 16.0F}, 1.0F}}), std::invalid_argument);
+    EXPECT_THROW(solver.addBarrier({{{400.0F, 16.0F, 16.0F}, 1.0F}}), std::invalid_argument);
     solver.clearBarriers();
     EXPECT_TRUE(solver.barriers().empty());
 }

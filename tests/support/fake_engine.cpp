@@ -165,12 +165,12 @@ void FakeEngine::erase(const model::Sphere& sphere) {
     paint(sphere, 0);
 }
 
-bool FakeEngine::addBarrier(const model::Sphere& sphere) {
+bool FakeEngine::addBarrier(const model::Barrier& barrier) {
     requireScan("addBarrier");
     if (barriers_.size() >= model::kMaxBarriers) {
         return false;
     }
-    barriers_.push_back(sphere);
+    barriers_.push_back(barrier);
     return true;
 }
 

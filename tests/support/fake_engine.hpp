@@ -59,9 +59,9 @@ class FakeEngine : public workflow::Engine {
                                               double radiusMm) const override;
     void addSeed(const model::Sphere& sphere) override;
     void erase(const model::Sphere& sphere) override;
-    bool addBarrier(const model::Sphere& sphere) override;
+    bool addBarrier(const model::Barrier& barrier) override;
     [[nodiscard]] int barriers() const override { return static_cast<int>(barriers_.size()); }
-    [[nodiscard]] const std::vector<model::Sphere>& barrierSpheres() const { return barriers_; }
+    [[nodiscard]] const std::vector<model::Barrier>& barrierList() const { return barriers_; }
     void clearLevelSet() override;
     [[nodiscard]] bool hasLevelSet() const override { return inside_ > 0; }
     void setParams(const model::LevelSetParams& params) override;
@@ -80,7 +80,7 @@ class FakeEngine : public workflow::Engine {
         std::size_t inside = 0;
         int iterations = 0;
         float time = 0.0F;
-        std::vector<model::Sphere> barriers;
+        std::vector<model::Barrier> barriers;
     };
     // Records a call the workflow should not have made, then throws it as std::logic_error.
     [[noreturn]] void misused(const std::string& what) const;
@@ -99,7 +99,7 @@ class FakeEngine : public workflow::Engine {
     int sinceChange_ = 0;
     model::LevelSetParams params_;
     workflow::SpeedChoice speed_;
-    std::vector<model::Sphere> barriers_;
+    std::vector<model::Barrier> barriers_;
     std::map<workflow::SnapshotId, LevelSet> snapshots_;
     workflow::SnapshotId nextId_ = 1;
     mutable int misuse_ = 0;

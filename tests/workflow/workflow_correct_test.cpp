@@ -49,6 +49,12 @@ TEST(WorkflowCorrect, APositiveOneSeedsAndLeavesTAndEps) {
     EXPECT_EQ(r.status().params.eps, before.eps);
     EXPECT_EQ(r.status().seeds, 2);
     EXPECT_EQ(r.status().insideExamples.size(), 3U);
+    // It sticks: a keeping sphere, so the front cannot recede from tissue the threshold refuses.
+    ASSERT_EQ(r.engine.barrierList().size(), 1U);
+    EXPECT_TRUE(r.engine.barrierList()[0].keep);
+    EXPECT_EQ(r.engine.barrierList()[0].sphere.centre, glm::vec3(15.0F, 6.0F, 4.0F));
+    ASSERT_TRUE(r.act(model::Undo{}).accepted);
+    EXPECT_EQ(r.engine.barriers(), 0);
 }
 
 TEST(WorkflowCorrect, ANegativeOneSticksAndUndoTakesTheBarrierBack) {
@@ -59,8 +65,9 @@ TEST(WorkflowCorrect, ANegativeOneSticksAndUndoTakesTheBarrierBack) {
     ASSERT_TRUE(r.act(model::Correct{{10.0, 6.0, 4.0}, false, 1.0}).accepted);
     EXPECT_EQ(r.state(), State::Evolving);
     EXPECT_FALSE(r.engine.inside({10, 6, 4}));
-    ASSERT_EQ(r.engine.barrierSpheres().size(), 1U);
-    EXPECT_EQ(r.engine.barrierSpheres()[0].centre, glm::vec3(10.0F, 6.0F, 4.0F));
+    ASSERT_EQ(r.engine.barrierList().size(), 1U);
+    EXPECT_EQ(r.engine.barrierList()[0].sphere.centre, glm::vec3(10.0F, 6.0F, 4.0F));
+    EXPECT_FALSE(r.engine.barrierList()[0].keep);
     EXPECT_EQ(r.status().outsideExamples.size(), 1U);
     EXPECT_EQ(r.status().erasures, 1);
     ASSERT_TRUE(r.act(model::Undo{}).accepted);
@@ -72,15 +79,19 @@ TEST(WorkflowCorrect, ANegativeOneSticksAndUndoTakesTheBarrierBack) {
     EXPECT_EQ(r.engine.barriers(), 0) << "a restart clears the no-go spheres with the surface";
 }
 
-TEST(WorkflowCorrect, AnEraseWhileSteeringSticksButNotBeforeTheRun) {
+TEST(WorkflowCorrect, AnEditWhileSteeringSticksButNotBeforeTheRun) {
     Rig r;
     r.load();
     r.seed({8.0, 6.0, 4.0}, 3.0);
     ASSERT_TRUE(r.act(model::Erase{{9.0, 6.0, 4.0}, 1.0}).accepted);
-    EXPECT_EQ(r.engine.barriers(), 0) << "seeding: an erase shapes the start, nothing to hold";
+    ASSERT_TRUE(r.act(model::AddSeed{{5.0, 6.0, 4.0}, 1.0}).accepted);
+    EXPECT_EQ(r.engine.barriers(), 0) << "seeding: edits shape the start, nothing to hold";
     ASSERT_TRUE(r.act(model::Run{}).accepted);
     ASSERT_TRUE(r.act(model::Erase{{7.0, 6.0, 4.0}, 1.0}).accepted);
-    EXPECT_EQ(r.engine.barriers(), 1);
+    ASSERT_TRUE(r.act(model::AddSeed{{12.0, 6.0, 4.0}, 1.0}).accepted);
+    ASSERT_EQ(r.engine.barriers(), 2);
+    EXPECT_FALSE(r.engine.barrierList()[0].keep);
+    EXPECT_TRUE(r.engine.barrierList()[1].keep);
 }
 
 TEST(WorkflowCorrect, BeyondTheBarriersTheEraseStandsAndSaysSo) {
