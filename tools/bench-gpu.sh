@@ -85,22 +85,29 @@ if [[ -n $pack ]]; then
   exit 0
 fi
 
-if [[ -z $bin ]]; then
+# CI's small run checks the plumbing, not the figures: the default build's app and benchmarks,
+# which CI has just built, save compiling them all again in Release.
+have_default() {
+  local b
+  for b in steerseg bench/solver_bench bench/render_frame_bench bench/segment_bench \
+    bench/large_scan_bench; do
+    [[ -x $root/build/default/$b ]] || return 1
+  done
+}
+if [[ -z $bin ]] && ((small)) && have_default; then
+  bin=$root/build/default/bench
+  kiosk_bin=$root/build/default/steerseg
+  scan_of() { echo "$data/$2"; }
+elif [[ -z $bin ]]; then
   "$root/tools/install-deps.sh"
   kiosk_bin=$root/build/bench-gpu/steerseg
-  # CI's small run checks the plumbing, not the figures: the default build's kiosk, which CI
-  # has just built, saves compiling the whole app again in Release.
-  if ((small)) && [[ -x $root/build/default/steerseg ]]; then
-    kiosk_bin=$root/build/default/steerseg
-  fi
-  if wants kiosk && [[ $kiosk_bin == "$root/build/bench-gpu/steerseg" ]]; then
+  if wants kiosk; then
     build_benches "$root/build/bench-gpu" ON steerseg
   else
     build_benches "$root/build/bench-gpu" ON
   fi
   bin=$root/build/bench-gpu/bench
-  scandir=$data
-  scan_of() { echo "$scandir/$2"; }
+  scan_of() { echo "$data/$2"; }
 else
   bin=$(cd "$bin" && pwd)
   kiosk_bin=$bin/steerseg
