@@ -85,6 +85,35 @@ std::vector<model::Sphere> readSpheres(const nlohmann::json& params, const char*
     return out;
 }
 
+nlohmann::json barrierList(const std::vector<model::Barrier>& list) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const model::Barrier& b : list) {
+        const model::Sphere& s = b.sphere;
+        out.push_back(
+            {{"sphere", {s.centre.x, s.centre.y, s.centre.z, s.radius}}, {"keep", b.keep}});
+    }
+    return out;
+}
+
+// Snapshots from before the barriers were kept have none.
+std::vector<model::Barrier> readBarriers(const nlohmann::json& j) {
+    std::vector<model::Barrier> out;
+    if (!j.contains("barriers")) {
+        return out;
+    }
+    for (const nlohmann::json& b : j.at("barriers")) {
+        const nlohmann::json& s = b.at("sphere");
+        out.push_back({{{s.at(0).get<float>(), s.at(1).get<float>(), s.at(2).get<float>()},
+                        s.at(3).get<float>()},
+                       b.at("keep").get<bool>()});
+    }
+    if (out.size() > model::kMaxBarriers) {
+        throw AutosaveFormatError("more barriers than a session holds (" +
+                                  std::to_string(out.size()) + ")");
+    }
+    return out;
+}
+
 // Snapshots from before the speed choice have none of these keys: the threshold speed.
 model::SpeedKind readSpeed(const nlohmann::json& params, const char* key) {
     if (!params.contains(key)) {
@@ -123,7 +152,8 @@ nlohmann::json metadata(const AutosaveSnapshot& s) {
         {"seeds", s.seeds},
         {"erasures", s.erasures},
         {"iterations", s.iterations},
-        {"evolved_time", s.evolvedTime}};
+        {"evolved_time", s.evolvedTime},
+        {"barriers", barrierList(s.barriers)}};
 }
 
 // A valid CRC says the bytes are the ones written, not that the writer was sane: a count no
@@ -185,6 +215,7 @@ void readMetadata(const nlohmann::json& j, AutosaveSnapshot& s) {
     s.erasures = readCount(j, "erasures", kMaxSpheres);
     s.iterations = readCount(j, "iterations", std::numeric_limits<int>::max());
     s.evolvedTime = readEvolvedTime(j);
+    s.barriers = readBarriers(j);
 }
 
 struct FileStamp {

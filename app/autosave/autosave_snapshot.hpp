@@ -6,6 +6,7 @@
 // torn, truncated or bit-flipped file is recognised before anything in it is trusted.
 #include "core/mask_runs.hpp"
 #include "model/action.hpp"
+#include "model/level_set_params.hpp"
 #include "workflow/undo_stack.hpp"
 
 #include <cstddef>
@@ -45,6 +46,9 @@ struct AutosaveSnapshot {
     int iterations = 0;
     double evolvedTime = 0.0;
     MaskRuns mask; // no runs: no level set
+    // The corrections that stick (kept and blocked spheres), in the order placed: without them a
+    // resumed run would undo the operator's erases and let the kept spheres recede.
+    std::vector<model::Barrier> barriers;
 };
 
 class AutosaveFormatError : public std::runtime_error {

@@ -351,7 +351,7 @@ void SessionEngine::restore(workflow::SnapshotId id) {
 }
 
 void SessionEngine::setMask(const MaskRuns& mask) {
-    setBarriers({}); // an autosave keeps the surface, not the run's no-go spheres
+    setBarriers({}); // a mask alone: whoever restores the barriers places them again
     if (mask.runs.empty()) {
         requireSession().clearLevelSet();
     } else {

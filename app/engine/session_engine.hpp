@@ -45,6 +45,7 @@ class SessionEngine final : public workflow::Engine {
     void erase(const model::Sphere& sphere) override;
     bool addBarrier(const model::Barrier& barrier) override;
     [[nodiscard]] int barriers() const override { return static_cast<int>(barriers_.size()); }
+    [[nodiscard]] const std::vector<model::Barrier>& barrierList() const { return barriers_; }
     void clearLevelSet() override;
     [[nodiscard]] bool hasLevelSet() const override;
     void setParams(const model::LevelSetParams& params) override;

@@ -133,8 +133,12 @@ void SessionAutosave::finishResume(workflow::Workflow& flow, engine::SessionEngi
     } else {
         try {
             engine.setMask(s.mask);
-            workflow::RestoredSession restored{s.params, s.seeds, s.erasures, s.state,
-                                               "resumed the session saved " + utcOf(s.savedAtMs)};
+            workflow::RestoredSession restored{s.params,
+                                               s.seeds,
+                                               s.erasures,
+                                               s.state,
+                                               "resumed the session saved " + utcOf(s.savedAtMs),
+                                               s.barriers};
             const workflow::Workflow::Outcome o = flow.restoreSession(restored);
             if (!o.accepted) {
                 failure = o.reason;
@@ -209,6 +213,7 @@ void SessionAutosave::save(const workflow::Status& status, engine::SessionEngine
     s.erasures = status.erasures;
     s.iterations = status.iterations;
     s.evolvedTime = status.evolvedTime;
+    s.barriers = engine.barrierList();
     if (status.hasLevelSet && engine.session() != nullptr) {
         const std::vector<std::uint8_t> mask = engine.session()->mask();
         readBackSeconds_ += std::chrono::duration<double>(SteadyClock::now() - start).count();

@@ -53,6 +53,7 @@ float stableTimeStep(const TimeStepRule& rule, float maxDataRate);
 struct Sphere {
     glm::vec3 centre{0.0F};
     float radius = 0.0F;
+    bool operator==(const Sphere&) const = default;
 };
 
 // Throws std::invalid_argument unless the radius is positive, finite and at most the volume's
@@ -75,6 +76,7 @@ std::string describe(const LevelSetParams& params);
 struct Barrier {
     Sphere sphere;
     bool keep = false;
+    bool operator==(const Barrier&) const = default;
 };
 
 // Barrier spheres one run may hold, of both kinds together (the shader's uniform array).

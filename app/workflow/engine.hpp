@@ -53,29 +53,13 @@ struct SpeedChoice {
     // `= {}`: a choice written as {kind, inside, outside} (the tapped examples only) stays valid.
     std::vector<model::Sphere> paintedInside = {}; // at most kMaxPaintedExamples, oldest first
     std::vector<model::Sphere> paintedOutside = {};
-    bool operator==(const SpeedChoice& other) const;
+    bool operator==(const SpeedChoice&) const = default;
     [[nodiscard]] bool hasInside() const { return !inside.empty() || !paintedInside.empty(); }
     [[nodiscard]] bool hasOutside() const { return !outside.empty() || !paintedOutside.empty(); }
 };
 // Dabs of painted strokes kept per class: a long session's strokes stay bounded in memory (and in
 // every undo entry's copy of the parameters); the classifier samples voxels from them anyway.
 inline constexpr std::size_t kMaxPaintedExamples = 4096;
-
-inline bool SpeedChoice::operator==(const SpeedChoice& other) const {
-    const auto same = [](const std::vector<model::Sphere>& a, const std::vector<model::Sphere>& b) {
-        if (a.size() != b.size()) {
-            return false;
-        }
-        for (std::size_t i = 0; i < a.size(); ++i) {
-            if (a[i].centre != b[i].centre || a[i].radius != b[i].radius) {
-                return false;
-            }
-        }
-        return true;
-    };
-    return kind == other.kind && same(inside, other.inside) && same(outside, other.outside) &&
-           same(paintedInside, other.paintedInside) && same(paintedOutside, other.paintedOutside);
-}
 
 // A copy of the level set that undo can go back to.
 using SnapshotId = std::uint64_t;

@@ -34,6 +34,7 @@ struct RestoredSession {
     int erasures = 0;
     model::State state = model::State::Paused;
     std::string notice; // for the operator, e.g. "resumed the session saved at 13:01:40 UTC"
+    std::vector<model::Barrier> barriers; // placed again on the restored surface
 };
 
 class Workflow {

@@ -53,6 +53,13 @@ Workflow::Outcome Workflow::restoreSession(const RestoredSession& restored) {
             applyParams(clamped(threshold), true);
             notice = "the threshold speed runs: " + oneLine(e.what());
         }
+        for (const model::Barrier& b : restored.barriers) {
+            if (!engine_.addBarrier(b)) {
+                notice = "resumed without some of its corrections' barriers (at most " +
+                         std::to_string(model::kMaxBarriers) + ")";
+                break;
+            }
+        }
         status_.seeds = restored.seeds;
         status_.erasures = restored.erasures;
         status_.converged = false;

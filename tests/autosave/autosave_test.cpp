@@ -43,6 +43,7 @@ AutosaveSnapshot sampleSnapshot(std::int64_t savedAtMs = 1'700'000'000'123) {
     s.erasures = 1;
     s.iterations = 340;
     s.evolvedTime = 12.5;
+    s.barriers = {{{{3.0F, 4.0F, 5.0F}, 2.0F}, false}, {{{12.5F, 8.0F, 6.0F}, 1.5F}, true}};
     std::vector<std::uint8_t> mask(20 * 16 * 12, 0);
     for (int k = 0; k < 12; ++k) {
         for (int j = 0; j < 16; ++j) {
@@ -71,6 +72,7 @@ void expectSame(const AutosaveSnapshot& a, const AutosaveSnapshot& b) {
     EXPECT_EQ(a.erasures, b.erasures);
     EXPECT_EQ(a.iterations, b.iterations);
     EXPECT_EQ(a.evolvedTime, b.evolvedTime);
+    EXPECT_EQ(a.barriers, b.barriers);
     EXPECT_EQ(a.mask.voxels, b.mask.voxels);
     EXPECT_EQ(a.mask.runs, b.mask.runs);
 }

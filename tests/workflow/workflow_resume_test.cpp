@@ -1,5 +1,5 @@
-#include "workflow/param_ranges.hpp"
 #include "support/workflow_rig.hpp"
+#include "workflow/param_ranges.hpp"
 
 #include <gtest/gtest.h>
 
@@ -63,6 +63,21 @@ TEST(WorkflowResume, TheSpeedAndItsExamplesComeBack) {
     EXPECT_EQ(rig.engine.speedKind(), model::SpeedKind::Classify) << "retrained";
     EXPECT_EQ(rig.status().outsideExamples.size(), 1U);
     EXPECT_EQ(rig.status().message, "resumed the session saved 13:01:40");
+}
+
+// A resumed run must not undo the corrections that stuck: their barriers come back in order.
+TEST(WorkflowResume, TheCorrectionsBarriersComeBack) {
+    Rig rig;
+    rig.load();
+    rig.engine.addSeed({{8.0, 6.0, 4.0}, 2.0});
+    RestoredSession r = restored(State::Paused);
+    r.barriers = {{{{10.0F, 6.0F, 4.0F}, 1.0F}, false}, {{{6.0F, 6.0F, 4.0F}, 1.5F}, true}};
+    const auto o = rig.wf->restoreSession(r);
+    ASSERT_TRUE(o.accepted) << o.reason;
+    EXPECT_EQ(rig.engine.barrierList(), r.barriers);
+    EXPECT_EQ(rig.status().message, "resumed the session saved 13:01:40");
+    ASSERT_TRUE(rig.act(model::Restart{}).accepted);
+    EXPECT_EQ(rig.engine.barriers(), 0);
 }
 
 TEST(WorkflowResume, ASpeedTheEngineRefusesLeavesTheThresholdSpeed) {
