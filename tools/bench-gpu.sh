@@ -239,8 +239,9 @@ for line in text("segment").splitlines():
     if m:
         case = {"case": m[1], "itk_seconds": float(m[2]), "evolved_time": float(m[3]), "runs": []}
         cases.append(case)
-    # segment_bench's "run N: I iterations, t = T, S s (R it/s), V voxels inside, ..., Dice D".
-    m = re.match(r"run \d+: (\d+) iterations, t = ([\d.]+), ([\d.]+) s(?: \([\d.]+ it/s\))?, (\d+) voxels inside", line)
+    # segment_bench's "run N: STOP, I iterations, t = T, S s (R it/s), V voxels inside, ...,
+    # Dice D" (the sleeping-off run, "run N (sleeping off): ...", is not one of the timed runs).
+    m = re.match(r"run \d+: (?:\w+, )?(\d+) iterations, t = ([\d.]+), ([\d.]+) s(?: \([\d.]+ it/s\))?, (\d+) voxels inside", line)
     if m and case is not None:
         dice = re.search(r"Dice ([\d.]+)", line)
         case["runs"].append({"iterations": int(m[1]), "seconds": float(m[3]), "inside": int(m[4]),
