@@ -1,0 +1,101 @@
+// The DICOM node inside the kiosk, end to end (docs/dicom-network.md): DCMTK's storescu pushes
+// the IBSI lung CT into the kiosk's Storage SCP as the scanner would; the kiosk (offscreen,
+// scripted) lists it, loads it from the list, seeds, runs, exports, and its outbox sends the
+// DICOM SEG to Orthanc, where the REST API shows it filed with the source's study.
+#include "net/net_harness.hpp"
+#include "support/test_data.hpp"
+
+#include <fstream>
+#include <gtest/gtest.h>
+
+namespace steerseg::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Lists, loads, segments a little and exports; waits until the outbox is empty.
+constexpr const char* kSession = R"(wait until received >= 1 timeout 60
+load $RECEIVED
+wait loaded timeout 60
+expect state inspect
+seed 102 100 30 6
+run
+wait iterations 20 timeout 60
+pause
+wait state paused
+finish
+wait state review
+export
+wait state done timeout 60
+expect exported contains steerseg-export
+wait until outbox == 0 timeout 30
+)";
+
+void writeConfig(const fs::path& dir, int port, int pacsPort) {
+    std::ofstream(dir / "kiosk.toml")
+        << "[export]\nfolder = \"" << (dir / "steerseg-export").string()
+        << "\"\nformats = [\"dcm\"]\n[audit]\npath = \"" << (dir / "audit.jsonl").string()
+        << "\"\n[autosave]\nfolder = \"" << (dir / "autosave").string()
+        << "\"\n[dicom]\nenabled = true\nport = " << port << "\nstore = \""
+        << (dir / "store").string() << "\"\noutbox = \"" << (dir / "outbox").string()
+        << "\"\nmin_free_mb = 0\n"
+           "[[dicom.peers]]\nname = \"scanner\"\naet = \"SCANNER\"\nhost = \"127.0.0.1\"\n"
+           "receive = true\n"
+           "[[dicom.peers]]\nname = \"pacs\"\naet = \"ORTHANC\"\nhost = \"127.0.0.1\"\n"
+           "send = true\nport = "
+        << pacsPort << "\n";
+}
+
+TEST(NetKioskNode, ReceivedSeriesIsLoadedSegmentedAndItsSegSentToThePacs) {
+    STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
+    STEERSEG_REQUIRE_PROGRAM(OrthancServer::kProgram, "orthanc");
+    STEERSEG_REQUIRE_PROGRAM("/usr/bin/storescu", "dcmtk");
+    const fs::path dir = tempDir("net-kiosk-node");
+    OrthancServer pacs(dir / "orthanc");
+    const int port = freePort();
+    writeConfig(dir, port, pacs.dicomPort());
+    std::ofstream(dir / "node.session") << kSession;
+
+    ChildProcess kiosk({steersegBinary().string(), "kiosk", "--allow-root", "--platform",
+                        "offscreen", "--size", "480x320", "--max-seconds", "120", "--config",
+                        (dir / "kiosk.toml").string(), "--script", (dir / "node.session").string(),
+                        "--frames", (dir / "frames").string()},
+                       dir / "kiosk.log");
+    ASSERT_TRUE(waitUntil([&] { return kiosk.log().find("listening as") != std::string::npos; },
+                          std::chrono::seconds(20)))
+        << kiosk.log();
+    const Finished pushed = runProgram({"storescu", "-aet", "SCANNER", "-aec", "STEERSEG", "+sd",
+                                        "127.0.0.1", std::to_string(port), series.string()},
+                                       dir);
+    ASSERT_EQ(pushed.status, 0) << pushed.output;
+
+    ASSERT_TRUE(waitUntil([&] { return !kiosk.running(); }, std::chrono::seconds(120)))
+        << kiosk.log();
+    const std::string log = kiosk.log();
+    EXPECT_NE(log.find("dicom: received "), std::string::npos) << log;
+    EXPECT_NE(log.find("dicom: delivered "), std::string::npos) << log;
+    EXPECT_EQ(log.find("refused"), std::string::npos) << log;
+    EXPECT_EQ(log.find("node.session:"), std::string::npos) << log; // no step failed
+
+    // Orthanc holds the SEG, in the source's study (storescu sent the source to the kiosk only).
+    const nlohmann::json instances = pacs.get("/instances?expand");
+    ASSERT_EQ(instances.size(), 1U) << instances.dump();
+    const nlohmann::json tags =
+        pacs.get("/instances/" + instances[0].at("ID").get<std::string>() + "/simplified-tags");
+    EXPECT_EQ(tags.at("Modality"), "SEG");
+    std::string sourceStudy;
+    for (const auto& study : fs::directory_iterator(dir / "store")) {
+        sourceStudy = study.path().filename().string();
+    }
+    EXPECT_EQ(tags.at("StudyInstanceUID"), sourceStudy);
+    EXPECT_FALSE(tags.at("PerFrameFunctionalGroupsSequence").empty());
+
+    // The audit log has the send: one accepted attempt to the PACS.
+    const std::string audit = readText(dir / "audit.jsonl");
+    EXPECT_NE(audit.find("\"event\":\"send\""), std::string::npos) << audit;
+    EXPECT_TRUE(fs::is_empty(dir / "outbox"));
+    fs::remove_all(dir);
+}
+
+} // namespace
+} // namespace steerseg::test
