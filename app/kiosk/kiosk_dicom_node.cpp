@@ -40,7 +40,23 @@ DicomNode::DicomNode(const config::DicomConfig& dicom) : dicom_(dicom) {
     }
     peers_ = sendPeerNames(dicom_);
     net::quietDcmtk(); // before the threads: DCMTK's loggers are process-wide
-    scp_ = std::thread([this] { serve(); });
+    // Bound here, before any thread reads DICOM (StorageScp::open).
+    try {
+        scp_ =
+            std::make_unique<net::StorageScp>(scpSettings(dicom_), [this](const std::string& line) {
+                // One line per object would bury the journal: a series is told once, when complete.
+                if (!line.starts_with("stored ")) {
+                    say(line);
+                }
+            });
+        scp_->open();
+        say("listening as " + dicom_.aet + " on port " + std::to_string(dicom_.port) +
+            ", storing into " + dicom_.store.string());
+        scpThread_ = std::thread([this] { scp_->serve(stop_); });
+    } catch (const std::exception& e) {
+        // The kiosk goes on: the operator can still load folders and export to files.
+        say(std::string("not receiving: ") + e.what());
+    }
     worker_ = std::thread([this] { work(); });
 }
 
@@ -54,8 +70,8 @@ void DicomNode::stop() {
         stop_ = true;
     }
     wake_.notify_all();
-    if (scp_.joinable()) {
-        scp_.join();
+    if (scpThread_.joinable()) {
+        scpThread_.join();
     }
     if (worker_.joinable()) {
         worker_.join();
@@ -65,19 +81,6 @@ void DicomNode::stop() {
 void DicomNode::say(const std::string& line) {
     const std::lock_guard lock(mutex_);
     shared_.log.push_back(line);
-}
-
-void DicomNode::serve() {
-    try {
-        net::StorageScp scp(scpSettings(dicom_), [this](const std::string& line) { say(line); });
-        scp.open();
-        say("listening as " + dicom_.aet + " on port " + std::to_string(dicom_.port) +
-            ", storing into " + dicom_.store.string());
-        scp.serve(stop_);
-    } catch (const std::exception& e) {
-        // The kiosk goes on: the operator can still load folders and export to files.
-        say(std::string("not receiving: ") + e.what());
-    }
 }
 
 void DicomNode::work() {

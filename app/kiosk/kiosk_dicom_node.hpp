@@ -24,7 +24,8 @@ class AuditLog;
 }
 namespace steerseg::net {
 class Outbox;
-}
+class StorageScp;
+} // namespace steerseg::net
 
 namespace steerseg::kiosk {
 
@@ -69,7 +70,6 @@ class DicomNode {
     };
 
     void stop();
-    void serve();
     void work();
     void queueExports(net::Outbox& outbox);
     void listStore(std::vector<std::filesystem::path>& complete, bool first);
@@ -89,7 +89,8 @@ class DicomNode {
     std::vector<std::string> outbox_;
     std::string note_;
     std::string noteDismissed_;
-    std::thread scp_;
+    std::unique_ptr<net::StorageScp> scp_;
+    std::thread scpThread_;
     std::thread worker_;
 };
 

@@ -18,15 +18,17 @@ constexpr const char* kSession = R"(wait until received >= 1 timeout 60
 load $RECEIVED
 wait loaded timeout 60
 expect state inspect
+probe 102 100 30 5
 seed 102 100 30 6
 run
-wait iterations 20 timeout 60
+wait iterations 20 timeout 30
 pause
 wait state paused
 finish
 wait state review
 export
-wait state done timeout 60
+wait state done timeout 30
+expect volume_ml > 0
 expect exported contains steerseg-export
 wait until outbox == 0 timeout 30
 )";
@@ -51,13 +53,13 @@ TEST(NetKioskNode, ReceivedSeriesIsLoadedSegmentedAndItsSegSentToThePacs) {
     STEERSEG_REQUIRE_PROGRAM(OrthancServer::kProgram, "orthanc");
     STEERSEG_REQUIRE_PROGRAM("/usr/bin/storescu", "dcmtk");
     const fs::path dir = tempDir("net-kiosk-node");
-    OrthancServer pacs(dir / "orthanc");
+    OrthancServer pacs(dir);
     const int port = freePort();
     writeConfig(dir, port, pacs.dicomPort());
     std::ofstream(dir / "node.session") << kSession;
 
     ChildProcess kiosk({steersegBinary().string(), "kiosk", "--allow-root", "--platform",
-                        "offscreen", "--size", "480x320", "--max-seconds", "120", "--config",
+                        "offscreen", "--size", "480x320", "--max-seconds", "90", "--config",
                         (dir / "kiosk.toml").string(), "--script", (dir / "node.session").string(),
                         "--frames", (dir / "frames").string()},
                        dir / "kiosk.log");
@@ -69,7 +71,7 @@ TEST(NetKioskNode, ReceivedSeriesIsLoadedSegmentedAndItsSegSentToThePacs) {
                                        dir);
     ASSERT_EQ(pushed.status, 0) << pushed.output;
 
-    ASSERT_TRUE(waitUntil([&] { return !kiosk.running(); }, std::chrono::seconds(120)))
+    ASSERT_TRUE(waitUntil([&] { return !kiosk.running(); }, std::chrono::seconds(100)))
         << kiosk.log();
     const std::string log = kiosk.log();
     EXPECT_NE(log.find("dicom: received "), std::string::npos) << log;
