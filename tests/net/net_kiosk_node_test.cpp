@@ -33,13 +33,14 @@ expect exported contains steerseg-export
 wait until outbox == 0 timeout 30
 )";
 
-void writeConfig(const fs::path& dir, int port, int pacsPort) {
+void writeConfig(const fs::path& dir, int port, int pacsPort, bool enabled = true) {
     std::ofstream(dir / "kiosk.toml")
         << "[export]\nfolder = \"" << (dir / "steerseg-export").string()
         << "\"\nformats = [\"dcm\"]\n[audit]\npath = \"" << (dir / "audit.jsonl").string()
         << "\"\n[autosave]\nfolder = \"" << (dir / "autosave").string()
-        << "\"\n[dicom]\nenabled = true\nport = " << port << "\nstore = \""
-        << (dir / "store").string() << "\"\noutbox = \"" << (dir / "outbox").string()
+        << "\"\n[dicom]\nenabled = " << (enabled ? "true" : "false") << "\nport = " << port
+        << "\nstore = \"" << (dir / "store").string() << "\"\noutbox = \""
+        << (dir / "outbox").string()
         << "\"\nmin_free_mb = 0\n"
            "[[dicom.peers]]\nname = \"scanner\"\naet = \"SCANNER\"\nhost = \"127.0.0.1\"\n"
            "receive = true\n"
@@ -96,6 +97,32 @@ TEST(NetKioskNode, ReceivedSeriesIsLoadedSegmentedAndItsSegSentToThePacs) {
     const std::string audit = readText(dir / "audit.jsonl");
     EXPECT_NE(audit.find("\"event\":\"send\""), std::string::npos) << audit;
     EXPECT_TRUE(fs::is_empty(dir / "outbox"));
+    fs::remove_all(dir);
+}
+
+// The node answers while the kiosk runs and goes with it on SIGTERM (exit 0); with the node off
+// (the default) the same config opens no port.
+TEST(NetKioskNode, OffOpensNoPortOnAnswersAndStopsWithTheKiosk) {
+    STEERSEG_REQUIRE_PROGRAM("/usr/bin/echoscu", "dcmtk");
+    const fs::path dir = tempDir("net-kiosk-node-onoff");
+    for (const bool enabled : {false, true}) {
+        const int port = freePort();
+        writeConfig(dir, port, freePort(), enabled);
+        ChildProcess kiosk({steersegBinary().string(), "kiosk", "--allow-root", "--platform",
+                            "offscreen", "--size", "160x120", "--max-seconds", "60", "--config",
+                            (dir / "kiosk.toml").string()},
+                           dir / "kiosk.log");
+        const std::string started = enabled ? "dicom: listening as" : "steerseg kiosk: offscreen";
+        ASSERT_TRUE(waitUntil([&] { return kiosk.log().find(started) != std::string::npos; },
+                              std::chrono::seconds(20)))
+            << kiosk.log();
+        const Finished echo = runProgram(
+            {"echoscu", "-aet", "SCANNER", "-aec", "STEERSEG", "127.0.0.1", std::to_string(port)},
+            dir);
+        EXPECT_EQ(echo.status == 0, enabled) << echo.output;
+        EXPECT_EQ(kiosk.stop(), 0) << kiosk.log();
+        EXPECT_EQ(kiosk.log().find("dicom:") != std::string::npos, enabled) << kiosk.log();
+    }
     fs::remove_all(dir);
 }
 
