@@ -328,7 +328,7 @@ class Kiosk {
         }
         panelStart_ = Clock::now();
         glBindFramebuffer(GL_FRAMEBUFFER, screen_.framebuffer());
-        // The panel lists the controllers beside what the workflow publishes.
+        // The panel lists the controllers and the DICOM node beside what the workflow publishes.
         shown_ = flow_.status();
         shown_.devices = hub_.links();
         node_.show(shown_);

@@ -42,6 +42,10 @@ DicomNode::DicomNode(const config::DicomConfig& dicom) : dicom_(dicom) {
     net::quietDcmtk(); // before the threads: DCMTK's loggers are process-wide
     // Bound here, before any thread reads DICOM (StorageScp::open).
     try {
+        if (scpSettings(dicom_).allowed.empty()) {
+            // A port nobody may call is only a port open: a site that sends only, sends.
+            throw net::ScpError("no [[dicom.peers]] with receive = true");
+        }
         scp_ =
             std::make_unique<net::StorageScp>(scpSettings(dicom_), [this](const std::string& line) {
                 // One line per object would bury the journal: a series is told once, when complete.
