@@ -117,7 +117,10 @@ void DicomNode::queueExports(net::Outbox& outbox) {
     std::vector<fs::path> files;
     {
         const std::lock_guard lock(mutex_);
-        files.swap(shared_.toQueue);
+        files = shared_.toQueue;
+    }
+    if (files.empty()) {
+        return;
     }
     for (const fs::path& file : files) {
         for (const std::string& peer : peers_) {
@@ -130,6 +133,25 @@ void DicomNode::queueExports(net::Outbox& outbox) {
             }
         }
     }
+    publishPending(outbox, files.size());
+}
+
+// The outbox's entries for the panel; the first `handedOver` exports leave the hand-over list
+// in the same moment, so that what waits is never missing from the list (a script waiting
+// for an empty outbox would take the gap for a delivery).
+void DicomNode::publishPending(const net::Outbox& outbox, std::size_t handedOver) {
+    std::vector<std::string> problems;
+    std::vector<std::string> lines;
+    for (const net::OutboxEntry& e : outbox.pending(&problems)) {
+        lines.push_back(waitingLine(e));
+    }
+    for (const std::string& p : problems) {
+        lines.push_back("cannot be sent: " + p);
+    }
+    const std::lock_guard lock(mutex_);
+    shared_.outbox = std::move(lines);
+    shared_.toQueue.erase(shared_.toQueue.begin(),
+                          shared_.toQueue.begin() + static_cast<std::ptrdiff_t>(handedOver));
 }
 
 // `complete`: the series seen complete so far; a new one is announced, except on the first
@@ -168,16 +190,7 @@ void DicomNode::drain(net::Outbox& outbox) {
                                                                  " to " + e.peer
                                                            : "not delivered: " + waitingLine(e));
                       });
-    std::vector<std::string> problems;
-    std::vector<std::string> lines;
-    for (const net::OutboxEntry& e : outbox.pending(&problems)) {
-        lines.push_back(waitingLine(e));
-    }
-    for (const std::string& p : problems) {
-        lines.push_back("cannot be sent: " + p);
-    }
-    const std::lock_guard lock(mutex_);
-    shared_.outbox = std::move(lines);
+    publishPending(outbox, 0);
 }
 
 void DicomNode::take(workflow::AuditLog& audit, std::ostream& err) {

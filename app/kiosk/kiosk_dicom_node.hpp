@@ -74,6 +74,7 @@ class DicomNode {
     void queueExports(net::Outbox& outbox);
     void listStore(std::vector<std::filesystem::path>& complete, bool first);
     void drain(net::Outbox& outbox);
+    void publishPending(const net::Outbox& outbox, std::size_t handedOver);
     void say(const std::string& line);
     void take(workflow::AuditLog& audit, std::ostream& err);
 

@@ -34,6 +34,7 @@ wait until outbox == 0 timeout 30
 )";
 
 void writeConfig(const fs::path& dir, int port, int pacsPort, bool enabled = true) {
+    // A failed send is retried after 0.3 s (doubling), so the PACS's return is seen soon.
     std::ofstream(dir / "kiosk.toml")
         << "[export]\nfolder = \"" << (dir / "steerseg-export").string()
         << "\"\nformats = [\"dcm\"]\n[audit]\npath = \"" << (dir / "audit.jsonl").string()
@@ -41,7 +42,7 @@ void writeConfig(const fs::path& dir, int port, int pacsPort, bool enabled = tru
         << "\"\n[dicom]\nenabled = " << (enabled ? "true" : "false") << "\nport = " << port
         << "\nstore = \"" << (dir / "store").string() << "\"\noutbox = \""
         << (dir / "outbox").string()
-        << "\"\nmin_free_mb = 0\n"
+        << "\"\nmin_free_mb = 0\nretry_first_seconds = 0.3\n"
            "[[dicom.peers]]\nname = \"scanner\"\naet = \"SCANNER\"\nhost = \"127.0.0.1\"\n"
            "receive = true\n"
            "[[dicom.peers]]\nname = \"pacs\"\naet = \"ORTHANC\"\nhost = \"127.0.0.1\"\n"
@@ -49,12 +50,21 @@ void writeConfig(const fs::path& dir, int port, int pacsPort, bool enabled = tru
         << pacsPort << "\n";
 }
 
-TEST(NetKioskNode, ReceivedSeriesIsLoadedSegmentedAndItsSegSentToThePacs) {
-    STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
-    STEERSEG_REQUIRE_PROGRAM(OrthancServer::kProgram, "orthanc");
-    STEERSEG_REQUIRE_PROGRAM("/usr/bin/storescu", "dcmtk");
-    const fs::path dir = tempDir("net-kiosk-node");
+std::size_t countOf(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) {
+        ++n;
+    }
+    return n;
+}
+
+// The scenario; with `pacsDown` Orthanc is stopped until the kiosk's first send has failed.
+void runScenario(const fs::path& series, const std::string& name, bool pacsDown) {
+    const fs::path dir = tempDir(name);
     OrthancServer pacs(dir);
+    if (pacsDown) {
+        pacs.stop();
+    }
     const int port = freePort();
     writeConfig(dir, port, pacs.dicomPort());
     std::ofstream(dir / "node.session") << kSession;
@@ -71,14 +81,22 @@ TEST(NetKioskNode, ReceivedSeriesIsLoadedSegmentedAndItsSegSentToThePacs) {
                                         "127.0.0.1", std::to_string(port), series.string()},
                                        dir);
     ASSERT_EQ(pushed.status, 0) << pushed.output;
+    if (pacsDown) {
+        // The SEG waits in the outbox (the panel says why) until the PACS is back.
+        ASSERT_TRUE(
+            waitUntil([&] { return kiosk.log().find("connection refused") != std::string::npos; },
+                      std::chrono::seconds(60)))
+            << kiosk.log();
+        pacs.start();
+    }
 
     ASSERT_TRUE(waitUntil([&] { return !kiosk.running(); }, std::chrono::seconds(100)))
         << kiosk.log();
     const std::string log = kiosk.log();
     EXPECT_NE(log.find("dicom: received "), std::string::npos) << log;
     EXPECT_NE(log.find("dicom: delivered "), std::string::npos) << log;
-    EXPECT_EQ(log.find("refused"), std::string::npos) << log;
-    EXPECT_EQ(log.find("node.session:"), std::string::npos) << log; // no step failed
+    EXPECT_EQ(log.find("refused object"), std::string::npos) << log; // the SCP took every image
+    EXPECT_EQ(log.find("node.session:"), std::string::npos) << log;  // no step failed
 
     // Orthanc holds the SEG, in the source's study (storescu sent the source to the kiosk only).
     const nlohmann::json instances = pacs.get("/instances?expand");
@@ -93,11 +111,34 @@ TEST(NetKioskNode, ReceivedSeriesIsLoadedSegmentedAndItsSegSentToThePacs) {
     EXPECT_EQ(tags.at("StudyInstanceUID"), sourceStudy);
     EXPECT_FALSE(tags.at("PerFrameFunctionalGroupsSequence").empty());
 
-    // The audit log has the send: one accepted attempt to the PACS.
+    // The audit log has each attempt: the failed ones while the PACS was down, then the one
+    // it accepted, once.
     const std::string audit = readText(dir / "audit.jsonl");
-    EXPECT_NE(audit.find("\"event\":\"send\""), std::string::npos) << audit;
+    const std::size_t sends = countOf(audit, "\"event\":\"send\"");
+    EXPECT_EQ(countOf(audit, "\"accepted\":true,\"attempt\""), 1U) << audit;
+    if (pacsDown) {
+        EXPECT_GE(sends, 2U) << audit;
+    } else {
+        EXPECT_EQ(sends, 1U) << audit;
+    }
     EXPECT_TRUE(fs::is_empty(dir / "outbox"));
     fs::remove_all(dir);
+}
+
+TEST(NetKioskNode, ReceivedSeriesIsLoadedSegmentedAndItsSegSentToThePacs) {
+    STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
+    STEERSEG_REQUIRE_PROGRAM(OrthancServer::kProgram, "orthanc");
+    STEERSEG_REQUIRE_PROGRAM("/usr/bin/storescu", "dcmtk");
+    runScenario(series, "net-kiosk-node", false);
+}
+
+// Orthanc stopped when the kiosk exports: the SEG waits in the outbox and is delivered, once,
+// when Orthanc is back, while the kiosk runs on.
+TEST(NetKioskNode, ASegWaitsForThePacsAndIsDeliveredOnceItIsBack) {
+    STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
+    STEERSEG_REQUIRE_PROGRAM(OrthancServer::kProgram, "orthanc");
+    STEERSEG_REQUIRE_PROGRAM("/usr/bin/storescu", "dcmtk");
+    runScenario(series, "net-kiosk-node-pacs-down", true);
 }
 
 // The node answers while the kiosk runs and goes with it on SIGTERM (exit 0); with the node off
