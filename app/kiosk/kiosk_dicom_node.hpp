@@ -34,8 +34,8 @@ class DicomNode {
     // A series whose newest image is younger than this is still arriving.
     static constexpr std::chrono::seconds kSettle{3};
 
-    // Starts nothing when `dicom.enabled` is false. A port that cannot be bound is logged on the
-    // next frame and shown on the panel; the kiosk runs on without receiving.
+    // Starts nothing when `dicom.enabled` is false. A port that cannot be bound (or no peer that
+    // may call) is logged on the first frame; the kiosk runs on without receiving.
     explicit DicomNode(const config::DicomConfig& dicom);
     // Stops both threads (within a second, or the send in flight's network timeout).
     ~DicomNode();
