@@ -276,6 +276,9 @@ std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status&
             ImGui::TableNextColumn();
         }
         d.banner(model, status.state);
+        if (!model.receivedNote.empty()) {
+            ImGui::TextWrapped("%s", model.receivedNote.c_str());
+        }
         if (model.progress) {
             d.progress(*model.progress);
         }
@@ -321,9 +324,19 @@ std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status&
             d.heading("Contour view / speed view");
             d.grid(model.views, 3);
         }
+        if (!model.received.empty()) {
+            d.heading("Received (newest first)");
+            d.grid(model.received, 1);
+        }
         if (!model.scans.empty()) {
             d.heading("Scans");
             d.grid(model.scans, 1);
+        }
+        if (!model.outbox.empty()) {
+            d.heading("Waiting to be sent");
+            for (const std::string& line : model.outbox) {
+                ImGui::TextWrapped("%s", line.c_str());
+            }
         }
         if (!model.devices.empty()) {
             d.heading("Controllers");

@@ -251,6 +251,8 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
         m.hint += " Export writes " + formats + ".";
     }
     m.message = st.message;
+    m.receivedNote = st.receivedNote;
+    m.outbox = st.outbox;
     m.error = s == State::Error;
     if (!st.auditProblem.empty()) {
         m.auditAlarm =
@@ -276,6 +278,11 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
             // The index keeps two scans of the same file name apart as widgets.
             m.scans.push_back({"Load " + scanLabel(scans[i]) + "##scan" + std::to_string(i),
                                model::LoadScan{scans[i]}});
+        }
+        for (std::size_t i = 0; i < st.received.size(); ++i) {
+            const workflow::ReceivedScan& r = st.received[i];
+            m.received.push_back({r.label + "##received" + std::to_string(i),
+                                  model::LoadScan{r.path}, false, !r.arriving});
         }
     }
 
@@ -370,8 +377,8 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
 
 std::vector<Action> reachableActions(const PanelModel& m) {
     std::vector<Action> out;
-    for (const auto* list :
-         {&m.scans, &m.presets, &m.speeds, &m.exampleTools, &m.tools, &m.views, &m.nav}) {
+    for (const auto* list : {&m.scans, &m.received, &m.presets, &m.speeds, &m.exampleTools,
+                             &m.tools, &m.views, &m.nav}) {
         for (const PanelButton& b : *list) {
             if (b.enabled) {
                 out.push_back(b.action);

@@ -55,7 +55,12 @@ struct PanelModel {
     std::vector<Readout> readouts;
     std::vector<ParamRow> params;
     std::optional<WindowRow> window;
-    std::vector<PanelButton> scans;   // LoadScan, one per scan
+    std::vector<PanelButton> scans; // LoadScan, one per scan
+    // The DICOM node's (Status::received): LoadScan of each received series, newest first; one
+    // still arriving is greyed out. The note announces one that has just come.
+    std::vector<PanelButton> received;
+    std::string receivedNote;
+    std::vector<std::string> outbox;  // what waits to be sent to the PACS, and why
     std::vector<PanelButton> presets; // ApplyPreset
     std::vector<PanelButton> speeds;  // SetSpeed: threshold, edge, classify (the chosen one active)
     // Classify chosen: the outside-mode toggle and Clear examples, the counts in `examples`,

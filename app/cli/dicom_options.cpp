@@ -1,6 +1,7 @@
 #include "cli/dicom_options.hpp"
 
 #include "config/config_loader.hpp"
+#include "kiosk/dicom_node_config.hpp"
 #include "model/action.hpp"
 #include "model/ae_title.hpp"
 
@@ -71,13 +72,10 @@ std::string ownAeTitle(const Args& args, const config::DicomConfig& dicom) {
 }
 
 net::ScpSettings listenSettings(const Args& args, const config::DicomConfig& dicom) {
-    net::ScpSettings s;
+    net::ScpSettings s = kiosk::scpSettings(dicom);
     s.aet = ownAeTitle(args, dicom);
     s.port = args.value("port") ? checkedPort(args, "port") : dicom.port;
     s.store = args.value("store").value_or(dicom.store.string());
-    s.associationQuotaBytes = static_cast<std::uint64_t>(dicom.associationQuotaMb) << 20;
-    s.minFreeBytes = static_cast<std::uint64_t>(dicom.minFreeMb) << 20;
-    s.keepDays = dicom.keepDays;
     if (const auto quota = args.integer("quota-mb")) {
         if (*quota < 1 || *quota > 65536) {
             throw UsageError("--quota-mb: 1..65536, got " + std::to_string(*quota));
@@ -85,18 +83,14 @@ net::ScpSettings listenSettings(const Args& args, const config::DicomConfig& dic
         s.associationQuotaBytes = static_cast<std::uint64_t>(*quota) << 20;
     }
     const std::vector<std::string> allow = args.values("allow");
+    if (!allow.empty()) {
+        s.allowed.clear(); // --allow replaces the config's peers
+    }
     for (const std::string& word : allow) {
         const auto at = word.find('@');
         net::AllowedCaller caller{checkedAeTitle(word.substr(0, at), "--allow"),
                                   at == std::string::npos ? "" : word.substr(at + 1)};
         s.allowed.push_back(std::move(caller));
-    }
-    if (allow.empty()) {
-        for (const auto& peer : dicom.peers) {
-            if (peer.receive) {
-                s.allowed.push_back({peer.aet, peer.address});
-            }
-        }
     }
     if (s.allowed.empty()) {
         throw UsageError("nobody may send: give --allow AE or [[dicom.peers]] with receive = true");
@@ -104,22 +98,8 @@ net::ScpSettings listenSettings(const Args& args, const config::DicomConfig& dic
     return s;
 }
 
-std::optional<net::DicomPeer> sendPeer(const config::DicomConfig& dicom, const std::string& name) {
-    for (const auto& p : dicom.peers) {
-        if (p.name == name && p.send) {
-            return net::DicomPeer{p.aet, p.host, p.port};
-        }
-    }
-    return std::nullopt;
-}
-
 net::Outbox configuredOutbox(const config::DicomConfig& dicom, workflow::AuditLog& audit) {
-    const auto ms = [](double seconds) {
-        return std::chrono::duration_cast<std::chrono::milliseconds>(
-            std::chrono::duration<double>(seconds));
-    };
-    return net::Outbox(dicom.outbox, {ms(dicom.retryFirstSeconds), ms(dicom.retryLongestSeconds)},
-                       &audit);
+    return net::Outbox(dicom.outbox, kiosk::outboxBackoff(dicom), &audit);
 }
 
 } // namespace steerseg::cli

@@ -4,6 +4,7 @@
 // as the defaults, and the command line's words over it.
 #include "cli/args.hpp"
 #include "config/kiosk_config.hpp"
+#include "kiosk/dicom_node_config.hpp"
 #include "net/dicom_peer.hpp"
 #include "net/outbox.hpp"
 #include "net/store_scp.hpp"
@@ -28,7 +29,7 @@ std::string ownAeTitle(const Args& args, const config::DicomConfig& dicom);
 net::ScpSettings listenSettings(const Args& args, const config::DicomConfig& dicom);
 
 // The [[dicom.peers]] entry named `name` with send = true, as an address; nullopt if none.
-std::optional<net::DicomPeer> sendPeer(const config::DicomConfig& dicom, const std::string& name);
+using kiosk::sendPeer;
 // The same, or a UsageError for --to naming it.
 net::DicomPeer requireSendPeer(const config::DicomConfig& dicom, const std::string& name);
 

@@ -9,6 +9,7 @@
 #include "input/key_bindings.hpp"
 #include "kiosk/frame_stats.hpp"
 #include "kiosk/iteration_budget.hpp"
+#include "kiosk/kiosk_dicom_node.hpp"
 #include "kiosk/kiosk_script_sink.hpp"
 #include "kiosk/kiosk_startup.hpp"
 #include "kiosk/operator_pacing.hpp"
@@ -92,6 +93,7 @@ class Kiosk {
             pacing_.input(now_);
         }
         applyActions();
+        node_.frame(flow_.status(), audit_, err_);
         reportAudit();
         stepSolver();
         autosave();
@@ -119,6 +121,7 @@ class Kiosk {
     void finish(std::ostream& out) {
         service_.stopping();
         autosave_.finish(flow_, engine_);
+        node_.finish(audit_, err_);
         reportAudit();
         out << stats_.summary() << '\n';
         if (options_.stats) {
@@ -156,7 +159,7 @@ class Kiosk {
         events_.clear();
         display_->pollEvents(events_);
         if (player_ && pendingFrames_.empty()) {
-            player_->poll(now_, flow_.status(), sink_);
+            player_->poll(now_, node_.shown(flow_.status()), sink_);
             for (auto& a : sink_.actions) {
                 actions_.push_back(std::move(a));
             }
@@ -325,9 +328,10 @@ class Kiosk {
         }
         panelStart_ = Clock::now();
         glBindFramebuffer(GL_FRAMEBUFFER, screen_.framebuffer());
-        // The panel lists the controllers beside what the workflow publishes.
+        // The panel lists the controllers and the DICOM node beside what the workflow publishes.
         shown_ = flow_.status();
         shown_.devices = hub_.links();
+        node_.show(shown_);
         for (auto& a : touch_.drawFrame(screen_.size(), now_, screenState_, shown_)) {
             actions_.push_back(std::move(a));
         }
@@ -446,6 +450,7 @@ class Kiosk {
     // When the script asked for the pending frames.
     double framesAskedAt_ = 0.0;
     int exitCode_ = 0;
+    DicomNode node_{cfg_.dicom}; // last: its threads stop first
 };
 
 } // namespace

@@ -89,7 +89,13 @@ class StorageScp::Provider : public DcmSCP {
                            ec.message());
         }
         prune();
+        // openListenPort turns dcmdata's input data correction off for the whole process (to
+        // see a peer's bytes as sent). The process's other DICOM readers need it on: without
+        // it a UID keeps its NUL padding, and the kiosk's DICOM SEG of a scan read afterwards
+        // fails its UID checks. The store's files are encoded anew either way.
+        const OFBool correction = dcmEnableAutomaticInputDataCorrection.get();
         const OFCondition c = openListenPort();
+        dcmEnableAutomaticInputDataCorrection.set(correction);
         if (c.bad()) {
             throw ScpError("cannot listen on port " + std::to_string(settings_.port) + ": " +
                            c.text());

@@ -54,7 +54,8 @@ class StorageScp {
     StorageScp(const StorageScp&) = delete;
     StorageScp& operator=(const StorageScp&) = delete;
 
-    // Binds the port (throws ScpError naming it when it cannot).
+    // Binds the port (throws ScpError naming it when it cannot). In a process that reads DICOM on
+    // other threads too, call it before they start: it touches dcmdata's process-wide options.
     void open();
     // Serves associations one after another until `stop` becomes true (checked at least once a
     // second between associations and after each one).

@@ -2,6 +2,7 @@
 
 #include "model/speed_kind.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -44,6 +45,13 @@ const std::vector<std::pair<std::string_view, Getter>>& fieldTable() {
         {"zoom", [](const S& s) { return s.view.zoom; }},
         {"yaw", [](const S& s) { return s.view.yawDeg; }},
         {"pitch", [](const S& s) { return s.view.pitchDeg; }},
+        // The kiosk's DICOM node: series received completely, objects waiting to be sent.
+        {"received",
+         [](const S& s) {
+             return static_cast<double>(std::count_if(s.received.begin(), s.received.end(),
+                                                      [](const auto& r) { return !r.arriving; }));
+         }},
+        {"outbox", [](const S& s) { return static_cast<double>(s.outbox.size()); }},
     };
     return kFields;
 }

@@ -80,9 +80,10 @@ bool isRelative(const std::string& path) {
 ScriptPlayer::ScriptPlayer(Script script, Variables variables)
     : script_(std::move(script)), variables_(std::move(variables)) {
     std::string errors;
-    // Given variables now, so a missing --scan is said before anything runs; EXPORTED later.
+    // Given variables now, so a missing --scan is said before anything runs; EXPORTED and
+    // RECEIVED later.
     const auto given = [this](const std::string& name) -> const std::string* {
-        if (name == "EXPORTED") {
+        if (name == "EXPORTED" || name == "RECEIVED") {
             return nullptr;
         }
         const auto it = variables_.find(name);
@@ -111,6 +112,7 @@ ScriptPlayer::ScriptPlayer(Script script, Variables variables)
             },
             step.kind);
         missing.erase("EXPORTED");
+        missing.erase("RECEIVED");
         for (const std::string& name : missing) {
             const char* how = howToSet(name);
             errors += (errors.empty() ? "" : "\n") + script_.name + ":" +
@@ -125,10 +127,19 @@ ScriptPlayer::ScriptPlayer(Script script, Variables variables)
 
 std::string ScriptPlayer::runtimePath(const std::string& path, const workflow::Status& status,
                                       bool underOut) const {
-    const auto exported = [&status](const std::string& name) -> const std::string* {
-        return name == "EXPORTED" ? &status.exportedPath : nullptr;
+    // RECEIVED: the newest series the DICOM node has received completely ("" when none).
+    std::string received;
+    for (const workflow::ReceivedScan& r : status.received) {
+        if (!r.arriving) {
+            received = r.path;
+            break;
+        }
+    }
+    const auto runtime = [&](const std::string& name) -> const std::string* {
+        return name == "EXPORTED" ? &status.exportedPath
+                                  : (name == "RECEIVED" ? &received : nullptr);
     };
-    std::string resolved = expand(path, exported, nullptr);
+    std::string resolved = expand(path, runtime, nullptr);
     const auto out = variables_.find("OUT");
     if (underOut && out != variables_.end() && isRelative(resolved)) {
         resolved = (std::filesystem::path(out->second) / resolved).string();

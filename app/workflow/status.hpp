@@ -37,6 +37,14 @@ struct DeviceLink {
     bool connected = false;
 };
 
+// A series the kiosk's DICOM node has received, for the load screen. The kiosk fills
+// Status::received from its incoming store; the workflow knows no network and leaves it empty.
+struct ReceivedScan {
+    std::string path;      // the series' folder: what LoadScan opens
+    std::string label;     // one line: modality, study date, patient, description, image count
+    bool arriving = false; // images came a moment ago: more may follow, not offered yet
+};
+
 struct Status {
     model::State state = model::State::NoScan;
     std::string message; // the last error or notice for the operator ("" = none)
@@ -77,9 +85,15 @@ struct Status {
     std::string preset;                     // the last preset applied ("" = none)
     std::string exportedPath;               // Done: where the mask went (the first format's file)
     std::vector<std::string> exportFormats; // what an export writes, in the config's order
+    std::vector<std::string> exportedFiles; // Done: every file the last export wrote
+    int exports = 0;                        // exports that succeeded: a new one changes it
     ViewState view;
     std::vector<std::string> presets; // names, in the config's order
     std::vector<DeviceLink> devices;  // the kiosk's, for the panel (see DeviceLink)
+    // The kiosk's DICOM node (docs/dicom-network.md), for the panel; empty without one.
+    std::vector<ReceivedScan> received; // newest first
+    std::string receivedNote;           // a series that has just arrived ("" = none)
+    std::vector<std::string> outbox;    // each object waiting to be sent, and why, one line each
 };
 
 } // namespace steerseg::workflow

@@ -225,6 +225,7 @@ void Workflow::forgetScan() {
     status_.converged = false;
     status_.preset.clear();
     status_.exportedPath.clear();
+    status_.exportedFiles.clear();
     status_.eraseMode = false;
     status_.outsideMode = false;
     status_.insideExamples.clear(); // the next scan's examples start with its first probe

@@ -67,6 +67,7 @@ std::string firstLine(const std::exception& e) {
 Workflow::Outcome Workflow::exportTo(const std::string& requested) {
     enter(model::State::Exporting);
     std::filesystem::path path;
+    std::vector<std::string> files;
     // Every configured format is tried: one that fails (DICOM SEG for a scan not from DICOM, a
     // mesh of an empty segmentation) does not keep the others from being written.
     std::vector<std::string> failures;
@@ -83,6 +84,7 @@ Workflow::Outcome Workflow::exportTo(const std::string& requested) {
             for (const std::string& format : settings_.exportFormats) {
                 try {
                     engine_.exportMask(withFormat(base, format));
+                    files.push_back(withFormat(base, format).string());
                     if (written++ == 0) {
                         path = withFormat(base, format);
                     }
@@ -93,6 +95,7 @@ Workflow::Outcome Workflow::exportTo(const std::string& requested) {
         } else {
             path = requested;
             engine_.exportMask(path);
+            files.push_back(path.string());
             written = 1;
         }
     } catch (const std::exception& e) {
@@ -111,6 +114,8 @@ Workflow::Outcome Workflow::exportTo(const std::string& requested) {
     }
     dirty_ = false;
     status_.exportedPath = path.string();
+    status_.exportedFiles = std::move(files);
+    ++status_.exports;
     enter(model::State::Done,
           "exported to " + status_.exportedPath +
               (written > 1 ? " and " + std::to_string(written - 1) + " more" : ""));

@@ -145,8 +145,13 @@ TEST_F(NetListen, QuotaAndGarbageAreRefusedAndTheNodeKeepsServing) {
 
     const Finished pushed = node.storescu("SCANNER", series);
     EXPECT_NE(pushed.status, 0) << pushed.output;
-    EXPECT_NE(node.log().find("aborted association from SCANNER: more than 1 MiB"),
-              std::string::npos)
+    // storescu may see the abort before the node has written its line.
+    EXPECT_TRUE(waitUntil(
+        [&] {
+            return node.log().find("aborted association from SCANNER: more than 1 MiB") !=
+                   std::string::npos;
+        },
+        std::chrono::seconds(5)))
         << node.log();
     const std::vector<fs::path> stored = filesBelow(dir / "store");
     EXPECT_LT(stored.size(), 20u);

@@ -727,6 +727,28 @@ TEST(ScriptPlayer, VariablesAndPaths) {
                                                "dice /out/mask.nii.gz /data/ref.nii.gz -1"}));
 }
 
+// The kiosk's DICOM node: a script waits for a received series, loads the newest complete one
+// ($RECEIVED, as a tap on its button would) and waits for the outbox to empty.
+TEST(ScriptPlayer, ReceivedSeriesAndTheOutbox) {
+    ScriptPlayer p = player("wait until received >= 1 timeout 5\n"
+                            "load $RECEIVED\n"
+                            "wait until outbox == 0 timeout 5\n");
+    Recorder r;
+    workflow::Status st;
+    st.received = {{"/store/1.2/1.2.9", "CT (3 images) - arriving", true}};
+    st.outbox = {"seg.dcm to pacs: queued"};
+    p.poll(0.0, st, r);
+    EXPECT_TRUE(r.log.empty()) << "an arriving series is not received yet";
+    st.received.push_back({"/store/1.2/1.2.3", "CT (60 images)", false});
+    p.poll(0.1, st, r);
+    p.poll(0.2, st, r);
+    EXPECT_EQ(r.log, (std::vector<std::string>{"load /store/1.2/1.2.3"}));
+    EXPECT_FALSE(p.finished());
+    st.outbox.clear();
+    p.poll(0.3, st, r);
+    EXPECT_TRUE(p.finished()) << p.failure();
+}
+
 TEST(ScriptPlayer, DiceAndSinkFailures) {
     Recorder r;
     workflow::Status st;

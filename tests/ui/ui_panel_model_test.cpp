@@ -299,6 +299,35 @@ TEST(UiPanelModel, ControllersAreListedConnectedOrNot) {
     EXPECT_EQ(m.devices[1].value, "disconnected");
 }
 
+// The DICOM node's series (Status::received, filled by the kiosk): a complete one is a LoadScan
+// of its folder, one still arriving is greyed out; the note and the outbox's lines are shown.
+TEST(UiPanelModel, ReceivedSeriesAreLoadButtonsAndTheOutboxIsShown) {
+    workflow::Status st = status(State::NoScan);
+    EXPECT_TRUE(modelOf(st).received.empty());
+    st.received = {{"/store/1.2/1.2.3", "MR 2001-03-16, FSE PD (20 images) - arriving", true},
+                   {"/store/1.2/1.2.4", "CT PAT1 (60 images)", false}};
+    st.receivedNote = "New series: CT PAT1 (60 images)";
+    st.outbox = {"seg.dcm to pacs: waiting, attempt 1 failed (connection refused); next in 5 s"};
+    const ui::PanelModel m = modelOf(st);
+    ASSERT_EQ(m.received.size(), 2U);
+    EXPECT_FALSE(m.received[0].enabled);
+    EXPECT_TRUE(m.received[1].enabled);
+    EXPECT_EQ(m.received[1].label, "CT PAT1 (60 images)##received1");
+    EXPECT_EQ(std::get<model::LoadScan>(m.received[1].action).path, "/store/1.2/1.2.4");
+    EXPECT_EQ(m.receivedNote, st.receivedNote);
+    EXPECT_EQ(m.outbox, st.outbox);
+    const auto reachable = ui::reachableActions(m);
+    const auto loads = std::count_if(reachable.begin(), reachable.end(), [](const Action& a) {
+        const auto* load = std::get_if<model::LoadScan>(&a);
+        return load != nullptr && load->path.starts_with("/store/");
+    });
+    EXPECT_EQ(loads, 1) << "the arriving series is not loadable yet";
+    // While segmenting the list is not offered; the outbox still shows what waits.
+    st.state = State::Evolving;
+    EXPECT_TRUE(modelOf(st).received.empty());
+    EXPECT_EQ(modelOf(st).outbox.size(), 1U);
+}
+
 TEST(UiPanelModel, ScansAndViews) {
     const ui::PanelModel m = modelOf(status(State::NoScan));
     ASSERT_EQ(m.scans.size(), 3U);

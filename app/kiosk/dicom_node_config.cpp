@@ -1,0 +1,50 @@
+#include "kiosk/dicom_node_config.hpp"
+
+#include <chrono>
+
+namespace steerseg::kiosk {
+
+net::ScpSettings scpSettings(const config::DicomConfig& dicom) {
+    net::ScpSettings s;
+    s.aet = dicom.aet;
+    s.port = dicom.port;
+    s.store = dicom.store;
+    s.associationQuotaBytes = static_cast<std::uint64_t>(dicom.associationQuotaMb) << 20;
+    s.minFreeBytes = static_cast<std::uint64_t>(dicom.minFreeMb) << 20;
+    s.keepDays = dicom.keepDays;
+    for (const auto& peer : dicom.peers) {
+        if (peer.receive) {
+            s.allowed.push_back({peer.aet, peer.address});
+        }
+    }
+    return s;
+}
+
+std::optional<net::DicomPeer> sendPeer(const config::DicomConfig& dicom, const std::string& name) {
+    for (const auto& p : dicom.peers) {
+        if (p.name == name && p.send) {
+            return net::DicomPeer{p.aet, p.host, p.port};
+        }
+    }
+    return std::nullopt;
+}
+
+std::vector<std::string> sendPeerNames(const config::DicomConfig& dicom) {
+    std::vector<std::string> names;
+    for (const auto& p : dicom.peers) {
+        if (p.send) {
+            names.push_back(p.name);
+        }
+    }
+    return names;
+}
+
+net::OutboxBackoff outboxBackoff(const config::DicomConfig& dicom) {
+    const auto ms = [](double seconds) {
+        return std::chrono::duration_cast<std::chrono::milliseconds>(
+            std::chrono::duration<double>(seconds));
+    };
+    return {ms(dicom.retryFirstSeconds), ms(dicom.retryLongestSeconds)};
+}
+
+} // namespace steerseg::kiosk

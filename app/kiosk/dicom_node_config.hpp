@@ -1,0 +1,30 @@
+#pragma once
+
+// The [dicom] section as the network node's pieces take it: the Storage SCP's settings, the
+// send peers' addresses and the outbox's retry delays. The kiosk's node and the command line's
+// `listen`, `send` and `export --send` read the config through these, so they cannot differ.
+#include "config/kiosk_config.hpp"
+#include "net/dicom_peer.hpp"
+#include "net/outbox.hpp"
+#include "net/store_scp.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace steerseg::kiosk {
+
+// Own AE title, port, store, quotas, retention, and the peers with receive = true as the
+// callers allowed (each pinned to its `address` where given).
+net::ScpSettings scpSettings(const config::DicomConfig& dicom);
+
+// The [[dicom.peers]] entry named `name` with send = true, as an address; nullopt if none.
+std::optional<net::DicomPeer> sendPeer(const config::DicomConfig& dicom, const std::string& name);
+
+// The names of the peers with send = true, in the config's order: where exports go.
+std::vector<std::string> sendPeerNames(const config::DicomConfig& dicom);
+
+// retry_first_seconds and retry_longest_seconds.
+net::OutboxBackoff outboxBackoff(const config::DicomConfig& dicom);
+
+} // namespace steerseg::kiosk

@@ -1,0 +1,171 @@
+// The DICOM node inside the kiosk, end to end (docs/dicom-network.md): DCMTK's storescu pushes
+// the IBSI lung CT into the kiosk's Storage SCP as the scanner would; the kiosk (offscreen,
+// scripted) lists it, loads it from the list, seeds, runs, exports, and its outbox sends the
+// DICOM SEG to Orthanc, where the REST API shows it filed with the source's study.
+#include "net/net_harness.hpp"
+#include "support/test_data.hpp"
+
+#include <fstream>
+#include <gtest/gtest.h>
+
+namespace steerseg::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Lists, loads, segments a little and exports; waits until the outbox is empty.
+constexpr const char* kSession = R"(wait until received >= 1 timeout 60
+load $RECEIVED
+wait loaded timeout 60
+expect state inspect
+probe 102 100 30 5
+seed 102 100 30 6
+run
+wait iterations 20 timeout 30
+pause
+wait state paused
+finish
+wait state review
+export
+wait state done timeout 30
+expect volume_ml > 0
+expect exported contains steerseg-export
+wait until outbox == 0 timeout 30
+)";
+
+void writeConfig(const fs::path& dir, int port, int pacsPort, bool enabled = true) {
+    // A failed send is retried after 0.3 s (doubling), so the PACS's return is seen soon.
+    std::ofstream(dir / "kiosk.toml")
+        << "[export]\nfolder = \"" << (dir / "steerseg-export").string()
+        << "\"\nformats = [\"dcm\"]\n[audit]\npath = \"" << (dir / "audit.jsonl").string()
+        << "\"\n[autosave]\nfolder = \"" << (dir / "autosave").string()
+        << "\"\n[dicom]\nenabled = " << (enabled ? "true" : "false") << "\nport = " << port
+        << "\nstore = \"" << (dir / "store").string() << "\"\noutbox = \""
+        << (dir / "outbox").string()
+        << "\"\nmin_free_mb = 0\nretry_first_seconds = 0.3\n"
+           "[[dicom.peers]]\nname = \"scanner\"\naet = \"SCANNER\"\nhost = \"127.0.0.1\"\n"
+           "receive = true\n"
+           "[[dicom.peers]]\nname = \"pacs\"\naet = \"ORTHANC\"\nhost = \"127.0.0.1\"\n"
+           "send = true\nport = "
+        << pacsPort << "\n";
+}
+
+std::size_t countOf(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) {
+        ++n;
+    }
+    return n;
+}
+
+// The scenario; with `pacsDown` Orthanc is stopped until the kiosk's first send has failed.
+void runScenario(const fs::path& series, const std::string& name, bool pacsDown) {
+    const fs::path dir = tempDir(name);
+    OrthancServer pacs(dir);
+    if (pacsDown) {
+        pacs.stop();
+    }
+    const int port = freePort();
+    writeConfig(dir, port, pacs.dicomPort());
+    std::ofstream(dir / "node.session") << kSession;
+
+    ChildProcess kiosk({steersegBinary().string(), "kiosk", "--allow-root", "--platform",
+                        "offscreen", "--size", "480x320", "--max-seconds", "90", "--config",
+                        (dir / "kiosk.toml").string(), "--script", (dir / "node.session").string(),
+                        "--frames", (dir / "frames").string()},
+                       dir / "kiosk.log");
+    ASSERT_TRUE(waitUntil([&] { return kiosk.log().find("listening as") != std::string::npos; },
+                          std::chrono::seconds(20)))
+        << kiosk.log();
+    const Finished pushed = runProgram({"storescu", "-aet", "SCANNER", "-aec", "STEERSEG", "+sd",
+                                        "127.0.0.1", std::to_string(port), series.string()},
+                                       dir);
+    ASSERT_EQ(pushed.status, 0) << pushed.output;
+    if (pacsDown) {
+        // The SEG waits in the outbox (the panel says why) until the PACS is back.
+        ASSERT_TRUE(
+            waitUntil([&] { return kiosk.log().find("connection refused") != std::string::npos; },
+                      std::chrono::seconds(60)))
+            << kiosk.log();
+        pacs.start();
+    }
+
+    ASSERT_TRUE(waitUntil([&] { return !kiosk.running(); }, std::chrono::seconds(100)))
+        << kiosk.log();
+    const std::string log = kiosk.log();
+    EXPECT_NE(log.find("dicom: received "), std::string::npos) << log;
+    EXPECT_NE(log.find("dicom: delivered "), std::string::npos) << log;
+    EXPECT_EQ(log.find("refused object"), std::string::npos) << log; // the SCP took every image
+    EXPECT_EQ(log.find("node.session:"), std::string::npos) << log;  // no step failed
+
+    // Orthanc holds the SEG, in the source's study (storescu sent the source to the kiosk only).
+    const nlohmann::json instances = pacs.get("/instances?expand");
+    ASSERT_EQ(instances.size(), 1U) << instances.dump();
+    const nlohmann::json tags =
+        pacs.get("/instances/" + instances[0].at("ID").get<std::string>() + "/simplified-tags");
+    EXPECT_EQ(tags.at("Modality"), "SEG");
+    std::string sourceStudy;
+    for (const auto& study : fs::directory_iterator(dir / "store")) {
+        sourceStudy = study.path().filename().string();
+    }
+    EXPECT_EQ(tags.at("StudyInstanceUID"), sourceStudy);
+    EXPECT_FALSE(tags.at("PerFrameFunctionalGroupsSequence").empty());
+
+    // The audit log has each attempt: the failed ones while the PACS was down, then the one
+    // it accepted, once.
+    const std::string audit = readText(dir / "audit.jsonl");
+    const std::size_t sends = countOf(audit, "\"event\":\"send\"");
+    EXPECT_EQ(countOf(audit, "\"accepted\":true,\"attempt\""), 1U) << audit;
+    if (pacsDown) {
+        EXPECT_GE(sends, 2U) << audit;
+    } else {
+        EXPECT_EQ(sends, 1U) << audit;
+    }
+    EXPECT_TRUE(fs::is_empty(dir / "outbox"));
+    fs::remove_all(dir);
+}
+
+TEST(NetKioskNode, ReceivedSeriesIsLoadedSegmentedAndItsSegSentToThePacs) {
+    STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
+    STEERSEG_REQUIRE_PROGRAM(OrthancServer::kProgram, "orthanc");
+    STEERSEG_REQUIRE_PROGRAM("/usr/bin/storescu", "dcmtk");
+    runScenario(series, "net-kiosk-node", false);
+}
+
+// Orthanc stopped when the kiosk exports: the SEG waits in the outbox and is delivered, once,
+// when Orthanc is back, while the kiosk runs on.
+TEST(NetKioskNode, ASegWaitsForThePacsAndIsDeliveredOnceItIsBack) {
+    STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
+    STEERSEG_REQUIRE_PROGRAM(OrthancServer::kProgram, "orthanc");
+    STEERSEG_REQUIRE_PROGRAM("/usr/bin/storescu", "dcmtk");
+    runScenario(series, "net-kiosk-node-pacs-down", true);
+}
+
+// The node answers while the kiosk runs and goes with it on SIGTERM (exit 0); with the node off
+// (the default) the same config opens no port.
+TEST(NetKioskNode, OffOpensNoPortOnAnswersAndStopsWithTheKiosk) {
+    STEERSEG_REQUIRE_PROGRAM("/usr/bin/echoscu", "dcmtk");
+    const fs::path dir = tempDir("net-kiosk-node-onoff");
+    for (const bool enabled : {false, true}) {
+        const int port = freePort();
+        writeConfig(dir, port, freePort(), enabled);
+        ChildProcess kiosk({steersegBinary().string(), "kiosk", "--allow-root", "--platform",
+                            "offscreen", "--size", "160x120", "--max-seconds", "60", "--config",
+                            (dir / "kiosk.toml").string()},
+                           dir / "kiosk.log");
+        const std::string started = enabled ? "dicom: listening as" : "steerseg kiosk: offscreen";
+        ASSERT_TRUE(waitUntil([&] { return kiosk.log().find(started) != std::string::npos; },
+                              std::chrono::seconds(20)))
+            << kiosk.log();
+        const Finished echo = runProgram(
+            {"echoscu", "-aet", "SCANNER", "-aec", "STEERSEG", "127.0.0.1", std::to_string(port)},
+            dir);
+        EXPECT_EQ(echo.status == 0, enabled) << echo.output;
+        EXPECT_EQ(kiosk.stop(), 0) << kiosk.log();
+        EXPECT_EQ(kiosk.log().find("dicom:") != std::string::npos, enabled) << kiosk.log();
+    }
+    fs::remove_all(dir);
+}
+
+} // namespace
+} // namespace steerseg::test
