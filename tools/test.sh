@@ -117,7 +117,7 @@ run_ctest asan
 echo "== fuzz targets"
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "$jobs"
-fuzz_seconds=${STEERSEG_FUZZ_SECONDS:-20}
+fuzz_seconds=${STEERSEG_FUZZ_SECONDS:-12}
 fuzz_seed=${STEERSEG_FUZZ_SEED:-1}
 shopt -s nullglob
 ran=0

@@ -198,6 +198,9 @@ void readBrush(TableReader& t, BrushConfig& b) {
     if (auto v = t.number("radius", {0.5, 256.0})) {
         b.radius = *v;
     }
+    if (auto v = t.number("correction_reach", {0.0, 100.0})) {
+        b.correctionReach = *v;
+    }
 }
 
 void readExport(TableReader& t, ExportConfig& e) {

@@ -58,7 +58,8 @@ struct ProbeConfig {
 };
 
 struct BrushConfig {
-    double radius = 3.0; // voxels
+    double radius = 3.0;          // voxels
+    double correctionReach = 3.0; // brush radii around a correction its run may move (0: all)
     bool operator==(const BrushConfig&) const = default;
 };
 

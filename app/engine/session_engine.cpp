@@ -218,6 +218,12 @@ bool SessionEngine::addBarrier(const model::Barrier& barrier) {
     return true;
 }
 
+void SessionEngine::setReach(const std::optional<model::Sphere>& reach) {
+    if (reach || session_) {
+        requireSession().setReach(reach);
+    }
+}
+
 void SessionEngine::setBarriers(const std::vector<model::Barrier>& barriers) {
     session::Session& s = requireSession();
     s.clearBarriers();

@@ -12,6 +12,7 @@ workflow::Settings workflowSettings(const config::KioskConfig& config) {
     s.probeEpsFactor = config.probe.epsFactor;
     s.probeRadiusMm = config.probe.radiusMm;
     s.defaultRadius = config.brush.radius;
+    s.correctionReach = config.brush.correctionReach;
     s.defaultSpeed = config.speed.kind;
     s.exportFolder = config.exports.folder;
     s.exportFormats = config.exports.formats;

@@ -85,6 +85,10 @@ void Session::clearBarriers() {
     gpu_->solver.clearBarriers();
 }
 
+void Session::setReach(const std::optional<model::Sphere>& reach) {
+    gpu_->solver.setReach(reach);
+}
+
 void Session::startFromMask(const std::filesystem::path& path) {
     const scan::LoadedScan mask = scan::readScan(path);
     if (mask.volume.dims() != scan_.dims()) {

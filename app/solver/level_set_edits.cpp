@@ -144,6 +144,22 @@ void LevelSetSolver::clearBarriers() {
     noteChange();
 }
 
+void LevelSetSolver::setReach(const std::optional<model::Sphere>& reach) {
+    if (reach) {
+        model::validateSphere(*reach, dims_);
+    }
+    reach_ = reach;
+    uploadReach();
+    noteChange(); // a wider reach wakes what it takes in
+}
+
+void LevelSetSolver::uploadReach() {
+    const GLuint p = programs_->updatePhi.id();
+    const model::Sphere s = reach_.value_or(model::Sphere{{0.0F, 0.0F, 0.0F}, 0.0F});
+    glProgramUniform4f(p, glGetUniformLocation(p, "reach"), s.centre.x, s.centre.y, s.centre.z,
+                       reach_ ? s.radius : 0.0F);
+}
+
 // Sets the barrier uniforms of the passes that evaluate the speed (barrier_speed.glsl).
 void LevelSetSolver::uploadBarriers() {
     std::vector<float> packed;

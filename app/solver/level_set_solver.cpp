@@ -90,6 +90,7 @@ LevelSetSolver::LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own,
                             : 256U); // dense: the every-brick baseline
     setUniform(programs_->updatePhi.id(), "sleepTolerance", options_.sleepTolerance);
     uploadBarriers();
+    uploadReach();
     stats_.totalBricks = pool_->brickCount();
     stats_.densePhiBytes = voxels * sizeof(float);
     uploadPhi({}); // everything outside

@@ -78,6 +78,11 @@ class LevelSetSolver {
     void addBarrier(const model::Barrier& barrier);
     void clearBarriers();
     [[nodiscard]] const std::vector<model::Barrier>& barriers() const { return barriers_; }
+    // Where the surface may move (shaders/solver/update_phi.comp): a sphere, for a correction's
+    // run, which should change the surface around the correction and leave the rest as the
+    // operator accepted it; nullopt: everywhere. Validated as a sphere (std::invalid_argument).
+    void setReach(const std::optional<model::Sphere>& reach);
+    [[nodiscard]] const std::optional<model::Sphere>& reach() const { return reach_; }
     // Replace the level set.
     // `intensities`: the scan's real-unit values, i fastest (the solver keeps no host copy).
     void initFromThreshold(std::span<const float> intensities, float lo, float hi);
@@ -124,6 +129,7 @@ class LevelSetSolver {
     void uploadPhi(std::span<const float> phi);
     void noteChange();
     void uploadBarriers();
+    void uploadReach();
     // The leak watch's and the settle watch's check; sets settled_.
     std::optional<model::LeakSite> watchGrowth(detail::ControlBlock& ctrl);
     void takeVisits(detail::ControlBlock& ctrl);
@@ -152,6 +158,7 @@ class LevelSetSolver {
     bool settled_ = false; // SettleWatch at the last check
     bool wakePending_ = true;
     std::vector<model::Barrier> barriers_;
+    std::optional<model::Sphere> reach_;
     LeakWatch leakWatch_;
     SettleWatch settleWatch_;
     RunawayWatch runawayWatch_;

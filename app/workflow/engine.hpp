@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -86,6 +87,11 @@ class Engine {
     // edit stands, without it.
     virtual bool addBarrier(const model::Barrier& barrier) = 0;
     [[nodiscard]] virtual int barriers() const = 0;
+    // Where the next steps may move the surface: a correction's neighbourhood, or nullopt for
+    // everywhere. Not part of the level set's state: the workflow sets it for a correction's
+    // run and clears it when the run stops. std::invalid_argument for a sphere the scan
+    // cannot hold.
+    virtual void setReach(const std::optional<model::Sphere>& reach) = 0;
     virtual void clearLevelSet() = 0;
     [[nodiscard]] virtual bool hasLevelSet() const = 0;
 

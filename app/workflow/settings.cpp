@@ -35,6 +35,9 @@ void validateSettings(const Settings& s) {
     require(std::isfinite(s.defaultRadius) && s.defaultRadius > 0.0,
             "brush radius must be a finite number of voxels > 0 (got " + number(s.defaultRadius) +
                 ")");
+    require(std::isfinite(s.correctionReach) && s.correctionReach >= 0.0,
+            "correction reach must be a finite number of brush radii >= 0 (got " +
+                number(s.correctionReach) + ")");
     require(s.maxUndo >= 1 && s.maxUndo <= 10000,
             "undo depth must be within [1, 10000] (got " + std::to_string(s.maxUndo) + ")");
     require(model::validSpeedKind(s.defaultSpeed), "the default speed is not a known speed");

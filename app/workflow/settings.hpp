@@ -34,6 +34,9 @@ struct Settings {
     double probeEpsFactor = 2.0;
     double probeRadiusMm = 5.0; // a model::Probe action's radius when it gives none (<= 0)
     double defaultRadius = 3.0; // the brush after a load, voxels (clamped to the scan's range)
+    // A later correction's run moves the surface only within this many of its brush radii of
+    // the click (docs/steering.md): the rest stays as the operator accepted it. 0: everywhere.
+    double correctionReach = 3.0;
     // Default exports: <folder>/<scan>_<UTC time>.<format>.
     std::filesystem::path exportFolder = ".";
     // A default export writes one file per format, in this order ("nii.gz", "nii", "nrrd": the

@@ -138,6 +138,9 @@ void Workflow::update() {
 void Workflow::enter(model::State next, std::string message) {
     const model::State from = status_.state;
     status_.state = next;
+    if (from == model::State::Evolving && next != model::State::Evolving) {
+        endReach(); // the next run, whoever starts it, is the whole surface's
+    }
     if (from == model::State::Evolving && next != model::State::Evolving && scanLoaded_) {
         // The readouts during the run may lag a little; the stopped surface's are exact.
         try {

@@ -115,6 +115,10 @@ class Workflow {
     Outcome on(const model::ShowSlices& a);
     Outcome on(const model::Correct& a); // workflow_correct.cpp
     Outcome first(const model::Correct& a);
+    // A correction's run moves the surface only near it (Settings::correctionReach); the
+    // reach ends with the run, or when the speed or its parameters change.
+    void reachAround(const model::Sphere& brush);
+    void endReach();
     Outcome on(const model::Quit& a);
 
     // States and transitions (workflow.cpp).
@@ -190,6 +194,7 @@ class Workflow {
     bool scanLoaded_ = false;
     bool dirty_ = false; // the level set changed since it was last exported
     bool quit_ = false;
+    std::optional<model::Sphere> reach_; // a correction's run's, while it lasts
     // Transitions made while handling one action, audited after the action's own record.
     struct PendingTransition {
         model::State from;

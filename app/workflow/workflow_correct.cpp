@@ -1,16 +1,57 @@
 // The operator's correction (model::Correct): the clicks protocol's unit (docs/steering.md). The
 // first one, on a scan without a level set, does what an operator's first taps do: probe
 // there (T and eps from the tissue), seed there; a later one is the seed or the erase of a tap
-// in add or remove mode while steering (workflow_edits.cpp: an erase then sticks).
+// in add or remove mode while steering (workflow_edits.cpp: either then sticks), and its run
+// reaches only around it.
 #include "workflow/workflow.hpp"
 
 #include <cmath>
+#include <exception>
+#include <glm/geometric.hpp>
 
 namespace steerseg::workflow {
 
 Workflow::Outcome Workflow::on(const model::Correct& a) {
+    if (!status_.hasLevelSet) {
+        return first(a);
+    }
+    // Before the first run the surface is the seeds' alone: nothing to keep as it is.
+    const bool steering =
+        status_.state == model::State::Evolving || status_.state == model::State::Paused;
+    Outcome out = sphereEdit(a.voxel, a.radius, a.positive);
     // The table then runs the solver from the surface this leaves.
-    return status_.hasLevelSet ? sphereEdit(a.voxel, a.radius, a.positive) : first(a);
+    if (out.accepted && steering && status_.hasLevelSet) {
+        reachAround(brushSphere(a.voxel, a.radius));
+    }
+    return out;
+}
+
+void Workflow::reachAround(const model::Sphere& brush) {
+    const double radius = settings_.correctionReach * static_cast<double>(brush.radius);
+    if (radius <= 0.0 || radius >= glm::length(glm::dvec3(status_.scan.dims))) {
+        endReach();
+        return;
+    }
+    const model::Sphere reach{brush.centre, static_cast<float>(radius)};
+    try {
+        engine_.setReach(reach);
+        reach_ = reach;
+    } catch (const std::exception&) {
+        // The edit stands; its run then moves the whole surface, as before reaches.
+        endReach();
+    }
+}
+
+void Workflow::endReach() {
+    if (!reach_) {
+        return;
+    }
+    reach_.reset();
+    try {
+        engine_.setReach(std::nullopt);
+    } catch (const std::exception&) {
+        // An engine that fails here fails the next step too, which says so.
+    }
 }
 
 Workflow::Outcome Workflow::first(const model::Correct& a) {
@@ -33,8 +74,15 @@ Workflow::Outcome Workflow::first(const model::Correct& a) {
         addExample(next.speed.inside, *example);
     }
     addExample(next.speed.inside, sphere);
+    // The first sphere holds too: a positive click is never worth less than its paint, and
+    // the deepest part of what the operator pointed at is where the threshold may be wrong.
+    std::string notice;
     editLevelSet(
-        "correct", [&] { engine_.addSeed(sphere); }, status_.seeds + 1, status_.erasures, &next);
+        "correct", [&] { notice = stickyEdit(sphere, true); }, status_.seeds + 1, status_.erasures,
+        &next);
+    if (!notice.empty()) {
+        status_.message = notice;
+    }
     return ok();
 }
 

@@ -38,6 +38,7 @@ void Workflow::applyParams(const ParamValues& values, bool force) {
     SpeedChoice want = speedFor(values);
     const bool newSpeed = force || want != engineSpeed_;
     if (newSpeed) {
+        endReach(); // the operator's new speed applies everywhere
         engine_.setSpeed(want);
         engineSpeed_ = std::move(want);
         status_.converged = false;
@@ -48,6 +49,7 @@ void Workflow::applyParams(const ParamValues& values, bool force) {
                                   static_cast<float>(values.values[indexOf(model::Param::Alpha)])};
     const model::LevelSetParams& now = status_.params;
     if (force || p.T != now.T || p.eps != now.eps || p.alpha != now.alpha) {
+        endReach();
         engine_.setParams(p);
         status_.converged = false; // the front moves again under a new speed
     }

@@ -20,6 +20,15 @@ layout(local_size_x = LOCAL_SIZE) in;
 
 uniform float alpha;
 uniform float sleepTolerance; // voxels per step
+// Where phi may change (LevelSetSolver::setReach): centre (voxel indices) and radius (voxels) of
+// a correction's reach; radius <= 0: everywhere. Outside, the step leaves phi as it is, so the
+// surface there stays what the operator accepted, whatever the speed says.
+uniform vec4 reach;
+
+bool inReach(ivec3 g) {
+    vec3 q = vec3(g) - reach.xyz;
+    return reach.w <= 0.0 || dot(q, q) <= reach.w * reach.w;
+}
 
 shared uint changedSide;
 shared uint movedAny;
@@ -59,7 +68,7 @@ void main() {
         PhiStencil s = tileStencil(l);
         float out_ = s.c;
         if (all(lessThan(g, volumeDims))) {
-            if (dt > 0.0 && inNarrowBand(s)) {
+            if (dt > 0.0 && inNarrowBand(s) && inReach(g)) {
                 out_ = phiStep(s, barrierSpeed(g, dataSpeed(g)), alpha, dt);
             }
             noteVoxelState(l, out_);

@@ -79,6 +79,7 @@ std::vector<std::string> differences(const KioskConfig& a, const KioskConfig& b)
     field("probe.eps_factor", a.probe.epsFactor == b.probe.epsFactor);
     field("probe.eps_floor", a.probe.epsFloor == b.probe.epsFloor);
     field("brush.radius", a.brush.radius == b.brush.radius);
+    field("brush.correction_reach", a.brush.correctionReach == b.brush.correctionReach);
     field("speed.kind", a.speed.kind == b.speed.kind);
     field("speed.smooth_iterations", a.speed.smoothIterations == b.speed.smoothIterations);
     field("speed.conductance_factor", a.speed.conductanceFactor == b.speed.conductanceFactor);
@@ -213,7 +214,7 @@ TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
     other.frame = {50.0, 0.25, 2, 99, 0.75};
     other.ui = {12.0, 2.0, 900};
     other.probe = {7.0, 3.0, 20.0};
-    other.brush = {9.0};
+    other.brush = {9.0, 1.5};
     other.speed = {model::SpeedKind::Classify, 40, 0.5, 0.25};
     other.exports = {"elsewhere", {"nrrd"}};
     other.audit = {"elsewhere.jsonl"};
@@ -229,9 +230,9 @@ TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
     for (config::InputDeviceConfig& d : other.input.devices) {
         d = {d.name + "x", config::InputDeviceKind::GpioLed, 1, 2, 3, 4, "/x", "c", "l", true, 1.0};
     }
-    // 29 plain fields, 6 per preset (its name is its identity), every binding.
+    // 30 plain fields, 6 per preset (its name is its identity), every binding.
     ASSERT_EQ(differences(other, config::defaultConfig()).size(),
-              29U + 6U * other.presets.size() + other.bindings.keys.size() +
+              30U + 6U * other.presets.size() + other.bindings.keys.size() +
                   other.bindings.knobs.size() + other.bindings.buttons.size() +
                   other.input.devices.size());
 

@@ -56,6 +56,11 @@ std::size_t insideBeyondNeck(const std::vector<std::uint8_t>& mask) {
     return n;
 }
 
+std::uint8_t inAt(const std::vector<std::uint8_t>& mask, glm::vec3 p) {
+    return mask[voxelIndex(kDims, static_cast<int>(p.x), static_cast<int>(p.y),
+                           static_cast<int>(p.z))];
+}
+
 SolverOptions watching() {
     SolverOptions o;
     o.stopOnLeak = true;
@@ -128,10 +133,6 @@ TEST_F(SolverLeakTest, ABarrierPlacedAfterTheLeakCutsTheFrontBackAndHolds) {
 TEST_F(SolverLeakTest, AKeepingSphereStaysInsideWhereTheScanSaysOutside) {
     const std::vector<float> volume = dumbbell();
     const glm::vec3 outside{36.0F, 16.0F, 6.0F}; // background, between the balls below the neck
-    const auto inAt = [&](const std::vector<std::uint8_t>& m, glm::vec3 p) {
-        return m[voxelIndex(kDims, static_cast<int>(p.x), static_cast<int>(p.y),
-                            static_cast<int>(p.z))];
-    };
     LevelSetSolver plain(volume, kDims);
     plain.setParams(kParams);
     plain.addSphere({kBallA, 3.0F});
@@ -156,6 +157,30 @@ TEST_F(SolverLeakTest, AKeepingSphereStaysInsideWhereTheScanSaysOutside) {
     EXPECT_EQ(inAt(kept.readMask(), outside), 0)
         << "the newer, blocking sphere wins where both hold";
     EXPECT_EQ(kept.stats().barriers, 2);
+}
+
+// A correction's run moves the surface only within its reach: beyond it the surface stays as it
+// was (here a seed the threshold would grow into ball B, and the front that would cross the
+// neck), until the reach is lifted.
+TEST_F(SolverLeakTest, AReachMovesTheSurfaceOnlyAroundTheCorrection) {
+    const std::vector<float> volume = dumbbell();
+    LevelSetSolver solver(volume, kDims);
+    solver.setParams(kParams);
+    solver.addSphere({kBallA, 3.0F});
+    solver.addSphere({kBallB, 3.0F});
+    solver.setReach(Sphere{kBallA, kBallRadius + 3.0F});
+    EXPECT_EQ(solver.runUntilConverged(3000).stopReason, StopReason::Converged);
+    std::vector<std::uint8_t> m = solver.readMask();
+    EXPECT_EQ(inAt(m, kBallA + glm::vec3(9.0F, 0.0F, 0.0F)), 1) << "ball A fills";
+    EXPECT_EQ(inAt(m, kBallB + glm::vec3(2.0F, 0.0F, 0.0F)), 1) << "ball B's seed stays";
+    EXPECT_EQ(inAt(m, kBallB + glm::vec3(6.0F, 0.0F, 0.0F)), 0) << "and does not grow";
+    EXPECT_EQ(inAt(m, {kNeckMiddleX, 16.0F, 16.0F}), 0) << "the front stops at the reach";
+    solver.setReach(std::nullopt);
+    solver.runUntilConverged(3000);
+    m = solver.readMask();
+    EXPECT_EQ(inAt(m, kBallB + glm::vec3(6.0F, 0.0F, 0.0F)), 1) << "lifted, ball B fills";
+    EXPECT_EQ(inAt(m, {kNeckMiddleX, 16.0F, 16.0F}), 1);
+    EXPECT_THROW(solver.setReach(Sphere{{400.0F, 16.0F, 16.0F}, 3.0F}), std::invalid_argument);
 }
 
 TEST_F(SolverLeakTest, RefusesMoreBarriersThanTheShaderHolds) {

@@ -165,6 +165,13 @@ void FakeEngine::erase(const model::Sphere& sphere) {
     paint(sphere, 0);
 }
 
+void FakeEngine::setReach(const std::optional<model::Sphere>& reach) {
+    if (reach) {
+        requireScan("setReach");
+    }
+    reach_ = reach;
+}
+
 bool FakeEngine::addBarrier(const model::Barrier& barrier) {
     requireScan("addBarrier");
     if (barriers_.size() >= model::kMaxBarriers) {

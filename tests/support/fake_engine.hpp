@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,8 @@ class FakeEngine : public workflow::Engine {
     bool addBarrier(const model::Barrier& barrier) override;
     [[nodiscard]] int barriers() const override { return static_cast<int>(barriers_.size()); }
     [[nodiscard]] const std::vector<model::Barrier>& barrierList() const { return barriers_; }
+    void setReach(const std::optional<model::Sphere>& reach) override;
+    [[nodiscard]] const std::optional<model::Sphere>& reach() const { return reach_; }
     void clearLevelSet() override;
     [[nodiscard]] bool hasLevelSet() const override { return inside_ > 0; }
     void setParams(const model::LevelSetParams& params) override;
@@ -100,6 +103,7 @@ class FakeEngine : public workflow::Engine {
     model::LevelSetParams params_;
     workflow::SpeedChoice speed_;
     std::vector<model::Barrier> barriers_;
+    std::optional<model::Sphere> reach_;
     std::map<workflow::SnapshotId, LevelSet> snapshots_;
     workflow::SnapshotId nextId_ = 1;
     mutable int misuse_ = 0;

@@ -20,8 +20,13 @@ TEST(WorkflowCorrect, TheFirstProbesAndSeedsInOneUndoStepAndRuns) {
     EXPECT_TRUE(r.engine.inside({8, 6, 4}));
     EXPECT_EQ(r.status().seeds, 1);
     EXPECT_EQ(r.status().insideExamples.size(), 2U); // the probe's and the seed's
+    // Its sphere holds, as every positive correction's does; its run is the whole surface's.
+    ASSERT_EQ(r.engine.barrierList().size(), 1U);
+    EXPECT_TRUE(r.engine.barrierList()[0].keep);
+    EXPECT_FALSE(r.engine.reach().has_value());
     ASSERT_TRUE(r.act(model::Undo{}).accepted);
     EXPECT_FALSE(r.status().hasLevelSet);
+    EXPECT_EQ(r.engine.barriers(), 0);
     EXPECT_EQ(r.status().params.T, T0) << "the probe's T went with the seed";
 }
 
@@ -50,11 +55,11 @@ TEST(WorkflowCorrect, APositiveOneSeedsAndLeavesTAndEps) {
     EXPECT_EQ(r.status().seeds, 2);
     EXPECT_EQ(r.status().insideExamples.size(), 3U);
     // It sticks: a keeping sphere, so the front cannot recede from tissue the threshold refuses.
-    ASSERT_EQ(r.engine.barrierList().size(), 1U);
-    EXPECT_TRUE(r.engine.barrierList()[0].keep);
-    EXPECT_EQ(r.engine.barrierList()[0].sphere.centre, glm::vec3(15.0F, 6.0F, 4.0F));
+    ASSERT_EQ(r.engine.barrierList().size(), 2U);
+    EXPECT_TRUE(r.engine.barrierList()[1].keep);
+    EXPECT_EQ(r.engine.barrierList()[1].sphere.centre, glm::vec3(15.0F, 6.0F, 4.0F));
     ASSERT_TRUE(r.act(model::Undo{}).accepted);
-    EXPECT_EQ(r.engine.barriers(), 0);
+    EXPECT_EQ(r.engine.barriers(), 1);
 }
 
 TEST(WorkflowCorrect, ANegativeOneSticksAndUndoTakesTheBarrierBack) {
@@ -65,16 +70,16 @@ TEST(WorkflowCorrect, ANegativeOneSticksAndUndoTakesTheBarrierBack) {
     ASSERT_TRUE(r.act(model::Correct{{10.0, 6.0, 4.0}, false, 1.0}).accepted);
     EXPECT_EQ(r.state(), State::Evolving);
     EXPECT_FALSE(r.engine.inside({10, 6, 4}));
-    ASSERT_EQ(r.engine.barrierList().size(), 1U);
-    EXPECT_EQ(r.engine.barrierList()[0].sphere.centre, glm::vec3(10.0F, 6.0F, 4.0F));
-    EXPECT_FALSE(r.engine.barrierList()[0].keep);
+    ASSERT_EQ(r.engine.barrierList().size(), 2U); // the first correction's and this one
+    EXPECT_EQ(r.engine.barrierList()[1].sphere.centre, glm::vec3(10.0F, 6.0F, 4.0F));
+    EXPECT_FALSE(r.engine.barrierList()[1].keep);
     EXPECT_EQ(r.status().outsideExamples.size(), 1U);
     EXPECT_EQ(r.status().erasures, 1);
     ASSERT_TRUE(r.act(model::Undo{}).accepted);
-    EXPECT_EQ(r.engine.barriers(), 0);
+    EXPECT_EQ(r.engine.barriers(), 1);
     EXPECT_TRUE(r.engine.inside({10, 6, 4}));
     ASSERT_TRUE(r.act(model::Redo{}).accepted);
-    EXPECT_EQ(r.engine.barriers(), 1);
+    EXPECT_EQ(r.engine.barriers(), 2);
     ASSERT_TRUE(r.act(model::Restart{}).accepted);
     EXPECT_EQ(r.engine.barriers(), 0) << "a restart clears the no-go spheres with the surface";
 }
@@ -108,6 +113,38 @@ TEST(WorkflowCorrect, BeyondTheBarriersTheEraseStandsAndSaysSo) {
     ASSERT_TRUE(r.act(model::Correct{{8.0, 6.0, 4.0}, false, 1.0}).accepted);
     EXPECT_FALSE(r.engine.inside({8, 6, 4}));
     EXPECT_NE(r.status().message.find("may grow back"), std::string::npos) << r.status().message;
+}
+
+// A later correction's run reaches only around it (Settings::correctionReach brush radii); the
+// reach ends with the run, or with the operator's change of a parameter.
+TEST(WorkflowCorrect, ALaterOneRunsWithinItsReachUntilTheRunEnds) {
+    Rig r;
+    r.load();
+    ASSERT_TRUE(r.act(model::Correct{{8.0, 6.0, 4.0}, true, 2.0}).accepted);
+    ASSERT_TRUE(r.act(model::Pause{}).accepted);
+    ASSERT_TRUE(r.act(model::Correct{{10.0, 6.0, 4.0}, false, 1.5}).accepted);
+    ASSERT_TRUE(r.engine.reach().has_value());
+    EXPECT_EQ(r.engine.reach()->centre, glm::vec3(10.0F, 6.0F, 4.0F));
+    EXPECT_FLOAT_EQ(r.engine.reach()->radius, 4.5F); // 3 x the brush
+    for (int i = 0; i < 100 && r.state() == State::Evolving; ++i) {
+        r.wf->evolve(10);
+    }
+    ASSERT_EQ(r.state(), State::Paused) << "converged";
+    EXPECT_FALSE(r.engine.reach().has_value()) << "the next run is the whole surface's";
+
+    ASSERT_TRUE(r.act(model::Correct{{12.0, 6.0, 4.0}, true, 1.0}).accepted);
+    ASSERT_TRUE(r.engine.reach().has_value());
+    ASSERT_TRUE(r.act(model::NudgeParam{model::Param::T, 1.0}).accepted);
+    EXPECT_FALSE(r.engine.reach().has_value()) << "a new T applies everywhere";
+    EXPECT_EQ(r.state(), State::Evolving);
+
+    workflow::Settings everywhere = testSettings();
+    everywhere.correctionReach = 0.0;
+    Rig all(everywhere);
+    all.load();
+    ASSERT_TRUE(all.act(model::Correct{{8.0, 6.0, 4.0}, true, 2.0}).accepted);
+    ASSERT_TRUE(all.act(model::Correct{{12.0, 6.0, 4.0}, true, 1.0}).accepted);
+    EXPECT_FALSE(all.engine.reach().has_value());
 }
 
 TEST(WorkflowCorrect, ReviewAndDoneRefuseIt) {
