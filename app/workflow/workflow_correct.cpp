@@ -18,9 +18,11 @@ Workflow::Outcome Workflow::on(const model::Correct& a) {
     // Before the first run the surface is the seeds' alone: nothing to keep as it is.
     const bool steering =
         status_.state == model::State::Evolving || status_.state == model::State::Paused;
+    const SpeedChoice speedBefore = engineSpeed_;
     Outcome out = sphereEdit(a.voxel, a.radius, a.positive);
-    // The table then runs the solver from the surface this leaves.
-    if (out.accepted && steering && status_.hasLevelSet) {
+    // The table then runs the solver from the surface this leaves. A correction that changed
+    // the speed (classify learning from its sphere) changed it everywhere: its run is global.
+    if (out.accepted && steering && status_.hasLevelSet && engineSpeed_ == speedBefore) {
         reachAround(brushSphere(a.voxel, a.radius));
     }
     return out;

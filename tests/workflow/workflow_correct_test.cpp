@@ -138,6 +138,18 @@ TEST(WorkflowCorrect, ALaterOneRunsWithinItsReachUntilTheRunEnds) {
     EXPECT_FALSE(r.engine.reach().has_value()) << "a new T applies everywhere";
     EXPECT_EQ(r.state(), State::Evolving);
 
+    // With classify, each correction is an example: the speed changes everywhere, and so does
+    // the run.
+    workflow::Settings learning = testSettings();
+    learning.defaultSpeed = model::SpeedKind::Classify;
+    Rig classify(learning);
+    classify.load();
+    ASSERT_TRUE(classify.act(model::Correct{{8.0, 6.0, 4.0}, true, 2.0}).accepted);
+    ASSERT_TRUE(classify.act(model::Pause{}).accepted);
+    ASSERT_TRUE(classify.act(model::Correct{{12.0, 6.0, 4.0}, false, 1.0}).accepted);
+    EXPECT_EQ(classify.status().speedInForce, model::SpeedKind::Classify);
+    EXPECT_FALSE(classify.engine.reach().has_value());
+
     workflow::Settings everywhere = testSettings();
     everywhere.correctionReach = 0.0;
     Rig all(everywhere);
