@@ -155,9 +155,9 @@ void LevelSetSolver::setReach(const std::optional<model::Sphere>& reach) {
 
 void LevelSetSolver::uploadReach() {
     const GLuint p = programs_->updatePhi.id();
-    const model::Sphere s = reach_.value_or(model::Sphere{{0.0F, 0.0F, 0.0F}, 0.0F});
+    const model::Sphere s = reach_.value_or(model::Sphere{}); // radius 0: everywhere
     glProgramUniform4f(p, glGetUniformLocation(p, "reach"), s.centre.x, s.centre.y, s.centre.z,
-                       reach_ ? s.radius : 0.0F);
+                       s.radius);
 }
 
 // Sets the barrier uniforms of the passes that evaluate the speed (barrier_speed.glsl).

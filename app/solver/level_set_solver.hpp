@@ -82,7 +82,6 @@ class LevelSetSolver {
     // run, which should change the surface around the correction and leave the rest as the
     // operator accepted it; nullopt: everywhere. Validated as a sphere (std::invalid_argument).
     void setReach(const std::optional<model::Sphere>& reach);
-    [[nodiscard]] const std::optional<model::Sphere>& reach() const { return reach_; }
     // Replace the level set.
     // `intensities`: the scan's real-unit values, i fastest (the solver keeps no host copy).
     void initFromThreshold(std::span<const float> intensities, float lo, float hi);

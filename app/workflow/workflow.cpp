@@ -140,11 +140,11 @@ void Workflow::enter(model::State next, std::string message) {
     status_.state = next;
     if (from == model::State::Evolving && next != model::State::Evolving) {
         endReach(); // the next run, whoever starts it, is the whole surface's
-    }
-    if (from == model::State::Evolving && next != model::State::Evolving && scanLoaded_) {
         // The readouts during the run may lag a little; the stopped surface's are exact.
         try {
-            status_.volumeMl = engine_.exactVolumeMl();
+            if (scanLoaded_) {
+                status_.volumeMl = engine_.exactVolumeMl();
+            }
         } catch (const std::exception&) {
             // The engine's failure surfaces on the next call that needs it; the readout stays.
         }
