@@ -68,7 +68,10 @@ struct BrushConfig {
 // units there; here they are fractions of the scan's value range (max - min), so one file
 // serves CT in HU and MR in arbitrary units.
 struct SpeedConfig {
-    model::SpeedKind kind = model::SpeedKind::Threshold;
+    // Classify: the threshold speed until the operator's first outside example (an erase while
+    // steering, an outside mark), then a surface that learns from every correction
+    // (docs/steering.md: the clicks protocol's negative cases only improved this way).
+    model::SpeedKind kind = model::SpeedKind::Classify;
     // The edge speed's preprocessing, from the noise the last probe measured (as segment
     // --probe: session/speed_probe.hpp), so one file serves CT and MR.
     int smoothIterations = 5;       // anisotropic diffusion steps before the edge factor, 0 = none

@@ -215,7 +215,7 @@ TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
     other.ui = {12.0, 2.0, 900};
     other.probe = {7.0, 3.0, 20.0};
     other.brush = {9.0, 1.5};
-    other.speed = {model::SpeedKind::Classify, 40, 0.5, 0.25};
+    other.speed = {model::SpeedKind::Edge, 40, 0.5, 0.25};
     other.exports = {"elsewhere", {"nrrd"}};
     other.audit = {"elsewhere.jsonl"};
     for (config::Preset& p : other.presets) {
