@@ -14,7 +14,13 @@
 #   turned and the frame asked for at once) over render_frame_bench drawing the same views
 #   (the 3D view with its surface and the two slices, at the kiosk's sizes) whole.
 #
+# - with --scan: the same untouched ratio on SCAN from a seed at voxel I,J,K (T and eps from
+#   `segment --probe` there, alpha 0.5), and the input-to-screen latency while the solver runs
+#   on it (evolve.session's input, after that set-up). ../shared/data has no 512x512x120-class
+#   scan: bench/kiosk/resample_nifti.py makes one from a real MR (--large does, into DIR).
+#
 #   tools/bench-kiosk.sh [--small] [--sizes WxH[,WxH...]] [--out DIR] [--bin STEERSEG]
+#                        [--scan SCAN --seed I,J,K | --large]
 #
 # --small: 800x500 and a 3 s + 2 s session (CI runs it through tools/bench-gpu.sh --small).
 # Without --bin it builds build/release/steerseg (Release) if it is missing. Latency runs from
@@ -27,13 +33,19 @@ small=0
 sizes=""
 out=${STEERSEG_OUT:-out/bench-kiosk}
 bin=""
+scan=""
+scan_seed=""
+large=0
 while (($#)); do
   case $1 in
     --small) small=1 ;;
     --sizes) sizes=${2:?--sizes needs WxH[,WxH...]}; shift ;;
     --out) out=${2:?--out needs a folder}; shift ;;
     --bin) bin=${2:?--bin needs the steerseg binary}; shift ;;
-    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
+    --scan) scan=${2:?--scan needs a scan}; shift ;;
+    --seed) scan_seed=${2:?--seed needs I,J,K}; shift ;;
+    --large) large=1 ;;
+    -h|--help) sed -n '2,28p' "$0"; exit 0 ;;
     *) echo "bench-kiosk: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
@@ -45,6 +57,24 @@ if ((small)); then
 else
   session=$root/bench/kiosk/evolve.session
   sizes=${sizes:-1280x800,1920x1080}
+fi
+if ((large)); then
+  # The thigh sarcoma's T1 MR (174x158x59 at 0.98 x 0.98 x 3.27 mm) on a 512x512x120 grid
+  # (0.33 x 0.30 x 1.59 mm), its tumour's deepest voxel (the clicks protocol's first click,
+  # docs/steering.md) carried over.
+  data=${STEERSEG_DATA_DIR:-$root/../shared/data}
+  mr=$data/thigh-sarcoma-sts001/STS_001_MR_T1_image.nii.gz
+  if [[ ! -f $mr ]]; then
+    echo "bench-kiosk: --large needs $mr (set STEERSEG_DATA_DIR)" >&2
+    exit 2
+  fi
+  scan=${TMPDIR:-/tmp}/bench-kiosk-mr512.nii.gz
+  [[ -f $scan ]] || /usr/bin/python3 "$root/bench/kiosk/resample_nifti.py" "$mr" "$scan" 512 512 120 >&2
+  scan_seed=210,257,53
+fi
+if [[ -n $scan && ! $scan_seed =~ ^[0-9]+,[0-9]+,[0-9]+$ ]]; then
+  echo "bench-kiosk: --scan needs --seed I,J,K (voxel indices)" >&2
+  exit 2
 fi
 IFS=',' read -r -a size_list <<<"$sizes"
 for s in "${size_list[@]}"; do
@@ -118,14 +148,51 @@ if ((!small)); then
   "$frame_bench" --frames 2 --size "${ws}x${hs}" --view axial+contour >"$out/frame-bench-slice.txt" 2>>"$log"
   ratios="$out/stats-untouched.json $out/segment-untouched.json $out/stats-still.json $out/frame-bench-3d.txt $out/frame-bench-slice.txt"
 fi
+
+# The same on the given scan: T and eps probed where the seed goes, then the untouched run, the
+# segment run of as many iterations, and evolve.session's input after the same set-up.
+scan_files=""
+if [[ -n $scan ]] && ((!small)); then
+  s=${size_list[0]}
+  IFS=',' read -r si sj sk <<<"$scan_seed"
+  "$bin" segment --input "$scan" --probe "$si,$sj,$sk,5" --seed "$si,$sj,$sk,3" --alpha 0.5 \
+    --iterations 1 --output "$out/scan-probe.nii.gz" --report "$out/scan-probe.json" >>"$log" 2>&1
+  read -r scan_t scan_eps < <(python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); print(r["T"], r["eps"])' \
+    "$out/scan-probe.json")
+  python3 - "$root/bench/kiosk/evolve.session" "$out" "$si $sj $sk" "$scan_t" "$scan_eps" <<'EOF'
+import pathlib, sys
+evolve, out, seed, t, eps = pathlib.Path(sys.argv[1]).read_text().splitlines(), pathlib.Path(sys.argv[2]), *sys.argv[3:]
+setup = ["load $SCAN", "wait loaded timeout 600", "expect state inspect", f"set T {t}", f"set eps {eps}",
+         "set alpha 0.5", f"seed {seed} 3", "run", "wait state evolving timeout 120"]
+start = evolve.index("wait state evolving timeout 30") + 1
+(out / "scan-evolve.session").write_text("\n".join(setup + evolve[start:]) + "\n")
+(out / "scan-untouched.session").write_text("\n".join(
+    setup + ["wait seconds 10", "pause", "wait state paused timeout 60", "quit"]) + "\n")
+EOF
+  for name in scan-untouched scan-evolve; do
+    echo "bench-kiosk: $s: $bin kiosk --scan $scan --script $name.session" | tee -a "$log" >&2
+    if ! (cd "$out" && "$bin" kiosk --platform offscreen --scan "$scan" --script "$out/$name.session" \
+      --frames "$out/frames-$name" --size "$s" --stats "$out/stats-$name.json" --allow-root >>"$log" 2>&1); then
+      tail -n 20 "$log" >&2
+      echo "bench-kiosk: the kiosk failed on $name.session (log: $log)" >&2
+      exit 1
+    fi
+  done
+  n=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["iterations"])' "$out/stats-scan-untouched.json")
+  echo "bench-kiosk: $bin segment --input $scan, $n iterations" | tee -a "$log" >&2
+  "$bin" segment --input "$scan" --seed "$si,$sj,$sk,3" --T "$scan_t" --eps "$scan_eps" --alpha 0.5 \
+    --iterations "$n" --output "$out/segment-scan.nii.gz" --report "$out/segment-scan.json" >>"$log" 2>&1
+  scan_files="$out/stats-scan-untouched.json $out/segment-scan.json $out/stats-scan-evolve.json"
+fi
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 
 planned=$( ((small)) && echo 3 || echo 10)
 python3 - "$out" "$renderer" "$small" "$planned" "$(($(date +%s) - started))" "$load_before" "$load_after" \
-  "$ratios" "${size_list[@]}" <<'EOF'
+  "$ratios" "$scan" "$scan_files" "${size_list[@]}" <<'EOF'
 import json, pathlib, sys
 out, renderer, small, planned = pathlib.Path(sys.argv[1]), sys.argv[2], sys.argv[3] == "1", float(sys.argv[4])
-seconds, load_before, load_after, ratio_files, sizes = int(sys.argv[5]), sys.argv[6], sys.argv[7], sys.argv[8].split(), sys.argv[9:]
+seconds, load_before, load_after, ratio_files = int(sys.argv[5]), sys.argv[6], sys.argv[7], sys.argv[8].split()
+scan, scan_files, sizes = sys.argv[9], sys.argv[10].split(), sys.argv[11:]
 software = any(s in renderer for s in ("llvmpipe", "softpipe", "SwiftShader")) or not renderer
 rows = []
 for size in sizes:
@@ -171,8 +238,21 @@ if ratio_files:
               "untouched_over_segment": round(untouched["iterations_per_second"] / segment["iterations_per_second"], 2),
               "still_frame_seconds": round(waits[-1], 2), "render_frame_bench_seconds": round(whole, 2),
               "still_frame_over_bench": round(waits[-1] / whole, 2), "view_sizes": still["view_sizes"]}
+on_scan = None
+if scan_files:
+    untouched, segment, evolve = (json.loads(pathlib.Path(f).read_text()) for f in scan_files)
+    lat = evolve["latency"]
+    if lat["count"] == 0 or evolve["frames_evolving"]["count"] == 0:
+        sys.exit("bench-kiosk: scan-evolve.session had no input while evolving: the session did not run as meant")
+    on_scan = {"scan": scan, "kiosk_iterations_per_second_untouched": round(untouched["iterations_per_second"], 2),
+               "segment_iterations_per_second": round(segment["iterations_per_second"], 2),
+               "untouched_over_segment": round(untouched["iterations_per_second"] / segment["iterations_per_second"], 2),
+               "latency": {k: round(lat[k], 1) for k in ("p50_ms", "p90_ms", "p99_ms", "max_ms")} | {"count": lat["count"]},
+               "frames_evolving": {k: round(evolve["frames_evolving"][k], 1) for k in ("p50_ms", "p90_ms", "p99_ms")},
+               "iterations_per_second_with_input": round(evolve["iterations_per_second"], 2)}
 report = {"renderer": renderer, "software_renderer": software, "small": small, "seconds": seconds,
-          "load_before": load_before, "load_after": load_after, "sizes": rows, "ratios": ratios}
+          "load_before": load_before, "load_after": load_after, "sizes": rows, "ratios": ratios,
+          "on_scan": on_scan}
 (out / "bench-kiosk.json").write_text(json.dumps(report, indent=2) + "\n")
 
 def pct(p):
@@ -194,6 +274,14 @@ if ratios:
            f"| full-screen `frame` once still, s / render_frame_bench, same views whole | "
            f"{ratios['still_frame_seconds']:g} | {ratios['render_frame_bench_seconds']:g} | "
            f"{ratios['still_frame_over_bench']:g} |"]
+if on_scan:
+    md += ["", f"| on {pathlib.Path(scan).name} ({sizes[0]}) | kiosk | its part | ratio |", "|---|---|---|---|",
+           f"| iterations/s untouched / `steerseg segment` (same parameters and count) | "
+           f"{on_scan['kiosk_iterations_per_second_untouched']:g} | {on_scan['segment_iterations_per_second']:g} | "
+           f"{on_scan['untouched_over_segment']:g} |",
+           f"| input to screen ms p50 / p90 / p99 while the solver runs (frame ms evolving p50 / p90 / p99; "
+           f"it/s with input) | {pct(on_scan['latency'])} | {pct(on_scan['frames_evolving'])}; "
+           f"{on_scan['iterations_per_second_with_input']:g} it/s | |"]
 (out / "bench-kiosk.md").write_text("\n".join(md) + "\n")
 EOF
 cat "$out/bench-kiosk.md"

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <glm/geometric.hpp>
 
 namespace steerseg {
 
@@ -33,6 +34,27 @@ double ellipsoid(double x, double y, double z, double cx, double cy, double cz, 
     return dx * dx + dy * dy + dz * dz; // < 1 inside
 }
 
+// The phantom's tissue at a point in mm from voxel (0, 0, 0), without noise.
+double tissueAt(double x, double y, double z, const glm::dvec3& lesionMm, double lesionRadius,
+                double lesionIntensity) {
+    double value = 20.0;
+    if (ellipsoid(x, y, z, 64, 64, 72, 58, 60, 62) < 1.0) {
+        value = 250.0;
+    }
+    if (ellipsoid(x, y, z, 64, 64, 72, 50, 52, 54) < 1.0) {
+        value = 420.0;
+    }
+    // Two ventricles, mirrored left and right.
+    if (ellipsoid(x, y, z, 52, 62, 76, 6, 16, 10) < 1.0 ||
+        ellipsoid(x, y, z, 76, 62, 76, 6, 16, 10) < 1.0) {
+        value = 120.0;
+    }
+    const glm::dvec3 d = glm::dvec3(x, y, z) - lesionMm;
+    if (glm::dot(d, d) < lesionRadius * lesionRadius) {
+        value = lesionIntensity;
+    }
+    return value;
+}
 } // namespace
 
 Volume makeSamplePhantom() {
@@ -44,6 +66,16 @@ Volume makeSamplePhantom() {
     Volume v(VoxelType::UInt16, g);
     auto out = v.voxels<std::uint16_t>();
     const PhantomLesion lesion = kPhantomLesion;
+    const glm::dvec3 lesionMm = glm::dvec3(lesion.i, lesion.j, lesion.k) * g.spacing;
+    const auto tissue = [&](double x, double y, double z) {
+        return tissueAt(x, y, z, lesionMm, lesion.radiusMm, lesion.intensity);
+    };
+    // A scanner's voxel is the mean of the tissue over its extent (the partial volume), not the
+    // tissue at its centre: a phantom sampled at centres has boundaries that step a whole voxel
+    // at a time, which the 3D view draws as terraces and rings and the level set follows into
+    // facets. Voxels whose corners disagree are averaged over 4 x 4 x 4 points.
+    constexpr int kSub = 4;
+    const glm::dvec3 half = 0.5 * g.spacing;
     for (int k = 0; k < g.dims.z; ++k) {
         // Work in mm so the shapes are round in the world, not in voxels.
         const double z = k * g.spacing.z;
@@ -51,26 +83,24 @@ Volume makeSamplePhantom() {
             const double y = j * g.spacing.y;
             for (int i = 0; i < g.dims.x; ++i) {
                 const double x = i * g.spacing.x;
-                double value = 20.0;
-                const double head = ellipsoid(x, y, z, 64, 64, 72, 58, 60, 62);
-                if (head < 1.0) {
-                    value = 250.0;
+                double value = tissue(x, y, z);
+                bool boundary = false;
+                for (int c = 0; c < 8 && !boundary; ++c) {
+                    boundary =
+                        tissue(x + ((c & 1) ? half.x : -half.x), y + ((c & 2) ? half.y : -half.y),
+                               z + ((c & 4) ? half.z : -half.z)) != value;
                 }
-                const double brain = ellipsoid(x, y, z, 64, 64, 72, 50, 52, 54);
-                if (brain < 1.0) {
-                    value = 420.0;
-                }
-                // Two ventricles, mirrored left and right.
-                if (ellipsoid(x, y, z, 52, 62, 76, 6, 16, 10) < 1.0 ||
-                    ellipsoid(x, y, z, 76, 62, 76, 6, 16, 10) < 1.0) {
-                    value = 120.0;
-                }
-                const double lx = (i - lesion.i) * g.spacing.x;
-                const double ly = (j - lesion.j) * g.spacing.y;
-                const double lz = (k - lesion.k) * g.spacing.z;
-                const double r = lesion.radiusMm;
-                if (lx * lx + ly * ly + lz * lz < r * r) {
-                    value = lesion.intensity;
+                if (boundary) {
+                    double sum = 0.0;
+                    for (int c = 0; c < kSub * kSub * kSub; ++c) {
+                        const glm::dvec3 f =
+                            (glm::dvec3(c % kSub, (c / kSub) % kSub, c / (kSub * kSub)) + 0.5) /
+                                double(kSub) -
+                            0.5;
+                        sum += tissue(x + f.x * g.spacing.x, y + f.y * g.spacing.y,
+                                      z + f.z * g.spacing.z);
+                    }
+                    value = sum / double(kSub * kSub * kSub);
                 }
                 const std::size_t n = v.linearIndex(i, j, k);
                 value += 15.0 * hashNoise(static_cast<std::uint32_t>(n));

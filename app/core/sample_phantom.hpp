@@ -9,6 +9,8 @@ namespace steerseg {
 //   background ~ 20, "scalp/skin" shell ~ 250, "brain" ellipsoid ~ 420,
 //   a bright "lesion" sphere ~ 800 (centre voxel (80, 56, 52), radius 12 mm),
 //   dark "ventricles" ~ 120, plus Gaussian-like noise (sigma ~ 15).
+// Each voxel holds the mean of the tissue over its extent, as a scanner's does (partial volume),
+// so the boundaries are smooth at the voxel's scale.
 Volume makeSamplePhantom();
 
 struct PhantomLesion {

