@@ -103,11 +103,8 @@ class NetListenConcurrent : public ::testing::Test {
     void SetUp() override {
         STEERSEG_REQUIRE_PROGRAM("/usr/bin/storescu", "dcmtk");
         STEERSEG_REQUIRE_PROGRAM("/usr/bin/echoscu", "dcmtk");
-        const auto found = dataPath("lung-ct-ibsi/dicom/image");
-        if (!found) {
-            STEERSEG_SKIP_OR_FAIL_FOR_DATA("lung-ct-ibsi/dicom/image");
-        }
-        series = seriesFiles(*found);
+        STEERSEG_REQUIRE_DATA(folder, "lung-ct-ibsi/dicom/image");
+        series = seriesFiles(folder);
     }
     std::vector<fs::path> series;
 };
