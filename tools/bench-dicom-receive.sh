@@ -2,8 +2,10 @@
 # Receive throughput of `steerseg listen` (docs/dicom-network.md): COPIES copies of a DICOM
 # series, each given new study, series and instance UIDs (dcmodify), pushed at once by COPIES
 # parallel storescu processes. Prints the objects stored, MB and MB/s (wall time from the first
-# push to the last storescu's end). Associations are served one after another. The same pushes
-# then go to DCMTK's own storescp (which writes without fsync), for the ratio in one run.
+# push to the last storescu's end). The node serves up to [dicom] max_associations (default 4)
+# associations at once. The same pushes then go to DCMTK's own storescp (which writes without
+# fsync), for the ratio in one run. The kiosk receiving while it segments:
+# tools/bench-dicom-kiosk.sh.
 #   tools/bench-dicom-receive.sh [SERIES_DIR] [COPIES] [BINARY]
 set -euo pipefail
 series=${1:-../shared/data/lung-ct-ibsi/dicom/image}

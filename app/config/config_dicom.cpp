@@ -145,6 +145,9 @@ void readDicom(TableReader& t, DicomConfig& d) {
     if (auto v = t.integer("keep_days", {1, 3650})) {
         d.keepDays = static_cast<int>(*v);
     }
+    if (auto v = t.integer("max_associations", {1, 64})) {
+        d.maxAssociations = static_cast<int>(*v);
+    }
     if (auto v = t.number("retry_first_seconds", {0.0, 3600.0, true})) {
         d.retryFirstSeconds = *v;
     }

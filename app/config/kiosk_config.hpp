@@ -181,6 +181,7 @@ struct DicomConfig {
     int associationQuotaMb = 1024;      // bytes one association may bring (and hold in memory)
     int minFreeMb = 256;                // refuse objects that would leave less free in the store
     int keepDays = 7;                   // received series older than this are removed
+    int maxAssociations = 4;            // served at once; one more is rejected as busy
     double retryFirstSeconds = 5.0;     // the outbox's delay after a failed send ...
     double retryLongestSeconds = 300.0; // ... doubled after each further one up to this
     std::vector<DicomPeerConfig> peers; // a file's [[dicom.peers]] replaces the list

@@ -12,6 +12,7 @@ net::ScpSettings scpSettings(const config::DicomConfig& dicom) {
     s.associationQuotaBytes = static_cast<std::uint64_t>(dicom.associationQuotaMb) << 20;
     s.minFreeBytes = static_cast<std::uint64_t>(dicom.minFreeMb) << 20;
     s.keepDays = dicom.keepDays;
+    s.maxAssociations = dicom.maxAssociations;
     for (const auto& peer : dicom.peers) {
         if (peer.receive) {
             s.allowed.push_back({peer.aet, peer.address});

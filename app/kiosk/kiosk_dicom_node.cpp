@@ -61,6 +61,14 @@ DicomNode::DicomNode(const config::DicomConfig& dicom) : dicom_(dicom) {
         // The kiosk goes on: the operator can still load folders and export to files.
         say(std::string("not receiving: ") + e.what());
     }
+    try {
+        outboxFiles_ = std::make_unique<net::Outbox>(dicom_.outbox, outboxBackoff(dicom_));
+        // Listed before the first frame: a script's wait for an empty outbox must not take the
+        // moment before the worker's first pass for a delivery (after a restart, say).
+        publishPending(*outboxFiles_, 0);
+    } catch (const std::exception& e) {
+        say(std::string("no outbox: ") + e.what());
+    }
     worker_ = std::thread([this] { work(); });
 }
 
@@ -88,12 +96,7 @@ void DicomNode::say(const std::string& line) {
 }
 
 void DicomNode::work() {
-    std::unique_ptr<net::Outbox> outbox;
-    try {
-        outbox = std::make_unique<net::Outbox>(dicom_.outbox, outboxBackoff(dicom_));
-    } catch (const std::exception& e) {
-        say(std::string("no outbox: ") + e.what());
-    }
+    net::Outbox* outbox = outboxFiles_.get();
     std::vector<fs::path> complete;
     for (bool first = true; !stop_; first = false) {
         if (outbox) {
@@ -181,16 +184,24 @@ void DicomNode::drain(net::Outbox& outbox) {
     net::SendOptions options;
     options.callingAet = dicom_.aet;
     options.timeoutSeconds = kSendTimeoutSeconds;
-    outbox.deliverDue([this](const std::string& name) { return sendPeer(dicom_, name); }, options,
-                      [this](const net::OutboxEntry& e, const net::SendOutcome& o) {
-                          const std::lock_guard lock(mutex_);
-                          shared_.sends.push_back({e.peer, e.source.string(), o.sopInstanceUid,
-                                                   o.problem, e.attempts, o.accepted});
-                          shared_.log.push_back(o.accepted ? "delivered " + e.source.string() +
-                                                                 " to " + e.peer
-                                                           : "not delivered: " + waitingLine(e));
-                      });
+    outbox.deliverDue(
+        [this](const std::string& name) { return sendPeer(dicom_, name); }, options,
+        [this](const net::OutboxEntry& e, const net::SendOutcome& o) { recordSend(e, o); });
     publishPending(outbox, 0);
+}
+
+// Before the outbox updates or removes the entry: waits until the frame thread has written the
+// attempt to the audit log (the log is the frame thread's), so that a kill -9 at any moment
+// leaves no attempt the outbox counted without its record. A stop does not wait: finish()
+// writes what is left.
+void DicomNode::recordSend(const net::OutboxEntry& e, const net::SendOutcome& o) {
+    std::unique_lock lock(mutex_);
+    shared_.sends.push_back(
+        {e.peer, e.source.string(), o.sopInstanceUid, o.problem, e.attempts, o.accepted});
+    shared_.log.push_back(o.accepted ? "delivered " + e.source.string() + " to " + e.peer
+                                     : "not delivered: " + waitingLine(e));
+    const std::uint64_t handed = ++shared_.sendsHanded;
+    wake_.wait(lock, [&] { return stop_ || shared_.sendsWritten >= handed; });
 }
 
 void DicomNode::take(workflow::AuditLog& audit, std::ostream& err) {
@@ -213,6 +224,13 @@ void DicomNode::take(workflow::AuditLog& audit, std::ostream& err) {
     }
     for (const SendRecord& r : sends) {
         audit.send(r.peer, r.file, r.sopInstanceUid, r.attempt, r.accepted, r.problem);
+    }
+    if (!sends.empty()) {
+        {
+            const std::lock_guard lock(mutex_);
+            shared_.sendsWritten += sends.size();
+        }
+        wake_.notify_all();
     }
 }
 

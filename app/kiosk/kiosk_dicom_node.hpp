@@ -11,6 +11,7 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <mutex>
@@ -24,6 +25,8 @@ class AuditLog;
 }
 namespace steerseg::net {
 class Outbox;
+struct OutboxEntry;
+struct SendOutcome;
 class StorageScp;
 } // namespace steerseg::net
 
@@ -67,10 +70,15 @@ class DicomNode {
         std::string note;
         std::vector<std::string> outbox;
         std::vector<std::filesystem::path> toQueue; // the frame thread's, for the worker
+        // Send records handed to the frame thread, and how many of them it has written to the
+        // audit log: an attempt is on record before the outbox moves past it.
+        std::uint64_t sendsHanded = 0;
+        std::uint64_t sendsWritten = 0;
     };
 
     void stop();
     void work();
+    void recordSend(const net::OutboxEntry& entry, const net::SendOutcome& outcome);
     void queueExports(net::Outbox& outbox);
     void listStore(std::vector<std::filesystem::path>& complete, bool first);
     void drain(net::Outbox& outbox);
@@ -90,6 +98,7 @@ class DicomNode {
     std::vector<std::string> outbox_;
     std::string note_;
     std::string noteDismissed_;
+    std::unique_ptr<net::Outbox> outboxFiles_; // the worker's after the constructor
     std::unique_ptr<net::StorageScp> scp_;
     std::thread scpThread_;
     std::thread worker_;

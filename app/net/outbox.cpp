@@ -154,18 +154,20 @@ int Outbox::deliverDue(
             audit_->send(e.peer, e.source.string(), outcome.sopInstanceUid, e.attempts,
                          outcome.accepted, outcome.problem);
         }
+        if (!outcome.accepted) {
+            e.lastProblem = outcome.problem;
+            e.nextAttempt = clock_() + delayAfter(e.attempts);
+        }
+        if (attempted) {
+            attempted(e, outcome);
+        }
         std::error_code ignored;
         if (outcome.accepted) {
             fs::remove(folder_ / (e.id + ".json"), ignored);
             fs::remove(e.object, ignored);
             ++delivered;
         } else {
-            e.lastProblem = outcome.problem;
-            e.nextAttempt = clock_() + delayAfter(e.attempts);
             writeRecord(e);
-        }
-        if (attempted) {
-            attempted(e, outcome);
         }
     }
     return delivered;

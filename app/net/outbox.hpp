@@ -61,7 +61,9 @@ class Outbox {
     // One pass over the entries that are due: each is sent on its own association; a delivered
     // one is removed, a failed one rescheduled. `resolve` turns a peer's name into its address
     // (nullopt: no such peer, a failed attempt too). Returns how many were delivered.
-    // `attempted` (may be empty) hears of each attempt, the entry as it is after it.
+    // `attempted` (may be empty) hears of each attempt, the entry as it is after it, before the
+    // entry's files are updated or removed: what it records of the attempt (an audit log) is
+    // then never behind the outbox, whenever the process dies.
     int
     deliverDue(const std::function<std::optional<DicomPeer>(const std::string&)>& resolve,
                const SendOptions& options,

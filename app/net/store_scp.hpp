@@ -4,7 +4,9 @@
 // PACS into an incoming store, one file per instance at <store>/<study UID>/<series UID>/<SOP
 // instance UID>.dcm, each written through files::writeFileAtomically so that a listing never
 // sees half a file. It answers C-ECHO, accepts only the configured calling AE titles (and, where
-// given, their addresses), and refuses an association's objects past its byte quota.
+// given, their addresses), and refuses an association's objects past its byte quota. Several
+// associations are served at once, each on a thread of its own (AssociationPool), so a slow or
+// stalled sender does not hold up the others.
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
@@ -34,6 +36,9 @@ struct ScpSettings {
     // less than this free after the write.
     std::uint64_t minFreeBytes = std::uint64_t{256} << 20;
     int timeoutSeconds = 30; // ACSE and DIMSE: a silent peer is dropped after this
+    // Associations served at once; one more is rejected at once as busy (A-ASSOCIATE-RJ,
+    // transient, local limit exceeded), so the sender can retry.
+    int maxAssociations = 4;
     // Received series older than this are removed when the SCP opens and hourly after
     // (pruneStore); 0 keeps them.
     int keepDays = 0;
@@ -54,16 +59,15 @@ class StorageScp {
     StorageScp(const StorageScp&) = delete;
     StorageScp& operator=(const StorageScp&) = delete;
 
-    // Binds the port (throws ScpError naming it when it cannot). In a process that reads DICOM on
-    // other threads too, call it before they start: it touches dcmdata's process-wide options.
+    // Creates the store, prunes it and binds the port (throws ScpError naming it when it cannot).
     void open();
-    // Serves associations one after another until `stop` becomes true (checked at least once a
-    // second between associations and after each one).
+    // Serves associations, up to `maxAssociations` at once, until `stop` becomes true (checked at
+    // least once a second); then waits for those still open to end (at most the DIMSE timeout).
     void serve(const std::atomic<bool>& stop);
 
   private:
-    class Provider;
-    std::unique_ptr<Provider> provider_;
+    class Impl;
+    std::unique_ptr<Impl> impl_;
 };
 
 // A UID as it may name a folder or file of the store: 1..64 digits and dots (PS3.5 9.1), so a

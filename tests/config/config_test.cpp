@@ -637,7 +637,7 @@ TEST_F(ConfigTest, BadInputDevices) {
 TEST_F(ConfigTest, DicomNodeAndPeers) {
     const config::LoadedConfig loaded = load({write(
         "dicom.toml", "[dicom]\nenabled = true\naet = \"CONSOLE1\"\nport = 4242\n"
-                      "store = \"/srv/in\"\nassociation_quota_mb = 64\n"
+                      "store = \"/srv/in\"\nassociation_quota_mb = 64\nmax_associations = 8\n"
                       "[[dicom.peers]]\nname = \"pacs\"\naet = \"ORTHANC\"\nhost = \"10.0.0.5\"\n"
                       "send = true\nreceive = true\naddress = \"10.0.0.5\"\n"
                       "[[dicom.peers]]\nname = \"ct\"\naet = \"CT_SCANNER\"\nhost = \"ct\"\n"
@@ -646,6 +646,7 @@ TEST_F(ConfigTest, DicomNodeAndPeers) {
     const config::DicomConfig& d = loaded.config.dicom;
     EXPECT_TRUE(d.enabled);
     EXPECT_EQ(d.aet, "CONSOLE1");
+    EXPECT_EQ(d.maxAssociations, 8);
     EXPECT_EQ(d.port, 4242);
     EXPECT_EQ(d.store, fs::path("/srv/in"));
     EXPECT_EQ(d.associationQuotaMb, 64);
@@ -664,6 +665,8 @@ TEST_F(ConfigTest, BadDicomValuesAreRefusedWithTheirPlace) {
     expectRejected("[dicom]\nport = \"104\"\n", 2, "dicom.port", "expected an integer");
     expectRejected("[dicom]\nstore = \"\"\n", 2, "dicom.store", "must not be empty");
     expectRejected("[dicom]\nassociation_quota_mb = 0\n", 2, "dicom.association_quota_mb",
+                   "at least 1");
+    expectRejected("[dicom]\nmax_associations = 0\n", 2, "dicom.max_associations",
                    "at least 1");
     expectRejected("[dicom]\ntls = true\n", 2, "dicom.tls", "TLS is not supported yet");
     expectRejected("[dicom]\nlisten = true\n", 2, "dicom.listen", "");

@@ -198,4 +198,45 @@ nlohmann::json OrthancServer::get(const std::string& path) const {
     return nlohmann::json::parse(*body);
 }
 
+ListenProcess::ListenProcess(const std::filesystem::path& folder,
+                             const std::vector<std::string>& extra)
+    : dir(folder) {
+    std::vector<std::string> argv{steersegBinary().string(), "listen",  "--port",
+                                  std::to_string(port),      "--store", (dir / "store").string()};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    process = std::make_unique<ChildProcess>(argv, dir / "listen.log");
+    if (!waitUntil([&] { return log().find("listening as") != std::string::npos; },
+                   std::chrono::seconds(10))) {
+        throw std::runtime_error("steerseg listen did not start: " + log());
+    }
+}
+
+std::string ListenProcess::log() const {
+    return readText(dir / "listen.log");
+}
+
+Finished ListenProcess::storescu(const std::string& aet, const std::filesystem::path& input) const {
+    return runProgram({"storescu", "-aet", aet, "-aec", "STEERSEG", "+sd", "127.0.0.1",
+                       std::to_string(port), input.string()},
+                      dir);
+}
+
+Finished ListenProcess::echo(const std::string& aet) const {
+    return runProgram(
+        {"echoscu", "-aet", aet, "-aec", "STEERSEG", "127.0.0.1", std::to_string(port)}, dir);
+}
+
+std::vector<std::filesystem::path> filesBelow(const std::filesystem::path& root) {
+    std::vector<std::filesystem::path> found;
+    if (!std::filesystem::exists(root)) {
+        return found;
+    }
+    for (const auto& e : std::filesystem::recursive_directory_iterator(root)) {
+        if (e.is_regular_file()) {
+            found.push_back(e.path());
+        }
+    }
+    return found;
+}
+
 } // namespace steerseg::test

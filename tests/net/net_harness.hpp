@@ -8,6 +8,7 @@
 #include <chrono>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -62,6 +63,22 @@ Finished runProgram(const std::vector<std::string>& argv, const std::filesystem:
 // The body of GET http://127.0.0.1:port/path (HTTP/1.1, Connection: close), or nullopt when the
 // connection fails or the status is not 200.
 std::optional<std::string> httpGet(int port, const std::string& path);
+
+// `steerseg listen` on a free port, storing into <dir>/store, output in <dir>/listen.log; the
+// constructor returns once it listens (throws when it does not within 10 s).
+struct ListenProcess {
+    std::filesystem::path dir;
+    int port = freePort();
+    std::unique_ptr<ChildProcess> process;
+
+    ListenProcess(const std::filesystem::path& folder, const std::vector<std::string>& extra);
+    [[nodiscard]] std::string log() const;
+    Finished storescu(const std::string& aet, const std::filesystem::path& input) const;
+    Finished echo(const std::string& aet) const;
+};
+
+// Every regular file below `root`, hidden ones (a write's temporary) included.
+std::vector<std::filesystem::path> filesBelow(const std::filesystem::path& root);
 
 // Orthanc (Debian's package) with its own configuration and storage in `folder`: DICOM and HTTP
 // on free loopback ports, no remote access, no plug-ins. Waits for its REST API.

@@ -7,6 +7,8 @@
 
 #include <fstream>
 #include <gtest/gtest.h>
+#include <sstream>
+#include <thread>
 
 namespace steerseg::test {
 namespace {
@@ -139,6 +141,96 @@ TEST(NetKioskNode, ASegWaitsForThePacsAndIsDeliveredOnceItIsBack) {
     STEERSEG_REQUIRE_PROGRAM(OrthancServer::kProgram, "orthanc");
     STEERSEG_REQUIRE_PROGRAM("/usr/bin/storescu", "dcmtk");
     runScenario(series, "net-kiosk-node-pacs-down", true);
+}
+
+// The attempts in the audit log, in order (both runs of the kiosk write the same log).
+std::vector<nlohmann::json> sendRecords(const fs::path& audit) {
+    std::vector<nlohmann::json> sends;
+    std::istringstream lines(readText(audit));
+    for (std::string line; std::getline(lines, line);) {
+        if (const auto record = nlohmann::json::parse(line); record.at("event") == "send") {
+            sends.push_back(record);
+        }
+    }
+    return sends;
+}
+
+// kill -9 while the SEG waits for the PACS, right after the outbox counted a failed attempt:
+// the outbox keeps it, the next start delivers it once, and the audit log has every attempt
+// the outbox counted, none missing.
+TEST(NetKioskNode, ASegPendingWhenTheKioskIsKilledIsDeliveredOnceAfterTheRestart) {
+    STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
+    STEERSEG_REQUIRE_PROGRAM(OrthancServer::kProgram, "orthanc");
+    const fs::path dir = tempDir("net-kiosk-node-kill");
+    OrthancServer pacs(dir);
+    pacs.stop();
+    writeConfig(dir, freePort(), pacs.dicomPort());
+    // The series from its folder (receiving is the scenarios' part); the last wait holds the
+    // kiosk with the SEG in the outbox until the kill.
+    std::string session = kSession;
+    session.replace(0, session.find("wait loaded"), "load " + series.string() + "\n");
+    std::ofstream(dir / "export.session") << session;
+    std::ofstream(dir / "drain.session") << "wait until outbox == 0 timeout 30\n";
+    const auto kioskArgs = [&](const std::string& script) {
+        return std::vector<std::string>{steersegBinary().string(),
+                                        "kiosk",
+                                        "--allow-root",
+                                        "--platform",
+                                        "offscreen",
+                                        "--size",
+                                        "160x120",
+                                        "--max-seconds",
+                                        "60",
+                                        "--no-resume",
+                                        "--config",
+                                        (dir / "kiosk.toml").string(),
+                                        "--script",
+                                        (dir / script).string()};
+    };
+    // The moment the outbox has counted a failed attempt on disk: the attempt's audit record
+    // must be written by then.
+    const auto attempted = [&] {
+        std::error_code ec;
+        for (const auto& f : fs::directory_iterator(dir / "outbox", ec)) {
+            if (f.path().extension() == ".json" &&
+                readText(f.path()).find("\"attempts\": 0") == std::string::npos) {
+                return true;
+            }
+        }
+        return false;
+    };
+    {
+        ChildProcess kiosk(kioskArgs("export.session"), dir / "kiosk.log");
+        const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+        while (!attempted() && std::chrono::steady_clock::now() < end) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+        kiosk.killHard();
+        ASSERT_TRUE(attempted()) << kiosk.log();
+        kiosk.stop();
+    }
+    pacs.start();
+    ChildProcess kiosk(kioskArgs("drain.session"), dir / "kiosk.log");
+    ASSERT_TRUE(waitUntil([&] { return !kiosk.running(); }, std::chrono::seconds(60)))
+        << kiosk.log();
+    EXPECT_EQ(kiosk.log().find("drain.session:"), std::string::npos) << kiosk.log();
+
+    const nlohmann::json instances = pacs.get("/instances?expand");
+    ASSERT_EQ(instances.size(), 1U) << instances.dump() << kiosk.log();
+    EXPECT_EQ(
+        pacs.get("/instances/" + instances[0].at("ID").get<std::string>() + "/simplified-tags")
+            .at("Modality"),
+        "SEG");
+    EXPECT_TRUE(fs::is_empty(dir / "outbox"));
+    // Attempts 1, 2, ... N without a gap, only the last one accepted.
+    const std::vector<nlohmann::json> sends = sendRecords(dir / "audit.jsonl");
+    ASSERT_FALSE(sends.empty()) << kiosk.log();
+    for (std::size_t n = 0; n < sends.size(); ++n) {
+        EXPECT_EQ(sends[n].at("attempt"), n + 1) << readText(dir / "audit.jsonl");
+        EXPECT_EQ(sends[n].at("accepted").get<bool>(), n + 1 == sends.size())
+            << readText(dir / "audit.jsonl");
+    }
+    fs::remove_all(dir);
 }
 
 // The node answers while the kiosk runs and goes with it on SIGTERM (exit 0); with the node off

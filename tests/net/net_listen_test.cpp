@@ -20,49 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// `steerseg listen` on a free port, storing into <dir>/store, ready when it says so.
-struct Listener {
-    fs::path dir;
-    int port = freePort();
-    std::unique_ptr<ChildProcess> process;
-
-    Listener(const fs::path& folder, const std::vector<std::string>& extra) : dir(folder) {
-        std::vector<std::string> argv{
-            steersegBinary().string(), "listen",  "--port",
-            std::to_string(port),      "--store", (dir / "store").string()};
-        argv.insert(argv.end(), extra.begin(), extra.end());
-        process = std::make_unique<ChildProcess>(argv, dir / "listen.log");
-        if (!waitUntil([&] { return log().find("listening as") != std::string::npos; },
-                       std::chrono::seconds(10))) {
-            throw std::runtime_error("steerseg listen did not start: " + log());
-        }
-    }
-    [[nodiscard]] std::string log() const { return readText(dir / "listen.log"); }
-    Finished storescu(const std::string& aet, const fs::path& input) const {
-        return runProgram({"storescu", "-aet", aet, "-aec", "STEERSEG", "+sd", "127.0.0.1",
-                           std::to_string(port), input.string()},
-                          dir);
-    }
-    Finished echo(const std::string& aet) const {
-        return runProgram(
-            {"echoscu", "-aet", aet, "-aec", "STEERSEG", "127.0.0.1", std::to_string(port)}, dir);
-    }
-};
-
-// Every regular file below `root`, hidden ones (a write's temporary) included.
-std::vector<fs::path> filesBelow(const fs::path& root) {
-    std::vector<fs::path> found;
-    if (!fs::exists(root)) {
-        return found;
-    }
-    for (const auto& e : fs::recursive_directory_iterator(root)) {
-        if (e.is_regular_file()) {
-            found.push_back(e.path());
-        }
-    }
-    return found;
-}
-
 // The scanner's side: a real CT series and DCMTK's storescu and echoscu.
 class NetListen : public ::testing::Test {
   protected:
@@ -80,7 +37,7 @@ class NetListen : public ::testing::Test {
 
 TEST_F(NetListen, StoresAScannersSeriesAndAnswersEcho) {
     const fs::path dir = tempDir("net-listen-series");
-    Listener node(dir, {"--allow", "SCANNER", "--allow", "PACS@127.0.0.1"});
+    ListenProcess node(dir, {"--allow", "SCANNER", "--allow", "PACS@127.0.0.1"});
 
     const Finished echo = node.echo("SCANNER");
     EXPECT_EQ(echo.status, 0) << echo.output;
@@ -141,7 +98,7 @@ TEST_F(NetListen, StoresAScannersSeriesAndAnswersEcho) {
 TEST_F(NetListen, QuotaAndGarbageAreRefusedAndTheNodeKeepsServing) {
     const fs::path dir = tempDir("net-listen-quota");
     // The series is about 5 MB: a 1 MiB quota stops the association within its first objects.
-    Listener node(dir, {"--allow", "SCANNER", "--quota-mb", "1"});
+    ListenProcess node(dir, {"--allow", "SCANNER", "--quota-mb", "1"});
 
     const Finished pushed = node.storescu("SCANNER", series);
     EXPECT_NE(pushed.status, 0) << pushed.output;
@@ -188,7 +145,7 @@ TEST_F(NetListen, AFullStoreRefusesEachObjectAndKeepsNothing) {
            "host = \"ct\"\nreceive = true\n"
            "[[dicom.peers]]\nname = \"pacs\"\naet = \"PACS\"\n"
            "host = \"pacs\"\naddress = \"192.0.2.7\"\nreceive = true\n";
-    Listener node(dir, {"--config", (dir / "node.toml").string()});
+    ListenProcess node(dir, {"--config", (dir / "node.toml").string()});
     const Finished pushed = node.storescu("SCANNER", series / "DCM_IMG_00000.dcm");
     EXPECT_NE(pushed.status, 0) << pushed.output;
     EXPECT_NE(node.log().find("refused object from SCANNER: the store has"), std::string::npos)

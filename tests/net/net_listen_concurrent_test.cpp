@@ -1,0 +1,179 @@
+// Two scanners at once (docs/dicom-network.md, "Several at once"): an association held open by
+// a sender that went silent does not hold up another sender's series; two storescu writing into
+// one series at the same moment both arrive whole; one association past `max_associations` is
+// turned away at once as busy.
+#include "net/net_harness.hpp"
+#include "support/test_data.hpp"
+
+#include <algorithm>
+#include <arpa/inet.h>
+#include <dcmtk/config/osconfig.h> // must come first among DCMTK's headers
+#include <dcmtk/dcmdata/dcfilefo.h>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <thread>
+#include <unistd.h>
+
+namespace steerseg::test {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+// A PDU or item (PS3.8 9.3): type, a reserved byte, the body's length big-endian in `lengthBytes`.
+std::string item(int type, const std::string& body, int lengthBytes = 2) {
+    std::string s{static_cast<char>(type), '\0'};
+    for (int shift = 8 * (lengthBytes - 1); shift >= 0; shift -= 8) {
+        s += static_cast<char>((body.size() >> shift) & 0xff);
+    }
+    return s + body;
+}
+
+// An A-ASSOCIATE-RQ for Verification in implicit little endian (PS3.8 9.3.2).
+std::string associateRequest(const std::string& calling, const std::string& called) {
+    const auto ae = [](std::string a) {
+        a.resize(16, ' ');
+        return a;
+    };
+    const std::string context = std::string("\x01\0\0\0", 4) + item(0x30, "1.2.840.10008.1.1") +
+                                item(0x40, "1.2.840.10008.1.2");
+    const std::string variable = item(0x10, "1.2.840.10008.3.1.1.1") + item(0x20, context) +
+                                 item(0x50, item(0x51, std::string("\0\0\x40\0", 4)));
+    return item(0x01,
+                std::string("\0\x01\0\0", 4) + ae(called) + ae(calling) + std::string(32, '\0') +
+                    variable,
+                4);
+}
+
+// A sender that opens an association and then says nothing: the node has accepted it (the
+// A-ASSOCIATE-AC came back) and waits for its first command.
+class SilentSender {
+  public:
+    SilentSender(int port, const std::string& calling) : fd_(::socket(AF_INET, SOCK_STREAM, 0)) {
+        sockaddr_in addr{};
+        addr.sin_family = AF_INET;
+        addr.sin_port = htons(static_cast<std::uint16_t>(port));
+        addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        if (::connect(fd_, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) {
+            throw std::runtime_error("cannot connect to the node");
+        }
+        const std::string rq = associateRequest(calling, "STEERSEG");
+        ::send(fd_, rq.data(), rq.size(), MSG_NOSIGNAL);
+        char type = 0;
+        timeval wait{10, 0};
+        ::setsockopt(fd_, SOL_SOCKET, SO_RCVTIMEO, &wait, sizeof wait);
+        accepted_ = ::recv(fd_, &type, 1, 0) == 1 && type == 0x02;
+    }
+    ~SilentSender() { ::close(fd_); }
+    SilentSender(const SilentSender&) = delete;
+    SilentSender& operator=(const SilentSender&) = delete;
+    [[nodiscard]] bool accepted() const { return accepted_; }
+
+  private:
+    int fd_;
+    bool accepted_ = false;
+};
+
+// storescu with its own timeouts well below the node's 30 s: a node that served one
+// association at a time would leave it waiting behind the silent one until it failed.
+Finished storescu(int port, const std::string& aet, const std::vector<fs::path>& files,
+                  const fs::path& dir) {
+    std::vector<std::string> argv{
+        "storescu", "-aet", aet,  "-aec",      "STEERSEG",          "-to", "10", "-ta",
+        "10",       "-td",  "10", "127.0.0.1", std::to_string(port)};
+    for (const fs::path& f : files) {
+        argv.push_back(f.string());
+    }
+    return runProgram(argv, dir);
+}
+
+std::vector<fs::path> seriesFiles(const fs::path& series) {
+    std::vector<fs::path> files;
+    for (const auto& e : fs::directory_iterator(series)) {
+        files.push_back(e.path());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+class NetListenConcurrent : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        STEERSEG_REQUIRE_PROGRAM("/usr/bin/storescu", "dcmtk");
+        STEERSEG_REQUIRE_PROGRAM("/usr/bin/echoscu", "dcmtk");
+        STEERSEG_REQUIRE_DATA(folder, "lung-ct-ibsi/dicom/image");
+        series = seriesFiles(folder);
+    }
+    std::vector<fs::path> series;
+};
+
+TEST_F(NetListenConcurrent, ASilentSenderDoesNotHoldUpAnother) {
+    const fs::path dir = tempDir("net-listen-silent");
+    ListenProcess node(dir, {"--allow", "SCANNER", "--allow", "STALLED"});
+    {
+        const SilentSender stalled(node.port, "STALLED");
+        ASSERT_TRUE(stalled.accepted()) << node.log();
+        const auto start = std::chrono::steady_clock::now();
+        const Finished pushed = storescu(node.port, "SCANNER", series, dir);
+        EXPECT_EQ(pushed.status, 0) << pushed.output << node.log();
+        EXPECT_LT(std::chrono::steady_clock::now() - start, 20s);
+        EXPECT_EQ(filesBelow(dir / "store").size(), series.size()) << node.log();
+    }
+    // A stop waits for open associations: the silent one's went with its connection.
+    EXPECT_EQ(node.process->stop(), 0);
+    fs::remove_all(dir);
+}
+
+// Each half of the series from its own scanner at the same moment, into the same series
+// folder: every file whole, no temporary left.
+TEST_F(NetListenConcurrent, TwoSendersIntoOneSeriesBothArriveWhole) {
+    const fs::path dir = tempDir("net-listen-two");
+    ListenProcess node(dir, {"--allow", "CT1", "--allow", "CT2"});
+    const auto half = series.begin() + static_cast<std::ptrdiff_t>(series.size() / 2);
+    Finished first;
+    std::thread other([&] { first = storescu(node.port, "CT1", {series.begin(), half}, dir); });
+    const Finished second = storescu(node.port, "CT2", {half, series.end()}, dir);
+    other.join();
+    EXPECT_EQ(first.status, 0) << first.output;
+    EXPECT_EQ(second.status, 0) << second.output;
+    const std::vector<fs::path> stored = filesBelow(dir / "store");
+    ASSERT_EQ(stored.size(), series.size()) << node.log();
+    EXPECT_EQ(stored.front().parent_path(), stored.back().parent_path());
+    for (const fs::path& f : stored) {
+        DcmFileFormat file;
+        EXPECT_TRUE(file.loadFile(f.c_str()).good()) << f;
+    }
+    EXPECT_EQ(node.process->stop(), 0);
+    fs::remove_all(dir);
+}
+
+// `max_associations = 1` with one association open: the next caller hears "busy" at once
+// (rejected, transient), and is served once the first has gone.
+TEST_F(NetListenConcurrent, OneAssociationPastTheMaximumIsTurnedAwayAsBusy) {
+    const fs::path dir = tempDir("net-listen-busy");
+    std::ofstream(dir / "node.toml") << "[dicom]\nmax_associations = 1\n"
+                                        "[[dicom.peers]]\nname = \"ct\"\naet = \"SCANNER\"\n"
+                                        "host = \"ct\"\nreceive = true\n";
+    ListenProcess node(dir, {"--config", (dir / "node.toml").string()});
+    {
+        const SilentSender stalled(node.port, "SCANNER");
+        ASSERT_TRUE(stalled.accepted()) << node.log();
+        const Finished busy = node.echo("SCANNER");
+        EXPECT_NE(busy.status, 0) << busy.output;
+        EXPECT_TRUE(waitUntil(
+            [&] {
+                return node.log().find("1 association(s) open already (busy)") != std::string::npos;
+            },
+            5s))
+            << node.log();
+    }
+    // The silent one's connection closed: its thread ends and the slot is free again.
+    EXPECT_TRUE(waitUntil([&] { return node.echo("SCANNER").status == 0; }, 10s)) << node.log();
+    EXPECT_EQ(node.process->stop(), 0);
+    fs::remove_all(dir);
+}
+
+} // namespace
+} // namespace steerseg::test

@@ -1,0 +1,110 @@
+#!/usr/bin/env bash
+# The kiosk receiving while it segments (docs/dicom-network.md, "Figures"): SERIES x IMAGES
+# images, synthesised from a real series (each series new study and series UIDs, each image a
+# new SOP instance UID, instance number and position, by dcmodify; nothing is kept), pushed at
+# once by SERIES parallel storescu processes into the kiosk's own Storage SCP while the kiosk
+# runs offscreen on the built-in sample, evolving. Prints the receive MB/s (first push to the
+# last storescu's end) and the kiosk's frame p50/p90 during the receive (its --stats), then the
+# same session for as long without a sender, for the comparison in one run.
+#   tools/bench-dicom-kiosk.sh [SOURCE_SERIES_DIR] [SERIES] [IMAGES] [BINARY]
+set -euo pipefail
+source_dir=${1:-../shared/data/lung-ct-ibsi/dicom/image}
+series=${2:-10}
+images=${3:-200}
+binary=$(realpath "${4:-build/default/steerseg}")
+work=$(mktemp -d)
+kiosk=""
+cleanup() {
+  if [[ -n "$kiosk" ]]; then kill -TERM "$kiosk" 2>/dev/null || true; wait "$kiosk" || true; fi
+  rm -rf "$work"
+}
+trap cleanup EXIT
+
+# The images: source file i % n as image i, at 1 mm steps down from the first's position.
+mapfile -t sources < <(find "$source_dir" -maxdepth 1 -type f | sort)
+read -r x y z < <(dcmdump +P 0020,0032 "${sources[0]}" | sed 's/.*\[\(.*\)\].*/\1/; s/\\/ /g')
+uid() { python3 -c 'import uuid; print("2.25." + str(uuid.uuid4().int))'; }
+for ((s = 0; s < series; s++)); do
+  mkdir -p "$work/in/$s"
+  study=$(uid) serie=$(uid)
+  for ((i = 0; i < images; i++)); do
+    f="$work/in/$s/$(printf '%04d' "$i").dcm"
+    cp "${sources[i % ${#sources[@]}]}" "$f"
+    printf '%s\0' -nb -q -gin -m "(0020,000d)=$study" -m "(0020,000e)=$serie" \
+      -m "(0020,0013)=$((i + 1))" -m "(0020,0032)=$x\\$y\\$((${z%.*} - i))" "$f" \
+      > "$work/args-$s-$i"
+  done
+done
+chmod -R u+w "$work/in"
+find "$work" -maxdepth 1 -name 'args-*' -print0 | xargs -0 -P "$(nproc)" -I{} sh -c 'xargs -0 dcmodify < "$1"' _ {}
+bytes=$(du -sb "$work/in" | cut -f1)
+port=$(python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])')
+
+cat > "$work/kiosk.toml" <<TOML
+[audit]
+path = "$work/audit.jsonl"
+[autosave]
+folder = "$work/autosave"
+[dicom]
+enabled = true
+port = $port
+store = "$work/store"
+outbox = "$work/outbox"
+min_free_mb = 0
+max_associations = $series
+[[dicom.peers]]
+name = "scanner"
+aet = "BENCH"
+host = "127.0.0.1"
+receive = true
+TOML
+# The built-in sample evolving (bench/kiosk/untouched.session's start) until WAIT holds.
+session() {
+  printf '%s\n' "load builtin:sample" "wait loaded timeout 60" "set T 420" "set eps 150" \
+    "set alpha 0.3" "seed 64 84 48 3" "run" "wait state evolving timeout 30" "$1" "quit"
+}
+session "wait until received >= $series timeout 900" > "$work/receive.session"
+run_kiosk() { # NAME SESSION
+  (cd "$work" && "$binary" kiosk --allow-root --platform offscreen --size 800x480 --no-resume \
+    --config "$work/kiosk.toml" --script "$2" --stats "$work/stats-$1.json") > "$work/kiosk-$1.log" 2>&1 &
+  kiosk=$!
+}
+report() { # NAME
+  python3 - "$work/stats-$1.json" "$1" <<'PY'
+import json, sys
+st = json.load(open(sys.argv[1]))
+for kind in ("frames_evolving", "frames_idle"):
+    f = st[kind]
+    if f["count"]:
+        print(f"{sys.argv[2]}: {kind}: {f['count']} frames, p50 {f['p50_ms']:.1f} ms, p90 {f['p90_ms']:.1f} ms")
+PY
+}
+
+run_kiosk receiving "$work/receive.session"
+for _ in $(seq 300); do grep -q "listening as" "$work/kiosk-receiving.log" && break; sleep 0.1; done
+sleep 5 # the sample loaded and evolving
+start=$(date +%s.%N)
+pids=()
+for ((s = 0; s < series; s++)); do
+  storescu -aet BENCH -aec STEERSEG --timeout 600 +sd 127.0.0.1 "$port" "$work/in/$s" > "$work/push-$s.log" 2>&1 &
+  pids+=($!)
+done
+failed=0
+for p in "${pids[@]}"; do wait "$p" || failed=$((failed + 1)); done
+end=$(date +%s.%N)
+wait "$kiosk" || { tail -n 20 "$work/kiosk-receiving.log" >&2; exit 1; }
+kiosk=""
+stored=$(find "$work/store" -type f -name '*.dcm' | wc -l)
+python3 -c "
+import sys
+start, end, size = $start, $end, $bytes
+print(f'receive: $series series x $images images pushed at once into the kiosk: $stored/$((series * images)) stored, $failed storescu failed, {size / 1e6:.1f} MB in {end - start:.1f} s = {size / 1e6 / (end - start):.2f} MB/s')
+"
+report receiving
+seconds=$(python3 -c "print(round($end - $start))")
+session "wait seconds $seconds" > "$work/quiet.session"
+run_kiosk quiet "$work/quiet.session"
+wait "$kiosk" || { tail -n 20 "$work/kiosk-quiet.log" >&2; exit 1; }
+kiosk=""
+report quiet
+echo "load average: $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores, $(date -u +%F)"
