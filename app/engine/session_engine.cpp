@@ -24,8 +24,6 @@ struct SessionEngine::PendingLoad {
 
 namespace {
 
-constexpr auto kVolumeRefresh = std::chrono::milliseconds(500);
-
 bool endsWith(const std::string& s, const std::string& tail) {
     return s.size() > tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
@@ -156,7 +154,7 @@ workflow::LoadPoll SessionEngine::pollLoad() {
         info_.sliceCount[static_cast<int>(axis)] =
             scan.dims()[render::sliceAxisFor(scan.geometry(), viewKindOf(axis))];
     }
-    volumeMl_.reset();
+    insideCounted_.reset();
     changed();
     ++attached_;
     poll.kind = workflow::LoadPoll::Ready;
@@ -198,13 +196,13 @@ model::SolverOptions consoleSolverOptions() {
 
 void SessionEngine::addSeed(const model::Sphere& sphere) {
     requireSession().addSeed(sphere);
-    volumeMl_.reset();
+    insideCounted_.reset();
     changed();
 }
 
 void SessionEngine::erase(const model::Sphere& sphere) {
     requireSession().erase(sphere);
-    volumeMl_.reset();
+    insideCounted_.reset();
     changed();
 }
 
@@ -212,8 +210,9 @@ bool SessionEngine::addBarrier(const model::Barrier& barrier) {
     if (barriers_.size() >= model::kMaxBarriers) {
         return false;
     }
-    requireSession().addBarrier(barrier);
+    requireSession().addBarrier(barrier); // cuts or fills its sphere
     barriers_.push_back(barrier);
+    insideCounted_.reset();
     changed();
     return true;
 }
@@ -232,12 +231,13 @@ void SessionEngine::setBarriers(const std::vector<model::Barrier>& barriers) {
         s.addBarrier(b);
         barriers_.push_back(b);
     }
+    insideCounted_.reset();
 }
 
 void SessionEngine::clearLevelSet() {
     setBarriers({});
     requireSession().clearLevelSet();
-    volumeMl_.reset();
+    insideCounted_.reset();
     changed();
 }
 
@@ -311,28 +311,35 @@ model::SolverStats SessionEngine::stats() const {
 }
 
 double SessionEngine::volumeMl() const {
-    if (volumeMl_ && std::chrono::steady_clock::now() - volumeAt_ < kVolumeRefresh) {
-        return *volumeMl_;
+    if (!session_ || !session_->hasLevelSet()) {
+        return 0.0;
     }
-    return exactVolumeMl();
+    if (!insideCounted_) {
+        return exactVolumeMl();
+    }
+    // The steps' counts are taken at the pool checks: the figure lags the front by at most one
+    // check's growth, and a count taken between checks may be off by that much until the next
+    // exact one (a pause, an edit).
+    return millilitres(*insideCounted_ + session_->stats().netGained - netAtCount_);
 }
 
 double SessionEngine::exactVolumeMl() const {
     if (!session_ || !session_->hasLevelSet()) {
         return 0.0;
     }
-    const auto now = std::chrono::steady_clock::now();
-    if (volumeMl_ && volumeVersion_ == version_) {
-        return *volumeMl_;
+    if (insideCounted_ && volumeVersion_ == version_) {
+        return millilitres(*insideCounted_);
     }
     const std::vector<std::uint8_t> mask = session_->mask();
-    const auto inside = static_cast<double>(
-        std::count_if(mask.begin(), mask.end(), [](std::uint8_t v) { return v != 0; }));
-    const glm::dvec3 s = session_->scan().geometry().spacing;
-    volumeMl_ = inside * s.x * s.y * s.z / 1000.0;
+    insideCounted_ = std::count_if(mask.begin(), mask.end(), [](std::uint8_t v) { return v != 0; });
+    netAtCount_ = session_->stats().netGained;
     volumeVersion_ = version_;
-    volumeAt_ = now;
-    return *volumeMl_;
+    return millilitres(*insideCounted_);
+}
+
+double SessionEngine::millilitres(std::int64_t voxels) const {
+    const glm::dvec3 s = requireSession().scan().geometry().spacing;
+    return static_cast<double>(std::max<std::int64_t>(voxels, 0)) * s.x * s.y * s.z / 1000.0;
 }
 
 workflow::SnapshotId SessionEngine::snapshot() {
@@ -352,7 +359,7 @@ void SessionEngine::restore(workflow::SnapshotId id) {
     } else {
         requireSession().setMask(decodeRuns(it->second.mask));
     }
-    volumeMl_.reset();
+    insideCounted_.reset();
     changed();
 }
 
@@ -363,7 +370,7 @@ void SessionEngine::setMask(const MaskRuns& mask) {
     } else {
         requireSession().setMask(decodeRuns(mask));
     }
-    volumeMl_.reset();
+    insideCounted_.reset();
     changed();
 }
 

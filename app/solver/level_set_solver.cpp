@@ -302,6 +302,7 @@ std::optional<model::LeakSite> LevelSetSolver::watchGrowth(ControlBlock& ctrl) {
             glm::ivec3(static_cast<int>(ctrl.gainHi[0]), static_cast<int>(ctrl.gainHi[1]),
                        static_cast<int>(ctrl.gainHi[2]));
     }
+    stats_.netGained += sample.net;
     const FrontCheck check{sample.iteration, sample.time,   ctrl.gained,  ctrl.lost,
                            ctrl.frontVoxels, sample.gainLo, sample.gainHi};
     if (checkObserver_) {

@@ -99,6 +99,32 @@ TEST_F(KioskEngine, FillsTheClassifySpeedAheadInPieces) {
     EXPECT_FALSE(engine.fillSpeedAhead(0.01));
 }
 
+TEST_F(KioskEngine, TheVolumeWhileTheFrontMovesFollowsTheStepsCounts) {
+    SessionEngine engine;
+    engine.beginLoad("builtin:sample");
+    ASSERT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
+    const PhantomLesion lesion = kPhantomLesion;
+    const glm::vec3 centre(lesion.i, lesion.j, lesion.k);
+    engine.addSeed({centre, 3.0F});
+    engine.setParams({static_cast<float>(lesion.intensity), 190.0F, 0.8F});
+    const double seeded = engine.volumeMl(); // the exact count the running one starts from
+    const int interval = engine.session()->options().checkInterval;
+    double last = seeded;
+    for (int n = 0; n < 6; ++n) {
+        // Whole check intervals: the steps' counts are all in (SolverStats::netGained).
+        engine.step(4 * interval);
+        const double running = engine.volumeMl();
+        const double exact = engine.exactVolumeMl();
+        EXPECT_NEAR(running, exact, 1e-9) << "after " << (n + 1) * 4 * interval << " iterations";
+        // exactVolumeMl recounted: the next running figure starts from this count.
+        EXPECT_GE(exact, last);
+        last = exact;
+    }
+    EXPECT_GT(last, 4.0 * seeded); // the front grew: the counts had something to follow
+    engine.erase({centre, 4.0F});
+    EXPECT_LT(engine.volumeMl(), last); // an edit counts again at once
+}
+
 TEST_F(KioskEngine, LoadsSeedsStepsUndoesAndExports) {
     SessionEngine engine;
     engine.beginLoad("builtin:sample");
