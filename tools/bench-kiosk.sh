@@ -107,18 +107,26 @@ renderer=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1])).get("
   "$out/gpu-info.json")
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
 started=$(date +%s)
-for s in "${size_list[@]}"; do
-  echo "bench-kiosk: $s: $bin kiosk --script ${session#"$root"/}" | tee -a "$log" >&2
-  rm -f "$out/stats-$s.json"
-  # The kiosk runs as root in containers and CI; the session ends it (a wait has a timeout).
-  # From the output folder: the kiosk's audit log (steerseg-export/) goes there, not into the
-  # checkout.
-  if ! (cd "$out" && "$bin" kiosk --platform offscreen --script "$session" --frames "$out/frames-$s" \
-    --size "$s" --stats "$out/stats-$s.json" --allow-root >>"$log" 2>&1); then
+# One run of the whole kiosk, offscreen: run_kiosk NAME SESSION SIZE [KIOSK ARGS...] writes
+# stats-NAME.json and frames-NAME/ to the output folder. The kiosk runs as root in containers
+# and CI; the session ends it (a wait has a timeout). From the output folder: the kiosk's audit
+# log (steerseg-export/) goes there, not into the checkout.
+run_kiosk() {
+  local name=$1 script=$2 size=$3
+  shift 3
+  echo "bench-kiosk: $size: $bin kiosk $* --script ${script#"$root"/}" | tee -a "$log" >&2
+  rm -f "$out/stats-$name.json"
+  if ! (cd "$out" && "$bin" kiosk --platform offscreen "$@" --script "$script" \
+    --frames "$out/frames-$name" --size "$size" --stats "$out/stats-$name.json" --allow-root \
+    >>"$log" 2>&1); then
     tail -n 20 "$log" >&2
-    echo "bench-kiosk: the kiosk failed at $s (log: $log)" >&2
+    echo "bench-kiosk: the kiosk failed on ${script##*/} at $size (log: $log)" >&2
     exit 1
   fi
+}
+
+for s in "${size_list[@]}"; do
+  run_kiosk "$s" "$session" "$s"
 done
 
 # The ratios (see the top): the kiosk and its parts on the same scan, in this run.
@@ -126,13 +134,7 @@ ratios=""
 if ((!small)); then
   s=${size_list[0]}
   for name in untouched still; do
-    echo "bench-kiosk: $s: $bin kiosk --script bench/kiosk/$name.session" | tee -a "$log" >&2
-    if ! (cd "$out" && "$bin" kiosk --platform offscreen --script "$root/bench/kiosk/$name.session" \
-      --frames "$out/frames-$name" --size "$s" --stats "$out/stats-$name.json" --allow-root >>"$log" 2>&1); then
-      tail -n 20 "$log" >&2
-      echo "bench-kiosk: the kiosk failed on $name.session (log: $log)" >&2
-      exit 1
-    fi
+    run_kiosk "$name" "$root/bench/kiosk/$name.session" "$s"
   done
   n=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["iterations"])' "$out/stats-untouched.json")
   echo "bench-kiosk: $bin segment, $n iterations" | tee -a "$log" >&2
@@ -170,13 +172,7 @@ start = evolve.index("wait state evolving timeout 30") + 1
     setup + ["wait seconds 10", "pause", "wait state paused timeout 60", "quit"]) + "\n")
 EOF
   for name in scan-untouched scan-evolve; do
-    echo "bench-kiosk: $s: $bin kiosk --scan $scan --script $name.session" | tee -a "$log" >&2
-    if ! (cd "$out" && "$bin" kiosk --platform offscreen --scan "$scan" --script "$out/$name.session" \
-      --frames "$out/frames-$name" --size "$s" --stats "$out/stats-$name.json" --allow-root >>"$log" 2>&1); then
-      tail -n 20 "$log" >&2
-      echo "bench-kiosk: the kiosk failed on $name.session (log: $log)" >&2
-      exit 1
-    fi
+    run_kiosk "$name" "$out/$name.session" "$s" --scan "$scan"
   done
   n=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["iterations"])' "$out/stats-scan-untouched.json")
   echo "bench-kiosk: $bin segment --input $scan, $n iterations" | tee -a "$log" >&2
