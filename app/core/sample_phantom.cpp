@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <glm/geometric.hpp>
+#include <vector>
 
 namespace steerseg {
 
@@ -75,7 +76,21 @@ Volume makeSamplePhantom() {
     // at a time, which the 3D view draws as terraces and rings and the level set follows into
     // facets. Voxels whose corners disagree are averaged over 4 x 4 x 4 points.
     constexpr int kSub = 4;
-    const glm::dvec3 half = 0.5 * g.spacing;
+    // The tissue at every voxel corner, once: neighbouring voxels share them.
+    const glm::ivec3 corners = g.dims + 1;
+    std::vector<double> corner(static_cast<std::size_t>(corners.x) * corners.y * corners.z);
+    for (int k = 0; k < corners.z; ++k) {
+        for (int j = 0; j < corners.y; ++j) {
+            for (int i = 0; i < corners.x; ++i) {
+                const glm::dvec3 p = (glm::dvec3(i, j, k) - 0.5) * g.spacing;
+                corner[(static_cast<std::size_t>(k) * corners.y + j) * corners.x + i] =
+                    tissue(p.x, p.y, p.z);
+            }
+        }
+    }
+    const auto cornerAt = [&](int i, int j, int k) {
+        return corner[(static_cast<std::size_t>(k) * corners.y + j) * corners.x + i];
+    };
     for (int k = 0; k < g.dims.z; ++k) {
         // Work in mm so the shapes are round in the world, not in voxels.
         const double z = k * g.spacing.z;
@@ -85,16 +100,14 @@ Volume makeSamplePhantom() {
                 const double x = i * g.spacing.x;
                 double value = tissue(x, y, z);
                 bool boundary = false;
-                for (int c = 0; c < 8 && !boundary; ++c) {
-                    boundary =
-                        tissue(x + ((c & 1) ? half.x : -half.x), y + ((c & 2) ? half.y : -half.y),
-                               z + ((c & 4) ? half.z : -half.z)) != value;
+                for (int n = 0; n < 8 && !boundary; ++n) {
+                    boundary = cornerAt(i + (n & 1), j + ((n >> 1) & 1), k + (n >> 2)) != value;
                 }
                 if (boundary) {
                     double sum = 0.0;
-                    for (int c = 0; c < kSub * kSub * kSub; ++c) {
+                    for (int s = 0; s < kSub * kSub * kSub; ++s) {
                         const glm::dvec3 f =
-                            (glm::dvec3(c % kSub, (c / kSub) % kSub, c / (kSub * kSub)) + 0.5) /
+                            (glm::dvec3(s % kSub, (s / kSub) % kSub, s / (kSub * kSub)) + 0.5) /
                                 double(kSub) -
                             0.5;
                         sum += tissue(x + f.x * g.spacing.x, y + f.y * g.spacing.y,
