@@ -117,8 +117,7 @@ void sendExported(const SendTarget& target, const std::string& output,
     workflow::AuditLog audit(target.config.audit.path);
     net::Outbox outbox = configuredOutbox(dicom, audit);
     const std::string id = outbox.enqueue(output, target.peer);
-    net::SendOptions options;
-    options.callingAet = dicom.aet;
+    const net::SendOptions options = kiosk::sendOptions(dicom);
     std::optional<net::SendOutcome> outcome;
     outbox.deliverDue([&](const std::string& name) { return sendPeer(dicom, name); }, options,
                       [&](const net::OutboxEntry& e, const net::SendOutcome& o) {

@@ -28,7 +28,7 @@ void printLine(const std::string& line) {
 } // namespace
 
 int runListen(std::span<const std::string> words) {
-    const Args args(words, {"config", "aet", "port", "store", "allow", "quota-mb"}, {});
+    const Args args(words, {"config", "aet", "port", "store", "allow", "quota-mb"}, {"tls"});
     const net::ScpSettings settings = listenSettings(args, nodeConfig(args).dicom);
     net::StorageScp scp(settings, printLine);
     scp.open();
@@ -38,7 +38,7 @@ int runListen(std::span<const std::string> words) {
     sigaction(SIGTERM, &action, nullptr);
     sigaction(SIGINT, &action, nullptr);
     printLine("listening as " + settings.aet + " on port " + std::to_string(settings.port) +
-              ", storing into " + settings.store.string());
+              (settings.tls ? " (TLS)" : "") + ", storing into " + settings.store.string());
     scp.serve(stopRequested);
     printLine("stopped");
     return kExitOk;

@@ -26,7 +26,7 @@ int sendDirect(const Args& args, const config::KioskConfig& cfg,
     if (files.empty()) {
         throw UsageError("give the DICOM files to send");
     }
-    net::SendOptions options;
+    net::SendOptions options = kiosk::sendOptions(cfg.dicom);
     options.callingAet = ownAeTitle(args, cfg.dicom);
     const auto outcomes = net::sendFiles(peer, files, options);
     int failed = 0;
@@ -73,7 +73,7 @@ int sendThroughOutbox(const Args& args, const config::KioskConfig& cfg,
     for (const auto& file : files) {
         std::printf("queued %s as %s\n", file.c_str(), outbox.enqueue(file, target).c_str());
     }
-    net::SendOptions options;
+    net::SendOptions options = kiosk::sendOptions(dicom);
     options.callingAet = ownAeTitle(args, dicom);
     const auto report = [](const net::OutboxEntry& e, const net::SendOutcome& o) {
         if (o.accepted) {
@@ -112,7 +112,7 @@ int sendThroughOutbox(const Args& args, const config::KioskConfig& cfg,
 
 int runSend(std::span<const std::string> words) {
     const Args args(words, {"to", "host", "port", "called-aet", "aet", "config", "wait"},
-                    {"outbox"});
+                    {"outbox", "tls"});
     const config::KioskConfig cfg = nodeConfig(args);
     const std::vector<std::filesystem::path> files(args.positional().begin(),
                                                    args.positional().end());

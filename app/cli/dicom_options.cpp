@@ -23,6 +23,16 @@ int checkedPort(const Args& args, const std::string& name) {
     return static_cast<int>(port);
 }
 
+// --tls: over the config's certificate, key and CAs, which it cannot do without.
+net::TlsSettings requiredTls(const config::DicomConfig& dicom) {
+    const net::TlsSettings tls = kiosk::tlsSettings(dicom);
+    if (!tls.complete()) {
+        throw UsageError("--tls needs [dicom] tls_certificate, tls_private_key and "
+                         "tls_ca_certificates in the config");
+    }
+    return tls;
+}
+
 } // namespace
 
 net::DicomPeer requireSendPeer(const config::DicomConfig& dicom, const std::string& name) {
@@ -55,6 +65,9 @@ net::DicomPeer sendTarget(const Args& args, const config::DicomConfig& dicom) {
         if (direct) {
             throw UsageError("give --to PEER or --host, --port and --called-aet, not both");
         }
+        if (args.flag("tls")) {
+            throw UsageError("--tls goes with --host: a peer's tls is in its [[dicom.peers]]");
+        }
         return requireSendPeer(dicom, *name);
     }
     if (!direct) {
@@ -64,6 +77,10 @@ net::DicomPeer sendTarget(const Args& args, const config::DicomConfig& dicom) {
     peer.host = args.required("host");
     peer.port = checkedPort(args, "port");
     peer.aet = checkedAeTitle(args.required("called-aet"), "--called-aet");
+    if (args.flag("tls")) {
+        requiredTls(dicom);
+        peer.tls = true;
+    }
     return peer;
 }
 
@@ -94,6 +111,9 @@ net::ScpSettings listenSettings(const Args& args, const config::DicomConfig& dic
     }
     if (s.allowed.empty()) {
         throw UsageError("nobody may send: give --allow AE or [[dicom.peers]] with receive = true");
+    }
+    if (args.flag("tls")) {
+        s.tls = requiredTls(dicom);
     }
     return s;
 }

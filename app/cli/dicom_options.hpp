@@ -18,14 +18,15 @@ namespace steerseg::cli {
 // UsageError naming its place, so the node never runs on half a configuration.
 config::KioskConfig nodeConfig(const Args& args);
 
-// --to PEER (a [[dicom.peers]] name with send = true) or --host H --port N --called-aet AE.
+// --to PEER (a [[dicom.peers]] name with send = true) or --host H --port N --called-aet AE
+// [--tls].
 net::DicomPeer sendTarget(const Args& args, const config::DicomConfig& dicom);
 
 // --aet, else [dicom] aet.
 std::string ownAeTitle(const Args& args, const config::DicomConfig& dicom);
 
-// --aet, --port, --store, --allow AE[@ADDRESS] ..., --quota-mb over [dicom]; with no --allow,
-// the peers with receive = true.
+// --aet, --port, --store, --allow AE[@ADDRESS] ..., --quota-mb, --tls over [dicom]; with no
+// --allow, the peers with receive = true.
 net::ScpSettings listenSettings(const Args& args, const config::DicomConfig& dicom);
 
 // The [[dicom.peers]] entry named `name` with send = true, as an address; nullopt if none.

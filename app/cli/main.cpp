@@ -74,7 +74,8 @@ constexpr Command kCommands[] = {
      "actions, record raw streams, or decode a recording (docs/input-devices.md)",
      steerseg::cli::runInputMonitor},
     {"send",
-     "send (--to PEER | --host H --port N --called-aet AE) [--aet AE] [--config FILE] FILE... | "
+     "send (--to PEER | --host H --port N --called-aet AE [--tls]) [--aet AE] [--config FILE] "
+     "FILE... | "
      "send --outbox [--to PEER FILE...] [--wait S] [--config FILE]: C-STORE each DICOM file to a "
      "peer, one line per file, status 0 only when the peer accepted every one; --outbox queues "
      "them in the persistent outbox and delivers what is due, retrying for S seconds, status 0 "
@@ -82,9 +83,10 @@ constexpr Command kCommands[] = {
      steerseg::cli::runSend},
     {"listen",
      "listen [--config FILE] [--aet AE] [--port N] [--store DIR] [--allow AE[@ADDRESS] ...] "
-     "[--quota-mb N]: the DICOM Storage SCP in the foreground until SIGTERM, filing what the "
+     "[--quota-mb N] [--tls]: the DICOM Storage SCP in the foreground until SIGTERM, filing what "
+     "the "
      "allowed callers send into DIR/<study>/<series>/; with no --allow, the [[dicom.peers]] "
-     "with receive = true",
+     "with receive = true; --tls: TLS only, with [dicom]'s certificate",
      steerseg::cli::runListen},
 };
 

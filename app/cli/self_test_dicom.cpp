@@ -1,6 +1,7 @@
 #include "cli/self_test_dicom.hpp"
 
 #include "net/store_scu.hpp"
+#include "net/tls_context.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -33,6 +34,16 @@ CheckResult checkPort(int port) {
     return r;
 }
 
+// The files load as the node will load them: certificate and key, matching, and the CAs.
+CheckResult checkTls(const net::TlsSettings& tls) {
+    try {
+        const net::TlsContext context(tls, net::TlsRole::Acceptor);
+        return {"dicom tls", CheckLevel::Ok, context.summary() + "; the key matches", {}};
+    } catch (const net::TlsError& e) {
+        return {"dicom tls", CheckLevel::Fail, e.what(), {}};
+    }
+}
+
 } // namespace
 
 std::vector<CheckResult> checkDicomNode(const config::DicomConfig& dicom) {
@@ -46,8 +57,13 @@ std::vector<CheckResult> checkDicomNode(const config::DicomConfig& dicom) {
     net::SendOptions options;
     options.callingAet = dicom.aet;
     options.timeoutSeconds = 5;
+    options.tls = {dicom.tlsCertificate, dicom.tlsPrivateKey, dicom.tlsCaCertificates};
+    if (!dicom.tlsCertificate.empty() || !dicom.tlsPrivateKey.empty() ||
+        !dicom.tlsCaCertificates.empty()) {
+        results.push_back(checkTls(options.tls));
+    }
     for (const auto& peer : dicom.peers) {
-        const std::string problem = net::echo({peer.aet, peer.host, peer.port}, options);
+        const std::string problem = net::echo({peer.aet, peer.host, peer.port, peer.tls}, options);
         results.push_back({"dicom peer " + peer.name,
                            problem.empty() ? CheckLevel::Ok : CheckLevel::Warn,
                            problem.empty() ? peer.aet + " answers C-ECHO" : problem,

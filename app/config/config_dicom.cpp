@@ -1,10 +1,11 @@
 // [dicom] and its [[dicom.peers]]: the DICOM node's own AE title and port, its incoming store
-// and outbox, and the peers it takes from and sends to (docs/dicom-network.md).
+// and outbox, the peers it takes from and sends to, and its TLS files (docs/dicom-network.md).
 #include "config/config_sections.hpp"
 #include "config/key_names.hpp"
 #include "model/ae_title.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace steerseg::config::detail {
 namespace {
@@ -76,6 +77,9 @@ bool readPeer(TableReader& t, DicomPeerConfig& peer) {
     }
     if (auto v = t.boolean("send")) {
         peer.send = *v;
+    }
+    if (auto v = t.boolean("tls")) {
+        peer.tls = *v;
     }
     if (good && !peer.receive && !peer.send) {
         t.sink().add(t.source().source(), t.path("receive"),
@@ -154,12 +158,23 @@ void readDicom(TableReader& t, DicomConfig& d) {
     if (auto v = t.number("retry_longest_seconds", {0.0, 86400.0, true})) {
         d.retryLongestSeconds = *v;
     }
+    // "" = none; whether the files are there is checkDicomTls's, on the whole configuration.
+    for (const auto& [key, path] : {std::pair{"tls_certificate", &d.tlsCertificate},
+                                    std::pair{"tls_private_key", &d.tlsPrivateKey},
+                                    std::pair{"tls_ca_certificates", &d.tlsCaCertificates}}) {
+        if (auto v = t.text(key)) {
+            *path = *v;
+        }
+    }
+    if (auto v = t.boolean("tls_receive")) {
+        d.tlsReceive = *v;
+    }
     if (t.has("tls")) {
-        // Read so that it is not reported as unknown, and refused: a site that asks for TLS
-        // must not get a node that silently speaks in clear.
+        // Read so that it is not reported as merely unknown: the key a site would guess.
         t.boolean("tls");
-        t.problem("tls", "TLS is not supported yet (docs/dicom-network.md); remove the key or "
-                         "set up a TLS tunnel in front of the node");
+        t.problem("tls", "TLS is set per peer (tls = true in [[dicom.peers]]) and for the port "
+                         "(tls_receive), with tls_certificate, tls_private_key and "
+                         "tls_ca_certificates");
     }
     if (const toml::array* peers = t.array("peers")) {
         readPeers(*peers, d.peers, t.sink());

@@ -283,6 +283,7 @@ void checkRelations(const KioskConfig& config, const toml::table& root, ProblemS
                      ") is above max_iterations (" + std::to_string(config.frame.maxIterations) +
                      ")");
     }
+    checkDicomTls(config.dicom, root, sink);
 }
 
 } // namespace steerseg::config::detail

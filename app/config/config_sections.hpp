@@ -18,6 +18,9 @@ void readExport(TableReader& table, ExportConfig& exports);
 void readAudit(TableReader& table, AuditConfig& audit);
 void readAutosave(TableReader& table, AutosaveConfig& autosave);
 void readDicom(TableReader& table, DicomConfig& dicom); // with its [[dicom.peers]]
+// The TLS keys of [dicom] and its peers: each named file there and a PEM of its kind, and TLS
+// asked for only with the node's certificate, key and CAs (config_dicom_tls).
+void checkDicomTls(const DicomConfig& dicom, const toml::table& root, ProblemSink& sink);
 
 // [[preset]]: an entry whose name is already a preset changes the fields it gives; a new name
 // appends a preset and must give every field.

@@ -169,6 +169,7 @@ struct DicomPeerConfig {
     std::string address; // receive: the caller's IP address to insist on, "" = any
     bool receive = false;
     bool send = false;
+    bool tls = false; // sent to, and calling in, over TLS only
     bool operator==(const DicomPeerConfig&) const = default;
 };
 
@@ -184,6 +185,12 @@ struct DicomConfig {
     int maxAssociations = 4;            // served at once; one more is rejected as busy
     double retryFirstSeconds = 5.0;     // the outbox's delay after a failed send ...
     double retryLongestSeconds = 300.0; // ... doubled after each further one up to this
+    // TLS (docs/dicom-network.md): the node's certificate and unencrypted private key (PEM), the
+    // CA certificates it trusts (a PEM file or a folder of them); "" = none.
+    std::filesystem::path tlsCertificate;
+    std::filesystem::path tlsPrivateKey;
+    std::filesystem::path tlsCaCertificates;
+    bool tlsReceive = false; // the port speaks TLS only; the receive peers need tls = true
     std::vector<DicomPeerConfig> peers; // a file's [[dicom.peers]] replaces the list
     bool operator==(const DicomConfig&) const = default;
 };

@@ -18,13 +18,27 @@ net::ScpSettings scpSettings(const config::DicomConfig& dicom) {
             s.allowed.push_back({peer.aet, peer.address});
         }
     }
+    if (dicom.tlsReceive) {
+        s.tls = tlsSettings(dicom);
+    }
     return s;
+}
+
+net::TlsSettings tlsSettings(const config::DicomConfig& dicom) {
+    return {dicom.tlsCertificate, dicom.tlsPrivateKey, dicom.tlsCaCertificates};
+}
+
+net::SendOptions sendOptions(const config::DicomConfig& dicom) {
+    net::SendOptions options;
+    options.callingAet = dicom.aet;
+    options.tls = tlsSettings(dicom);
+    return options;
 }
 
 std::optional<net::DicomPeer> sendPeer(const config::DicomConfig& dicom, const std::string& name) {
     for (const auto& p : dicom.peers) {
         if (p.name == name && p.send) {
-            return net::DicomPeer{p.aet, p.host, p.port};
+            return net::DicomPeer{p.aet, p.host, p.port, p.tls};
         }
     }
     return std::nullopt;

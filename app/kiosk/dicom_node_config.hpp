@@ -7,6 +7,8 @@
 #include "net/dicom_peer.hpp"
 #include "net/outbox.hpp"
 #include "net/store_scp.hpp"
+#include "net/store_scu.hpp"
+#include "net/tls_context.hpp"
 
 #include <optional>
 #include <string>
@@ -15,7 +17,7 @@
 namespace steerseg::kiosk {
 
 // Own AE title, port, store, quotas, retention, and the peers with receive = true as the
-// callers allowed (each pinned to its `address` where given).
+// callers allowed (each pinned to its `address` where given); TLS only with tls_receive.
 net::ScpSettings scpSettings(const config::DicomConfig& dicom);
 
 // The [[dicom.peers]] entry named `name` with send = true, as an address; nullopt if none.
@@ -23,6 +25,12 @@ std::optional<net::DicomPeer> sendPeer(const config::DicomConfig& dicom, const s
 
 // The names of the peers with send = true, in the config's order: where exports go.
 std::vector<std::string> sendPeerNames(const config::DicomConfig& dicom);
+
+// The node's certificate, private key and trusted CAs.
+net::TlsSettings tlsSettings(const config::DicomConfig& dicom);
+
+// Own AE title as the calling one, and the TLS credentials for the peers with tls = true.
+net::SendOptions sendOptions(const config::DicomConfig& dicom);
 
 // retry_first_seconds and retry_longest_seconds.
 net::OutboxBackoff outboxBackoff(const config::DicomConfig& dicom);

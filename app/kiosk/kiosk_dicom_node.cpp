@@ -55,7 +55,7 @@ DicomNode::DicomNode(const config::DicomConfig& dicom) : dicom_(dicom) {
             });
         scp_->open();
         say("listening as " + dicom_.aet + " on port " + std::to_string(dicom_.port) +
-            ", storing into " + dicom_.store.string());
+            (dicom_.tlsReceive ? " (TLS)" : "") + ", storing into " + dicom_.store.string());
         scpThread_ = std::thread([this] { scp_->serve(stop_); });
     } catch (const std::exception& e) {
         // The kiosk goes on: the operator can still load folders and export to files.
@@ -181,8 +181,7 @@ void DicomNode::listStore(std::vector<fs::path>& complete, bool first) {
 }
 
 void DicomNode::drain(net::Outbox& outbox) {
-    net::SendOptions options;
-    options.callingAet = dicom_.aet;
+    net::SendOptions options = sendOptions(dicom_);
     options.timeoutSeconds = kSendTimeoutSeconds;
     outbox.deliverDue(
         [this](const std::string& name) { return sendPeer(dicom_, name); }, options,

@@ -17,12 +17,18 @@ AssociationPool::~AssociationPool() {
     }
 }
 
-void AssociationPool::open() {
-    const OFCondition c =
-        ASC_initializeNetwork(NET_ACCEPTOR, port_, acseTimeoutSeconds_, &network_);
+void AssociationPool::open(DcmTransportLayer* tls) {
+    OFCondition c = ASC_initializeNetwork(NET_ACCEPTOR, port_, acseTimeoutSeconds_, &network_);
     if (c.bad()) {
         network_ = nullptr;
         throw std::runtime_error(c.text());
+    }
+    if (tls != nullptr) {
+        c = ASC_setTransportLayer(network_, tls, 0);
+        if (c.bad()) {
+            throw std::runtime_error(std::string("TLS: ") + c.text());
+        }
+        secure_ = true;
     }
 }
 
@@ -38,7 +44,7 @@ void AssociationPool::reap(bool all) {
 }
 
 void AssociationPool::serve(const std::atomic<bool>& stop, const Serve& serve, const Busy& busy,
-                            const Idle& idle) {
+                            const Idle& idle, const Refused& refused) {
     while (!stop) {
         reap(false);
         if (workers_.empty()) {
@@ -46,13 +52,17 @@ void AssociationPool::serve(const std::atomic<bool>& stop, const Serve& serve, c
         }
         T_ASC_Association* assoc = nullptr;
         // Waits a second for a connection; the request is then read within the ACSE timeout.
-        const OFCondition c = ASC_receiveAssociation(network_, &assoc, ASC_DEFAULTMAXPDU, nullptr,
-                                                     nullptr, OFFalse, DUL_NOBLOCK, 1);
+        const OFCondition c =
+            ASC_receiveAssociation(network_, &assoc, ASC_DEFAULTMAXPDU, nullptr, nullptr,
+                                   secure_ ? OFTrue : OFFalse, DUL_NOBLOCK, 1);
         if (c.bad()) {
-            // No connection within the second, or bytes that are no association request: that
-            // connection ends, the node goes on.
+            // No connection within the second, a failed TLS handshake, or bytes that are no
+            // association request: that connection ends, the node goes on.
             if (c != DUL_NOASSOCIATIONREQUEST) {
                 ASC_dropAssociation(assoc);
+                if (secure_) {
+                    refused(c.text());
+                }
             }
             ASC_destroyAssociation(&assoc);
             continue;

@@ -9,6 +9,7 @@
 #include <string>
 #include <thread>
 
+class DcmTransportLayer;
 struct T_ASC_Association;
 struct T_ASC_Network;
 
@@ -23,18 +24,22 @@ class AssociationPool {
     using Busy = std::function<void(const std::string& callingAet, const std::string& address)>;
     // Once a second while no association is open (retention runs there).
     using Idle = std::function<void()>;
+    // A TLS connection that ended before its association request (its certificate refused, or
+    // no TLS at all), with DCMTK's reason.
+    using Refused = std::function<void(const std::string& why)>;
 
     AssociationPool(int port, int acseTimeoutSeconds, int max);
     ~AssociationPool(); // joins the threads left (serve() normally has)
     AssociationPool(const AssociationPool&) = delete;
     AssociationPool& operator=(const AssociationPool&) = delete;
 
-    // Binds the port; throws std::runtime_error with DCMTK's reason when it cannot.
-    void open();
+    // Binds the port; throws std::runtime_error with DCMTK's reason when it cannot. With `tls`
+    // (not owned; it must outlive the pool) every connection is TLS.
+    void open(DcmTransportLayer* tls = nullptr);
     // Until `stop` becomes true (checked at least once a second); then joins the associations'
     // threads, each ending by itself (its peer's release or abort, or the DIMSE timeout).
     void serve(const std::atomic<bool>& stop, const Serve& serve, const Busy& busy,
-               const Idle& idle);
+               const Idle& idle, const Refused& refused);
 
   private:
     struct Worker {
@@ -47,6 +52,7 @@ class AssociationPool {
     int acseTimeoutSeconds_;
     int max_;
     T_ASC_Network* network_ = nullptr;
+    bool secure_ = false;
     std::list<Worker> workers_;
 };
 

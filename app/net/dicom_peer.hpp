@@ -9,6 +9,7 @@ struct DicomPeer {
     std::string aet;
     std::string host;
     int port = 104;
+    bool tls = false; // the association runs over TLS (net/tls_context)
 };
 
 // "AE@host:port", for one-line messages.

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <dcmtk/config/osconfig.h> // must come first among DCMTK's headers
+#include <dcmtk/dcmnet/dcmtrans.h>
 #include <dcmtk/dcmnet/dul.h>
 #include <system_error>
 
@@ -35,8 +36,15 @@ class StorageScp::Impl {
                            ec.message());
         }
         prune();
+        if (settings_.tls) {
+            try {
+                tls_ = std::make_unique<TlsContext>(*settings_.tls, TlsRole::Acceptor);
+            } catch (const TlsError& e) {
+                throw ScpError(std::string("cannot listen with TLS: ") + e.what());
+            }
+        }
         try {
-            pool_.open();
+            pool_.open(tls_ ? &tls_->layer() : nullptr);
         } catch (const std::exception& e) {
             throw ScpError("cannot listen on port " + std::to_string(settings_.port) + ": " +
                            e.what());
@@ -57,7 +65,8 @@ class StorageScp::Impl {
                 if (std::chrono::steady_clock::now() - lastPrune_ > std::chrono::hours(1)) {
                     prune();
                 }
-            });
+            },
+            [this](const std::string& why) { shared_.report("refused TLS connection: " + why); });
     }
 
   private:
@@ -75,6 +84,7 @@ class StorageScp::Impl {
 
     ScpSettings settings_;
     StoreShared shared_;
+    std::unique_ptr<TlsContext> tls_; // declared before pool_, whose network uses it
     AssociationPool pool_;
     std::chrono::steady_clock::time_point lastPrune_;
 };
@@ -83,6 +93,13 @@ StorageScp::StorageScp(ScpSettings settings, ScpReport report) {
     quietDcmtk();
     // The caller's numeric address, as AllowedCaller::host names it, and no DNS wait.
     dcmDisableGethostbyaddr.set(OFTrue);
+    if (settings.tls) {
+        // The TLS handshake runs on the listening thread with blocking reads, bounded only by
+        // the socket's receive timeout (DCMTK's default 60 s, for the whole process): a caller
+        // that connects and says nothing then holds up new associations no longer than the
+        // ACSE timeout, as in clear.
+        dcmSocketReceiveTimeout.set(settings.timeoutSeconds);
+    }
     impl_ = std::make_unique<Impl>(std::move(settings), std::move(report));
 }
 

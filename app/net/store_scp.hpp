@@ -7,11 +7,14 @@
 // given, their addresses), and refuses an association's objects past its byte quota. Several
 // associations are served at once, each on a thread of its own (AssociationPool), so a slow or
 // stalled sender does not hold up the others.
+#include "net/tls_context.hpp"
+
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -28,6 +31,9 @@ struct ScpSettings {
     int port = 11112;
     std::filesystem::path store;
     std::vector<AllowedCaller> allowed; // empty = nobody
+    // Set: the port speaks TLS only. A caller must show a certificate that a trusted CA signed
+    // before its association request is read at all; the AE title and address rules follow.
+    std::optional<TlsSettings> tls;
     // Bytes one association may bring. An object is received in memory before its durable
     // write, so this also bounds the memory one association can take; past it the association
     // is aborted mid-object.

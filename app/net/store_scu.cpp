@@ -11,6 +11,7 @@
 #include <dcmtk/dcmdata/dcmetinf.h>
 #include <dcmtk/dcmdata/dcuid.h>
 #include <dcmtk/dcmnet/scu.h>
+#include <memory>
 #include <optional>
 #include <set>
 #include <utility>
@@ -85,7 +86,32 @@ std::string associationProblem(const DicomPeer& peer, const OFCondition& c) {
     if (what.find("refused") != std::string::npos) {
         return "connection refused by " + describe(peer);
     }
-    return "no association with " + describe(peer) + ": " + what;
+    return "no association with " + describe(peer) + (peer.tls ? " over TLS: " : ": ") + what;
+}
+
+// DcmSCU keeps its TLS switch protected (for DcmTLSSCU, which would bring its own options).
+class Scu : public DcmSCU {
+  public:
+    using DcmSCU::useSecureConnection;
+};
+
+// The network, TLS where the peer has it, the negotiation: "" or why not in one line. `tls`
+// keeps the transport layer, which DCMTK does not own, alive beside `scu`.
+std::string associate(Scu& scu, const DicomPeer& peer, const SendOptions& options,
+                      std::unique_ptr<TlsContext>& tls) {
+    OFCondition c = scu.initNetwork();
+    if (c.good() && peer.tls) {
+        try {
+            tls = std::make_unique<TlsContext>(options.tls, TlsRole::Requestor, peer.host);
+        } catch (const TlsError& e) {
+            return "no TLS to " + describe(peer) + ": " + e.what();
+        }
+        c = scu.useSecureConnection(&tls->layer());
+    }
+    if (c.good()) {
+        c = scu.negotiateAssociation();
+    }
+    return c.bad() ? associationProblem(peer, c) : "";
 }
 
 void configure(DcmSCU& scu, const DicomPeer& peer, const SendOptions& options) {
@@ -146,19 +172,15 @@ std::vector<SendOutcome> sendFiles(const DicomPeer& peer,
         }
         return outcomes;
     }
-    DcmSCU scu;
+    std::unique_ptr<TlsContext> tls; // outlives scu, whose network uses it
+    Scu scu;
     configure(scu, peer, options);
     // A peer that does not take a compressed syntax gets the object decompressed instead.
     scu.setDatasetConversionMode(OFTrue);
     for (const auto& [sopClass, xfer] : contexts) {
         scu.addPresentationContext(sopClass.c_str(), transferSyntaxes(xfer));
     }
-    OFCondition c = scu.initNetwork();
-    if (c.good()) {
-        c = scu.negotiateAssociation();
-    }
-    if (c.bad()) {
-        const std::string problem = associationProblem(peer, c);
+    if (const std::string problem = associate(scu, peer, options, tls); !problem.empty()) {
         for (std::size_t n = 0; n < outcomes.size(); ++n) {
             if (infos[n]) {
                 outcomes[n].problem = problem;
@@ -183,7 +205,7 @@ std::vector<SendOutcome> sendFiles(const DicomPeer& peer,
             continue;
         }
         Uint16 status = 0;
-        c = scu.sendSTORERequest(id, o.file.c_str(), nullptr, status);
+        const OFCondition c = scu.sendSTORERequest(id, o.file.c_str(), nullptr, status);
         if (c.bad()) {
             o.problem = std::string("C-STORE to ") + describe(peer) + " failed: " + c.text();
             continue;
@@ -203,19 +225,16 @@ std::vector<SendOutcome> sendFiles(const DicomPeer& peer,
 
 std::string echo(const DicomPeer& peer, const SendOptions& options) {
     quietDcmtk();
-    DcmSCU scu;
+    std::unique_ptr<TlsContext> tls; // outlives scu, whose network uses it
+    Scu scu;
     configure(scu, peer, options);
     OFList<OFString> xfers;
     xfers.push_back(UID_LittleEndianImplicitTransferSyntax);
     scu.addPresentationContext(UID_VerificationSOPClass, xfers);
-    OFCondition c = scu.initNetwork();
-    if (c.good()) {
-        c = scu.negotiateAssociation();
+    if (std::string problem = associate(scu, peer, options, tls); !problem.empty()) {
+        return problem;
     }
-    if (c.bad()) {
-        return associationProblem(peer, c);
-    }
-    c = scu.sendECHORequest(0);
+    const OFCondition c = scu.sendECHORequest(0);
     scu.releaseAssociation();
     if (c.bad()) {
         return std::string("C-ECHO to ") + describe(peer) + " failed: " + c.text();

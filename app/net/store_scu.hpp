@@ -3,6 +3,7 @@
 // The sending side: DICOM files to a peer over one association (C-STORE SCU, DCMTK's dcmnet),
 // and C-ECHO to ask whether a peer answers.
 #include "net/dicom_peer.hpp"
+#include "net/tls_context.hpp"
 
 #include <filesystem>
 #include <span>
@@ -26,6 +27,7 @@ struct SendOutcome {
 struct SendOptions {
     std::string callingAet = "STEERSEG";
     int timeoutSeconds = 30; // TCP connect, ACSE and DIMSE each
+    TlsSettings tls;         // the node's credentials, for a peer with `tls`
 };
 
 // Sends each file once, in order, over one association; never throws for the network or the

@@ -87,6 +87,10 @@ std::vector<std::string> differences(const KioskConfig& a, const KioskConfig& b)
     field("export.folder", a.exports.folder == b.exports.folder);
     field("export.formats", a.exports.formats == b.exports.formats);
     field("audit.path", a.audit.path == b.audit.path);
+    field("dicom.tls_certificate", a.dicom.tlsCertificate == b.dicom.tlsCertificate);
+    field("dicom.tls_private_key", a.dicom.tlsPrivateKey == b.dicom.tlsPrivateKey);
+    field("dicom.tls_ca_certificates", a.dicom.tlsCaCertificates == b.dicom.tlsCaCertificates);
+    field("dicom.tls_receive", a.dicom.tlsReceive == b.dicom.tlsReceive);
     if (a.presets.size() != b.presets.size()) {
         out.push_back("preset count");
     } else {
@@ -218,6 +222,10 @@ TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
     other.speed = {model::SpeedKind::Edge, 40, 0.5, 0.25};
     other.exports = {"elsewhere", {"nrrd"}};
     other.audit = {"elsewhere.jsonl"};
+    other.dicom.tlsCertificate = "node.pem";
+    other.dicom.tlsPrivateKey = "node.key";
+    other.dicom.tlsCaCertificates = "ca.pem";
+    other.dicom.tlsReceive = true;
     for (config::Preset& p : other.presets) {
         p = {p.name, p.T + 1, p.eps + 1, p.alpha / 2, p.windowLevel + 1, p.windowWidth + 1, "x"};
     }
@@ -230,9 +238,9 @@ TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
     for (config::InputDeviceConfig& d : other.input.devices) {
         d = {d.name + "x", config::InputDeviceKind::GpioLed, 1, 2, 3, 4, "/x", "c", "l", true, 1.0};
     }
-    // 30 plain fields, 6 per preset (its name is its identity), every binding.
+    // 34 plain fields, 6 per preset (its name is its identity), every binding.
     ASSERT_EQ(differences(other, config::defaultConfig()).size(),
-              30U + 6U * other.presets.size() + other.bindings.keys.size() +
+              34U + 6U * other.presets.size() + other.bindings.keys.size() +
                   other.bindings.knobs.size() + other.bindings.buttons.size() +
                   other.input.devices.size());
 
@@ -666,9 +674,8 @@ TEST_F(ConfigTest, BadDicomValuesAreRefusedWithTheirPlace) {
     expectRejected("[dicom]\nstore = \"\"\n", 2, "dicom.store", "must not be empty");
     expectRejected("[dicom]\nassociation_quota_mb = 0\n", 2, "dicom.association_quota_mb",
                    "at least 1");
-    expectRejected("[dicom]\nmax_associations = 0\n", 2, "dicom.max_associations",
-                   "at least 1");
-    expectRejected("[dicom]\ntls = true\n", 2, "dicom.tls", "TLS is not supported yet");
+    expectRejected("[dicom]\nmax_associations = 0\n", 2, "dicom.max_associations", "at least 1");
+    expectRejected("[dicom]\ntls = true\n", 2, "dicom.tls", "set per peer");
     expectRejected("[dicom]\nlisten = true\n", 2, "dicom.listen", "");
     expectRejected("[[dicom.peers]]\nname = \"pacs\"\naet = \"PACS\"\nhost = \"pacs host\"\n"
                    "send = true\n",
@@ -680,6 +687,48 @@ TEST_F(ConfigTest, BadDicomValuesAreRefusedWithTheirPlace) {
     expectRejected("[[dicom.peers]]\nname = \"a\"\naet = \"A\"\nhost = \"h\"\nsend = true\n"
                    "[[dicom.peers]]\nname = \"a\"\naet = \"B\"\nhost = \"h\"\nsend = true\n",
                    7, "dicom.peers[2].name", "given twice");
+}
+
+// The TLS keys name files that must be there and hold PEM of their kind (whether they load
+// and match is the self-test's: tests/cli), and TLS is asked for only with all three.
+TEST_F(ConfigTest, DicomTlsFilesAndRelations) {
+    const std::string cert = "-----BEGIN CERTIFICATE-----\nMIIB\n-----END CERTIFICATE-----\n";
+    const fs::path ca = write("ca.pem", cert);
+    const fs::path node = write("node.pem", cert);
+    const fs::path key =
+        write("node.key", "-----BEGIN PRIVATE KEY-----\nMIIE\n-----END PRIVATE KEY-----\n");
+    const fs::path encrypted =
+        write("enc.key",
+              "-----BEGIN ENCRYPTED PRIVATE KEY-----\nMIIF\n-----END ENCRYPTED PRIVATE KEY-----\n");
+    const auto files = [&](const fs::path& c, const fs::path& k, const fs::path& t) {
+        return "[dicom]\ntls_certificate = \"" + c.string() + "\"\ntls_private_key = \"" +
+               k.string() + "\"\ntls_ca_certificates = \"" + t.string() + "\"\n";
+    };
+    const std::string peer = "[[dicom.peers]]\nname = \"pacs\"\naet = \"PACS\"\nhost = \"h\"\n";
+
+    const config::LoadedConfig good =
+        load({write("tls.toml", files(node, key, ca) + "tls_receive = true\n" + peer +
+                                    "receive = true\nsend = true\ntls = true\n")});
+    ASSERT_TRUE(good.problems.empty()) << describeAll(good.problems);
+    EXPECT_EQ(good.config.dicom.tlsCertificate, node);
+    EXPECT_EQ(good.config.dicom.tlsPrivateKey, key);
+    EXPECT_EQ(good.config.dicom.tlsCaCertificates, ca);
+    EXPECT_TRUE(good.config.dicom.tlsReceive);
+    EXPECT_TRUE(good.config.dicom.peers.at(0).tls);
+    // A folder of CA certificates will do.
+    const config::LoadedConfig folder = load({write("folder.toml", files(node, key, dir_))});
+    EXPECT_TRUE(folder.problems.empty()) << describeAll(folder.problems);
+
+    expectRejected(files(dir_ / "none.pem", key, ca), 2, "dicom.tls_certificate", "no such file");
+    expectRejected(files(node, encrypted, ca), 3, "dicom.tls_private_key", "is encrypted");
+    expectRejected(files(node, node, ca), 3, "dicom.tls_private_key", "no PEM private key");
+    expectRejected(files(node, key, key), 4, "dicom.tls_ca_certificates", "no PEM certificate");
+    expectRejected(peer + "send = true\ntls = true\n", 6, "dicom.peers[1].tls", "TLS needs");
+    expectRejected("[dicom]\ntls_receive = true\n", 2, "dicom.tls_receive", "TLS needs");
+    expectRejected(files(node, key, ca) + "tls_receive = true\n" + peer + "receive = true\n", 6,
+                   "dicom.peers[1].tls", "could not call");
+    expectRejected(files(node, key, ca) + peer + "receive = true\ntls = true\n", 10,
+                   "dicom.peers[1].tls", "tls_receive = true");
 }
 
 TEST(ConfigNames, InputDeviceKindsRoundTrip) {

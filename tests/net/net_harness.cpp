@@ -157,9 +157,9 @@ std::optional<std::string> httpGet(int port, const std::string& path) {
     return response.substr(headerEnd + 4);
 }
 
-OrthancServer::OrthancServer(const std::filesystem::path& folder)
+OrthancServer::OrthancServer(const std::filesystem::path& folder, const nlohmann::json& extra)
     : folder_(folder), dicomPort_(freePort()), httpPort_(freePort()) {
-    const nlohmann::json config = {
+    nlohmann::json config = {
         {"Name", "steerseg-test"},
         {"StorageDirectory", (folder / "storage").string()},
         {"IndexDirectory", (folder / "storage").string()},
@@ -173,6 +173,7 @@ OrthancServer::OrthancServer(const std::filesystem::path& folder)
         {"SaveJobs", false},
         {"StableAge", 1},
     };
+    config.update(extra);
     std::ofstream(folder / "orthanc.json") << config.dump(2);
     start();
 }

@@ -81,12 +81,14 @@ struct ListenProcess {
 std::vector<std::filesystem::path> filesBelow(const std::filesystem::path& root);
 
 // Orthanc (Debian's package) with its own configuration and storage in `folder`: DICOM and HTTP
-// on free loopback ports, no remote access, no plug-ins. Waits for its REST API.
+// on free loopback ports, no remote access, no plug-ins. Waits for its REST API. `extra`'s keys
+// are added to its configuration (DICOM TLS, modalities).
 class OrthancServer {
   public:
     static constexpr const char* kAet = "ORTHANC";
     static constexpr const char* kProgram = "/usr/sbin/Orthanc";
-    explicit OrthancServer(const std::filesystem::path& folder);
+    explicit OrthancServer(const std::filesystem::path& folder,
+                           const nlohmann::json& extra = nlohmann::json::object());
     // Starts it again on the same ports and storage (after stop()); throws if it does not come up.
     void start();
     void stop();
