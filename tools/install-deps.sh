@@ -13,7 +13,7 @@ packages=(
   libopenimageio-dev libgdcm-dev libnifti2-dev zlib1g-dev
   libgpiod-dev libhidapi-dev libinput-dev libudev-dev libsystemd-dev
   libdcmtk-dev dicom3tools python3-pydicom
-  orthanc dcmtk
+  orthanc dcmtk openssl
   dpkg-dev fakeroot lintian systemd
   libtomlplusplus-dev nlohmann-json3-dev libimgui-dev fonts-dejavu-core
   libgtest-dev libgmock-dev libbenchmark-dev
