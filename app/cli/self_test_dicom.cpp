@@ -1,5 +1,6 @@
 #include "cli/self_test_dicom.hpp"
 
+#include "kiosk/dicom_node_config.hpp"
 #include "net/store_scu.hpp"
 #include "net/tls_context.hpp"
 
@@ -54,10 +55,8 @@ std::vector<CheckResult> checkDicomNode(const config::DicomConfig& dicom) {
     results.push_back(checkPort(dicom.port));
     results.push_back(checkWritableFolder("dicom store", dicom.store));
     results.push_back(checkWritableFolder("dicom outbox", dicom.outbox));
-    net::SendOptions options;
-    options.callingAet = dicom.aet;
+    net::SendOptions options = kiosk::sendOptions(dicom);
     options.timeoutSeconds = 5;
-    options.tls = {dicom.tlsCertificate, dicom.tlsPrivateKey, dicom.tlsCaCertificates};
     if (!dicom.tlsCertificate.empty() || !dicom.tlsPrivateKey.empty() ||
         !dicom.tlsCaCertificates.empty()) {
         results.push_back(checkTls(options.tls));
