@@ -61,7 +61,11 @@ FrameTime frameTime(render::Renderer& renderer, const render::ViewParams& p,
     }
     const solver::BrickPoolView view =
         solver != nullptr ? solver->poolView() : solver::BrickPoolView{};
-    renderer.render(p, solver != nullptr ? &view : nullptr);
+    if (solver != nullptr) {
+        renderer.render(p, &view, solver->speedInputs());
+    } else {
+        renderer.render(p, nullptr);
+    }
     glFinish();
     return {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(),
@@ -86,17 +90,20 @@ FrameTime medianFrame(render::Renderer& renderer, const render::ViewParams& p,
 
 // The README's pictures: 3D with the surface, the clip plane with its yellow line, an axial
 // slice with the contour, the speed function on a sagittal slice.
-void writeDocImages(render::Renderer& renderer, const solver::BrickPoolView& view,
-                    const glm::dvec3& centre, const std::filesystem::path& dir) {
+void writeDocImages(render::Renderer& renderer, const solver::LevelSetSolver& solver,
+                    const render::SpeedParams& speed, const glm::dvec3& centre,
+                    const std::filesystem::path& dir) {
     std::filesystem::create_directories(dir);
+    const solver::BrickPoolView view = solver.poolView();
     const glm::ivec2 size{256, 256};
     render::ViewParams p = renderer.defaultParams(render::ViewKind::Volume3d, size);
     p.camera.orbit(25.0, 15.0);
     p.surface = render::SurfaceMode::Opaque;
-    renderer.render(p, &view);
+    p.speed = speed;
+    renderer.render(p, &view, solver.speedInputs());
     bench::saveImage(dir / "render_3d_surface.png", renderer.readback());
     p.clip = {true, {0.0, -1.0, 0.0}, -centre.y};
-    renderer.render(p, &view);
+    renderer.render(p, &view, solver.speedInputs());
     bench::saveImage(dir / "render_3d_clip.png", renderer.readback());
     p = renderer.defaultParams(render::ViewKind::Axial, size);
     p.slice = static_cast<int>(centre.z);
@@ -179,11 +186,13 @@ int main(int argc, char** argv) {
         }
         std::printf("gradient texture: %s\n", renderer.precomputedGradient() ? "yes" : "no");
         glm::dvec3 centre = 0.5 * glm::dvec3(g.dims - 1);
+        render::SpeedParams speed; // the solver's, as the kiosk's 3D view gets them
         if (scanPath == builtin) {
             centre = glm::dvec3(kPhantomLesion.i, kPhantomLesion.j, kPhantomLesion.k) *
                      (glm::dvec3(g.dims - 1) / glm::dvec3(127, 127, 95));
             solver.addSphere({glm::vec3(centre), 5.0F * static_cast<float>(scale)});
-            solver.setParams({static_cast<float>(kPhantomLesion.intensity), 100.0F, 0.8F});
+            speed = {kPhantomLesion.intensity, 100.0, true};
+            solver.setParams({static_cast<float>(speed.T), static_cast<float>(speed.eps), 0.8F});
             const model::StepResult r = solver.runUntilConverged(2000);
             std::size_t inside = 0;
             for (const std::uint8_t m : solver.readMask()) {
@@ -197,13 +206,12 @@ int main(int argc, char** argv) {
             const float r = 0.15F * static_cast<float>(std::min({g.dims.x, g.dims.y, g.dims.z}));
             solver.addSphere({glm::vec3(centre), r});
             const IntensityStats& st = volume.stats();
-            solver.setParams(
-                {static_cast<float>(st.mean), static_cast<float>(st.max - st.min), 0.5F});
+            speed = {st.mean, st.max - st.min, true};
+            solver.setParams({static_cast<float>(speed.T), static_cast<float>(speed.eps), 0.5F});
         }
-        const solver::BrickPoolView view = solver.poolView();
 
         if (!docsDir.empty()) {
-            writeDocImages(renderer, view, centre, docsDir);
+            writeDocImages(renderer, solver, speed, centre, docsDir);
             return 0;
         }
         const Case cases[] = {
@@ -227,6 +235,9 @@ int main(int argc, char** argv) {
                 p.camera.orbit(20.0, 15.0);
                 if (c.clip) {
                     p.clip = {true, {0.0, -1.0, 0.0}, -centre.y};
+                }
+                if (c.surface) {
+                    p.speed = speed;
                 }
                 solver::LevelSetSolver* s = c.surface ? &solver : nullptr;
                 const FrameTime t = medianFrame(renderer, p, s, c.stepping, frames);

@@ -46,7 +46,10 @@ render::ViewParams volumeViewParams(const session::Session& session, const workf
     }
     applyWindow(p, view);
     p.surface = status.hasLevelSet ? render::SurfaceMode::Opaque : render::SurfaceMode::Hidden;
-    p.speed = {static_cast<double>(status.params.T), static_cast<double>(status.params.eps)};
+    // The kiosk's level set is the solver's, moved by the speed in force (a resumed one too:
+    // the autosave keeps the speed that drew it).
+    p.speed = {static_cast<double>(status.params.T), static_cast<double>(status.params.eps),
+               true};
     return p;
 }
 

@@ -24,7 +24,7 @@ struct RenderInputs {
     GLuint emptyBuffer; // bound in place of the pool when there is none
     const RenderTarget& target;
     GLuint gradient;                 // GradientTexture, 0 when the scan has none
-    const speed::SpeedInputs& speed; // what the slice views' speed view shows
+    const speed::SpeedInputs& speed; // the speed view's data term, and the 3D view's surface's
 };
 
 // A compute program built for the pool's BRICK_SIZE / PHI_FAR, rebuilt when they change;

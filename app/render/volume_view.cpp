@@ -26,6 +26,20 @@ bool sameTransfer(const TransferFunction& a, const TransferFunction& b) {
     return true;
 }
 
+// The data term whose zero crossing places the surface between voxels (render/
+// surface_smooth.glsl), the solver's own textures.
+void bindSurfaceSpeed(GLuint program, const RenderInputs& in, const SpeedParams& speed) {
+    glUniform1i(uniform(program, "surfaceFromData"), speed.placesSurface ? 1 : 0);
+    if (!speed.placesSurface) {
+        return;
+    }
+    speed::bindSpeedTextures(in.speed, in.scan.exact(), VIEW_SURFACE_INTENSITY_UNIT,
+                             VIEW_SURFACE_FACTOR_UNIT);
+    glUniform1i(uniform(program, "speedKind"), static_cast<int>(in.speed.kind));
+    glUniform1f(uniform(program, "T"), static_cast<float>(speed.T));
+    glUniform1f(uniform(program, "eps"), static_cast<float>(speed.eps));
+}
+
 } // namespace
 
 VolumeView::VolumeView() {
@@ -79,6 +93,9 @@ void VolumeView::draw(const RenderInputs& in, const ViewParams& params) {
     if (in.gradient != 0) {
         glActiveTexture(GL_TEXTURE0 + VIEW_GRADIENT_UNIT);
         glBindTexture(GL_TEXTURE_3D, in.gradient);
+    }
+    if (in.pool != nullptr) {
+        bindSurfaceSpeed(program, in, params.speed);
     }
     glActiveTexture(GL_TEXTURE0 + VIEW_TF_LUT_UNIT);
     glBindTexture(GL_TEXTURE_2D, lut_.id());

@@ -232,8 +232,12 @@ void ScriptPlayer::poll(double now, const workflow::Status& status, ScriptSink& 
                 runDice(step, *dice, status, sink);
             } else if (const auto* raw = std::get_if<RawStep>(&step.kind)) {
                 if (raw->record) {
+                    // Stamped when the step was due, as a device stamps a record when it
+                    // happened, not when it is read: after a late frame several records are
+                    // due at once, and the decoders' rates (a knob's acceleration, a ring's
+                    // repeats) must see them as far apart as the script put them.
                     platform::input::RawRecord record = *raw->record;
-                    record.time = now;
+                    record.time = scheduled;
                     sink.raw(record);
                 } else {
                     sink.replay(runtimePath(raw->recording, status, false));

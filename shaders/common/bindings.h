@@ -48,6 +48,10 @@
 // the slice views do not read.
 #define VIEW_SPEED_INTENSITY_UNIT 1
 #define VIEW_SPEED_FACTOR_UNIT 2
+// render/raycast.comp's surface between voxels (render/surface_smooth.glsl: the data term's
+// zero crossing), the same textures as the solver's.
+#define VIEW_SURFACE_INTENSITY_UNIT 5
+#define VIEW_SURFACE_FACTOR_UNIT 6
 
 // Image units.
 #define VIEW_OUT_IMAGE_UNIT 0      // render/view_common.glsl: the rendered picture

@@ -174,6 +174,10 @@ void marchScan(inout vec4 acc, vec3 origin, vec3 dir, vec3 rayWorld, float t, fl
 }
 
 #if HAS_SURFACE
+#define DATA_SPEED_INTENSITY_UNIT VIEW_SURFACE_INTENSITY_UNIT
+#define DATA_SPEED_FACTOR_UNIT VIEW_SURFACE_FACTOR_UNIT
+#include "render/surface_smooth.glsl"
+
 // Bricks not stored as constant outside lie in bounds[0..2] ..= bounds[3..5] (render/
 // band_bounds.comp, run before each draw with a level set); max < min when there are none.
 layout(std430, binding = VIEW_BAND_BOUNDS_BINDING) readonly buffer BandBounds { int bounds[6]; };
@@ -232,10 +236,12 @@ float firstCrossing(vec3 origin, vec3 dir, float t, float tEnd) {
 }
 
 // The shaded surface where phi crosses zero between the samples at t - stepMm and t: the
-// crossing of trilinear phi by bisection, then of the smooth phi (phiSmooth) by Newton steps
-// along the ray from there, shaded with the smooth phi's gradient. The Newton steps stay
-// within a voxel of the trilinear crossing (the B-spline's zero lies within a voxel of it:
-// it reproduces linear phi exactly); a grazing ray keeps the trilinear crossing.
+// crossing of trilinear phi by bisection, then of the smooth reconstruction (phiSmooth, with
+// the data term's crossing where phi is a step: render/surface_smooth.glsl) by Newton steps
+// along the ray from there, shaded with its gradient. The Newton steps stay within a voxel of
+// the trilinear crossing (the B-spline's zero lies within a voxel of it: it reproduces linear
+// phi exactly, and D's crossing lies in the cell where phi changes sign); a grazing ray keeps
+// the trilinear crossing.
 vec3 surfaceColour(vec3 origin, vec3 dir, vec3 rayWorld, float t) {
     float a = t - stepMm;
     float b = t;
@@ -253,14 +259,23 @@ vec3 surfaceColour(vec3 origin, vec3 dir, vec3 rayWorld, float t) {
     float tLinear = 0.5 * (a + b);
     float reach = 1.0 / max(length(dir), 1e-6); // millimetres along the ray per voxel
     float tHit = tLinear;
+    bool fromData = dataPlacesSurface(origin + tLinear * dir);
     vec3 grad = vec3(0.0);
-    // One call site in a loop (each call site is 64 pool reads of code): evaluate, then step.
-    for (int i = 0; i < 3; ++i) {
-        float f = phiSmooth(origin + tHit * dir, grad);
+    // One call site in a loop (each call site is 64 pool reads of code): evaluate, then step;
+    // three evaluations from the data term, and where they found no crossing of it near the
+    // ray (a front held where D has none: a barrier, a reach), three more from phi.
+    for (int i = 0; i < 6; ++i) {
+        float f = phiSmooth(origin + tHit * dir, fromData, grad);
         float slope = dot(grad, dir); // dphi / dt
-        if (i < 2) {
-            tHit = clamp(tHit - f / (abs(slope) > 1e-6 ? slope : 1e30), tLinear - reach,
-                         tLinear + reach);
+        float newton = f / (abs(slope) > 1e-6 ? slope : 1e30);
+        if (i == 2 || i == 5) {
+            if (!fromData || abs(newton) < 0.5 * reach) {
+                break;
+            }
+            fromData = false;
+            tHit = tLinear;
+        } else {
+            tHit = clamp(tHit - newton, tLinear - reach, tLinear + reach);
         }
     }
     return shade(SURFACE_COLOUR, grad, rayWorld);

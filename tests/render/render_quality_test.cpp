@@ -135,10 +135,29 @@ class SphereOnThickSlices : public GpuTest {
         return mask;
     }
 
-    ShadingError render(const std::vector<float>& phi) {
+    // The sphere as a scan with partial volume: each voxel the fraction of its extent inside
+    // (8 x 8 x 8 points), times kBright. Its half-way value lies on the sphere.
+    static constexpr float kBright = 1000.0F;
+    // The threshold speed whose zero crossing is the scan's half-way value.
+    static constexpr render::SpeedParams kSpeed{kBright, 0.5F * kBright, true};
+    static Volume partialVolumeSphere() {
+        return makeScan(geometry(), [](glm::ivec3 v) {
+            int inside = 0;
+            for (int n = 0; n < 512; ++n) {
+                const glm::dvec3 at = glm::dvec3(v) - 0.4375 +
+                                      0.125 * glm::dvec3(n & 7, (n >> 3) & 7, n >> 6);
+                inside += glm::length(at * geometry().spacing - kCentre) < kRadius ? 1 : 0;
+            }
+            return kBright * static_cast<float>(inside) / 512.0F;
+        });
+    }
+
+    // `speed`: the data term that moved phi (placesSurface), read from the scan itself.
+    ShadingError render(const std::vector<float>& phi, const Volume* scanGiven = nullptr,
+                        render::SpeedParams speed = {}) {
         const Geometry g = geometry();
-        const Volume scan = makeScan(g, [](glm::ivec3 v) { return float(v.x); });
-        render::Renderer renderer(scan);
+        const Volume ramp = makeScan(g, [](glm::ivec3 v) { return float(v.x); });
+        render::Renderer renderer(scanGiven != nullptr ? *scanGiven : ramp);
         GpuPool pool(packPhi(phi, g.dims, 8, 4.0F));
         const solver::BrickPoolView view = pool.view();
         render::ViewParams p = renderer.defaultParams(ViewKind::Volume3d, {128, 128});
@@ -146,6 +165,7 @@ class SphereOnThickSlices : public GpuTest {
         p.surface = render::SurfaceMode::Opaque;
         p.camera.orbit(30.0, 10.0); // the slices' planes across the view
         p.camera.zoom(1.6);
+        p.speed = speed;
         renderer.render(p, &view);
         const ShadingError e =
             sphereShadingError(renderer.readback(), p.camera, kCentre, kRadius, 1.5);
@@ -186,6 +206,38 @@ TEST_F(SphereOnThickSlices, MaskSmoothedBeforeItIsDrawn) {
     const ShadingError raw = render(solver::maskToPhi(mask, geometry().dims));
     EXPECT_LT(smooth.mean, 7.2) << "blocky: the shading is " << smooth.mean << " off on average";
     EXPECT_LT(smooth.mean, 0.5 * raw.mean);
+}
+
+// A level set at convergence is a step: the data term drives phi to its clamp on both sides of
+// the front, so its zero sits half-way between voxel centres as a mask's does. Drawn from phi
+// alone it shows the voxels; with the data term that moved it (threshold, D = 0 at the
+// partial-volume scan's half-way value, on the sphere) the surface lies where the scan puts
+// the boundary between them, and is shaded with the sphere's normals.
+TEST_F(SphereOnThickSlices, ConvergedStepDrawnAtTheDataTermsCrossing) {
+    const std::vector<std::uint8_t> mask = sphereMask();
+    std::vector<float> phi(mask.size());
+    for (std::size_t n = 0; n < mask.size(); ++n) {
+        phi[n] = mask[n] != 0 ? -3.9F : 3.8F; // as measured on the solver's converged lesion
+    }
+    const Volume scan = partialVolumeSphere();
+    const ShadingError step = render(phi, &scan);
+    const ShadingError data = render(phi, &scan, kSpeed);
+    EXPECT_LT(data.mean, 5.0) << "the shading is " << data.mean << " off on average";
+    EXPECT_LT(data.mean, 0.3 * step.mean) << "phi alone: " << step.mean;
+}
+
+// Where phi is a distance (a front still moving, a seed), the data term does not move the
+// surface: it is drawn as from phi alone.
+TEST_F(SphereOnThickSlices, DistanceLevelSetKeptWhereTheDataTermDisagrees) {
+    // The scan's boundary 3 mm outside phi's: D > 0 on both sides of phi's zero.
+    const Volume scan = makeScan(geometry(), [](glm::ivec3 v) {
+        return glm::length(world(v) - kCentre) < kRadius + 3.0 ? kBright : 0.0F;
+    });
+    const std::vector<float> phi = densePhi(geometry().dims, [](glm::ivec3 v) {
+        return static_cast<float>((glm::length(world(v) - kCentre) - kRadius) / 3.0);
+    });
+    const ShadingError e = render(phi, &scan, kSpeed);
+    EXPECT_LT(e.mean, 1.5) << "the shading is " << e.mean << " off on average";
 }
 
 } // namespace
