@@ -190,8 +190,8 @@ int runRender(std::span<const std::string> words) {
         completeWithScan(*request, scan.volume);
         // --T and --eps, or the probe's: the speed that moves the level set, so it places the
         // 3D view's surface between voxels too
-        p.speed = {static_cast<double>(request->params.T),
-                   static_cast<double>(request->params.eps), true};
+        p.speed = {static_cast<double>(request->params.T), static_cast<double>(request->params.eps),
+                   true};
     }
     auto context = platform::createOffscreenContext();
     // The level set comes from the solver's brick pool; the renderer never copies phi.

@@ -48,8 +48,7 @@ render::ViewParams volumeViewParams(const session::Session& session, const workf
     p.surface = status.hasLevelSet ? render::SurfaceMode::Opaque : render::SurfaceMode::Hidden;
     // The kiosk's level set is the solver's, moved by the speed in force (a resumed one too:
     // the autosave keeps the speed that drew it).
-    p.speed = {static_cast<double>(status.params.T), static_cast<double>(status.params.eps),
-               true};
+    p.speed = {static_cast<double>(status.params.T), static_cast<double>(status.params.eps), true};
     return p;
 }
 
