@@ -14,8 +14,9 @@ namespace {
 using steerseg::RgbaImage;
 using steerseg::exports::encodePng;
 
-// Flat areas (None, Up), ramps (Sub, Average), noise and a diagonal edge (Paeth): the rows take
-// different filters, and a mistake in any of them shows as a wrong pixel.
+// Flat areas (None, Up), ramps (Sub, Average), noise and a diagonal edge (Paeth), alpha varying
+// in one column of seven: the rows take different filters, and a mistake in any of them shows as
+// a wrong pixel.
 RgbaImage mixedPicture(int width, int height) {
     RgbaImage image{width, height, {}};
     image.pixels.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
@@ -27,7 +28,13 @@ RgbaImage mixedPicture(int width, int height) {
             p[0] = static_cast<std::uint8_t>(y < height / 3 ? 40 : x * 3);
             p[1] = static_cast<std::uint8_t>(x > y ? 200 : 17 + y);
             p[2] = static_cast<std::uint8_t>(y > 2 * height / 3 ? noise >> 24 : (x + y) / 2);
-            p[3] = static_cast<std::uint8_t>(x % 7 == 0 ? 128 : 255);
+            p[3] = 255;
+            // Translucent pixels black: OpenImageIO hands PNG back premultiplied, which
+            // changes any other colour under alpha < 255.
+            if (x % 7 == 0) {
+                p[0] = p[1] = p[2] = 0;
+                p[3] = static_cast<std::uint8_t>(x * 5 + y * 11);
+            }
         }
     }
     return image;
