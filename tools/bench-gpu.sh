@@ -14,12 +14,13 @@
 # Without --bin it installs what it needs (apt) and builds the benchmarks in build/bench-gpu.
 #
 # The lent GPU machine has no package registry: on a development machine, --pack DIR builds the
-# benchmarks without OpenImageIO and GDCM (STEERSEG_BENCH_IO=OFF: built-in sample and NIfTI
-# only, pictures as PPM), and puts them, the two libraries they need (nifticlib) and the real
+# light build (STEERSEG_LIGHT: no OpenImageIO, GDCM, DCMTK, SDL2 or libinput; scans from the
+# built-in sample and NIfTI, benchmark pictures as PPM) of the benchmarks and of the kiosk
+# (steerseg: the same frame loop, offscreen), and puts them, tools/bench-kiosk.sh with its
+# sessions, the few libraries they need beyond a base system (found with ldd) and the real
 # cases' scans (from STEERSEG_DATA_DIR) in DIR; there, `DIR/bench-gpu.sh --bin DIR` runs them.
-# The kiosk (steerseg, which needs OpenImageIO's some 280 libraries) is not packed: --bin runs
-# that part only where DIR holds a steerseg; nor is large_scan_bench (GDCM), likewise. It says so when the renderer is a software one:
-# those figures are not GPU figures.
+# large_scan_bench (GDCM) is not packed: --bin skips that part. It says so when the renderer is
+# a software one: those figures are not GPU figures.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 
@@ -35,7 +36,7 @@ while (($#)); do
     --out) out=${2:?--out needs a folder}; shift ;;
     --bin) bin=${2:?--bin needs a folder}; shift ;;
     --pack) pack=${2:?--pack needs a folder}; shift ;;
-    -h|--help) sed -n '2,23p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,24p' "$0"; exit 0 ;;
     *) echo "bench-gpu: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
@@ -50,11 +51,11 @@ cases=(
   "lung|lung-ct-ibsi/nifti/image.nii.gz|lung-ct-ibsi/nifti/mask.nii.gz|94,89,29,3|-46.9|231.1|0.2|2.08|57.6"
 )
 
-build_benches() { # build-dir io(ON|OFF) [more targets]
+build_benches() { # build-dir light(ON|OFF) [more targets]
   cmake -S "$root" -B "$1" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSTEERSEG_BUILD_TESTS=OFF \
-    -DSTEERSEG_BENCH_IO="$2" >/dev/null
+    -DSTEERSEG_LIGHT="$2" >/dev/null
   local io=()
-  if [[ $2 == ON ]]; then
+  if [[ $2 == OFF ]]; then
     io=(large_scan_bench) # the DICOM series needs GDCM
   fi
   cmake --build "$1" -j "$(nproc)" --target solver_bench render_frame_bench segment_bench \
@@ -63,15 +64,24 @@ build_benches() { # build-dir io(ON|OFF) [more targets]
 
 if [[ -n $pack ]]; then
   "$root/tools/install-deps.sh"
-  build_benches "$root/build/bench-gpu-pack" OFF
-  mkdir -p "$pack/lib" "$pack/data"
+  build_benches "$root/build/bench-gpu-pack" ON steerseg
+  mkdir -p "$pack/lib" "$pack/data" "$pack/tools" "$pack/bench/kiosk"
   for b in solver_bench render_frame_bench segment_bench; do
     cp "$root/build/bench-gpu-pack/bench/$b" "$pack/"
   done
+  cp "$root/build/bench-gpu-pack/steerseg" "$pack/"
   cp "$0" "$pack/bench-gpu.sh"
-  for lib in libnifti2.so.2 libznz.so.3; do
-    cp -L "$(ldconfig -p | awk -v l="$lib" '$1 == l { print $NF; exit }')" "$pack/lib/"
-  done
+  # bench-kiosk.sh where its own root finds it and its sessions (DIR/tools/.. = DIR).
+  cp "$root/tools/bench-kiosk.sh" "$pack/tools/"
+  cp "$root"/bench/kiosk/*.session "$pack/bench/kiosk/"
+  # Every library the binaries load beyond what a base system with the GPU's driver has.
+  base='^(linux-vdso|ld-linux|libc|libm|libstdc\+\+|libgcc_s|libEGL|libGLESv2|libGLdispatch|libgbm|libdrm|libz)\.so'
+  carried=$(ldd "$pack"/steerseg "$pack"/*_bench | awk '/=>/ { print $1, $3 }' | sort -u |
+    grep -Ev "$base" || true)
+  while read -r name path; do
+    [[ -n $name ]] && cp -L "$path" "$pack/lib/$name"
+  done <<<"$carried"
+  echo "bench-gpu: carried $(echo "$carried" | awk '{ print $1 }' | tr '\n' ' ')($(du -sh "$pack/lib" | cut -f1))"
   for c in "${cases[@]}"; do
     IFS='|' read -r name scan mask _ <<<"$c"
     if [[ -f $data/$scan && -f $data/$mask ]]; then
@@ -102,18 +112,20 @@ elif [[ -z $bin ]]; then
   "$root/tools/install-deps.sh"
   kiosk_bin=$root/build/bench-gpu/steerseg
   if wants kiosk; then
-    build_benches "$root/build/bench-gpu" ON steerseg
+    build_benches "$root/build/bench-gpu" OFF steerseg
   else
-    build_benches "$root/build/bench-gpu" ON
+    build_benches "$root/build/bench-gpu" OFF
   fi
   bin=$root/build/bench-gpu/bench
   scan_of() { echo "$data/$2"; }
 else
   bin=$(cd "$bin" && pwd)
   kiosk_bin=$bin/steerseg
+  kiosk_script=$bin/tools/bench-kiosk.sh
   export LD_LIBRARY_PATH="$bin/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
   scan_of() { echo "$bin/data/$1$3"; } # packed names: sarcoma.nii.gz, sarcoma_mask.nii.gz
 fi
+kiosk_script=${kiosk_script:-$root/tools/bench-kiosk.sh}
 mkdir -p "$out"
 log=$out/bench-gpu.log
 : >"$log"
@@ -186,14 +198,14 @@ if wants large; then
 fi
 
 if wants kiosk; then
-  if [[ -x $kiosk_bin && -x $root/tools/bench-kiosk.sh ]]; then
+  if [[ -x $kiosk_bin && -x $kiosk_script ]]; then
     kiosk_args=(--bin "$kiosk_bin" --out "$out/kiosk")
     if ((small)); then
       kiosk_args+=(--small)
     fi
-    run kiosk "$root/tools/bench-kiosk.sh" "${kiosk_args[@]}"
+    run kiosk "$kiosk_script" "${kiosk_args[@]}"
   else
-    echo "bench-gpu: kiosk skipped: no $kiosk_bin (the pack has no kiosk)" >&2
+    echo "bench-gpu: kiosk skipped: no $kiosk_bin or $kiosk_script" >&2
   fi
 fi
 

@@ -141,7 +141,9 @@ if ((!small)); then
   "$bin" segment --input builtin:sample --seed 64,84,48,3 --T 420 --eps 150 --alpha 0.3 \
     --iterations "$n" --output "$out/segment-untouched.nii.gz" --report "$out/segment-untouched.json" >>"$log" 2>&1
   frame_bench=$(dirname "$bin")/bench/render_frame_bench
-  if [[ ! -x $frame_bench ]]; then
+  if [[ ! -x $frame_bench && -x $(dirname "$bin")/render_frame_bench ]]; then
+    frame_bench=$(dirname "$bin")/render_frame_bench # the GPU pack keeps it beside steerseg
+  elif [[ ! -x $frame_bench ]]; then
     (cd "$root" && cmake --build --preset release --target render_frame_bench >&2)
   fi
   read -r w3 h3 ws hs < <(python3 -c 'import json,sys; v=json.load(open(sys.argv[1]))["view_sizes"]; print(*v[0], *v[1])' \

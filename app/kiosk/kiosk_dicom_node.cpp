@@ -34,7 +34,13 @@ std::string waitingLine(const net::OutboxEntry& e) {
 
 } // namespace
 
-DicomNode::DicomNode(const config::DicomConfig& dicom) : dicom_(dicom) {
+struct DicomNode::Link {
+    std::unique_ptr<net::Outbox> outbox;
+    std::unique_ptr<net::StorageScp> scp;
+};
+
+DicomNode::DicomNode(const config::DicomConfig& dicom)
+    : dicom_(dicom), link_(std::make_unique<Link>()) {
     if (!dicom_.enabled) {
         return;
     }
@@ -46,26 +52,26 @@ DicomNode::DicomNode(const config::DicomConfig& dicom) : dicom_(dicom) {
             // A port nobody may call is only a port open: a site that sends only, sends.
             throw net::ScpError("no [[dicom.peers]] with receive = true");
         }
-        scp_ =
+        link_->scp =
             std::make_unique<net::StorageScp>(scpSettings(dicom_), [this](const std::string& line) {
                 // One line per object would bury the journal: a series is told once, when complete.
                 if (!line.starts_with("stored ")) {
                     say(line);
                 }
             });
-        scp_->open();
+        link_->scp->open();
         say("listening as " + dicom_.aet + " on port " + std::to_string(dicom_.port) +
             (dicom_.tlsReceive ? " (TLS)" : "") + ", storing into " + dicom_.store.string());
-        scpThread_ = std::thread([this] { scp_->serve(stop_); });
+        scpThread_ = std::thread([this] { link_->scp->serve(stop_); });
     } catch (const std::exception& e) {
         // The kiosk goes on: the operator can still load folders and export to files.
         say(std::string("not receiving: ") + e.what());
     }
     try {
-        outboxFiles_ = std::make_unique<net::Outbox>(dicom_.outbox, outboxBackoff(dicom_));
+        link_->outbox = std::make_unique<net::Outbox>(dicom_.outbox, outboxBackoff(dicom_));
         // Listed before the first frame: a script's wait for an empty outbox must not take the
         // moment before the worker's first pass for a delivery (after a restart, say).
-        publishPending(*outboxFiles_, 0);
+        publishPending(*link_->outbox, 0);
     } catch (const std::exception& e) {
         say(std::string("no outbox: ") + e.what());
     }
@@ -96,7 +102,7 @@ void DicomNode::say(const std::string& line) {
 }
 
 void DicomNode::work() {
-    net::Outbox* outbox = outboxFiles_.get();
+    net::Outbox* outbox = link_->outbox.get();
     std::vector<fs::path> complete;
     for (bool first = true; !stop_; first = false) {
         if (outbox) {

@@ -27,7 +27,6 @@ namespace steerseg::net {
 class Outbox;
 struct OutboxEntry;
 struct SendOutcome;
-class StorageScp;
 } // namespace steerseg::net
 
 namespace steerseg::kiosk {
@@ -98,8 +97,10 @@ class DicomNode {
     std::vector<std::string> outbox_;
     std::string note_;
     std::string noteDismissed_;
-    std::unique_ptr<net::Outbox> outboxFiles_; // the worker's after the constructor
-    std::unique_ptr<net::StorageScp> scp_;
+    // The Storage SCP and the outbox's files (the worker's after the constructor): net's in the
+    // full build (kiosk_dicom_node.cpp); the light build (kiosk_dicom_node_light.cpp) has none.
+    struct Link;
+    std::unique_ptr<Link> link_;
     std::thread scpThread_;
     std::thread worker_;
 };
