@@ -12,8 +12,8 @@ namespace steerseg::render {
 namespace {
 
 // Fills `out` with the ranges of every block of block layer bz (kSkipRangeChannels floats a
-// block). `at(i, j, k)` gives a value; only slices 8 bz - 2 .. 8 bz + 9 are asked for (the
-// apron and the gradient's neighbours).
+// block). `at(i, j, k)` gives a value; only slices 8 bz - 3 .. 8 bz + 10 are asked for (the
+// apron and the gradient's two neighbours either side).
 template <typename At>
 void layerRanges(const glm::ivec3& dims, const glm::ivec3& grid, int bz, const At& at,
                  std::vector<float>& out) {
@@ -35,11 +35,19 @@ void layerRanges(const glm::ivec3& dims, const glm::ivec3& grid, int bz, const A
                         const float v = at(i, j, k);
                         mn = std::min(mn, v);
                         mx = std::max(mx, v);
-                        // The ray caster's gradient (render/gradient.comp): central differences
-                        // with the edge clamped.
-                        const float gx = clamped(i + 1, j, k) - clamped(i - 1, j, k);
-                        const float gy = clamped(i, j + 1, k) - clamped(i, j - 1, k);
-                        const float gz = clamped(i, j, k + 1) - clamped(i, j, k - 1);
+                        // The ray caster's gradient (render/gradient.comp): the difference
+                        // [-1 -2 0 2 1] / 8 along each axis, with the edge clamped.
+                        const auto along = [&](const glm::ivec3& e) {
+                            const glm::ivec3 p(i, j, k);
+                            const auto f = [&](const glm::ivec3& q) {
+                                return clamped(q.x, q.y, q.z);
+                            };
+                            return (2.0F * (f(p + e) - f(p - e)) + f(p + 2 * e) - f(p - 2 * e)) /
+                                   8.0F;
+                        };
+                        const float gx = along({1, 0, 0});
+                        const float gy = along({0, 1, 0});
+                        const float gz = along({0, 0, 1});
                         gradient2 = std::max(gradient2, gx * gx + gy * gy + gz * gz);
                     }
                 }
@@ -53,7 +61,7 @@ void layerRanges(const glm::ivec3& dims, const glm::ivec3& grid, int bz, const A
             range[0] = mn;
             range[1] = mx;
             range[2] = 0.0F;
-            range[3] = 0.5F * std::sqrt(gradient2);
+            range[3] = std::sqrt(gradient2);
         }
     }
 }
@@ -78,8 +86,8 @@ SkipGrid::SkipGrid(const Volume& volume, const gpu::ScanTexture& scan)
                            kSkipRangeChannels);
     std::vector<float> slab;
     for (int bz = 0; bz < dims_.z; ++bz) {
-        const int k0 = std::max(bz * kSkipBlock - 2, 0);
-        const int k1 = std::min(bz * kSkipBlock + kSkipBlock + 2, d.z);
+        const int k0 = std::max(bz * kSkipBlock - 3, 0);
+        const int k1 = std::min(bz * kSkipBlock + kSkipBlock + 3, d.z);
         slab.resize(slice * static_cast<std::size_t>(k1 - k0));
         volume.realValues(slice * static_cast<std::size_t>(k0), slab);
         for (float& v : slab) {

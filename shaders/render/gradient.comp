@@ -1,9 +1,13 @@
 #version 310 es
-// The 3D view's gradient texture, once per scan: the central difference of the scan at each
-// voxel, in normalised intensity per voxel. Trilinear interpolation of these differences equals
-// the central difference of the trilinearly interpolated scan one voxel either side (the
-// weights are the same for p + e and p - e), which is what the ray caster took with six fetches
-// per sample.
+// The 3D view's gradient texture, once per scan: at each voxel, in normalised intensity per
+// voxel, the difference [-1 -2 0 2 1] / 8 along each axis (the central difference of the scan
+// smoothed by [1 2 1] / 4 along that axis). The plain central difference made rings on the
+// built-in sample's head seen from above, one per 1.5 mm slice: on a boundary about a voxel
+// wide, the largest gradient it finds swings by up to half with where the boundary falls
+// between two voxels, and the transfer function's gradient axis turns that into opacity. The
+// wider difference swings much less. Trilinear interpolation of these differences equals the
+// same difference of the trilinearly interpolated scan (the weights are the same at every
+// offset), which is what the ray caster takes per sample without this texture.
 precision highp float;
 precision highp sampler3D;
 precision highp image3D;
@@ -26,9 +30,12 @@ void main() {
     if (any(greaterThanEqual(v, volumeDims))) {
         return;
     }
-    vec3 g = 0.5 * toNormalised *
-             vec3(at(v + ivec3(1, 0, 0)) - at(v - ivec3(1, 0, 0)),
-                  at(v + ivec3(0, 1, 0)) - at(v - ivec3(0, 1, 0)),
-                  at(v + ivec3(0, 0, 1)) - at(v - ivec3(0, 0, 1)));
+    vec3 g = vec3(0.0);
+    for (int a = 0; a < 3; ++a) {
+        ivec3 e = ivec3(0);
+        e[a] = 1;
+        g[a] = (2.0 * (at(v + e) - at(v - e)) + at(v + 2 * e) - at(v - 2 * e)) / 8.0;
+    }
+    g *= toNormalised;
     imageStore(gradientOut, v, vec4(g, 0.0));
 }

@@ -97,12 +97,29 @@ void composite(inout vec4 acc, vec3 colour, float alpha) {
     acc.a += (1.0 - acc.a) * alpha;
 }
 
+// The scan's gradient at p, per voxel index: render/gradient.comp's difference, from its
+// texture or of the trilinear scan (the same by linearity).
+vec3 scanGradient(vec3 p) {
+#if GRADIENT_TEXTURE
+    return texture(gradientTex, (p + 0.5) / vec3(volumeDims)).rgb;
+#else
+    vec3 g = vec3(0.0);
+    for (int a = 0; a < 3; ++a) {
+        vec3 e = vec3(0.0);
+        e[a] = 1.0;
+        g[a] = (2.0 * (scanAt(p + e) - scanAt(p - e)) + scanAt(p + 2.0 * e) - scanAt(p - 2.0 * e)) /
+               8.0;
+    }
+    return g;
+#endif
+}
+
 // The scan's sample at p, standing for `len` millimetres of the ray, composited into acc, its
 // opacity scaled by `weight` (the region of interest); true once the ray is opaque.
 bool addScanSample(inout vec4 acc, vec3 p, float len, float weight, vec3 rayWorld) {
     float v = scanAt(p);
 #if !GRADIENT_TEXTURE
-    // The value alone may already rule the sample out (no six fetches for the gradient). With
+    // The value alone may already rule the sample out (no twelve fetches for the gradient). With
     // the gradient texture the lookup below costs no more, and an unoccupied value bin gives
     // zero opacity there too.
     float bin = v * float(TF_BINS - 1);
@@ -110,12 +127,8 @@ bool addScanSample(inout vec4 acc, vec3 p, float len, float weight, vec3 rayWorl
                     TF_GRADIENT_BINS - 1)) {
         return false;
     }
-    vec3 g = 0.5 * vec3(scanAt(p + vec3(1, 0, 0)) - scanAt(p - vec3(1, 0, 0)),
-                        scanAt(p + vec3(0, 1, 0)) - scanAt(p - vec3(0, 1, 0)),
-                        scanAt(p + vec3(0, 0, 1)) - scanAt(p - vec3(0, 0, 1)));
-#else
-    vec3 g = texture(gradientTex, (p + 0.5) / vec3(volumeDims)).rgb;
 #endif
+    vec3 g = scanGradient(p);
     float gm = clamp(length(g) / gradientScale, 0.0, 1.0);
     vec2 uv = (vec2(v, gm) * vec2(float(TF_BINS - 1), float(TF_GRADIENT_BINS - 1)) + 0.5) /
               vec2(float(TF_BINS), float(TF_GRADIENT_BINS));

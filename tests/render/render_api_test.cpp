@@ -213,8 +213,9 @@ TEST_F(RenderApi, SkipGridCoversEachBlockWithItsApron) {
     EXPECT_EQ(mm[1], 1.0F); // block (0,0,0) max: apron reaches voxel 8
     EXPECT_EQ(mm[5], 1.0F); // block (1,0,0)
     EXPECT_EQ(mm[9], 0.0F); // block (2,0,0) starts at 16, apron from 15
-    // |gradient|: at voxel (8,0,0) itself the clamped edge gives (0, -1, -1) / 2.
-    EXPECT_FLOAT_EQ(mm[3], 0.5F * std::sqrt(2.0F));
+    // |gradient|: at voxel (8,0,0) itself the clamped edge gives (0, -3, -3) / 8 (the edge
+    // voxel stands for rows -1 and -2: 2 x (0 - 1) + (0 - 1)).
+    EXPECT_FLOAT_EQ(mm[3], 3.0F / 8.0F * std::sqrt(2.0F));
     EXPECT_EQ(mm[11], 0.0F); // block 2: its apron voxel 15 has no bright neighbour
     // Block (0,1,0) (voxels j 8..) starts at j 7 with its apron: voxel (8,0,0) is two rows
     // away from it, so neither its intensity nor a gradient reaches it.
