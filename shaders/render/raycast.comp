@@ -253,8 +253,8 @@ float firstCrossing(vec3 origin, vec3 dir, float t, float tEnd) {
 // the data term's crossing where phi is a step: render/surface_smooth.glsl) by Newton steps
 // along the ray from there, shaded with its gradient. The Newton steps stay within a voxel of
 // the trilinear crossing (the B-spline's zero lies within a voxel of it: it reproduces linear
-// phi exactly, and D's crossing lies in the cell where phi changes sign); a grazing ray keeps
-// the trilinear crossing.
+// phi exactly, and where phi is a step the front stopped where D changes sign); a grazing ray
+// keeps the trilinear crossing.
 vec3 surfaceColour(vec3 origin, vec3 dir, vec3 rayWorld, float t) {
     float a = t - stepMm;
     float b = t;
