@@ -1,7 +1,9 @@
 #include "support/test_data.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <unistd.h>
+#include <vector>
 
 namespace steerseg::test {
 
@@ -58,11 +60,52 @@ std::filesystem::path steersegBinary() {
                           : std::filesystem::path(STEERSEG_DEFAULT_BINARY);
 }
 
+namespace {
+
+// The folders tempDir made in this process, removed when it ends (CTest runs each test in a
+// process of its own): a developer's /tmp gathered thousands of them. STEERSEG_KEEP_TEST_DIRS
+// keeps them, to look at what a failing test wrote.
+class TempDirs {
+  public:
+    ~TempDirs() {
+        // A forked child that exits without exec runs this too: the folders are its parent's.
+        if (::getpid() != owner_) {
+            return;
+        }
+        if (const char* keep = std::getenv("STEERSEG_KEEP_TEST_DIRS"); keep != nullptr && *keep) {
+            return;
+        }
+        for (const auto& dir : dirs_) {
+            std::error_code ec; // a folder a test made unremovable stays; nothing to report to
+            std::filesystem::permissions(dir, std::filesystem::perms::owner_all,
+                                         std::filesystem::perm_options::add, ec);
+            std::filesystem::remove_all(dir, ec);
+        }
+    }
+    void add(const std::filesystem::path& dir) {
+        if (std::find(dirs_.begin(), dirs_.end(), dir) == dirs_.end()) {
+            dirs_.push_back(dir);
+        }
+    }
+
+  private:
+    pid_t owner_ = ::getpid();
+    std::vector<std::filesystem::path> dirs_;
+};
+
+TempDirs& tempDirs() {
+    static TempDirs dirs;
+    return dirs;
+}
+
+} // namespace
+
 std::filesystem::path tempDir(const std::string& name) {
     auto dir = std::filesystem::temp_directory_path() /
                ("steerseg-test-" + name + "-" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
+    tempDirs().add(dir);
     return dir;
 }
 

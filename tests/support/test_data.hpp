@@ -24,7 +24,8 @@ std::string missingDataMessage(const std::filesystem::path& relative);
 // The steerseg binary under test (for command-line tests).
 std::filesystem::path steersegBinary();
 
-// A fresh empty temporary folder for one test.
+// A fresh empty temporary folder for one test, removed when the test's process ends
+// (STEERSEG_KEEP_TEST_DIRS=1 keeps it).
 std::filesystem::path tempDir(const std::string& name);
 
 } // namespace steerseg::test
