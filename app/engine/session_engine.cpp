@@ -195,18 +195,21 @@ model::SolverOptions consoleSolverOptions() {
 }
 
 void SessionEngine::addSeed(const model::Sphere& sphere) {
+    const ScopedSeconds timed(work_.edit);
     requireSession().addSeed(sphere);
     insideCounted_.reset();
     changed();
 }
 
 void SessionEngine::erase(const model::Sphere& sphere) {
+    const ScopedSeconds timed(work_.edit);
     requireSession().erase(sphere);
     insideCounted_.reset();
     changed();
 }
 
 bool SessionEngine::addBarrier(const model::Barrier& barrier) {
+    const ScopedSeconds timed(work_.edit);
     if (barriers_.size() >= model::kMaxBarriers) {
         return false;
     }
@@ -246,6 +249,7 @@ bool SessionEngine::hasLevelSet() const {
 }
 
 void SessionEngine::setParams(const model::LevelSetParams& params) {
+    const ScopedSeconds timed(work_.speed);
     requireSession().setParams(params);
     changed(); // the speed view shows the parameters
 }
@@ -264,6 +268,7 @@ session::SpeedSettings SessionEngine::edgeSettings() const {
 }
 
 void SessionEngine::setSpeed(const workflow::SpeedChoice& choice) {
+    const ScopedSeconds timed(work_.speed);
     session::Session& s = requireSession();
     session::SpeedSettings settings;
     if (choice.kind == model::SpeedKind::Edge) {
@@ -330,6 +335,7 @@ double SessionEngine::exactVolumeMl() const {
     if (insideCounted_ && volumeVersion_ == version_) {
         return millilitres(*insideCounted_);
     }
+    const ScopedSeconds timed(work_.count);
     const std::vector<std::uint8_t> mask = session_->mask();
     insideCounted_ = std::count_if(mask.begin(), mask.end(), [](std::uint8_t v) { return v != 0; });
     netAtCount_ = session_->stats().netGained;
@@ -343,12 +349,14 @@ double SessionEngine::millilitres(std::int64_t voxels) const {
 }
 
 workflow::SnapshotId SessionEngine::snapshot() {
+    const ScopedSeconds timed(work_.snapshot);
     const workflow::SnapshotId id = nextSnapshot_++;
     snapshots_[id] = {hasLevelSet() ? encodeRuns(requireSession().mask()) : MaskRuns{}, barriers_};
     return id;
 }
 
 void SessionEngine::restore(workflow::SnapshotId id) {
+    const ScopedSeconds timed(work_.restore);
     const auto it = snapshots_.find(id);
     if (it == snapshots_.end()) {
         throw std::logic_error("undo: snapshot " + std::to_string(id) + " is gone");

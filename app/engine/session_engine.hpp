@@ -4,6 +4,7 @@
 // session (scan texture, solver, renderer) built on the frame loop's thread, which owns the GL
 // context. Level-set snapshots for undo are masks kept in host memory.
 #include "core/mask_runs.hpp"
+#include "engine/work_seconds.hpp"
 #include "session/session.hpp"
 #include "session/speed_probe.hpp"
 #include "workflow/engine.hpp"
@@ -77,6 +78,7 @@ class SessionEngine final : public workflow::Engine {
     // last piece's cost). Returns whether a piece was filled; speedVersion() counts them.
     bool fillSpeedAhead(double seconds);
     [[nodiscard]] std::uint64_t speedVersion() const { return speedVersion_; }
+    [[nodiscard]] const WorkSeconds& workSeconds() const { return work_; }
 
   private:
     session::Session& requireSession() const;
@@ -110,6 +112,7 @@ class SessionEngine final : public workflow::Engine {
     std::uint64_t attached_ = 0;
     std::uint64_t speedVersion_ = 0;
     std::uint32_t aheadBricks_ = 1; // the next piece of fillSpeedAhead
+    mutable WorkSeconds work_;
     // The volume: the inside voxels counted on a mask read back from the GPU (after an edit,
     // and when asked for the exact figure), and while the front moves that count plus the
     // voxels the steps moved across the surface since (SolverStats::netGained): a run reads no
