@@ -56,8 +56,9 @@ std::string scanShortName(const std::string& path) {
     return name.empty() ? "scan" : name;
 }
 
-SessionEngine::SessionEngine(model::SolverOptions options, EdgeSpeedRules edge)
-    : options_(options), edge_(edge) {}
+SessionEngine::SessionEngine(model::SolverOptions options, EdgeSpeedRules edge,
+                             std::size_t undoGpuBytes)
+    : options_(options), edge_(edge), undoGpuBudget_(undoGpuBytes) {}
 
 SessionEngine::~SessionEngine() {
     if (pending_) {
@@ -130,6 +131,7 @@ workflow::LoadPoll SessionEngine::pollLoad() {
         // goes first so two scans never share the GPU's memory.
         session_.reset();
         snapshots_.clear();
+        undoGpuBytes_ = 0;
         lastProbe_.reset();
         session_ = std::make_unique<session::Session>(std::move(load->result), options_);
     } catch (const std::exception& e) {
@@ -336,8 +338,7 @@ double SessionEngine::exactVolumeMl() const {
         return millilitres(*insideCounted_);
     }
     const ScopedSeconds timed(work_.count);
-    const std::vector<std::uint8_t> mask = session_->mask();
-    insideCounted_ = std::count_if(mask.begin(), mask.end(), [](std::uint8_t v) { return v != 0; });
+    insideCounted_ = static_cast<std::int64_t>(session_->insideVoxels());
     netAtCount_ = session_->stats().netGained;
     volumeVersion_ = version_;
     return millilitres(*insideCounted_);
@@ -351,8 +352,40 @@ double SessionEngine::millilitres(std::int64_t voxels) const {
 workflow::SnapshotId SessionEngine::snapshot() {
     const ScopedSeconds timed(work_.snapshot);
     const workflow::SnapshotId id = nextSnapshot_++;
-    snapshots_[id] = {hasLevelSet() ? encodeRuns(requireSession().mask()) : MaskRuns{}, barriers_};
+    Snapshot s{std::nullopt, {}, barriers_};
+    if (hasLevelSet()) {
+        session::Session& session = requireSession();
+        try {
+            s.copy = session.copyLevelSet();
+            undoGpuBytes_ += s.copy->levelSet.bytes();
+        } catch (const std::exception&) {
+            // The GPU could not hold another copy: this one goes to host memory at once.
+            s.copy.reset();
+            s.mask = encodeRuns(session.mask());
+        }
+    }
+    snapshots_[id] = std::move(s);
+    keepUndoWithinBudget();
     return id;
+}
+
+// The oldest copies leave the GPU first: undo reaches them last.
+void SessionEngine::keepUndoWithinBudget() {
+    for (auto it = snapshots_.begin(); it != snapshots_.end() && undoGpuBytes_ > undoGpuBudget_;
+         ++it) {
+        Snapshot& s = it->second;
+        if (s.copy) {
+            s.mask = encodeRuns(requireSession().maskOf(*s.copy));
+            undoGpuBytes_ -= s.copy->levelSet.bytes();
+            s.copy.reset();
+        }
+    }
+}
+
+std::size_t SessionEngine::undoMasks() const {
+    return static_cast<std::size_t>(
+        std::count_if(snapshots_.begin(), snapshots_.end(),
+                      [](const auto& entry) { return !entry.second.mask.runs.empty(); }));
 }
 
 void SessionEngine::restore(workflow::SnapshotId id) {
@@ -362,17 +395,21 @@ void SessionEngine::restore(workflow::SnapshotId id) {
         throw std::logic_error("undo: snapshot " + std::to_string(id) + " is gone");
     }
     setBarriers(it->second.barriers);
-    if (it->second.mask.runs.empty()) {
-        requireSession().clearLevelSet();
+    if (it->second.copy) {
+        requireSession().restoreLevelSet(*it->second.copy);
+        insideCounted_.reset();
+        changed();
     } else {
-        requireSession().setMask(decodeRuns(it->second.mask));
+        putMask(it->second.mask);
     }
-    insideCounted_.reset();
-    changed();
 }
 
 void SessionEngine::setMask(const MaskRuns& mask) {
     setBarriers({}); // a mask alone: whoever restores the barriers places them again
+    putMask(mask);
+}
+
+void SessionEngine::putMask(const MaskRuns& mask) {
     if (mask.runs.empty()) {
         requireSession().clearLevelSet();
     } else {
@@ -383,7 +420,14 @@ void SessionEngine::setMask(const MaskRuns& mask) {
 }
 
 void SessionEngine::drop(workflow::SnapshotId id) {
-    snapshots_.erase(id);
+    const auto it = snapshots_.find(id);
+    if (it == snapshots_.end()) {
+        return;
+    }
+    if (it->second.copy) {
+        undoGpuBytes_ -= it->second.copy->levelSet.bytes();
+    }
+    snapshots_.erase(it);
 }
 
 void SessionEngine::exportMask(const std::filesystem::path& path) {

@@ -121,6 +121,19 @@ bool Session::hasLevelSet() const {
     return hasLevelSet_;
 }
 
+LevelSetCopy Session::copyLevelSet() const {
+    return {gpu_->solver.copyLevelSet(), hasLevelSet_};
+}
+
+void Session::restoreLevelSet(const LevelSetCopy& copy) {
+    gpu_->solver.restoreLevelSet(copy.levelSet);
+    hasLevelSet_ = copy.hasLevelSet;
+}
+
+std::vector<std::uint8_t> Session::maskOf(const LevelSetCopy& copy) const {
+    return gpu_->solver.readMask(copy.levelSet);
+}
+
 void Session::setParams(const model::LevelSetParams& params) {
     gpu_->solver.setParams(params);
 }
@@ -249,6 +262,10 @@ const model::SolverOptions& Session::options() const {
 
 std::vector<std::uint8_t> Session::mask() const {
     return gpu_->solver.readMask();
+}
+
+std::uint64_t Session::insideVoxels() const {
+    return gpu_->solver.countInside();
 }
 
 std::vector<float> Session::phi() const {

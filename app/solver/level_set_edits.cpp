@@ -18,9 +18,13 @@ using detail::groupsOf;
 using detail::kBrickArgs;
 
 void LevelSetSolver::uploadPhi(std::span<const float> phi) {
+    replaceLevelSet([&] { pool_->upload(phi, options_.dense); });
+}
+
+void LevelSetSolver::replaceLevelSet(const std::function<void()>& fill) {
     gpu::GlStateGuard guard;
     wakeAll(); // the new slots' states are unset until classify_bricks
-    pool_->upload(phi, options_.dense);
+    fill();
     pool_->bind();
     allocateAndList();
     dispatchIndirect(programs_->classifyBricks.id(), kBrickArgs);
