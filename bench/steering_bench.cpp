@@ -201,6 +201,8 @@ int run(const Options& o) {
                                                    {"speed", w.speed},
                                                    {"count", w.count},
                                                    {"other", r.firstChangeSeconds - w.total()}};
+                // GPU memory undo holds after the click (its snapshots' copies).
+                extra["undo_gpu_bytes"] = session.engine().undoGpuBytes();
                 extra["stop_reason"] = r.stopReason;
                 extra["iterations"] = r.iterations;
                 extra["T"] = r.T;

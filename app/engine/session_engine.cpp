@@ -201,6 +201,7 @@ void SessionEngine::addSeed(const model::Sphere& sphere) {
     requireSession().addSeed(sphere);
     insideCounted_.reset();
     changed();
+    lastPainted_ = Painted{{sphere, true}, version_};
 }
 
 void SessionEngine::erase(const model::Sphere& sphere) {
@@ -208,6 +209,7 @@ void SessionEngine::erase(const model::Sphere& sphere) {
     requireSession().erase(sphere);
     insideCounted_.reset();
     changed();
+    lastPainted_ = Painted{{sphere, false}, version_};
 }
 
 bool SessionEngine::addBarrier(const model::Barrier& barrier) {
@@ -215,7 +217,11 @@ bool SessionEngine::addBarrier(const model::Barrier& barrier) {
     if (barriers_.size() >= model::kMaxBarriers) {
         return false;
     }
-    requireSession().addBarrier(barrier); // cuts or fills its sphere
+    if (lastPainted_ && lastPainted_->version == version_ && lastPainted_->barrier == barrier) {
+        requireSession().holdBarrier(barrier);
+    } else {
+        requireSession().addBarrier(barrier); // cuts or fills its sphere
+    }
     barriers_.push_back(barrier);
     insideCounted_.reset();
     changed();

@@ -81,6 +81,10 @@ void Session::addBarrier(const model::Barrier& barrier) {
     gpu_->solver.addBarrier(barrier);
 }
 
+void Session::holdBarrier(const model::Barrier& barrier) {
+    gpu_->solver.holdBarrier(barrier);
+}
+
 void Session::clearBarriers() {
     gpu_->solver.clearBarriers();
 }
