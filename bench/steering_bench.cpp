@@ -7,7 +7,8 @@
 //                  --report R.json
 // The report: {"clicks": [...], "baseline": {"clicks": [...]}, "summary": {...}}, one entry a
 // click (0: the initial prompt) with its kind, voxel, radius, Dice, normalised surface Dice,
-// seconds from the click to the solver's stop and to its first visible change, stop reason.
+// seconds from the click to the solver's stop and to its first visible change (and where the
+// latter went: undo snapshots, the edit, the speed's training, the volume count), stop reason.
 #include "config/config_loader.hpp"
 #include "core/mask_overlap.hpp"
 #include "engine/click_session.hpp"
@@ -187,20 +188,28 @@ int run(const Options& o) {
             throw std::runtime_error("the reference is not on the scan's grid");
         }
         std::fprintf(stderr, "level set:\n");
-        Json steered = robot(grid, label, o, maxRadius,
-                             [&](int, const bench::RobotClick& c, double radius, Json& extra) {
-                                 model::Correct click{glm::dvec3(c.voxel), c.positive, radius};
-                                 const engine::ClickOutcome r =
-                                     session.apply(click, o.maxIterations);
-                                 extra["seconds"] = r.seconds;
-                                 extra["first_change_seconds"] = r.firstChangeSeconds;
-                                 extra["stop_reason"] = r.stopReason;
-                                 extra["iterations"] = r.iterations;
-                                 extra["T"] = r.T;
-                                 extra["eps"] = r.eps;
-                                 extra["barriers"] = r.barriers;
-                                 return session.mask();
-                             });
+        Json steered = robot(
+            grid, label, o, maxRadius,
+            [&](int, const bench::RobotClick& c, double radius, Json& extra) {
+                model::Correct click{glm::dvec3(c.voxel), c.positive, radius};
+                const engine::ClickOutcome r = session.apply(click, o.maxIterations);
+                extra["seconds"] = r.seconds;
+                extra["first_change_seconds"] = r.firstChangeSeconds;
+                const engine::WorkSeconds& w = r.firstChangeWork;
+                extra["first_change_breakdown"] = {{"snapshot", w.snapshot},
+                                                   {"edit", w.edit},
+                                                   {"speed", w.speed},
+                                                   {"count", w.count},
+                                                   {"other", r.firstChangeSeconds - w.total()}};
+                // GPU memory undo holds after the click (its snapshots' copies).
+                extra["undo_gpu_bytes"] = session.engine().undoGpuBytes();
+                extra["stop_reason"] = r.stopReason;
+                extra["iterations"] = r.iterations;
+                extra["T"] = r.T;
+                extra["eps"] = r.eps;
+                extra["barriers"] = r.barriers;
+                return session.mask();
+            });
         report["clicks"] = steered["clicks"];
         report["summary"] = steered["summary"];
         report["baseline"] = baseline;

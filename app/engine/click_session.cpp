@@ -41,6 +41,7 @@ ClickSession::ClickSession(const std::string& scanPath, const workflow::Settings
 
 ClickOutcome ClickSession::apply(const model::Correct& click, int maxIterations) {
     const auto start = Clock::now();
+    const WorkSeconds workBefore = engine_.workSeconds();
     const workflow::Workflow::Outcome out = flow_.handle(click);
     if (!out.accepted) {
         throw std::runtime_error("the click was refused: " + out.reason);
@@ -48,6 +49,7 @@ ClickOutcome ClickSession::apply(const model::Correct& click, int maxIterations)
     ClickOutcome r;
     engine_.session()->finishGpuWork();
     r.firstChangeSeconds = since(start);
+    r.firstChangeWork = engine_.workSeconds() - workBefore;
     const int startIterations = engine_.stats().iterations;
     int done = 0;
     model::StepResult last;

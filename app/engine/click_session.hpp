@@ -25,6 +25,7 @@ struct ClickOutcome {
     double seconds = 0.0;            // from the click to the stop, GPU work included
     double firstChangeSeconds = 0.0; // from the click to its edit on the GPU (what the next
                                      // frame shows)
+    WorkSeconds firstChangeWork;     // the engine's part of it (the rest: the workflow's own)
     double T = 0.0;
     double eps = 0.0;
     int barriers = 0;

@@ -56,8 +56,9 @@ std::string scanShortName(const std::string& path) {
     return name.empty() ? "scan" : name;
 }
 
-SessionEngine::SessionEngine(model::SolverOptions options, EdgeSpeedRules edge)
-    : options_(options), edge_(edge) {}
+SessionEngine::SessionEngine(model::SolverOptions options, EdgeSpeedRules edge,
+                             std::size_t undoGpuBytes)
+    : options_(options), edge_(edge), undoGpuBudget_(undoGpuBytes) {}
 
 SessionEngine::~SessionEngine() {
     if (pending_) {
@@ -130,6 +131,7 @@ workflow::LoadPoll SessionEngine::pollLoad() {
         // goes first so two scans never share the GPU's memory.
         session_.reset();
         snapshots_.clear();
+        undoGpuBytes_ = 0;
         lastProbe_.reset();
         session_ = std::make_unique<session::Session>(std::move(load->result), options_);
     } catch (const std::exception& e) {
@@ -195,22 +197,31 @@ model::SolverOptions consoleSolverOptions() {
 }
 
 void SessionEngine::addSeed(const model::Sphere& sphere) {
+    const ScopedSeconds timed(work_.edit);
     requireSession().addSeed(sphere);
     insideCounted_.reset();
     changed();
+    lastPainted_ = Painted{{sphere, true}, version_};
 }
 
 void SessionEngine::erase(const model::Sphere& sphere) {
+    const ScopedSeconds timed(work_.edit);
     requireSession().erase(sphere);
     insideCounted_.reset();
     changed();
+    lastPainted_ = Painted{{sphere, false}, version_};
 }
 
 bool SessionEngine::addBarrier(const model::Barrier& barrier) {
+    const ScopedSeconds timed(work_.edit);
     if (barriers_.size() >= model::kMaxBarriers) {
         return false;
     }
-    requireSession().addBarrier(barrier); // cuts or fills its sphere
+    if (lastPainted_ && lastPainted_->version == version_ && lastPainted_->barrier == barrier) {
+        requireSession().holdBarrier(barrier);
+    } else {
+        requireSession().addBarrier(barrier); // cuts or fills its sphere
+    }
     barriers_.push_back(barrier);
     insideCounted_.reset();
     changed();
@@ -246,6 +257,7 @@ bool SessionEngine::hasLevelSet() const {
 }
 
 void SessionEngine::setParams(const model::LevelSetParams& params) {
+    const ScopedSeconds timed(work_.speed);
     requireSession().setParams(params);
     changed(); // the speed view shows the parameters
 }
@@ -264,6 +276,7 @@ session::SpeedSettings SessionEngine::edgeSettings() const {
 }
 
 void SessionEngine::setSpeed(const workflow::SpeedChoice& choice) {
+    const ScopedSeconds timed(work_.speed);
     session::Session& s = requireSession();
     session::SpeedSettings settings;
     if (choice.kind == model::SpeedKind::Edge) {
@@ -330,8 +343,8 @@ double SessionEngine::exactVolumeMl() const {
     if (insideCounted_ && volumeVersion_ == version_) {
         return millilitres(*insideCounted_);
     }
-    const std::vector<std::uint8_t> mask = session_->mask();
-    insideCounted_ = std::count_if(mask.begin(), mask.end(), [](std::uint8_t v) { return v != 0; });
+    const ScopedSeconds timed(work_.count);
+    insideCounted_ = static_cast<std::int64_t>(session_->insideVoxels());
     netAtCount_ = session_->stats().netGained;
     volumeVersion_ = version_;
     return millilitres(*insideCounted_);
@@ -343,28 +356,66 @@ double SessionEngine::millilitres(std::int64_t voxels) const {
 }
 
 workflow::SnapshotId SessionEngine::snapshot() {
+    const ScopedSeconds timed(work_.snapshot);
     const workflow::SnapshotId id = nextSnapshot_++;
-    snapshots_[id] = {hasLevelSet() ? encodeRuns(requireSession().mask()) : MaskRuns{}, barriers_};
+    Snapshot s{std::nullopt, {}, barriers_};
+    if (hasLevelSet()) {
+        session::Session& session = requireSession();
+        try {
+            s.copy = session.copyLevelSet();
+            undoGpuBytes_ += s.copy->levelSet.bytes();
+        } catch (const std::exception&) {
+            // The GPU could not hold another copy: this one goes to host memory at once.
+            s.copy.reset();
+            s.mask = encodeRuns(session.mask());
+        }
+    }
+    snapshots_[id] = std::move(s);
+    keepUndoWithinBudget();
     return id;
 }
 
+// The oldest copies leave the GPU first: undo reaches them last.
+void SessionEngine::keepUndoWithinBudget() {
+    for (auto it = snapshots_.begin(); it != snapshots_.end() && undoGpuBytes_ > undoGpuBudget_;
+         ++it) {
+        Snapshot& s = it->second;
+        if (s.copy) {
+            s.mask = encodeRuns(requireSession().maskOf(*s.copy));
+            undoGpuBytes_ -= s.copy->levelSet.bytes();
+            s.copy.reset();
+        }
+    }
+}
+
+std::size_t SessionEngine::undoMasks() const {
+    return static_cast<std::size_t>(
+        std::count_if(snapshots_.begin(), snapshots_.end(),
+                      [](const auto& entry) { return !entry.second.mask.runs.empty(); }));
+}
+
 void SessionEngine::restore(workflow::SnapshotId id) {
+    const ScopedSeconds timed(work_.restore);
     const auto it = snapshots_.find(id);
     if (it == snapshots_.end()) {
         throw std::logic_error("undo: snapshot " + std::to_string(id) + " is gone");
     }
     setBarriers(it->second.barriers);
-    if (it->second.mask.runs.empty()) {
-        requireSession().clearLevelSet();
+    if (it->second.copy) {
+        requireSession().restoreLevelSet(*it->second.copy);
+        insideCounted_.reset();
+        changed();
     } else {
-        requireSession().setMask(decodeRuns(it->second.mask));
+        putMask(it->second.mask);
     }
-    insideCounted_.reset();
-    changed();
 }
 
 void SessionEngine::setMask(const MaskRuns& mask) {
     setBarriers({}); // a mask alone: whoever restores the barriers places them again
+    putMask(mask);
+}
+
+void SessionEngine::putMask(const MaskRuns& mask) {
     if (mask.runs.empty()) {
         requireSession().clearLevelSet();
     } else {
@@ -375,7 +426,14 @@ void SessionEngine::setMask(const MaskRuns& mask) {
 }
 
 void SessionEngine::drop(workflow::SnapshotId id) {
-    snapshots_.erase(id);
+    const auto it = snapshots_.find(id);
+    if (it == snapshots_.end()) {
+        return;
+    }
+    if (it->second.copy) {
+        undoGpuBytes_ -= it->second.copy->levelSet.bytes();
+    }
+    snapshots_.erase(it);
 }
 
 void SessionEngine::exportMask(const std::filesystem::path& path) {

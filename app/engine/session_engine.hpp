@@ -2,8 +2,10 @@
 
 // The workflow's engine on the real thing: scans read by io on a worker thread, then the
 // session (scan texture, solver, renderer) built on the frame loop's thread, which owns the GL
-// context. Level-set snapshots for undo are masks kept in host memory.
+// context. Level-set snapshots for undo are copies in GPU memory (session::LevelSetCopy) up to
+// a budget, beyond which the oldest become masks in host memory.
 #include "core/mask_runs.hpp"
+#include "engine/work_seconds.hpp"
 #include "session/session.hpp"
 #include "session/speed_probe.hpp"
 #include "workflow/engine.hpp"
@@ -29,9 +31,17 @@ struct EdgeSpeedRules {
 // where); everything else as SolverOptions' defaults.
 model::SolverOptions consoleSolverOptions();
 
+// GPU memory undo's copies may hold. Each copies the brick pool, so it follows the surface, not
+// the scan: a 256^3 scan whose pool held every brick would copy 66 MB, MNI152's white matter
+// after its first run copies ~12 MB (2 of them per correction). Beyond it the oldest copies move
+// to host memory as masks (what every snapshot was before, ~70 ms each there), so a long session
+// on a large scan cannot fill the GPU through undo.
+inline constexpr std::size_t kUndoGpuBytes = std::size_t{256} << 20U;
+
 class SessionEngine final : public workflow::Engine {
   public:
-    explicit SessionEngine(model::SolverOptions options = {}, EdgeSpeedRules edge = {});
+    explicit SessionEngine(model::SolverOptions options = {}, EdgeSpeedRules edge = {},
+                           std::size_t undoGpuBytes = kUndoGpuBytes);
     ~SessionEngine() override;
     SessionEngine(const SessionEngine&) = delete;
     SessionEngine& operator=(const SessionEngine&) = delete;
@@ -77,6 +87,10 @@ class SessionEngine final : public workflow::Engine {
     // last piece's cost). Returns whether a piece was filled; speedVersion() counts them.
     bool fillSpeedAhead(double seconds);
     [[nodiscard]] std::uint64_t speedVersion() const { return speedVersion_; }
+    [[nodiscard]] const WorkSeconds& workSeconds() const { return work_; }
+    // GPU memory undo's copies hold now (at most the budget) and snapshots kept as masks.
+    [[nodiscard]] std::size_t undoGpuBytes() const { return undoGpuBytes_; }
+    [[nodiscard]] std::size_t undoMasks() const;
 
   private:
     session::Session& requireSession() const;
@@ -97,23 +111,37 @@ class SessionEngine final : public workflow::Engine {
     // Loads replaced before they finished: a read cannot be interrupted, so they are joined on
     // destruction instead of detached with the scan they are writing into.
     std::vector<std::unique_ptr<PendingLoad>> abandoned_;
-    // A level set as undo keeps it: the mask (empty runs: none) and the barriers in force.
+    // A level set as undo keeps it: its copy in GPU memory, or once moved out of the budget
+    // its mask (no copy and empty runs: none), and the barriers in force.
     struct Snapshot {
+        std::optional<session::LevelSetCopy> copy;
         MaskRuns mask;
         std::vector<model::Barrier> barriers;
     };
     void setBarriers(const std::vector<model::Barrier>& barriers);
+    void putMask(const MaskRuns& mask);
+    void keepUndoWithinBudget();
+    std::size_t undoGpuBudget_;
+    std::size_t undoGpuBytes_ = 0;
     std::map<workflow::SnapshotId, Snapshot> snapshots_;
     std::vector<model::Barrier> barriers_; // as the solver holds them
+    // The last sphere painted and the level set's version it left: a barrier on that sphere
+    // and side right after it (a correction) is held without painting it again.
+    struct Painted {
+        model::Barrier barrier;
+        std::uint64_t version = 0;
+    };
+    std::optional<Painted> lastPainted_;
     workflow::SnapshotId nextSnapshot_ = 1;
     std::uint64_t version_ = 0;
     std::uint64_t attached_ = 0;
     std::uint64_t speedVersion_ = 0;
     std::uint32_t aheadBricks_ = 1; // the next piece of fillSpeedAhead
-    // The volume: the inside voxels counted on a mask read back from the GPU (after an edit,
-    // and when asked for the exact figure), and while the front moves that count plus the
-    // voxels the steps moved across the surface since (SolverStats::netGained): a run reads no
-    // mask back, which on a 512x512x120 scan cost llvmpipe a frame twice a second.
+    mutable WorkSeconds work_;
+    // The volume: the inside voxels counted on the pool read back from the GPU (after an edit,
+    // and when asked for the exact figure; Session::insideVoxels), and while the front moves that
+    // count plus the voxels the steps moved across the surface since (SolverStats::netGained): a
+    // run reads no mask back, which on a 512x512x120 scan cost llvmpipe a frame twice a second.
     mutable std::optional<std::int64_t> insideCounted_;
     mutable std::int64_t netAtCount_ = 0;     // SolverStats::netGained when it was counted
     mutable std::uint64_t volumeVersion_ = 0; // the level set's version it was counted on

@@ -81,6 +81,10 @@ void Session::addBarrier(const model::Barrier& barrier) {
     gpu_->solver.addBarrier(barrier);
 }
 
+void Session::holdBarrier(const model::Barrier& barrier) {
+    gpu_->solver.holdBarrier(barrier);
+}
+
 void Session::clearBarriers() {
     gpu_->solver.clearBarriers();
 }
@@ -119,6 +123,19 @@ void Session::clearLevelSet() {
 
 bool Session::hasLevelSet() const {
     return hasLevelSet_;
+}
+
+LevelSetCopy Session::copyLevelSet() const {
+    return {gpu_->solver.copyLevelSet(), hasLevelSet_};
+}
+
+void Session::restoreLevelSet(const LevelSetCopy& copy) {
+    gpu_->solver.restoreLevelSet(copy.levelSet);
+    hasLevelSet_ = copy.hasLevelSet;
+}
+
+std::vector<std::uint8_t> Session::maskOf(const LevelSetCopy& copy) const {
+    return gpu_->solver.readMask(copy.levelSet);
 }
 
 void Session::setParams(const model::LevelSetParams& params) {
@@ -249,6 +266,10 @@ const model::SolverOptions& Session::options() const {
 
 std::vector<std::uint8_t> Session::mask() const {
     return gpu_->solver.readMask();
+}
+
+std::uint64_t Session::insideVoxels() const {
+    return gpu_->solver.countInside();
 }
 
 std::vector<float> Session::phi() const {

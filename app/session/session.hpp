@@ -14,6 +14,7 @@
 #include "scan/scan_reader.hpp"
 #include "session/probe.hpp"
 #include "session/speed_settings.hpp"
+#include "solver/level_set_copy.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -36,6 +37,12 @@ struct RunMode {
 struct RunOutcome {
     model::StepResult result;
     double solveSeconds = 0.0; // solver only, GPU work finished
+};
+
+// The level set copied in GPU memory for undo (Session::copyLevelSet, solver::LevelSetCopy).
+struct LevelSetCopy {
+    solver::LevelSetCopy levelSet;
+    bool hasLevelSet = false;
 };
 
 class Session {
@@ -61,6 +68,8 @@ class Session {
     // A barrier: an erase that stays a no-go region for the rest of the run (a leak's neck).
     // At most model::kMaxBarriers; std::invalid_argument beyond.
     void addBarrier(const model::Barrier& barrier);
+    // A barrier whose sphere was just painted on its side (solver::LevelSetSolver::holdBarrier).
+    void holdBarrier(const model::Barrier& barrier);
     void clearBarriers();
     // Where the surface may move (solver::LevelSetSolver::setReach); nullopt: everywhere.
     void setReach(const std::optional<model::Sphere>& reach);
@@ -75,6 +84,12 @@ class Session {
     void setMask(std::span<const std::uint8_t> inside);
     void clearLevelSet();
     [[nodiscard]] bool hasLevelSet() const;
+    // Undo's copies: a few buffer copies on the GPU each way; restoreLevelSet gives back
+    // exactly the level set copied (barriers and reach stay as they are now), maskOf reads a
+    // copy back as mask() reads the level set. std::invalid_argument for another scan's copy.
+    [[nodiscard]] LevelSetCopy copyLevelSet() const;
+    void restoreLevelSet(const LevelSetCopy& copy);
+    [[nodiscard]] std::vector<std::uint8_t> maskOf(const LevelSetCopy& copy) const;
 
     // Validated (std::invalid_argument); may change between any two steps.
     void setParams(const model::LevelSetParams& params);
@@ -102,6 +117,8 @@ class Session {
 
     // 1 inside, i fastest; reads the level set back from the GPU.
     [[nodiscard]] std::vector<std::uint8_t> mask() const;
+    // The voxels inside, counted without reading the whole level set back.
+    [[nodiscard]] std::uint64_t insideVoxels() const;
     // The level set, phi < 0 inside, in voxel units, i fastest; read back from the GPU.
     [[nodiscard]] std::vector<float> phi() const;
     // The segmentation as `format` (exports::writeExport): voxel formats from the mask on the

@@ -161,10 +161,7 @@ void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
     std::vector<std::uint32_t> page(brickCount_, kBrickOutside);
     std::vector<std::uint32_t> usedBricks;
     for (std::uint32_t n = 0; n < brickCount_; ++n) {
-        const glm::ivec3 o =
-            glm::ivec3(static_cast<int>(n) % grid_.x, (static_cast<int>(n) / grid_.x) % grid_.y,
-                       static_cast<int>(n) / (grid_.x * grid_.y)) *
-            b;
+        const glm::ivec3 o = brickOrigin(n);
         bool negative = false;
         bool positive = false;
         bool live = false;
@@ -202,10 +199,7 @@ void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
     for (std::uint32_t s = 0; s < used; ++s) {
         const std::uint32_t n = usedBricks[s];
         slotBrick[s] = n;
-        const glm::ivec3 o =
-            glm::ivec3(static_cast<int>(n) % grid_.x, (static_cast<int>(n) / grid_.x) % grid_.y,
-                       static_cast<int>(n) / (grid_.x * grid_.y)) *
-            b;
+        const glm::ivec3 o = brickOrigin(n);
         std::size_t v = s * bv;
         for (int k = 0; k < b; ++k) {
             for (int j = 0; j < b; ++j) {
@@ -223,21 +217,100 @@ void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
     gpu::writeBuffer(slotBrick_, 0, slotBrick.data(), slotBrick.size() * 4);
     gpu::writeBuffer(freeList_, 0, freeList.data(), freeList.size() * 4);
     gpu::writeBuffer(pageTable_, 0, page.data(), page.size() * 4);
+    resetControl(capacity - used);
+    gpu::checkGl("uploading the level set");
+}
 
+glm::ivec3 GpuBrickPool::brickOrigin(std::uint32_t brick) const {
+    const auto n = static_cast<int>(brick);
+    return glm::ivec3(n % grid_.x, (n / grid_.x) % grid_.y, n / (grid_.x * grid_.y)) * brickSize_;
+}
+
+void GpuBrickPool::resetControl(std::uint32_t freeCount) {
     ControlBlock ctrl = readControl();
     ctrl.requestCount = 0;
     ctrl.activeCount = 0;
     ctrl.popped = 0;
     ctrl.stalled = 0;
-    ctrl.freeCount = capacity - used;
+    ctrl.freeCount = freeCount;
     writeControl(ctrl);
-    gpu::checkGl("uploading the level set");
 }
 
-std::vector<float> GpuBrickPool::download() const {
+PoolCopy GpuBrickPool::copy(const ControlBlock& ctrl) const {
+    PoolCopy c;
+    c.capacity = capacity_;
+    c.freeCount = ctrl.freeCount;
+    const std::size_t phiBytes = capacity_ * brickBytes();
+    c.pageTable = makeBuffer(brickCount_ * 4);
+    c.phi = makeBuffer(phiBytes);
+    c.slotBrick = makeBuffer(capacity_ * 4);
+    c.freeList = makeBuffer(c.freeCount * 4);
+    copyBuffer(pageTable_, c.pageTable, 0, 0, brickCount_ * 4);
+    copyBuffer(phi_, c.phi, 0, 0, phiBytes);
+    copyBuffer(slotBrick_, c.slotBrick, 0, 0, capacity_ * 4);
+    if (c.freeCount > 0) {
+        copyBuffer(freeList_, c.freeList, 0, 0, c.freeCount * 4);
+    }
+    c.bytes = phiBytes + (brickCount_ + capacity_ + c.freeCount) * std::size_t{4};
+    gpu::checkGl("copying the level set");
+    return c;
+}
+
+void GpuBrickPool::restore(const PoolCopy& c) {
+    allocateSlotBuffers(c.capacity);
+    copyBuffer(c.pageTable, pageTable_, 0, 0, brickCount_ * 4);
+    copyBuffer(c.phi, phi_, 0, 0, c.capacity * brickBytes());
+    copyBuffer(c.slotBrick, slotBrick_, 0, 0, c.capacity * 4);
+    if (c.freeCount > 0) {
+        copyBuffer(c.freeList, freeList_, 0, 0, c.freeCount * 4);
+    }
+    resetControl(c.freeCount);
+    gpu::checkGl("restoring the level set");
+}
+
+std::uint64_t GpuBrickPool::countInside() const {
     const auto page = gpu::readBuffer<std::uint32_t>(pageTable_, brickCount_, "a solver buffer");
     const std::size_t bv = brickBytes() / sizeof(float);
     const auto pool = gpu::readBuffer<float>(phi_, capacity_ * bv, "a solver buffer");
+    const int b = brickSize_;
+    std::uint64_t inside = 0;
+    for (std::uint32_t n = 0; n < brickCount_; ++n) {
+        if (page[n] == kBrickOutside) {
+            continue;
+        }
+        // A brick on the far faces reaches past the scan: only its voxels inside count.
+        const glm::ivec3 o = brickOrigin(n);
+        const glm::ivec3 extent = glm::min(o + b, dims_) - o;
+        if (page[n] == kBrickInside) {
+            inside += static_cast<std::uint64_t>(extent.x) * static_cast<std::uint64_t>(extent.y) *
+                      static_cast<std::uint64_t>(extent.z);
+            continue;
+        }
+        const float* brick = pool.data() + page[n] * bv;
+        for (int k = 0; k < extent.z; ++k) {
+            for (int j = 0; j < extent.y; ++j) {
+                const float* row = brick + static_cast<std::ptrdiff_t>(b * (j + b * k));
+                inside += static_cast<std::uint64_t>(
+                    std::count_if(row, row + extent.x, [](float p) { return p < 0.0F; }));
+            }
+        }
+    }
+    return inside;
+}
+
+std::vector<float> GpuBrickPool::download() const {
+    return densePhi(pageTable_, phi_, capacity_);
+}
+
+std::vector<float> GpuBrickPool::download(const PoolCopy& copy) const {
+    return densePhi(copy.pageTable, copy.phi, copy.capacity);
+}
+
+std::vector<float> GpuBrickPool::densePhi(const gpu::Buffer& pageTable, const gpu::Buffer& phiPool,
+                                          std::uint32_t capacity) const {
+    const auto page = gpu::readBuffer<std::uint32_t>(pageTable, brickCount_, "a solver buffer");
+    const std::size_t bv = brickBytes() / sizeof(float);
+    const auto pool = gpu::readBuffer<float>(phiPool, capacity * bv, "a solver buffer");
     std::vector<float> phi(static_cast<std::size_t>(dims_.x) * static_cast<std::size_t>(dims_.y) *
                            static_cast<std::size_t>(dims_.z));
     const int b = brickSize_;

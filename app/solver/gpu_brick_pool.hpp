@@ -16,6 +16,18 @@ namespace steerseg::solver::detail {
 
 inline constexpr std::uint32_t kNoBrick = 0xFFFFFFFFu;
 
+// The pool's level set copied on the GPU (undo, LevelSetCopy): the phi of every slot, the page
+// table and the slot tables, which GpuBrickPool::restore puts back as they were.
+struct PoolCopy {
+    gpu::Buffer pageTable;
+    gpu::Buffer phi;
+    gpu::Buffer slotBrick;
+    gpu::Buffer freeList; // its first freeCount words
+    std::uint32_t capacity = 0;
+    std::uint32_t freeCount = 0;
+    std::size_t bytes = 0;
+};
+
 // Pool slots to hold `used` bricks plus a margin for the band's advance until the next check:
 // what it grew over the last check (`growth`), the pending requests, and 1/16 of the band (a band
 // that speeds up by more than that stalls once and is grown). Kept tight: with the shell scratch
@@ -42,8 +54,18 @@ class GpuBrickPool {
     // inside where `phi` is empty. `dense`: every
     // brick gets a slot (the dense benchmark mode). Resets the control block.
     void upload(std::span<const float> phi, bool dense);
-    // Dense phi of the current buffer (tests, mask output; not per iteration).
+    // Dense phi of the current buffer (tests, mask output; not per iteration), or of a copy.
     [[nodiscard]] std::vector<float> download() const;
+    [[nodiscard]] std::vector<float> download(const PoolCopy& copy) const;
+    // Voxels inside (phi < 0), counted on the pool as it is stored: the page table and the
+    // slots' phi read back, no dense phi built.
+    [[nodiscard]] std::uint64_t countInside() const;
+
+    // Copies the level set into new buffers on the GPU; `ctrl` must be fresh.
+    [[nodiscard]] PoolCopy copy(const ControlBlock& ctrl) const;
+    // Replaces the level set by a copy this pool took, as upload does (the slots' states are
+    // unset until classify_bricks).
+    void restore(const PoolCopy& copy);
 
     // Grows to newCapacity slots, copying on the GPU; `ctrl` must be fresh.
     void grow(std::uint32_t newCapacity, const ControlBlock& ctrl);
@@ -79,6 +101,11 @@ class GpuBrickPool {
 
   private:
     void allocateSlotBuffers(std::uint32_t capacity);
+    // The control block of a pool just filled: nothing requested or active, `freeCount` free.
+    void resetControl(std::uint32_t freeCount);
+    [[nodiscard]] glm::ivec3 brickOrigin(std::uint32_t brick) const;
+    [[nodiscard]] std::vector<float> densePhi(const gpu::Buffer& pageTable, const gpu::Buffer& phi,
+                                              std::uint32_t capacity) const;
 
     glm::ivec3 dims_;
     glm::ivec3 grid_;

@@ -18,9 +18,13 @@ using detail::groupsOf;
 using detail::kBrickArgs;
 
 void LevelSetSolver::uploadPhi(std::span<const float> phi) {
+    replaceLevelSet([&] { pool_->upload(phi, options_.dense); });
+}
+
+void LevelSetSolver::replaceLevelSet(const std::function<void()>& fill) {
     gpu::GlStateGuard guard;
     wakeAll(); // the new slots' states are unset until classify_bricks
-    pool_->upload(phi, options_.dense);
+    fill();
     pool_->bind();
     allocateAndList();
     dispatchIndirect(programs_->classifyBricks.id(), kBrickArgs);
@@ -122,7 +126,7 @@ void LevelSetSolver::noteChange() {
     runawayWatch_.reset();
 }
 
-void LevelSetSolver::addBarrier(const model::Barrier& barrier) {
+void LevelSetSolver::holdBarrier(const model::Barrier& barrier) {
     model::validateSphere(barrier.sphere, dims_);
     if (barriers_.size() >= model::kMaxBarriers) {
         throw std::invalid_argument("at most " + std::to_string(model::kMaxBarriers) +
@@ -130,6 +134,11 @@ void LevelSetSolver::addBarrier(const model::Barrier& barrier) {
     }
     barriers_.push_back(barrier);
     uploadBarriers();
+    noteChange(); // the speed changed around it
+}
+
+void LevelSetSolver::addBarrier(const model::Barrier& barrier) {
+    holdBarrier(barrier);
     // The sphere takes its side at once, as a seed or an erase would.
     if (barrier.keep) {
         addSphere(barrier.sphere);

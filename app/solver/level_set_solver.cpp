@@ -352,6 +352,11 @@ std::vector<std::uint8_t> LevelSetSolver::readMask() const {
     return insideMask(readPhi());
 }
 
+std::uint64_t LevelSetSolver::countInside() const {
+    gpu::GlStateGuard guard;
+    return pool_->countInside();
+}
+
 std::vector<float> LevelSetSolver::readPhi() const {
     gpu::GlStateGuard guard;
     return pool_->download();

@@ -9,6 +9,7 @@
 #include "solver/control_block.hpp"
 #include "solver/front_check.hpp"
 #include "solver/leak_watch.hpp"
+#include "solver/level_set_copy.hpp"
 #include "solver/runaway_watch.hpp"
 #include "solver/settle_watch.hpp"
 #include "speed/speed_inputs.hpp"
@@ -76,6 +77,10 @@ class LevelSetSolver {
     // cuts the surface out of a blocking sphere, or fills a keeping one, at once. At most
     // kMaxBarriers (std::invalid_argument beyond, or for a sphere validateSphere refuses).
     void addBarrier(const model::Barrier& barrier);
+    // The same without painting the sphere, for one painted on its side just before (a
+    // correction paints its sphere, then holds it): painting it again changes no voxel, and an
+    // edit's pass over the band cost llvmpipe ~40-100 ms on a 256^3 brain.
+    void holdBarrier(const model::Barrier& barrier);
     void clearBarriers();
     [[nodiscard]] const std::vector<model::Barrier>& barriers() const { return barriers_; }
     // Where the surface may move (shaders/solver/update_phi.comp): a sphere, for a correction's
@@ -99,9 +104,17 @@ class LevelSetSolver {
     model::StepResult runUntilConverged(int maxIterations);
     [[nodiscard]] bool converged() const;
 
-    // 1 inside (phi < 0), i fastest; reads the level set back (not per iteration).
+    // Undo's copies (LevelSetCopy): taken on the GPU, restored exactly, barriers, reach and
+    // parameters left as they are. std::invalid_argument for a copy of another solver's grid.
+    [[nodiscard]] LevelSetCopy copyLevelSet() const;
+    void restoreLevelSet(const LevelSetCopy& copy);
+
+    // 1 inside (phi < 0), i fastest; reads the level set back (not per iteration), or a copy.
     [[nodiscard]] std::vector<std::uint8_t> readMask() const;
+    [[nodiscard]] std::vector<std::uint8_t> readMask(const LevelSetCopy& copy) const;
     [[nodiscard]] std::vector<float> readPhi() const;
+    // Voxels inside (phi < 0) without a dense read-back: the volume after an edit.
+    [[nodiscard]] std::uint64_t countInside() const;
 
     // The level set for readers (renderer); valid until the next step or edit.
     [[nodiscard]] BrickPoolView poolView() const;
@@ -126,6 +139,9 @@ class LevelSetSolver {
     void editSphere(const model::Sphere& sphere, bool add);
     // A dense phi, or empty: everything outside.
     void uploadPhi(std::span<const float> phi);
+    // Fills the pool by `fill` (an upload, a copy restored) and lists and classifies its bricks.
+    void replaceLevelSet(const std::function<void()>& fill);
+    void requireCopyOfThis(const LevelSetCopy& copy) const;
     void noteChange();
     void uploadBarriers();
     void uploadReach();

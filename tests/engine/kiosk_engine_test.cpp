@@ -1,5 +1,6 @@
 // The kiosk's engine on the real session: scans read off the calling thread, sphere edits,
-// steps, undo snapshots, export; and the screen compositor's placement and rotation.
+// steps, undo snapshots (GPU copies within a budget, masks beyond), export; and the screen
+// compositor's placement and rotation.
 #include "core/sample_phantom.hpp"
 #include "engine/session_engine.hpp"
 #include "kiosk/screen_compositor.hpp"
@@ -179,6 +180,69 @@ TEST_F(KioskEngine, LoadsSeedsStepsUndoesAndExports) {
     EXPECT_THROW(engine.exportMask(dir / "mask.dcm"), files::WriteError);
     EXPECT_THROW(engine.exportMask(dir / "mask.obj"), files::WriteError);
     std::filesystem::remove_all(dir);
+}
+
+// Undo's copies live in GPU memory up to the engine's budget; beyond it the oldest become masks
+// in host memory. A copy restores the very phi it copied, after a run too; a mask its voxels.
+TEST_F(KioskEngine, UndoCopiesStayWithinTheirGpuBudgetAndRestoreWhatTheyTook) {
+    const auto seeded = [](SessionEngine& engine) {
+        engine.beginLoad("builtin:sample");
+        ASSERT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
+        const glm::vec3 centre = glm::vec3(engine.scanInfo().dims) * 0.5F;
+        const workflow::ProbeResult probe = engine.probe(glm::dvec3(centre), 4.0);
+        engine.addSeed({centre, 4.0F});
+        engine.setParams(
+            {static_cast<float>(probe.mean), static_cast<float>(3.0 * probe.stddev + 1.0), 1.0F});
+        engine.step(10);
+    };
+    SessionEngine roomy;
+    seeded(roomy);
+    const std::vector<float> phi = roomy.session()->phi();
+    const workflow::SnapshotId first = roomy.snapshot();
+    const std::size_t oneCopy = roomy.undoGpuBytes();
+    EXPECT_GT(oneCopy, 0U);
+    roomy.step(20);
+    const std::vector<float> later = roomy.session()->phi();
+    const workflow::SnapshotId second = roomy.snapshot();
+    roomy.step(20);
+    EXPECT_EQ(roomy.undoMasks(), 0U);
+    roomy.restore(first);
+    EXPECT_EQ(roomy.session()->phi(), phi);
+    roomy.restore(second);
+    EXPECT_EQ(roomy.session()->phi(), later);
+    roomy.drop(first);
+    roomy.drop(second);
+    EXPECT_EQ(roomy.undoGpuBytes(), 0U);
+
+    // Room for one copy: the older one moves to host memory.
+    SessionEngine tight(model::SolverOptions{}, {}, oneCopy + oneCopy / 2);
+    seeded(tight);
+    const std::vector<std::uint8_t> mask = tight.session()->mask();
+    const workflow::SnapshotId older = tight.snapshot();
+    tight.step(20);
+    const std::vector<float> newerPhi = tight.session()->phi();
+    const workflow::SnapshotId newer = tight.snapshot();
+    EXPECT_LE(tight.undoGpuBytes(), oneCopy + oneCopy / 2);
+    EXPECT_EQ(tight.undoMasks(), 1U);
+    tight.step(20);
+    tight.restore(older);
+    EXPECT_EQ(tight.session()->mask(), mask);
+    tight.restore(newer);
+    EXPECT_EQ(tight.session()->phi(), newerPhi);
+    tight.drop(newer);
+    EXPECT_EQ(tight.undoGpuBytes(), 0U);
+    EXPECT_EQ(tight.undoMasks(), 1U);
+
+    // No room at all: every snapshot is a mask, and still restores.
+    SessionEngine none(model::SolverOptions{}, {}, 0);
+    seeded(none);
+    const std::vector<std::uint8_t> noneMask = none.session()->mask();
+    const workflow::SnapshotId only = none.snapshot();
+    EXPECT_EQ(none.undoGpuBytes(), 0U);
+    EXPECT_EQ(none.undoMasks(), 1U);
+    none.step(20);
+    none.restore(only);
+    EXPECT_EQ(none.session()->mask(), noneMask);
 }
 
 TEST_F(KioskEngine, AFailedLoadSaysWhyAndKeepsTheScanItHad) {

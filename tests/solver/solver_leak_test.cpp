@@ -195,5 +195,37 @@ TEST_F(SolverLeakTest, RefusesMoreBarriersThanTheShaderHolds) {
     EXPECT_TRUE(solver.barriers().empty());
 }
 
+// A correction paints its sphere and then holds it: held without a second paint, the run that
+// follows is the one after addBarrier's own paint, voxel for voxel, for both kinds.
+TEST_F(SolverLeakTest, HoldingAPaintedSphereIsAddingItsBarrier) {
+    const std::vector<float> volume = dumbbell();
+    const glm::vec3 outside{36.0F, 16.0F, 6.0F};
+    for (const bool keep : {true, false}) {
+        SCOPED_TRACE(keep);
+        const Barrier barrier{{keep ? outside : glm::vec3(kNeckMiddleX, 16.0F, 16.0F), 3.0F}, keep};
+        std::vector<std::vector<float>> phis;
+        for (const bool held : {false, true}) {
+            LevelSetSolver solver(volume, kDims);
+            solver.setParams(kParams);
+            solver.addSphere({kBallA, 3.0F});
+            solver.step(40);
+            if (keep) {
+                solver.addSphere(barrier.sphere);
+            } else {
+                solver.removeSphere(barrier.sphere);
+            }
+            if (held) {
+                solver.holdBarrier(barrier);
+            } else {
+                solver.addBarrier(barrier);
+            }
+            EXPECT_EQ(solver.barriers().size(), 1U);
+            solver.step(60);
+            phis.push_back(solver.readPhi());
+        }
+        EXPECT_EQ(phis[0], phis[1]);
+    }
+}
+
 } // namespace
 } // namespace steerseg::test
