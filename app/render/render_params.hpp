@@ -27,15 +27,15 @@ struct ClipPlane {
     double d = 0.0;
 };
 
-// The data term of the segmentation speed, D(I) = eps - |I - T| (real units), or the kind the
-// renderer's speed inputs name.
+// The data term of the segmentation speed: D(I) = eps - |I - T| (real units) for the threshold
+// and edge speeds; classify's reads neither.
 struct SpeedParams {
     double T = 0.0;
     double eps = 1.0;
     // The level set drawn was moved by this data term (the solver's own, with this T and eps):
-    // where phi is a step, the 3D view puts the surface at the term's zero crossing within the
-    // cell where phi changes sign (shaders/render/surface_smooth.glsl). False for a mask from
-    // elsewhere, whose boundary no speed drew.
+    // where phi is a step, the 3D view puts the surface at the term's zero crossing near
+    // phi's (shaders/render/surface_smooth.glsl). False for a mask from elsewhere, whose
+    // boundary no speed drew.
     bool placesSurface = false;
 };
 
