@@ -201,7 +201,6 @@ void SessionEngine::addSeed(const model::Sphere& sphere) {
     requireSession().addSeed(sphere);
     insideCounted_.reset();
     changed();
-    lastPainted_ = Painted{{sphere, true}, version_};
 }
 
 void SessionEngine::erase(const model::Sphere& sphere) {
@@ -209,7 +208,6 @@ void SessionEngine::erase(const model::Sphere& sphere) {
     requireSession().erase(sphere);
     insideCounted_.reset();
     changed();
-    lastPainted_ = Painted{{sphere, false}, version_};
 }
 
 bool SessionEngine::addBarrier(const model::Barrier& barrier) {
@@ -217,11 +215,7 @@ bool SessionEngine::addBarrier(const model::Barrier& barrier) {
     if (barriers_.size() >= model::kMaxBarriers) {
         return false;
     }
-    if (lastPainted_ && lastPainted_->version == version_ && lastPainted_->barrier == barrier) {
-        requireSession().holdBarrier(barrier);
-    } else {
-        requireSession().addBarrier(barrier); // cuts or fills its sphere
-    }
+    requireSession().holdBarrier(barrier); // its sphere is on its side already
     barriers_.push_back(barrier);
     insideCounted_.reset();
     changed();
@@ -239,7 +233,7 @@ void SessionEngine::setBarriers(const std::vector<model::Barrier>& barriers) {
     s.clearBarriers();
     barriers_.clear();
     for (const model::Barrier& b : barriers) {
-        s.addBarrier(b);
+        s.holdBarrier(b); // the level set restored with them holds their spheres
         barriers_.push_back(b);
     }
     insideCounted_.reset();

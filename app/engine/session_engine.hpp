@@ -125,13 +125,6 @@ class SessionEngine final : public workflow::Engine {
     std::size_t undoGpuBytes_ = 0;
     std::map<workflow::SnapshotId, Snapshot> snapshots_;
     std::vector<model::Barrier> barriers_; // as the solver holds them
-    // The last sphere painted and the level set's version it left: a barrier on that sphere
-    // and side right after it (a correction) is held without painting it again.
-    struct Painted {
-        model::Barrier barrier;
-        std::uint64_t version = 0;
-    };
-    std::optional<Painted> lastPainted_;
     workflow::SnapshotId nextSnapshot_ = 1;
     std::uint64_t version_ = 0;
     std::uint64_t attached_ = 0;

@@ -68,7 +68,7 @@ class Session {
     // A barrier: an erase that stays a no-go region for the rest of the run (a leak's neck).
     // At most model::kMaxBarriers; std::invalid_argument beyond.
     void addBarrier(const model::Barrier& barrier);
-    // A barrier whose sphere was just painted on its side (solver::LevelSetSolver::holdBarrier).
+    // A barrier whose sphere is on its side already (solver::LevelSetSolver::holdBarrier).
     void holdBarrier(const model::Barrier& barrier);
     void clearBarriers();
     // Where the surface may move (solver::LevelSetSolver::setReach); nullopt: everywhere.

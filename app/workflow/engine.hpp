@@ -83,8 +83,9 @@ class Engine {
     virtual void erase(const model::Sphere& sphere) = 0;
     // A sphere held on its side for the rest of the run, so that a correction sticks (an erase
     // blocks, an added seed keeps): part of the level set's state, kept by snapshots and
-    // cleared with it. False when the engine holds its most (model::kMaxBarriers) already: the
-    // edit stands, without it.
+    // cleared with it. The sphere is on its side already (the caller painted it, or restored a
+    // level set that holds it): holding it paints nothing. False when the engine holds its most
+    // (model::kMaxBarriers) already: the edit stands, without it.
     virtual bool addBarrier(const model::Barrier& barrier) = 0;
     [[nodiscard]] virtual int barriers() const = 0;
     // Where the next steps may move the surface: a correction's neighbourhood, or nullopt for
