@@ -89,13 +89,18 @@ nlohmann::json barrierList(const std::vector<model::Barrier>& list) {
     nlohmann::json out = nlohmann::json::array();
     for (const model::Barrier& b : list) {
         const model::Sphere& s = b.sphere;
-        out.push_back(
-            {{"sphere", {s.centre.x, s.centre.y, s.centre.z, s.radius}}, {"keep", b.keep}});
+        nlohmann::json e{{"sphere", {s.centre.x, s.centre.y, s.centre.z, s.radius}},
+                         {"keep", b.keep}};
+        if (b.tissue) {
+            e["tissue"] = {{"level", b.tissue->level}, {"reach", b.tissue->reach}};
+        }
+        out.push_back(std::move(e));
     }
     return out;
 }
 
-// Snapshots from before the barriers were kept have none.
+// Snapshots from before the barriers were kept have none, and from before tissue levels no
+// "tissue" (the engine validates the values when it holds the barriers).
 std::vector<model::Barrier> readBarriers(const nlohmann::json& j) {
     std::vector<model::Barrier> out;
     if (!j.contains("barriers")) {
@@ -103,9 +108,16 @@ std::vector<model::Barrier> readBarriers(const nlohmann::json& j) {
     }
     for (const nlohmann::json& b : j.at("barriers")) {
         const nlohmann::json& s = b.at("sphere");
-        out.push_back({{{s.at(0).get<float>(), s.at(1).get<float>(), s.at(2).get<float>()},
-                        s.at(3).get<float>()},
-                       b.at("keep").get<bool>()});
+        model::Barrier barrier{{{s.at(0).get<float>(), s.at(1).get<float>(), s.at(2).get<float>()},
+                                s.at(3).get<float>()},
+                               b.at("keep").get<bool>(),
+                               std::nullopt};
+        if (b.contains("tissue")) {
+            const nlohmann::json& t = b.at("tissue");
+            barrier.tissue =
+                model::TissueLevel{t.at("level").get<float>(), t.at("reach").get<float>()};
+        }
+        out.push_back(barrier);
     }
     if (out.size() > model::kMaxBarriers) {
         throw AutosaveFormatError("more barriers than a session holds (" +

@@ -180,13 +180,17 @@ workflow::ScanInfo SessionEngine::scanInfo() const {
 }
 
 workflow::ProbeResult SessionEngine::probe(const glm::dvec3& voxel, double radiusMm) const {
-    const session::Session& session = requireSession();
-    const session::ProbeStats s = session.probeAt(voxel, radiusMm);
-    if (s.count > 0) {
+    const workflow::ProbeResult r = measure(voxel, radiusMm);
+    if (r.count > 0) {
         // At least one voxel: the noise is measured between neighbours inside the sphere.
-        const Geometry& g = session.scan().geometry();
+        const Geometry& g = requireSession().scan().geometry();
         lastProbe_ = workflow::probeSphere(voxel, radiusMm, g.spacing, g.dims, 1.0);
     }
+    return r;
+}
+
+workflow::ProbeResult SessionEngine::measure(const glm::dvec3& voxel, double radiusMm) const {
+    const session::ProbeStats s = requireSession().probeAt(voxel, radiusMm);
     return {s.mean, s.stddev, s.count};
 }
 

@@ -55,6 +55,24 @@ void validateSphere(const Sphere& s, const glm::ivec3& dims) {
     }
 }
 
+void validateBarrier(const Barrier& b, const glm::ivec3& dims) {
+    validateSphere(b.sphere, dims);
+    if (!b.tissue) {
+        return;
+    }
+    if (!b.keep) {
+        throw std::invalid_argument("only a keeping barrier carries a tissue level");
+    }
+    const float diagonal = glm::length(glm::vec3(dims));
+    if (!std::isfinite(b.tissue->level) || !std::isfinite(b.tissue->reach) ||
+        b.tissue->reach <= 0.0F || b.tissue->reach > diagonal) {
+        std::ostringstream msg;
+        msg << "a barrier's tissue level needs a finite level and a reach of (0, " << diagonal
+            << "] voxels (got " << b.tissue->level << " within " << b.tissue->reach << ")";
+        throw std::invalid_argument(msg.str());
+    }
+}
+
 std::string describe(const LevelSetParams& p) {
     std::ostringstream s;
     s << "T=" << p.T << " eps=" << p.eps << " alpha=" << p.alpha;

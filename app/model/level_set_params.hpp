@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <glm/glm.hpp>
+#include <optional>
 #include <string>
 
 namespace steerseg::model {
@@ -73,11 +74,28 @@ std::string describe(const LevelSetParams& params);
 // (shaders/solver/barrier_speed.glsl): the front never enters a blocking one (an erase that
 // sticks, a leak's neck) and never leaves a keeping one (an added correction in tissue the
 // speed calls outside, which would otherwise recede the moment the front runs again).
+//
+// A keeping sphere of a later correction also carries the level of the tissue it was put on,
+// for the threshold and edge speeds: within `reach` voxels of its centre, the window spans
+// from T to `level`, eps beyond each, where it is T +- eps everywhere else (docs/steering.md).
+// The operator added the sphere where the window at T missed the structure; the level teaches
+// the window that tissue there, and only there, since a wider global window leaks.
+struct TissueLevel {
+    float level = 0.0F; // the scan's real units: the mean under the sphere
+    float reach = 0.0F; // voxels from the sphere's centre
+    bool operator==(const TissueLevel&) const = default;
+};
+
 struct Barrier {
     Sphere sphere;
     bool keep = false;
+    std::optional<TissueLevel> tissue = std::nullopt; // keeping spheres only
     bool operator==(const Barrier&) const = default;
 };
+
+// validateSphere, and a tissue level only on a keeping sphere, finite, with a reach in (0, the
+// volume's diagonal]; std::invalid_argument otherwise.
+void validateBarrier(const Barrier& barrier, const glm::ivec3& dims);
 
 // Barrier spheres one run may hold, of both kinds together (the shader's uniform array).
 inline constexpr std::size_t kMaxBarriers = 16;

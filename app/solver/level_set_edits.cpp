@@ -127,7 +127,7 @@ void LevelSetSolver::noteChange() {
 }
 
 void LevelSetSolver::holdBarrier(const model::Barrier& barrier) {
-    model::validateSphere(barrier.sphere, dims_);
+    model::validateBarrier(barrier, dims_);
     if (barriers_.size() >= model::kMaxBarriers) {
         throw std::invalid_argument("at most " + std::to_string(model::kMaxBarriers) +
                                     " barriers (clear them to place others)");
@@ -172,11 +172,14 @@ void LevelSetSolver::uploadReach() {
 // Sets the barrier uniforms of the passes that evaluate the speed (barrier_speed.glsl).
 void LevelSetSolver::uploadBarriers() {
     std::vector<float> packed;
+    std::vector<float> levels; // level, reach (0: none)
     for (const model::Barrier& b : barriers_) {
         // The shader tells a keeping sphere by its negative radius.
         const model::Sphere& s = b.sphere;
         packed.insert(packed.end(),
                       {s.centre.x, s.centre.y, s.centre.z, b.keep ? -s.radius : s.radius});
+        const model::TissueLevel t = b.tissue.value_or(model::TissueLevel{});
+        levels.insert(levels.end(), {t.level, t.reach});
     }
     // alpha * hold = 1 + 3 (1 - alpha) outweighs the curvature term's pull (at most a few
     // voxels^-1 on a voxel-scale bump), so the front recedes from a blocking barrier and
@@ -190,6 +193,8 @@ void LevelSetSolver::uploadBarriers() {
         if (!barriers_.empty()) {
             glProgramUniform4fv(p, glGetUniformLocation(p, "barriers"),
                                 static_cast<GLsizei>(barriers_.size()), packed.data());
+            glProgramUniform2fv(p, glGetUniformLocation(p, "barrierLevels"),
+                                static_cast<GLsizei>(barriers_.size()), levels.data());
         }
         glProgramUniform1f(p, glGetUniformLocation(p, "barrierHold"), hold);
     }

@@ -76,7 +76,11 @@ class Engine {
     virtual LoadPoll pollLoad() = 0;
     [[nodiscard]] virtual ScanInfo scanInfo() const = 0;
 
+    // The scan's values in a sphere (mm) that becomes the probe: the edge speed measures its
+    // noise there.
     [[nodiscard]] virtual ProbeResult probe(const glm::dvec3& voxel, double radiusMm) const = 0;
+    // The same measure, leaving the probe where it was.
+    [[nodiscard]] virtual ProbeResult measure(const glm::dvec3& voxel, double radiusMm) const = 0;
 
     // Sphere edits; std::invalid_argument for a sphere outside the scan.
     virtual void addSeed(const model::Sphere& sphere) = 0;

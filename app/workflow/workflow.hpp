@@ -163,8 +163,13 @@ class Workflow {
     Outcome sphereEdit(const glm::dvec3& voxel, double radius, bool seed);
     // A seed or an erase while steering (a correction): the edit and, when the engine has
     // room, a barrier that holds the sphere on its side (keeping or blocking). "" or why it
-    // could not stick.
-    std::string stickyEdit(const model::Sphere& sphere, bool seed);
+    // could not stick. A keeping one may carry its tissue's level (tissueLevel).
+    std::string stickyEdit(const model::Sphere& sphere, bool seed,
+                           const std::optional<model::TissueLevel>& tissue = std::nullopt);
+    // The level of the tissue under a correction's seed and how far its window reaches
+    // (model::TissueLevel); nullopt where corrections reach everywhere or the scan has no
+    // finite value there.
+    [[nodiscard]] std::optional<model::TissueLevel> tissueLevel(const model::Sphere& sphere) const;
     // `params`, when given, are applied after the edit and undone and redone with it: a seed's
     // inside example (applyEditParams).
     void editLevelSet(std::string_view what, const std::function<void()>& edit, int seeds,

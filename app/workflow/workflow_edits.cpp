@@ -4,7 +4,9 @@
 #include "workflow/one_line.hpp"
 #include "workflow/workflow.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <sstream>
 
 namespace steerseg::workflow {
@@ -148,18 +150,39 @@ model::Sphere Workflow::brushSphere(const glm::dvec3& voxel, double radius) cons
     return {glm::vec3(voxel), static_cast<float>(rad)};
 }
 
-std::string Workflow::stickyEdit(const model::Sphere& sphere, bool seed) {
+std::string Workflow::stickyEdit(const model::Sphere& sphere, bool seed,
+                                 const std::optional<model::TissueLevel>& tissue) {
     if (seed) {
         engine_.addSeed(sphere);
     } else {
         engine_.erase(sphere);
     }
-    if (engine_.addBarrier({sphere, seed})) {
+    if (engine_.addBarrier({sphere, seed, tissue})) {
         return {};
     }
     return std::string(seed ? "added; the front may leave it again: "
                             : "erased; the front may grow back there: ") +
            std::to_string(engine_.barriers()) + " corrections hold already (restart to clear them)";
+}
+
+std::optional<model::TissueLevel> Workflow::tissueLevel(const model::Sphere& sphere) const {
+    // The window reaches as far as a correction's run may move the surface; with runs
+    // everywhere (a reach of 0) there is none: a window without bound is the global widening
+    // that leaked.
+    const double reach = std::min(settings_.correctionReach * static_cast<double>(sphere.radius),
+                                  glm::length(glm::dvec3(status_.scan.dims)));
+    if (reach <= 0.0) {
+        return std::nullopt;
+    }
+    // The largest ball in mm inside the sphere, which is in voxel units.
+    const glm::dvec3& spacing = status_.scan.spacing;
+    const double radiusMm =
+        static_cast<double>(sphere.radius) * std::min({spacing.x, spacing.y, spacing.z});
+    const ProbeResult p = engine_.measure(glm::dvec3(sphere.centre), radiusMm);
+    if (p.count == 0 || !std::isfinite(p.mean)) {
+        return std::nullopt; // the seed still keeps its sphere
+    }
+    return model::TissueLevel{static_cast<float>(p.mean), static_cast<float>(reach)};
 }
 
 Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, bool seed) {
@@ -185,12 +208,15 @@ Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, b
         // The erased tissue is not the structure: classify's outside example too.
         addExample(next.speed.outside, sphere);
     }
+    // A seed while correcting marks tissue the window at T missed (docs/steering.md).
+    const std::optional<model::TissueLevel> tissue =
+        seed && correcting ? tissueLevel(sphere) : std::nullopt;
     std::string notice;
     editLevelSet(
         seed ? "add_seed" : "erase",
         [&] {
             if (correcting) {
-                notice = stickyEdit(sphere, seed);
+                notice = stickyEdit(sphere, seed, tissue);
             } else if (seed) {
                 engine_.addSeed(sphere);
             } else {

@@ -4,23 +4,36 @@
 // positive. Either way at least barrierHold, which the host sets so that alpha * hold outweighs
 // the curvature term's pull: the front recedes from a blocking sphere and never crosses it, and
 // never leaves a keeping one. Where spheres overlap, the newest decides (the operator's latest
-// word). The host side: LevelSetSolver::uploadBarriers (app/solver/level_set_edits.cpp).
+// word). A keeping sphere may carry its tissue's level L (model::TissueLevel): within its reach,
+// outside every sphere, the threshold and edge speeds also admit what lies between T and L,
+// eps beyond each (speed/data_speed.glsl windowSpeed): the structure the operator extended and
+// the partial volume between it and the added tissue. The classify speed learns the sphere
+// instead. The host side: LevelSetSolver::uploadBarriers (app/solver/level_set_edits.cpp).
+// Include after speed/data_speed.glsl.
 #ifndef MAX_BARRIERS
 #define MAX_BARRIERS 16
 #endif
 uniform int barrierCount;
 uniform vec4 barriers[MAX_BARRIERS]; // centre (voxel indices), signed radius (voxels)
+uniform vec2 barrierLevels[MAX_BARRIERS]; // tissue level (real units), reach (voxels; 0: none)
 uniform float barrierHold;
 
 float barrierSpeed(ivec3 voxel, float dataSpeed) {
     vec3 p = vec3(voxel);
+    float speed = dataSpeed;
     for (int n = barrierCount - 1; n >= 0; --n) {
         vec3 q = p - barriers[n].xyz;
         float w = barriers[n].w;
-        if (dot(q, q) <= w * w) {
+        float d2 = dot(q, q);
+        if (d2 <= w * w) {
             float held = max(abs(dataSpeed), barrierHold);
             return w < 0.0 ? held : -held;
         }
+        float reach = barrierLevels[n].y;
+        if (speedKind != 2 && reach > 0.0 && d2 <= reach * reach) {
+            float level = barrierLevels[n].x; // the window [min(T, L) - eps, max(T, L) + eps]
+            speed = max(speed, windowSpeed(voxel, 0.5 * (level + T), eps + 0.5 * abs(level - T)));
+        }
     }
-    return dataSpeed;
+    return speed;
 }

@@ -19,13 +19,19 @@ uniform float T;
 uniform float eps;
 uniform int speedKind;
 
-float dataSpeed(ivec3 voxel) {
-    if (speedKind == 2) {
-        return texelFetch(speedFactor, voxel, 0).r;
-    }
-    float d = eps - abs(texelFetch(speedIntensity, voxel, 0).r - T);
+// Kinds 0 and 1 for any window: the one a correction's tissue level opens around it
+// (solver/barrier_speed.glsl) is the same term as the one at T (centre T, half-width eps).
+float windowSpeed(ivec3 voxel, float centre, float halfWidth) {
+    float d = halfWidth - abs(texelFetch(speedIntensity, voxel, 0).r - centre);
     if (speedKind == 1) {
         d *= texelFetch(speedFactor, voxel, 0).r;
     }
     return d;
+}
+
+float dataSpeed(ivec3 voxel) {
+    if (speedKind == 2) {
+        return texelFetch(speedFactor, voxel, 0).r;
+    }
+    return windowSpeed(voxel, T, eps);
 }

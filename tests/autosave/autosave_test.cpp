@@ -43,7 +43,9 @@ AutosaveSnapshot sampleSnapshot(std::int64_t savedAtMs = 1'700'000'000'123) {
     s.erasures = 1;
     s.iterations = 340;
     s.evolvedTime = 12.5;
-    s.barriers = {{{{3.0F, 4.0F, 5.0F}, 2.0F}, false}, {{{12.5F, 8.0F, 6.0F}, 1.5F}, true}};
+    s.barriers = {{{{3.0F, 4.0F, 5.0F}, 2.0F}, false},
+                  {{{12.5F, 8.0F, 6.0F}, 1.5F}, true},
+                  {{{9.0F, 8.0F, 6.0F}, 2.0F}, true, model::TissueLevel{143.5F, 6.0F}}};
     std::vector<std::uint8_t> mask(20 * 16 * 12, 0);
     for (int k = 0; k < 12; ++k) {
         for (int j = 0; j < 16; ++j) {

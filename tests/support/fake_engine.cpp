@@ -90,10 +90,14 @@ workflow::ScanInfo FakeEngine::scanInfo() const {
 }
 
 workflow::ProbeResult FakeEngine::probe(const glm::dvec3& voxel, double radiusMm) const {
-    requireScan("probe");
+    return measure(voxel, radiusMm);
+}
+
+workflow::ProbeResult FakeEngine::measure(const glm::dvec3& voxel, double radiusMm) const {
+    requireScan("measure");
     if (!std::isfinite(voxel.x) || !std::isfinite(voxel.y) || !std::isfinite(voxel.z) ||
         !std::isfinite(radiusMm) || radiusMm <= 0.0) {
-        misused("probe with a non-finite position or a radius <= 0");
+        misused("measure with a non-finite position or a radius <= 0");
     }
     // Voxels whose centres lie within the radius (mm), as session::probe counts them; the
     // mean rises along i so different probes give different targets.

@@ -58,6 +58,8 @@ class FakeEngine : public workflow::Engine {
     [[nodiscard]] workflow::ScanInfo scanInfo() const override;
     [[nodiscard]] workflow::ProbeResult probe(const glm::dvec3& voxel,
                                               double radiusMm) const override;
+    [[nodiscard]] workflow::ProbeResult measure(const glm::dvec3& voxel,
+                                                double radiusMm) const override;
     void addSeed(const model::Sphere& sphere) override;
     void erase(const model::Sphere& sphere) override;
     bool addBarrier(const model::Barrier& barrier) override;

@@ -62,6 +62,38 @@ TEST(WorkflowCorrect, APositiveOneSeedsAndLeavesTAndEps) {
     EXPECT_EQ(r.engine.barriers(), 1);
 }
 
+// The level of the tissue under a later positive correction goes with its sphere, and its
+// window reaches as far as the correction's run; the first correction's probe set T, erases
+// admit nothing, and with runs everywhere there is no window.
+TEST(WorkflowCorrect, ALaterPositiveOneCarriesItsTissuesLevel) {
+    Rig r;
+    r.load();
+    ASSERT_TRUE(r.act(model::Correct{{8.0, 6.0, 4.0}, true, 2.0}).accepted);
+    ASSERT_TRUE(r.act(model::Pause{}).accepted);
+    ASSERT_TRUE(r.act(model::Correct{{15.0, 6.0, 4.0}, true, 1.5}).accepted);
+    ASSERT_TRUE(r.act(model::Correct{{12.0, 6.0, 4.0}, false, 1.0}).accepted);
+    const std::vector<model::Barrier>& b = r.engine.barrierList();
+    ASSERT_EQ(b.size(), 3U);
+    EXPECT_FALSE(b[0].tissue.has_value()) << "the first's level is T";
+    ASSERT_TRUE(b[1].tissue.has_value());
+    EXPECT_NEAR(b[1].tissue->level, 1000.0, 1e-3); // the fake reads 1000 at i = 15
+    EXPECT_FLOAT_EQ(b[1].tissue->reach, 4.5F);     // 3 x the brush, as its run's reach
+    EXPECT_FALSE(b[2].tissue.has_value());
+    // The kiosk's tap in add mode while steering is the same correction.
+    ASSERT_TRUE(r.act(model::AddSeed{{5.0, 6.0, 4.0}, 1.0}).accepted);
+    ASSERT_TRUE(r.engine.barrierList().back().tissue.has_value());
+    EXPECT_NEAR(r.engine.barrierList().back().tissue->level, -1000.0 + 2000.0 * 5.0 / 15.0, 1e-3);
+
+    workflow::Settings everywhere = testSettings();
+    everywhere.correctionReach = 0.0;
+    Rig all(everywhere);
+    all.load();
+    ASSERT_TRUE(all.act(model::Correct{{8.0, 6.0, 4.0}, true, 2.0}).accepted);
+    ASSERT_TRUE(all.act(model::Correct{{15.0, 6.0, 4.0}, true, 1.0}).accepted);
+    ASSERT_EQ(all.engine.barrierList().size(), 2U);
+    EXPECT_FALSE(all.engine.barrierList()[1].tissue.has_value());
+}
+
 TEST(WorkflowCorrect, ANegativeOneSticksAndUndoTakesTheBarrierBack) {
     Rig r;
     r.load();
