@@ -69,6 +69,20 @@ nlohmann::json spheres(const std::vector<model::Sphere>& list) {
     return out;
 }
 
+// A number the session keeps as a float: JSON may hold 1e400, which no float holds.
+float readFloat(const nlohmann::json& v) {
+    const double d = v.get<double>();
+    if (!std::isfinite(d) || std::abs(d) > static_cast<double>(std::numeric_limits<float>::max())) {
+        throw AutosaveFormatError("a sphere or a barrier holds a number out of range");
+    }
+    return static_cast<float>(d);
+}
+
+// [i, j, k, radius]
+model::Sphere readSphere(const nlohmann::json& e) {
+    return {{readFloat(e.at(0)), readFloat(e.at(1)), readFloat(e.at(2))}, readFloat(e.at(3))};
+}
+
 std::vector<model::Sphere> readSpheres(const nlohmann::json& params, const char* key,
                                        std::size_t most = model::kMaxExamples) {
     std::vector<model::Sphere> out;
@@ -76,8 +90,7 @@ std::vector<model::Sphere> readSpheres(const nlohmann::json& params, const char*
         return out;
     }
     for (const nlohmann::json& e : params.at(key)) {
-        out.push_back({{e.at(0).get<float>(), e.at(1).get<float>(), e.at(2).get<float>()},
-                       e.at(3).get<float>()});
+        out.push_back(readSphere(e));
     }
     if (out.size() > most) {
         throw AutosaveFormatError(std::string("more ") + key + " examples than a session keeps");
@@ -107,15 +120,10 @@ std::vector<model::Barrier> readBarriers(const nlohmann::json& j) {
         return out;
     }
     for (const nlohmann::json& b : j.at("barriers")) {
-        const nlohmann::json& s = b.at("sphere");
-        model::Barrier barrier{{{s.at(0).get<float>(), s.at(1).get<float>(), s.at(2).get<float>()},
-                                s.at(3).get<float>()},
-                               b.at("keep").get<bool>(),
-                               std::nullopt};
+        model::Barrier barrier{readSphere(b.at("sphere")), b.at("keep").get<bool>()};
         if (b.contains("tissue")) {
             const nlohmann::json& t = b.at("tissue");
-            barrier.tissue =
-                model::TissueLevel{t.at("level").get<float>(), t.at("reach").get<float>()};
+            barrier.tissue = model::TissueLevel{readFloat(t.at("level")), readFloat(t.at("reach"))};
         }
         out.push_back(barrier);
     }

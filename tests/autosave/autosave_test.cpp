@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <string>
 #include <vector>
+#include <zlib.h>
 
 namespace steerseg::test {
 namespace {
@@ -86,6 +87,48 @@ std::string decodeError(const std::vector<std::byte>& bytes) {
         return e.what();
     }
     return "(decoded)";
+}
+
+// `bytes` with `from` in the metadata replaced by `to` and the header's length and CRC made
+// whole again: a file that decodes as far as its JSON, as another writer could leave one.
+std::vector<std::byte> withMetadata(std::vector<std::byte> bytes, const std::string& from,
+                                    const std::string& to) {
+    constexpr std::size_t kHeader = 36, kMetaLength = 12, kCrc = 32;
+    std::string text(reinterpret_cast<const char*>(bytes.data()) + kHeader, bytes.size() - kHeader);
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    const std::uint32_t metaBytes = std::to_integer<std::uint32_t>(bytes[kMetaLength]) |
+                                    std::to_integer<std::uint32_t>(bytes[kMetaLength + 1]) << 8U |
+                                    std::to_integer<std::uint32_t>(bytes[kMetaLength + 2]) << 16U |
+                                    std::to_integer<std::uint32_t>(bytes[kMetaLength + 3]) << 24U;
+    text.replace(at, from.size(), to);
+    const auto put = [&](std::size_t offset, std::uint32_t v) {
+        for (std::size_t b = 0; b < 4; ++b) {
+            bytes[offset + b] = static_cast<std::byte>(v >> (8U * b));
+        }
+    };
+    bytes.resize(kHeader);
+    for (const char c : text) {
+        bytes.push_back(static_cast<std::byte>(c));
+    }
+    put(kMetaLength, static_cast<std::uint32_t>(metaBytes + to.size() - from.size()));
+    put(kCrc, static_cast<std::uint32_t>(crc32(0L, reinterpret_cast<const Bytef*>(text.data()),
+                                               static_cast<uInt>(text.size()))));
+    return bytes;
+}
+
+TEST(AutosaveFormat, NumbersNoFloatHoldsAreOneClearError) {
+    const std::vector<std::byte> good = encodeSnapshot(sampleSnapshot());
+    ASSERT_EQ(decodeError(withMetadata(good, "143.5", "143.25")), "(decoded)");
+    // A barrier's tissue level, then a sphere's coordinate: 1e39 is a double but no float.
+    for (const char* at : {"143.5", "12.5"}) {
+        SCOPED_TRACE(at);
+        EXPECT_NE(decodeError(withMetadata(good, at, "-1e39")).find("out of range"),
+                  std::string::npos);
+        EXPECT_NE(decodeError(withMetadata(good, at, "1e400")).find("bad metadata"),
+                  std::string::npos)
+            << "the JSON parser's own refusal";
+    }
 }
 
 TEST(AutosaveFormat, RoundTripKeepsEverything) {

@@ -16,7 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const AutosaveSnapshot again = decodeSnapshot(encodeSnapshot(s));
     if (again.mask.runs != s.mask.runs || again.mask.voxels != s.mask.voxels ||
         again.dims != s.dims || again.state != s.state || again.params != s.params ||
-        again.scan != s.scan) {
+        again.scan != s.scan || again.barriers != s.barriers) {
         __builtin_trap();
     }
     return 0;
