@@ -127,7 +127,7 @@ void addSpeed(const workflow::Status& st, PanelModel& m) {
     const std::size_t paintedIn = st.paintedInside.size();
     const std::size_t paintedOut = st.paintedOutside.size();
     if (paintedIn + paintedOut > 0) {
-        m.examples += "; painted " + std::to_string(paintedIn) + " inside, " +
+        m.examples += "; painted or corrected " + std::to_string(paintedIn) + " inside, " +
                       std::to_string(paintedOut) + " outside spheres";
     }
     m.exampleTools.push_back({st.outsideMode ? "Outside: on" : "Outside: off",

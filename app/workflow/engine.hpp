@@ -44,8 +44,9 @@ struct ProbeResult {
 // The data term the engine should run (docs/speed.md). Threshold and Edge read T, eps and alpha
 // (setParams); Classify reads alpha and is trained on the examples, spheres in voxels: inside
 // from the operator's probes, outside from the outside marks, and the dabs of painted strokes
-// (model::PaintStroke), every one of which counts where taps count only as the newest
-// kMaxExamples. The classifier samples its training voxels from the union of a class's spheres.
+// (model::PaintStroke) and the spheres of corrections while steering (docs/steering.md), every
+// one of which counts where taps count only as the newest kMaxExamples. The classifier samples
+// its training voxels from the union of a class's spheres.
 // The workflow passes examples only to Classify, and only when it has both kinds.
 struct SpeedChoice {
     model::SpeedKind kind = model::SpeedKind::Threshold;
@@ -58,7 +59,7 @@ struct SpeedChoice {
     [[nodiscard]] bool hasInside() const { return !inside.empty() || !paintedInside.empty(); }
     [[nodiscard]] bool hasOutside() const { return !outside.empty() || !paintedOutside.empty(); }
 };
-// Dabs of painted strokes kept per class: a long session's strokes stay bounded in memory (and in
+// Dabs and corrections kept per class: a long session's strokes stay bounded in memory (and in
 // every undo entry's copy of the parameters); the classifier samples voxels from them anyway.
 inline constexpr std::size_t kMaxPaintedExamples = 4096;
 

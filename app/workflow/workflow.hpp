@@ -154,6 +154,10 @@ class Workflow {
     void showSpeed(const ParamValues& values, model::SpeedKind inForce);
     // Appends, dropping the oldest past kMaxExamples.
     static void addExample(std::vector<model::Sphere>& examples, const model::Sphere& example);
+    // Appends to SpeedChoice::painted*, dropping the oldest past kMaxPaintedExamples: a
+    // stroke's dabs and the corrections' spheres, every one of which trains classify.
+    static void addPainted(std::vector<model::Sphere>& painted,
+                           const std::vector<model::Sphere>& spheres);
 
     // The level set (workflow_edits.cpp).
     // Why a sphere at `voxel` cannot be placed (a non-finite number, outside the scan), or "".

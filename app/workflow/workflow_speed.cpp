@@ -48,6 +48,15 @@ void Workflow::addExample(std::vector<model::Sphere>& examples, const model::Sph
     }
 }
 
+void Workflow::addPainted(std::vector<model::Sphere>& painted,
+                          const std::vector<model::Sphere>& spheres) {
+    painted.insert(painted.end(), spheres.begin(), spheres.end());
+    if (painted.size() > kMaxPaintedExamples) {
+        painted.erase(painted.begin(), painted.begin() + static_cast<std::ptrdiff_t>(
+                                                             painted.size() - kMaxPaintedExamples));
+    }
+}
+
 void Workflow::showSpeed(const ParamValues& values, model::SpeedKind inForce) {
     status_.speed = values.speed.kind;
     status_.speedInForce = inForce;

@@ -19,14 +19,6 @@ namespace {
 // engine edits the level set once per sphere, so this bounds how long one stroke takes.
 constexpr std::size_t kMaxStrokeDabs = 8192;
 
-void addPainted(std::vector<model::Sphere>& painted, const std::vector<model::Sphere>& dabs) {
-    painted.insert(painted.end(), dabs.begin(), dabs.end());
-    if (painted.size() > kMaxPaintedExamples) {
-        painted.erase(painted.begin(), painted.begin() + static_cast<std::ptrdiff_t>(
-                                                             painted.size() - kMaxPaintedExamples));
-    }
-}
-
 std::string where(const glm::dvec3& p) {
     std::ostringstream s;
     s << "(" << p.x << ", " << p.y << ", " << p.z << ")";

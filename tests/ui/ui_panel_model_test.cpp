@@ -255,7 +255,7 @@ TEST(UiPanelModel, ClassifyShowsItsExamplesAndTools) {
     st.paintedInside.resize(40);
     st.speedInForce = model::SpeedKind::Threshold;
     m = modelOf(st);
-    EXPECT_EQ(m.examples, "0 inside, 0 outside; painted 40 inside, 0 outside spheres");
+    EXPECT_EQ(m.examples, "0 inside, 0 outside; painted or corrected 40 inside, 0 outside spheres");
     EXPECT_EQ(m.speedNote, "Classify needs an outside example; threshold runs until then.");
 }
 

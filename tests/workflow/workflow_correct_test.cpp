@@ -53,7 +53,8 @@ TEST(WorkflowCorrect, APositiveOneSeedsAndLeavesTAndEps) {
     EXPECT_EQ(r.status().params.T, before.T);
     EXPECT_EQ(r.status().params.eps, before.eps);
     EXPECT_EQ(r.status().seeds, 2);
-    EXPECT_EQ(r.status().insideExamples.size(), 3U);
+    EXPECT_EQ(r.status().insideExamples.size(), 2U) << "the first correction's probe and seed";
+    EXPECT_EQ(r.status().paintedInside.size(), 1U) << "a correction is kept as a dab is";
     // It sticks: a keeping sphere, so the front cannot recede from tissue the threshold refuses.
     ASSERT_EQ(r.engine.barrierList().size(), 2U);
     EXPECT_TRUE(r.engine.barrierList()[1].keep);
@@ -105,7 +106,7 @@ TEST(WorkflowCorrect, ANegativeOneSticksAndUndoTakesTheBarrierBack) {
     ASSERT_EQ(r.engine.barrierList().size(), 2U); // the first correction's and this one
     EXPECT_EQ(r.engine.barrierList()[1].sphere.centre, glm::vec3(10.0F, 6.0F, 4.0F));
     EXPECT_FALSE(r.engine.barrierList()[1].keep);
-    EXPECT_EQ(r.status().outsideExamples.size(), 1U);
+    EXPECT_EQ(r.status().paintedOutside.size(), 1U);
     EXPECT_EQ(r.status().erasures, 1);
     ASSERT_TRUE(r.act(model::Undo{}).accepted);
     EXPECT_EQ(r.engine.barriers(), 1);
@@ -114,6 +115,25 @@ TEST(WorkflowCorrect, ANegativeOneSticksAndUndoTakesTheBarrierBack) {
     EXPECT_EQ(r.engine.barriers(), 2);
     ASSERT_TRUE(r.act(model::Restart{}).accepted);
     EXPECT_EQ(r.engine.barriers(), 0) << "a restart clears the no-go spheres with the surface";
+}
+
+// Every correction trains classify for as long as it stands: the newest six taps' rule would
+// drop a session's first erases, and with them what they taught.
+TEST(WorkflowCorrect, EveryCorrectionStaysAnExampleUntilUndone) {
+    Rig r;
+    r.load();
+    ASSERT_TRUE(r.act(model::Correct{{8.0, 6.0, 4.0}, true, 2.0}).accepted);
+    const std::size_t n = model::kMaxExamples + 3;
+    for (std::size_t c = 0; c < n; ++c) {
+        ASSERT_TRUE(r.act(model::Pause{}).accepted);
+        const double i = 1.0 + static_cast<double>(c);
+        ASSERT_TRUE(r.act(model::Correct{{i, 2.0, 4.0}, false, 0.5}).accepted) << c;
+    }
+    ASSERT_EQ(r.status().paintedOutside.size(), n);
+    EXPECT_EQ(r.status().paintedOutside.front().centre, glm::vec3(1.0F, 2.0F, 4.0F));
+    EXPECT_TRUE(r.status().outsideExamples.empty());
+    ASSERT_TRUE(r.act(model::Undo{}).accepted);
+    EXPECT_EQ(r.status().paintedOutside.size(), n - 1);
 }
 
 TEST(WorkflowCorrect, AnEditWhileSteeringSticksButNotBeforeTheRun) {
