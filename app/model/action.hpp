@@ -88,7 +88,8 @@ struct SetEraseMode { // a tap on a slice seeds, or erases in erase mode
 };
 // The speed function (docs/speed.md). Classify learns from examples: the probes and the seeds
 // are its inside examples, MarkOutside gives the outside ones (a tap in outside mode); the
-// newest kMaxExamples of each kind count.
+// newest kMaxExamples of each kind count. Corrections while steering count as painted dabs do,
+// all of them (workflow::SpeedChoice).
 struct SetSpeed {
     model::SpeedKind kind = model::SpeedKind::Threshold;
 };
