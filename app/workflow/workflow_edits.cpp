@@ -198,17 +198,17 @@ Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, b
     const bool correcting =
         status_.state == model::State::Evolving || status_.state == model::State::Paused;
     ParamValues next = params_;
-    if (seed && !correcting) {
-        // The operator puts seeds in the structure, often where no probe was: classify's inside
-        // examples too, as on the command line (docs/speed.md).
-        addExample(next.speed.inside, sphere);
-    } else if (correcting) {
+    if (correcting) {
         // A correction is an example of its class for as long as it stands, as a stroke's dabs
         // are: among the newest taps it would drop out after six, and a sarcoma's leak came
         // back when its first erases did (docs/steering.md). T and eps stay: widening them to
         // a seed's tissue let a real liver's front leak, and one seed should not undo what the
         // others reached; the seed's barrier teaches the window locally instead.
         addPainted(seed ? next.speed.paintedInside : next.speed.paintedOutside, {sphere});
+    } else if (seed) {
+        // The operator puts seeds in the structure, often where no probe was: classify's inside
+        // examples too, as on the command line (docs/speed.md).
+        addExample(next.speed.inside, sphere);
     }
     // A seed while correcting marks tissue the window at T missed (docs/steering.md).
     const std::optional<model::TissueLevel> tissue =

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <utility>
 
 namespace steerseg::workflow {
@@ -39,22 +40,26 @@ std::optional<model::Sphere> Workflow::exampleAt(const glm::dvec3& voxel, double
     return probeSphere(voxel, radiusMm, status_.scan.spacing, dims, 0.5);
 }
 
-void Workflow::addExample(std::vector<model::Sphere>& examples, const model::Sphere& example) {
-    examples.push_back(example);
-    if (examples.size() > model::kMaxExamples) {
-        examples.erase(examples.begin(),
-                       examples.begin() +
-                           static_cast<std::ptrdiff_t>(examples.size() - model::kMaxExamples));
+namespace {
+
+// Appends `add`, then drops the oldest past `most`.
+void appendNewest(std::vector<model::Sphere>& list, std::span<const model::Sphere> add,
+                  std::size_t most) {
+    list.insert(list.end(), add.begin(), add.end());
+    if (list.size() > most) {
+        list.erase(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(list.size() - most));
     }
+}
+
+} // namespace
+
+void Workflow::addExample(std::vector<model::Sphere>& examples, const model::Sphere& example) {
+    appendNewest(examples, {&example, 1}, model::kMaxExamples);
 }
 
 void Workflow::addPainted(std::vector<model::Sphere>& painted,
                           const std::vector<model::Sphere>& spheres) {
-    painted.insert(painted.end(), spheres.begin(), spheres.end());
-    if (painted.size() > kMaxPaintedExamples) {
-        painted.erase(painted.begin(), painted.begin() + static_cast<std::ptrdiff_t>(
-                                                             painted.size() - kMaxPaintedExamples));
-    }
+    appendNewest(painted, spheres, kMaxPaintedExamples);
 }
 
 void Workflow::showSpeed(const ParamValues& values, model::SpeedKind inForce) {
