@@ -6,7 +6,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config clang libclang-rt-14-dev clang-format python3
+  build-essential cmake ninja-build pkg-config clang libclang-rt-14-dev lld clang-format python3
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libgbm-dev libdrm-dev libsdl2-dev libx11-dev
   xvfb xauth xdotool
   glslang-tools libglm-dev

@@ -116,7 +116,7 @@ run_ctest asan
 
 echo "== fuzz targets"
 cmake --preset fuzz >/dev/null
-cmake --build --preset fuzz -j "$jobs"
+cmake --build --preset fuzz -j "$jobs" --target steerseg_fuzzers
 fuzz_seconds=${STEERSEG_FUZZ_SECONDS:-12}
 fuzz_seed=${STEERSEG_FUZZ_SEED:-1}
 shopt -s nullglob

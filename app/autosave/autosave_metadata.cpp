@@ -146,7 +146,8 @@ nlohmann::json metadata(const AutosaveSnapshot& s) {
                           {"inside", spheres(s.params.speed.inside)},
                           {"outside", spheres(s.params.speed.outside)},
                           {"painted_inside", spheres(s.params.speed.paintedInside)},
-                          {"painted_outside", spheres(s.params.speed.paintedOutside)}};
+                          {"painted_outside", spheres(s.params.speed.paintedOutside)},
+                          {"surface_outside", spheres(s.params.speed.surfaceOutside)}};
     for (int i = 0; i < model::kParamCount; ++i) {
         const auto p = static_cast<model::Param>(i);
         params[std::string(model::paramName(p))] = s.params.values[workflow::indexOf(p)];
@@ -194,6 +195,9 @@ void readMetadata(const nlohmann::json& j, AutosaveSnapshot& s) {
         readSpheres(params, "painted_inside", workflow::kMaxPaintedExamples);
     s.params.speed.paintedOutside =
         readSpheres(params, "painted_outside", workflow::kMaxPaintedExamples);
+    // ... and snapshots from before classify learnt what stopped the surface none of these.
+    s.params.speed.surfaceOutside =
+        readSpheres(params, "surface_outside", workflow::kMaxSurfaceExamples);
     for (int i = 0; i < model::kParamCount; ++i) {
         const auto p = static_cast<model::Param>(i);
         s.params.values[workflow::indexOf(p)] =

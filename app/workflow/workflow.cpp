@@ -235,6 +235,7 @@ void Workflow::forgetScan() {
     status_.outsideExamples.clear();
     status_.paintedInside.clear();
     status_.paintedOutside.clear();
+    status_.surfaceOutside.clear();
     status_.view = ViewState{};
 }
 
