@@ -129,10 +129,6 @@ void addSpeed(const workflow::Status& st, PanelModel& m) {
         m.examples += "; painted or corrected " + std::to_string(paintedIn) + " inside, " +
                       std::to_string(paintedOut) + " outside spheres";
     }
-    if (!st.surfaceOutside.empty()) {
-        m.examples +=
-            "; " + std::to_string(st.surfaceOutside.size()) + " outside where the surface stopped";
-    }
     m.exampleTools.push_back({st.outsideMode ? "Outside: on" : "Outside: off",
                               model::SetOutsideMode{!st.outsideMode}, st.outsideMode});
     m.exampleTools.push_back({"Clear examples", model::ClearExamples{}, false,

@@ -146,8 +146,7 @@ nlohmann::json metadata(const AutosaveSnapshot& s) {
                           {"inside", spheres(s.params.speed.inside)},
                           {"outside", spheres(s.params.speed.outside)},
                           {"painted_inside", spheres(s.params.speed.paintedInside)},
-                          {"painted_outside", spheres(s.params.speed.paintedOutside)},
-                          {"surface_outside", spheres(s.params.speed.surfaceOutside)}};
+                          {"painted_outside", spheres(s.params.speed.paintedOutside)}};
     for (int i = 0; i < model::kParamCount; ++i) {
         const auto p = static_cast<model::Param>(i);
         params[std::string(model::paramName(p))] = s.params.values[workflow::indexOf(p)];
@@ -195,9 +194,6 @@ void readMetadata(const nlohmann::json& j, AutosaveSnapshot& s) {
         readSpheres(params, "painted_inside", workflow::kMaxPaintedExamples);
     s.params.speed.paintedOutside =
         readSpheres(params, "painted_outside", workflow::kMaxPaintedExamples);
-    // ... and snapshots from before classify learnt what stopped the surface none of these.
-    s.params.speed.surfaceOutside =
-        readSpheres(params, "surface_outside", workflow::kMaxSurfaceExamples);
     for (int i = 0; i < model::kParamCount; ++i) {
         const auto p = static_cast<model::Param>(i);
         s.params.values[workflow::indexOf(p)] =

@@ -6,7 +6,6 @@
 #include "render/slice_frame.hpp"
 #include "scan/read_progress.hpp"
 #include "scan/scan_reader.hpp"
-#include "speed/surface_shell.hpp"
 #include "workflow/probe_sphere.hpp"
 
 #include <algorithm>
@@ -195,32 +194,6 @@ workflow::ProbeResult SessionEngine::measure(const glm::dvec3& voxel, double rad
     return {s.mean, s.stddev, s.count};
 }
 
-std::vector<model::Sphere> SessionEngine::stoppedOutside(float low, float high,
-                                                         std::size_t most) const {
-    const session::Session& s = requireSession();
-    if (!s.hasLevelSet()) {
-        return {};
-    }
-    // The windows the speed widened around the corrections (shaders/solver/barrier_speed.glsl):
-    // from T to the tissue's level, eps beyond each.
-    const float T = 0.5F * (low + high);
-    const float eps = 0.5F * (high - low);
-    std::vector<speed::LocalWindow> local;
-    for (const model::Barrier& b : barriers_) {
-        if (b.keep && b.tissue) {
-            local.push_back({b.sphere.centre, b.tissue->reach, std::min(T, b.tissue->level) - eps,
-                             std::max(T, b.tissue->level) + eps});
-        }
-    }
-    speed::ShellParams shell;
-    shell.farVoxels = static_cast<float>(workflow::kSurfaceShellVoxels);
-    shell.low = low;
-    shell.high = high;
-    shell.local = local;
-    shell.most = most;
-    return speed::outsideShell(s.phi(), s.scan(), shell);
-}
-
 model::SolverOptions consoleSolverOptions() {
     model::SolverOptions options;
     options.stopOnLeak = true;
@@ -308,16 +281,13 @@ void SessionEngine::setSpeed(const workflow::SpeedChoice& choice) {
         settings = edgeSettings();
     }
     settings.kind = choice.kind;
-    // The classifier samples from the union of a class's spheres: taps, strokes, corrections
-    // and what stopped the surface alike.
+    // The classifier samples from the union of a class's spheres: taps and strokes alike.
     settings.inside = choice.inside;
     settings.inside.insert(settings.inside.end(), choice.paintedInside.begin(),
                            choice.paintedInside.end());
     settings.outside = choice.outside;
     settings.outside.insert(settings.outside.end(), choice.paintedOutside.begin(),
                             choice.paintedOutside.end());
-    settings.outside.insert(settings.outside.end(), choice.surfaceOutside.begin(),
-                            choice.surfaceOutside.end());
     // Preprocessing and training run here, on the frame loop (a blocking step: docs/speed.md).
     s.setSpeed(settings);
     changed();

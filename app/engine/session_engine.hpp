@@ -58,8 +58,6 @@ class SessionEngine final : public workflow::Engine {
     bool addBarrier(const model::Barrier& barrier) override;
     [[nodiscard]] int barriers() const override { return static_cast<int>(barriers_.size()); }
     [[nodiscard]] const std::vector<model::Barrier>& barrierList() const { return barriers_; }
-    [[nodiscard]] std::vector<model::Sphere> stoppedOutside(float low, float high,
-                                                            std::size_t most) const override;
     void setReach(const std::optional<model::Sphere>& reach) override;
     void clearLevelSet() override;
     [[nodiscard]] bool hasLevelSet() const override;

@@ -202,8 +202,8 @@ void SessionAutosave::save(const workflow::Status& status, engine::SessionEngine
         static_cast<double>(status.params.alpha);
     s.params.values[workflow::indexOf(model::Param::Radius)] = status.radius;
     s.params.preset = status.preset;
-    s.params.speed = {status.speed,         status.insideExamples, status.outsideExamples,
-                      status.paintedInside, status.paintedOutside, status.surfaceOutside};
+    s.params.speed = {status.speed, status.insideExamples, status.outsideExamples,
+                      status.paintedInside, status.paintedOutside};
     // While classify waits, the speed that runs is the one it falls back to; once it runs, what
     // it fell back to is not shown and the threshold speed stands in.
     s.params.fallback = status.speedInForce != model::SpeedKind::Classify

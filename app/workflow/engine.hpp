@@ -55,10 +55,6 @@ struct SpeedChoice {
     // `= {}`: a choice written as {kind, inside, outside} (the tapped examples only) stays valid.
     std::vector<model::Sphere> paintedInside = {}; // at most kMaxPaintedExamples, oldest first
     std::vector<model::Sphere> paintedOutside = {};
-    // Outside examples from the tissue that stopped the surface, taken when classify took over
-    // from the speed it ran with while steering (Engine::stoppedOutside): they do not make
-    // classify run by themselves, and go when the examples are cleared.
-    std::vector<model::Sphere> surfaceOutside = {};
     bool operator==(const SpeedChoice&) const = default;
     [[nodiscard]] bool hasInside() const { return !inside.empty() || !paintedInside.empty(); }
     [[nodiscard]] bool hasOutside() const { return !outside.empty() || !paintedOutside.empty(); }
@@ -66,11 +62,6 @@ struct SpeedChoice {
 // Dabs and corrections kept per class: a long session's strokes stay bounded in memory (and in
 // every undo entry's copy of the parameters); the classifier samples voxels from them anyway.
 inline constexpr std::size_t kMaxPaintedExamples = 4096;
-// Examples from the tissue that stopped the surface (SpeedChoice::surfaceOutside): enough to
-// reach every side of it, few enough (7 voxels each) that an erase still weighs in its class.
-inline constexpr std::size_t kMaxSurfaceExamples = 512;
-// How far outside the surface they lie at most, in voxels (Engine::stoppedOutside).
-inline constexpr double kSurfaceShellVoxels = 3.0;
 
 // A copy of the level set that undo can go back to.
 using SnapshotId = std::uint64_t;
@@ -102,12 +93,6 @@ class Engine {
     // (model::kMaxBarriers) already: the edit stands, without it.
     virtual bool addBarrier(const model::Barrier& barrier) = 0;
     [[nodiscard]] virtual int barriers() const = 0;
-    // What stopped the surface (docs/steering.md): voxels just outside the level set (more
-    // than 1 voxel, at most kSurfaceShellVoxels) whose value the front's window there refuses
-    // ([low, high], and near a keeping barrier with a tissue level its wider window too). At
-    // most `most`, spread over the surface, as example spheres. Empty without a level set.
-    [[nodiscard]] virtual std::vector<model::Sphere> stoppedOutside(float low, float high,
-                                                                    std::size_t most) const = 0;
     // Where the next steps may move the surface: a correction's neighbourhood, or nullopt for
     // everywhere. Not part of the level set's state: the workflow sets it for a correction's
     // run and clears it when the run stops. std::invalid_argument for a sphere the scan

@@ -69,8 +69,6 @@ struct Status {
     // The dabs of painted strokes (model::PaintStroke), oldest first: every one trains classify.
     std::vector<model::Sphere> paintedInside;
     std::vector<model::Sphere> paintedOutside;
-    // Taken from the tissue that stopped the surface when classify took over (SpeedChoice).
-    std::vector<model::Sphere> surfaceOutside;
     bool hasLevelSet = false;
     bool unexported = false; // the level set changed since its last export (a load must wait)
     // What the workflow would accept now, by the transition table (transition_table.hpp) and

@@ -56,8 +56,7 @@ inline Facts factsOf(const Status& status) {
             status.canUndo,
             status.canRedo,
             !status.insideExamples.empty() || !status.outsideExamples.empty() ||
-                !status.paintedInside.empty() || !status.paintedOutside.empty() ||
-                !status.surfaceOutside.empty(),
+                !status.paintedInside.empty() || !status.paintedOutside.empty(),
             !status.auditProblem.empty(),
             status.auditAcknowledged};
 }

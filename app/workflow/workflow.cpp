@@ -235,7 +235,6 @@ void Workflow::forgetScan() {
     status_.outsideExamples.clear();
     status_.paintedInside.clear();
     status_.paintedOutside.clear();
-    status_.surfaceOutside.clear();
     status_.view = ViewState{};
 }
 

@@ -158,9 +158,6 @@ class Workflow {
     // stroke's dabs and the corrections' spheres, every one of which trains classify.
     static void addPainted(std::vector<model::Sphere>& painted,
                            const std::vector<model::Sphere>& spheres);
-    // When `next` brings classify into force while steering, it also learns the tissue that
-    // stopped the surface (SpeedChoice::surfaceOutside, docs/steering.md).
-    void learnStoppingTissue(ParamValues& next) const;
 
     // The level set (workflow_edits.cpp).
     // Why a sphere at `voxel` cannot be placed (a non-finite number, outside the scan), or "".

@@ -52,8 +52,7 @@ nlohmann::json Workflow::resultOf(const model::Action& action) const {
         return nlohmann::json{{"speed", model::speedKindName(status_.speed)},
                               {"speed_in_force", model::speedKindName(status_.speedInForce)},
                               {"inside_examples", status_.insideExamples.size()},
-                              {"outside_examples", status_.outsideExamples.size()},
-                              {"surface_outside", status_.surfaceOutside.size()}};
+                              {"outside_examples", status_.outsideExamples.size()}};
     };
     const ViewState& v = status_.view;
     return std::visit(
@@ -82,8 +81,6 @@ nlohmann::json Workflow::resultOf(const model::Action& action) const {
                 r.update(levelSet());
                 r["barriers"] = engine_.barriers();
                 r["reach"] = reach_ ? nlohmann::json(reach_->radius) : nlohmann::json();
-                r["speed_in_force"] = model::speedKindName(status_.speedInForce);
-                r["surface_outside"] = status_.surfaceOutside.size();
                 return r;
             } else if constexpr (std::is_same_v<A, model::PaintStroke>) {
                 nlohmann::json r = levelSet();

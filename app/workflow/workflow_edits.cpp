@@ -205,7 +205,6 @@ Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, b
         // a seed's tissue let a real liver's front leak, and one seed should not undo what the
         // others reached; the seed's barrier teaches the window locally instead.
         addPainted(seed ? next.speed.paintedInside : next.speed.paintedOutside, {sphere});
-        learnStoppingTissue(next); // the surface before this edit
     } else if (seed) {
         // The operator puts seeds in the structure, often where no probe was: classify's inside
         // examples too, as on the command line (docs/speed.md).

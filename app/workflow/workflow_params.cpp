@@ -85,7 +85,6 @@ void Workflow::setDefaultParams() {
 
 Workflow::Outcome Workflow::changeParams(ParamValues next, std::string_view what,
                                          std::optional<model::Param> coalesce) {
-    learnStoppingTissue(next);
     UndoEntry e;
     e.what = what;
     e.paramsBefore = params_;

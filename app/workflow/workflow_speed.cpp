@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <span>
 #include <utility>
 
@@ -63,28 +62,6 @@ void Workflow::addPainted(std::vector<model::Sphere>& painted,
     appendNewest(painted, spheres, kMaxPaintedExamples);
 }
 
-void Workflow::learnStoppingTissue(ParamValues& next) const {
-    const bool steering =
-        status_.state == model::State::Evolving || status_.state == model::State::Paused;
-    if (!steering || !status_.hasLevelSet || engineSpeed_.kind == model::SpeedKind::Classify ||
-        speedFor(next).kind != model::SpeedKind::Classify) {
-        return;
-    }
-    // The surface the threshold (or edge) speed reached: trained on the operator's few spheres
-    // alone, a forest judges the tissue unlike all of them by chance, and a liver's first erase
-    // filled the air around the body. What the surface took in is no example: a leak took it,
-    // and a sarcoma's erases could not withdraw it with that as inside (docs/steering.md).
-    const double T = next.values[indexOf(model::Param::T)];
-    const double eps = next.values[indexOf(model::Param::Eps)];
-    try {
-        next.speed.surfaceOutside = engine_.stoppedOutside(
-            static_cast<float>(T - eps), static_cast<float>(T + eps), kMaxSurfaceExamples);
-    } catch (const std::exception&) {
-        // Classify still learns from the operator's examples, as it did before.
-        next.speed.surfaceOutside.clear();
-    }
-}
-
 void Workflow::showSpeed(const ParamValues& values, model::SpeedKind inForce) {
     status_.speed = values.speed.kind;
     status_.speedInForce = inForce;
@@ -92,7 +69,6 @@ void Workflow::showSpeed(const ParamValues& values, model::SpeedKind inForce) {
     status_.outsideExamples = values.speed.outside;
     status_.paintedInside = values.speed.paintedInside;
     status_.paintedOutside = values.speed.paintedOutside;
-    status_.surfaceOutside = values.speed.surfaceOutside;
 }
 
 Workflow::Outcome Workflow::on(const model::SetSpeed& a) {
@@ -139,7 +115,6 @@ Workflow::Outcome Workflow::on(const model::ClearExamples&) {
     next.speed.outside.clear();
     next.speed.paintedInside.clear();
     next.speed.paintedOutside.clear();
-    next.speed.surfaceOutside.clear();
     Outcome out = changeParams(std::move(next), "clear_examples", std::nullopt);
     if (status_.speed == model::SpeedKind::Classify) {
         status_.message = "examples cleared: the " +

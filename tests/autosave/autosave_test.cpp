@@ -38,10 +38,7 @@ AutosaveSnapshot sampleSnapshot(std::int64_t savedAtMs = 1'700'000'000'123) {
     s.params.preset = "CT soft tissue";
     s.params.speed = {model::SpeedKind::Classify,
                       {{{1.0F, 2.0F, 3.0F}, 1.5F}},
-                      {{{4.0F, 5.0F, 6.0F}, 2.0F}, {{7.0F, 8.0F, 9.0F}, 0.5F}},
-                      {{{2.0F, 2.0F, 3.0F}, 1.0F}},
-                      {{{5.0F, 5.0F, 6.0F}, 2.5F}},
-                      {{{19.0F, 15.0F, 11.0F}, 1.0F}, {{0.0F, 3.0F, 2.0F}, 1.0F}}};
+                      {{{4.0F, 5.0F, 6.0F}, 2.0F}, {{7.0F, 8.0F, 9.0F}, 0.5F}}};
     s.params.fallback = model::SpeedKind::Edge;
     s.seeds = 2;
     s.erasures = 1;

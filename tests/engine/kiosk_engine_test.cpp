@@ -182,32 +182,6 @@ TEST_F(KioskEngine, LoadsSeedsStepsUndoesAndExports) {
     std::filesystem::remove_all(dir);
 }
 
-// Where the surface stopped, read off the real level set (phi > 0 outside, in voxels): voxels
-// just outside it whose value the front's window there refuses.
-TEST_F(KioskEngine, SaysWhereTheSurfaceStopped) {
-    SessionEngine engine;
-    engine.beginLoad("builtin:sample");
-    ASSERT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
-    const workflow::ScanInfo info = engine.scanInfo();
-    const auto lo = static_cast<float>(info.minValue);
-    const auto hi = static_cast<float>(info.maxValue);
-    const auto above = hi + 1.0F; // a window no voxel is in
-    EXPECT_TRUE(engine.stoppedOutside(above, above, 64).empty()) << "no level set yet";
-    const glm::vec3 centre = glm::floor(glm::vec3(info.dims) * 0.5F);
-    engine.addSeed({centre, 5.0F});
-    const std::vector<model::Sphere> shell = engine.stoppedOutside(above, above, 64);
-    ASSERT_EQ(shell.size(), 64U);
-    for (const model::Sphere& e : shell) {
-        const float d = glm::length(e.centre - centre);
-        EXPECT_GT(d, 5.0F + 1.0F - 0.5F) << "inside or on the surface";
-        EXPECT_LE(d, 5.0F + static_cast<float>(workflow::kSurfaceShellVoxels) + 0.5F);
-    }
-    EXPECT_TRUE(engine.stoppedOutside(lo, hi, 64).empty()) << "the window takes every voxel in";
-    // A keeping barrier's tissue level widens the window within its reach, as the speed does.
-    ASSERT_TRUE(engine.addBarrier({{centre, 5.0F}, true, model::TissueLevel{lo, 12.0F}}));
-    EXPECT_TRUE(engine.stoppedOutside(above, above, 64).empty());
-}
-
 // Undo's copies live in GPU memory up to the engine's budget; beyond it the oldest become masks
 // in host memory. A copy restores the very phi it copied, after a run too; a mask its voxels.
 TEST_F(KioskEngine, UndoCopiesStayWithinTheirGpuBudgetAndRestoreWhatTheyTook) {

@@ -250,9 +250,7 @@ def snapshot(runs, voxels, dims, state="evolving", version=1):
     meta = ('{"barriers":[{"keep":true,"sphere":[1.0,1.0,1.0,1.0],'
             '"tissue":{"level":150.0,"reach":3.0}},{"keep":false,"sphere":[1.0,2.0,1.0,0.5]}],'
             '"dims":[%d,%d,%d],"erasures":1,"evolved_time":2.5,"iterations":40,'
-            '"params":{"T":200.0,"alpha":0.7,"eps":60.0,"preset":"","radius":3.0,'
-            '"speed":"classify","outside":[[1.0,2.0,1.0,0.5]],"inside":[[1.0,1.0,1.0,1.0]],'
-            '"surface_outside":[[0.0,3.0,2.0,1.0],[1.0,3.0,3.0,1.0]]},'
+            '"params":{"T":200.0,"alpha":0.7,"eps":60.0,"preset":"","radius":3.0},'
             '"saved_at":"2026-11-23T13:01:40.000Z","saved_at_ms":1795438900000,'
             '"scan":{"bytes":885,"mtime_ns":1,"path":"/s.nrrd"},"seeds":1,"sequence":3,'
             '"state":"%s"}' % (dims + (state,))).encode()

@@ -207,23 +207,6 @@ void FakeEngine::setParams(const model::LevelSetParams& p) {
     changed();
 }
 
-std::vector<model::Sphere> FakeEngine::stoppedOutside(float low, float high,
-                                                      std::size_t most) const {
-    requireScan("stoppedOutside");
-    if (!std::isfinite(low) || !std::isfinite(high) || low > high) {
-        misused("stoppedOutside with a window that is not finite and ordered");
-    }
-    stoppedQuestions.push_back({low, high, most});
-    if (!stoppedError.empty()) {
-        throw std::runtime_error(stoppedError);
-    }
-    if (inside_ == 0) {
-        return {};
-    }
-    return {stopping.begin(),
-            stopping.begin() + static_cast<std::ptrdiff_t>(std::min(most, stopping.size()))};
-}
-
 void FakeEngine::setSpeed(const workflow::SpeedChoice& choice) {
     requireScan("setSpeed");
     const bool classify = choice.kind == model::SpeedKind::Classify;
@@ -233,8 +216,8 @@ void FakeEngine::setSpeed(const workflow::SpeedChoice& choice) {
     if (!classify && (choice.hasInside() || choice.hasOutside())) {
         misused("setSpeed with examples for a speed that learns nothing");
     }
-    for (const auto* list : {&choice.inside, &choice.outside, &choice.paintedInside,
-                             &choice.paintedOutside, &choice.surfaceOutside}) {
+    for (const auto* list :
+         {&choice.inside, &choice.outside, &choice.paintedInside, &choice.paintedOutside}) {
         for (const model::Sphere& s : *list) {
             for (int a = 0; a < 3; ++a) {
                 if (!std::isfinite(s.centre[a]) || s.centre[a] < 0.0F ||

@@ -37,22 +37,12 @@ class FakeEngine : public workflow::Engine {
     double probeStddev = 10.0; // the spread every probe reports
     int convergeAfter = 40;    // iterations without an edit or new parameters until converged
     bool writeExports = false; // exportMask writes a small file at the path
-    // What stoppedOutside answers while there is a level set; stoppedError non-empty: it
-    // throws that instead.
-    std::vector<model::Sphere> stopping{{glm::vec3(15.0F, 11.0F, 7.0F), 1.0F}};
-    std::string stoppedError;
 
     // --- what happened ----------------------------------------------------------------------
     std::vector<std::string> loads;             // beginLoad's paths
     std::vector<std::filesystem::path> exports; // successful exports
     int setParamsCalls = 0;
     std::vector<workflow::SpeedChoice> speeds; // setSpeed's accepted choices, in order
-    struct StoppedQuestion {
-        float low = 0.0F;
-        float high = 0.0F;
-        std::size_t most = 0;
-    };
-    mutable std::vector<StoppedQuestion> stoppedQuestions; // stoppedOutside's, in order
     [[nodiscard]] model::SpeedKind speedKind() const { return speed_.kind; }
     [[nodiscard]] const model::LevelSetParams& params() const { return params_; }
     [[nodiscard]] std::size_t liveSnapshots() const { return snapshots_.size(); }
@@ -75,9 +65,6 @@ class FakeEngine : public workflow::Engine {
     bool addBarrier(const model::Barrier& barrier) override;
     [[nodiscard]] int barriers() const override { return static_cast<int>(barriers_.size()); }
     [[nodiscard]] const std::vector<model::Barrier>& barrierList() const { return barriers_; }
-    // Answers `stopping` (at most `most` of it) and records the question.
-    [[nodiscard]] std::vector<model::Sphere> stoppedOutside(float low, float high,
-                                                            std::size_t most) const override;
     void setReach(const std::optional<model::Sphere>& reach) override;
     [[nodiscard]] const std::optional<model::Sphere>& reach() const { return reach_; }
     void clearLevelSet() override;

@@ -136,69 +136,6 @@ TEST(WorkflowCorrect, EveryCorrectionStaysAnExampleUntilUndone) {
     EXPECT_EQ(r.status().paintedOutside.size(), n - 1);
 }
 
-// When classify takes over from the threshold while steering (the first erase gives it an
-// outside example), it also learns the tissue that stopped the surface, asked of the engine
-// before the erase with the window the front ran with; that goes with the erase's undo, and
-// later corrections keep it.
-TEST(WorkflowCorrect, ClassifyTakingOverLearnsWhereTheSurfaceStopped) {
-    workflow::Settings classify = testSettings();
-    classify.defaultSpeed = model::SpeedKind::Classify;
-    Rig r(classify);
-    r.load();
-    ASSERT_TRUE(r.act(model::Correct{{8.0, 6.0, 4.0}, true, 2.0}).accepted);
-    ASSERT_TRUE(r.act(model::Pause{}).accepted);
-    ASSERT_EQ(r.engine.speedKind(), model::SpeedKind::Threshold) << "no outside example yet";
-    EXPECT_TRUE(r.engine.stoppedQuestions.empty()) << "a seed brings no outside example";
-    const model::LevelSetParams p = r.status().params;
-    ASSERT_TRUE(r.act(model::Correct{{12.0, 6.0, 4.0}, false, 1.0}).accepted);
-    ASSERT_EQ(r.engine.speedKind(), model::SpeedKind::Classify);
-    ASSERT_EQ(r.engine.stoppedQuestions.size(), 1U);
-    const FakeEngine::StoppedQuestion& q = r.engine.stoppedQuestions[0];
-    EXPECT_FLOAT_EQ(q.low, p.T - p.eps);
-    EXPECT_FLOAT_EQ(q.high, p.T + p.eps);
-    EXPECT_EQ(q.most, workflow::kMaxSurfaceExamples);
-    EXPECT_EQ(r.engine.speeds.back().surfaceOutside, r.engine.stopping);
-    EXPECT_EQ(r.status().surfaceOutside, r.engine.stopping);
-
-    ASSERT_TRUE(r.act(model::Pause{}).accepted);
-    ASSERT_TRUE(r.act(model::Correct{{13.0, 6.0, 4.0}, false, 1.0}).accepted);
-    EXPECT_EQ(r.engine.stoppedQuestions.size(), 1U) << "classify runs already: no new shell";
-    EXPECT_EQ(r.engine.speeds.back().surfaceOutside, r.engine.stopping);
-    ASSERT_TRUE(r.act(model::Undo{}).accepted);
-    ASSERT_TRUE(r.act(model::Undo{}).accepted);
-    EXPECT_EQ(r.engine.speedKind(), model::SpeedKind::Threshold);
-    EXPECT_TRUE(r.status().surfaceOutside.empty());
-    ASSERT_TRUE(r.act(model::Redo{}).accepted);
-    EXPECT_EQ(r.status().surfaceOutside, r.engine.stopping);
-    ASSERT_TRUE(r.act(model::ClearExamples{}).accepted);
-    EXPECT_TRUE(r.status().surfaceOutside.empty());
-}
-
-// Before the first run the surface is the seeds' alone, which stopped nothing; and an engine
-// that cannot say where the surface stopped leaves classify the operator's examples.
-TEST(WorkflowCorrect, NoSurfaceTissueBeforeARunOrWhenTheEngineFails) {
-    workflow::Settings classify = testSettings();
-    classify.defaultSpeed = model::SpeedKind::Classify;
-    Rig r(classify);
-    r.load();
-    r.seed();
-    ASSERT_TRUE(r.act(model::MarkOutside{{1.0, 1.0, 1.0}, 0.0}).accepted);
-    EXPECT_EQ(r.engine.speedKind(), model::SpeedKind::Classify);
-    EXPECT_TRUE(r.engine.stoppedQuestions.empty());
-    EXPECT_TRUE(r.status().surfaceOutside.empty());
-
-    Rig failing(classify);
-    failing.engine.stoppedError = "no level set to read";
-    failing.load();
-    ASSERT_TRUE(failing.act(model::Correct{{8.0, 6.0, 4.0}, true, 2.0}).accepted);
-    ASSERT_TRUE(failing.act(model::Pause{}).accepted);
-    ASSERT_TRUE(failing.act(model::Correct{{12.0, 6.0, 4.0}, false, 1.0}).accepted);
-    EXPECT_EQ(failing.engine.stoppedQuestions.size(), 1U);
-    EXPECT_EQ(failing.engine.speedKind(), model::SpeedKind::Classify);
-    EXPECT_TRUE(failing.status().surfaceOutside.empty());
-    EXPECT_EQ(failing.engine.misuse(), 0) << failing.engine.lastMisuse();
-}
-
 TEST(WorkflowCorrect, AnEditWhileSteeringSticksButNotBeforeTheRun) {
     Rig r;
     r.load();
