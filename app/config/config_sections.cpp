@@ -183,6 +183,9 @@ void readSpeed(TableReader& t, SpeedConfig& s) {
         })) {
         s.kind = *model::parseSpeedKind(*v);
     }
+    if (auto v = t.boolean("classify_within_window")) {
+        s.classifyWithinWindow = *v;
+    }
     if (auto v = t.integer("smooth_iterations", {0, 1000})) {
         s.smoothIterations = static_cast<int>(*v);
     }

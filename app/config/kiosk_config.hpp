@@ -77,6 +77,8 @@ struct SpeedConfig {
     int smoothIterations = 5;       // anisotropic diffusion steps before the edge factor, 0 = none
     double conductanceFactor = 3.0; // diffusion conductance K = factor * the probe's noise
     double kappaFactor = 1.0;       // kappa = factor * the probe's noise (per voxel)
+    // Classify bounded by the threshold's window (workflow::Settings::classifyWithinWindow).
+    bool classifyWithinWindow = true;
     bool operator==(const SpeedConfig&) const = default;
 };
 

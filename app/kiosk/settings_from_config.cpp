@@ -14,6 +14,7 @@ workflow::Settings workflowSettings(const config::KioskConfig& config) {
     s.defaultRadius = config.brush.radius;
     s.correctionReach = config.brush.correctionReach;
     s.defaultSpeed = config.speed.kind;
+    s.classifyWithinWindow = config.speed.classifyWithinWindow;
     s.exportFolder = config.exports.folder;
     s.exportFormats = config.exports.formats;
     return s;

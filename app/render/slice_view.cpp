@@ -32,6 +32,7 @@ SliceFrame SliceView::draw(const RenderInputs& in, const ViewParams& params) {
         speed::bindSpeedTextures(in.speed, in.scan.exact(), VIEW_SPEED_INTENSITY_UNIT,
                                  VIEW_SPEED_FACTOR_UNIT);
         glUniform1i(uniform(program, "speedKind"), static_cast<int>(in.speed.kind));
+        glUniform1i(uniform(program, "classifyWithinWindow"), in.speed.withinWindow ? 1 : 0);
         glUniform1f(uniform(program, "T"), static_cast<float>(params.speed.T));
         glUniform1f(uniform(program, "eps"), static_cast<float>(params.speed.eps));
         // Full colour at |D| = eps for the speeds in the scan's units, at 1 for classify's.

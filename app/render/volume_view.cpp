@@ -36,6 +36,7 @@ void bindSurfaceSpeed(GLuint program, const RenderInputs& in, const SpeedParams&
     speed::bindSpeedTextures(in.speed, in.scan.exact(), VIEW_SURFACE_INTENSITY_UNIT,
                              VIEW_SURFACE_FACTOR_UNIT);
     glUniform1i(uniform(program, "speedKind"), static_cast<int>(in.speed.kind));
+    glUniform1i(uniform(program, "classifyWithinWindow"), in.speed.withinWindow ? 1 : 0);
     glUniform1f(uniform(program, "T"), static_cast<float>(speed.T));
     glUniform1f(uniform(program, "eps"), static_cast<float>(speed.eps));
 }

@@ -32,6 +32,7 @@ std::string segmentReport(const Session& session, const RunOutcome& run,
     if (speed.kind == model::SpeedKind::Classify) {
         sp["inside_examples"] = speed.inside.size();
         sp["outside_examples"] = speed.outside.size();
+        sp["within_window"] = speed.withinWindow;
     }
     j["speed"] = sp;
     j["preprocessing_seconds"] = session.speedTiming().preprocessingSeconds;

@@ -203,7 +203,8 @@ void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progr
     }
     g.solver.setSpeedInputs(
         {settings.kind, g.smoothed.id(), factor,
-         g.classifier ? g.classifier->onDemandForest() : speed::OnDemandForest{}});
+         g.classifier ? g.classifier->onDemandForest() : speed::OnDemandForest{},
+         settings.withinWindow});
     g.speed = settings;
 }
 

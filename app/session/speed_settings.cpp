@@ -32,6 +32,9 @@ void validateSpeedSettings(const SpeedSettings& settings, const glm::ivec3& dims
         throw std::invalid_argument(
             "the classify speed needs at least one inside and one outside example");
     }
+    if (settings.withinWindow && settings.kind != model::SpeedKind::Classify) {
+        throw std::invalid_argument("only the classify speed is bounded by the window");
+    }
     checkExamples(settings.inside, dims, "inside example");
     checkExamples(settings.outside, dims, "outside example");
 }

@@ -20,11 +20,13 @@ struct SpeedSettings {
     // classify: the operator's examples, voxel indices and radii in voxels.
     std::vector<model::Sphere> inside;
     std::vector<model::Sphere> outside;
+    // classify: bounded by the threshold's window T +- eps (speed::SpeedInputs::withinWindow).
+    bool withinWindow = false;
 };
 
 // Throws std::invalid_argument (one line) for settings no speed can run with: smoothing out of
 // range, edge without kappa > 0, classify without an inside and an outside example, an example
-// that does not fit the scan (dims).
+// that does not fit the scan (dims), a window bound on another speed than classify.
 void validateSpeedSettings(const SpeedSettings& settings, const glm::ivec3& dims);
 
 // Seconds spent making the speed's textures (GPU work finished).

@@ -26,6 +26,8 @@ void LevelSetSolver::setSpeedInputs(const speed::SpeedInputs& inputs) {
     for (GLuint p : {programs_->measureSpeed.id(), programs_->updatePhi.id()}) {
         glProgramUniform1i(p, glGetUniformLocation(p, "speedKind"),
                            static_cast<GLint>(inputs.kind));
+        glProgramUniform1i(p, glGetUniformLocation(p, "classifyWithinWindow"),
+                           inputs.withinWindow ? 1 : 0);
     }
     noteChange();
 }

@@ -108,14 +108,22 @@ inline float thresholdSpeed(float intensity, const model::LevelSetParams& p) {
     return p.eps - std::abs(intensity - p.T);
 }
 
-// The data term of each speed (docs/speed.md) from the voxel's intensity and its precomputed
-// factor (edge: g; classify: P(in) - P(out)). The GPU twin is dataSpeed() in
+// The classify speed c bounded by a window whose speed, divided by its half-width, is w: inside
+// where both say so, so the forest takes away what the window admits and adds nothing it
+// refuses (docs/speed.md "Classify within the window"). The GPU twin is classifyWithin() in
 // shaders/speed/data_speed.glsl.
+inline float classifyWithin(float c, float w) {
+    return std::min(std::clamp(w, -1.0F, 1.0F), c);
+}
+
+// The data term of each speed (docs/speed.md) from the voxel's intensity and its precomputed
+// factor (edge: g; classify: P(in) - P(out), within T +- eps when withinWindow). The GPU twin is
+// dataSpeed() in shaders/speed/data_speed.glsl.
 inline float dataSpeed(float intensity, float factor, model::SpeedKind kind,
-                       const model::LevelSetParams& p) {
+                       const model::LevelSetParams& p, bool withinWindow = false) {
     switch (kind) {
     case model::SpeedKind::Classify:
-        return factor;
+        return withinWindow ? classifyWithin(factor, thresholdSpeed(intensity, p) / p.eps) : factor;
     case model::SpeedKind::Edge:
         return factor * thresholdSpeed(intensity, p);
     case model::SpeedKind::Threshold:

@@ -28,19 +28,21 @@ void ReferenceSolver::setParams(const model::LevelSetParams& params) {
     haveParams_ = true;
 }
 
-void ReferenceSolver::setSpeed(model::SpeedKind kind, std::vector<float> factor) {
+void ReferenceSolver::setSpeed(model::SpeedKind kind, std::vector<float> factor,
+                               bool withinWindow) {
     if (kind != model::SpeedKind::Threshold && factor.size() != intensities_.size()) {
         throw std::invalid_argument("reference solver: the speed factor has " +
                                     std::to_string(factor.size()) + " voxels, the volume " +
                                     std::to_string(intensities_.size()));
     }
     speedKind_ = kind;
+    withinWindow_ = withinWindow && kind == model::SpeedKind::Classify;
     factor_ = std::move(factor);
 }
 
 float ReferenceSolver::speedAt(std::size_t at) const {
     const float factor = speedKind_ == model::SpeedKind::Threshold ? 0.0F : factor_[at];
-    return dataSpeed(intensities_[at], factor, speedKind_, params_);
+    return dataSpeed(intensities_[at], factor, speedKind_, params_, withinWindow_);
 }
 
 void ReferenceSolver::addSphere(const model::Sphere& sphere) {

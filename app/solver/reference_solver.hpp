@@ -22,8 +22,9 @@ class ReferenceSolver {
     // The GPU solver's setSpeedInputs: `factor` per voxel (i fastest; edge: g, classify:
     // P(in) - P(out)), ignored by the threshold speed. The intensities given to the constructor
     // are the speed's I (pass the smoothed scan to mirror a smoothed GPU run).
+    // `withinWindow`: classify bounded by T +- eps (speed::SpeedInputs::withinWindow).
     // std::invalid_argument when the factor's size differs from the volume's.
-    void setSpeed(model::SpeedKind kind, std::vector<float> factor);
+    void setSpeed(model::SpeedKind kind, std::vector<float> factor, bool withinWindow = false);
     void addSphere(const model::Sphere& sphere);
     void removeSphere(const model::Sphere& sphere);
     void initFromMask(std::span<const std::uint8_t> mask);
@@ -51,6 +52,7 @@ class ReferenceSolver {
 
     std::vector<float> intensities_;
     model::SpeedKind speedKind_ = model::SpeedKind::Threshold;
+    bool withinWindow_ = false;
     std::vector<float> factor_;
     glm::ivec3 dims_;
     std::vector<float> phi_;

@@ -17,6 +17,9 @@ void validateSpeedInputs(const SpeedInputs& inputs) {
         throw std::invalid_argument(
             "a speed evaluated on demand needs the classify kind and a whole forest");
     }
+    if (inputs.withinWindow && inputs.kind != model::SpeedKind::Classify) {
+        throw std::invalid_argument("only the classify speed is bounded by the window");
+    }
 }
 
 void bindSpeedTextures(const SpeedInputs& inputs, GLuint rawScan, int intensityUnit,

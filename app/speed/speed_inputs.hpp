@@ -14,6 +14,8 @@ namespace steerseg::speed {
 //              solver has evaluated it (ClassifierSpeed's Evaluation::OnDemand), and the solver
 //              evaluates each brick with this forest, over the features of I, before it first
 //              reads it
+//   withinWindow  Classify only: bounded by the threshold's window T +- eps on I (and by a
+//              correction's tissue window near it), as data_speed.glsl's classifyWithin
 struct OnDemandForest {
     GLuint nodes = 0; // SSBO of speed::ForestNode; 0: no forest, the factor is complete
     GLuint roots = 0; // SSBO of each tree's root node index
@@ -26,10 +28,12 @@ struct SpeedInputs {
     GLuint intensity = 0;
     GLuint factor = 0;
     OnDemandForest onDemand;
+    bool withinWindow = false;
 };
 
-// Throws std::invalid_argument when a kind that reads the factor texture has none, and for a
-// forest given with another kind than classify or without its roots, trees or depth.
+// Throws std::invalid_argument when a kind that reads the factor texture has none, for a
+// forest given with another kind than classify or without its roots, trees or depth, and for a
+// window bound on another kind than classify.
 void validateSpeedInputs(const SpeedInputs& inputs);
 
 // Binds I (inputs.intensity, or `rawScan`, the exact scan texture, when 0) and the factor to

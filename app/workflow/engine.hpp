@@ -55,6 +55,8 @@ struct SpeedChoice {
     // `= {}`: a choice written as {kind, inside, outside} (the tapped examples only) stays valid.
     std::vector<model::Sphere> paintedInside = {}; // at most kMaxPaintedExamples, oldest first
     std::vector<model::Sphere> paintedOutside = {};
+    // Classify only: bounded by the window T +- eps (Settings::classifyWithinWindow).
+    bool withinWindow = false;
     bool operator==(const SpeedChoice&) const = default;
     [[nodiscard]] bool hasInside() const { return !inside.empty() || !paintedInside.empty(); }
     [[nodiscard]] bool hasOutside() const { return !outside.empty() || !paintedOutside.empty(); }

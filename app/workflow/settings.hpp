@@ -47,6 +47,11 @@ struct Settings {
     // each kind; a speed the engine refuses after a load leaves the threshold speed, with a
     // notice.
     model::SpeedKind defaultSpeed = model::SpeedKind::Threshold;
+    // Classify bounded by the threshold's window T +- eps (docs/speed.md "Classify within the
+    // window"): the classifier removes what the window admits and adds nothing it refuses,
+    // where an unbounded forest may take in tissue unlike any example (the air around a liver
+    // after one erase: docs/steering.md).
+    bool classifyWithinWindow = true;
     WallClock clock; // export names' time stamps; empty: the system clock (tests fix it)
 };
 

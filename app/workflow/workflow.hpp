@@ -146,8 +146,9 @@ class Workflow {
 
     // The speed and the classifier's examples (workflow_speed.cpp).
     // What the engine runs for these values: Classify with an example of each kind, else the
-    // fallback; the examples travel only with Classify.
-    [[nodiscard]] static SpeedChoice speedFor(const ParamValues& values);
+    // fallback; the examples (and the window's bound, Settings::classifyWithinWindow) travel
+    // only with Classify.
+    [[nodiscard]] SpeedChoice speedFor(const ParamValues& values) const;
     // An example sphere in voxels for a probe-sized sphere in mm; nullopt outside the scan.
     [[nodiscard]] std::optional<model::Sphere> exampleAt(const glm::dvec3& voxel,
                                                          double radiusMm) const;

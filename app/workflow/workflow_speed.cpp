@@ -14,11 +14,13 @@
 
 namespace steerseg::workflow {
 
-SpeedChoice Workflow::speedFor(const ParamValues& values) {
+SpeedChoice Workflow::speedFor(const ParamValues& values) const {
     const SpeedChoice& chosen = values.speed;
     if (chosen.kind == model::SpeedKind::Classify) {
         if (chosen.hasInside() && chosen.hasOutside()) {
-            return chosen;
+            SpeedChoice bounded = chosen;
+            bounded.withinWindow = settings_.classifyWithinWindow;
+            return bounded;
         }
         SpeedChoice waiting;
         waiting.kind = values.fallback;

@@ -8,7 +8,8 @@
 // outside every sphere, the threshold and edge speeds also admit what lies between T and L,
 // eps beyond each (speed/data_speed.glsl windowSpeed): the structure the operator extended and
 // the partial volume between it and the added tissue. The classify speed learns the sphere
-// instead. The host side: LevelSetSolver::uploadBarriers (app/solver/level_set_edits.cpp).
+// instead; bounded by the window (classifyWithinWindow), its bound widens there as the
+// threshold's does. The host side: LevelSetSolver::uploadBarriers (app/solver/level_set_edits.cpp).
 // Include after speed/data_speed.glsl.
 #ifndef MAX_BARRIERS
 #define MAX_BARRIERS 16
@@ -30,9 +31,13 @@ float barrierSpeed(ivec3 voxel, float dataSpeed) {
             return w < 0.0 ? held : -held;
         }
         float reach = barrierLevels[n].y;
-        if (speedKind != 2 && reach > 0.0 && d2 <= reach * reach) {
+        if ((speedKind != 2 || classifyWithinWindow != 0) && reach > 0.0 && d2 <= reach * reach) {
             float level = barrierLevels[n].x; // the window [min(T, L) - eps, max(T, L) + eps]
-            speed = max(speed, windowSpeed(voxel, 0.5 * (level + T), eps + 0.5 * abs(level - T)));
+            float halfWidth = eps + 0.5 * abs(level - T);
+            float w = windowSpeed(voxel, 0.5 * (level + T), halfWidth);
+            speed = max(speed, speedKind != 2 ? w
+                                              : classifyWithin(texelFetch(speedFactor, voxel, 0).r,
+                                                               w / halfWidth));
         }
     }
     return speed;

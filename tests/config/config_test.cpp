@@ -81,6 +81,8 @@ std::vector<std::string> differences(const KioskConfig& a, const KioskConfig& b)
     field("brush.radius", a.brush.radius == b.brush.radius);
     field("brush.correction_reach", a.brush.correctionReach == b.brush.correctionReach);
     field("speed.kind", a.speed.kind == b.speed.kind);
+    field("speed.classify_within_window",
+          a.speed.classifyWithinWindow == b.speed.classifyWithinWindow);
     field("speed.smooth_iterations", a.speed.smoothIterations == b.speed.smoothIterations);
     field("speed.conductance_factor", a.speed.conductanceFactor == b.speed.conductanceFactor);
     field("speed.kappa_factor", a.speed.kappaFactor == b.speed.kappaFactor);
@@ -219,7 +221,7 @@ TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
     other.ui = {12.0, 2.0, 900};
     other.probe = {7.0, 3.0, 20.0};
     other.brush = {9.0, 1.5};
-    other.speed = {model::SpeedKind::Edge, 40, 0.5, 0.25};
+    other.speed = {model::SpeedKind::Edge, 40, 0.5, 0.25, false};
     other.exports = {"elsewhere", {"nrrd"}};
     other.audit = {"elsewhere.jsonl"};
     other.dicom.tlsCertificate = "node.pem";
@@ -240,7 +242,7 @@ TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
     }
     // 34 plain fields, 6 per preset (its name is its identity), every binding.
     ASSERT_EQ(differences(other, config::defaultConfig()).size(),
-              34U + 6U * other.presets.size() + other.bindings.keys.size() +
+              35U + 6U * other.presets.size() + other.bindings.keys.size() +
                   other.bindings.knobs.size() + other.bindings.buttons.size() +
                   other.input.devices.size());
 
@@ -333,16 +335,21 @@ TEST_F(ConfigTest, OutOfRange) {
 
 TEST_F(ConfigTest, Speed) {
     const fs::path file = write("speed.toml", "[speed]\nkind = \"edge\"\nsmooth_iterations = 0\n"
-                                              "conductance_factor = 0.1\nkappa_factor = 0.5\n");
+                                              "conductance_factor = 0.1\nkappa_factor = 0.5\n"
+                                              "classify_within_window = false\n");
     const config::LoadedConfig loaded = load({file});
     EXPECT_TRUE(loaded.problems.empty()) << describeAll(loaded.problems);
     EXPECT_EQ(loaded.config.speed.kind, model::SpeedKind::Edge);
+    EXPECT_FALSE(loaded.config.speed.classifyWithinWindow);
+    EXPECT_TRUE(config::KioskConfig{}.speed.classifyWithinWindow);
     EXPECT_EQ(loaded.config.speed.smoothIterations, 0);
     EXPECT_EQ(loaded.config.speed.conductanceFactor, 0.1);
     EXPECT_EQ(loaded.config.speed.kappaFactor, 0.5);
     expectRejected("[speed]\nkind = \"gradient\"\n", 2, "speed.kind",
                    "must be \"threshold\", \"edge\" or \"classify\"");
     expectRejected("[speed]\nkind = 2\n", 2, "speed.kind", "expected a string");
+    expectRejected("[speed]\nclassify_within_window = 1\n", 2, "speed.classify_within_window",
+                   "true or false");
     expectRejected("[speed]\nsmooth_iterations = 1001\n", 2, "speed.smooth_iterations",
                    "at most 1000");
     expectRejected("[speed]\nsmooth_iterations = -1\n", 2, "speed.smooth_iterations", "at least 0");

@@ -6,10 +6,10 @@
 #include "gpu/scan_texture.hpp"
 #include "solver/level_set_solver.hpp"
 #include "solver/reference_solver.hpp"
-#include "support/solver_test_support.hpp"
 #include "speed/edge_factor.hpp"
 #include "speed/smoothing.hpp"
 #include "support/gpu_fixture.hpp"
+#include "support/solver_test_support.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -136,6 +136,23 @@ std::vector<float> factorField(const glm::ivec3& d, model::SpeedKind kind) {
     return f;
 }
 
+// The GPU solver and the reference, their speeds set, 40 steps from `seed`: the same front.
+void expectStepsAgree(LevelSetSolver& gpu, ReferenceSolver& cpu, const Sphere& seed,
+                      const LevelSetParams& params) {
+    gpu.addSphere(seed);
+    gpu.setParams(params);
+    cpu.addSphere(seed);
+    cpu.setParams(params);
+    const StepResult r = gpu.step(40);
+    EXPECT_EQ(cpu.step(40), 40);
+    EXPECT_NEAR(r.evolvedTime, cpu.evolvedTime(), 1e-3F * cpu.evolvedTime());
+    const std::vector<std::uint8_t> g = gpu.readMask();
+    const std::vector<std::uint8_t> c = cpu.mask();
+    EXPECT_GT(insideCount(c), insideCount(std::vector<std::uint8_t>(c.size(), 0)));
+    EXPECT_GE(dice(g, c), 0.99) << "gpu " << insideCount(g) << " cpu " << insideCount(c);
+    EXPECT_EQ(differencesOffSurface(cpu.dims(), g, c), 0U);
+}
+
 TEST_F(SpeedSeamTest, EdgeAndClassifySpeedsMatchTheReference) {
     const glm::ivec3 d{48, 44, 40};
     const auto volume = ballVolume(d, 0.0F, 100.0F, {24, 22, 20}, 15.0F);
@@ -147,21 +164,63 @@ TEST_F(SpeedSeamTest, EdgeAndClassifySpeedsMatchTheReference) {
         const gpu::ScanTexture factor(field, d); // an R32F texture of the field
         LevelSetSolver gpu(volume, d);
         gpu.setSpeedInputs({kind, 0, factor.exact(), {}});
-        gpu.addSphere(seed);
-        gpu.setParams(params);
         ReferenceSolver cpu(volume, d);
         cpu.setSpeed(kind, field);
-        cpu.addSphere(seed);
-        cpu.setParams(params);
-        const StepResult r = gpu.step(40);
-        EXPECT_EQ(cpu.step(40), 40);
-        EXPECT_NEAR(r.evolvedTime, cpu.evolvedTime(), 1e-3F * cpu.evolvedTime());
-        const std::vector<std::uint8_t> g = gpu.readMask();
-        const std::vector<std::uint8_t> c = cpu.mask();
-        EXPECT_GT(insideCount(c), insideCount(std::vector<std::uint8_t>(countOf(d), 0)));
-        EXPECT_GE(dice(g, c), 0.99) << "gpu " << insideCount(g) << " cpu " << insideCount(c);
-        EXPECT_EQ(differencesOffSurface(d, g, c), 0U);
+        expectStepsAgree(gpu, cpu, seed, params);
     }
+}
+
+// Classify within the window (the console's bound, docs/speed.md): a forest sure of "inside"
+// everywhere but in the slab i >= 30, on the ball at T +- eps. The bounded speed grows in the ball
+// only and stops at the slab; the GPU's and the reference's agree.
+TEST_F(SpeedSeamTest, ClassifyWithinTheWindowMatchesTheReferenceAndStaysInIt) {
+    const glm::ivec3 d{48, 44, 40};
+    const glm::vec3 centre{24, 22, 20};
+    const auto volume = ballVolume(d, 0.0F, 100.0F, centre, 15.0F);
+    std::vector<float> field(countOf(d));
+    for (int k = 0; k < d.z; ++k) {
+        for (int j = 0; j < d.y; ++j) {
+            for (int i = 0; i < d.x; ++i) {
+                field[voxelIndex(d, i, j, k)] = i >= 30 ? -0.9F : 0.9F;
+            }
+        }
+    }
+    const gpu::ScanTexture factor(field, d);
+    const Sphere seed{{20, 22, 20}, 4.0F};
+    const LevelSetParams params{100.0F, 30.0F, 0.7F};
+    LevelSetSolver gpu(volume, d);
+    gpu.setSpeedInputs({model::SpeedKind::Classify, 0, factor.exact(), {}, true});
+    ReferenceSolver cpu(volume, d);
+    cpu.setSpeed(model::SpeedKind::Classify, field, true);
+    expectStepsAgree(gpu, cpu, seed, params);
+
+    EXPECT_TRUE(gpu.runUntilConverged(1500).converged);
+    const std::vector<std::uint8_t> mask = gpu.readMask();
+    std::size_t beyond = 0;
+    std::size_t deepInBall = 0;
+    std::size_t deepTaken = 0;
+    for (int k = 0; k < d.z; ++k) {
+        for (int j = 0; j < d.y; ++j) {
+            for (int i = 0; i < d.x; ++i) {
+                const bool in = mask[voxelIndex(d, i, j, k)] != 0;
+                const float r2 = glm::length(glm::vec3(i, j, k) - centre);
+                beyond += in && (r2 > 16.0F || i > 30) ? 1U : 0U;
+                if (r2 < 14.0F && i < 29) {
+                    ++deepInBall;
+                    deepTaken += in ? 1U : 0U;
+                }
+            }
+        }
+    }
+    EXPECT_EQ(beyond, 0U) << "the window and the forest's slab bound it";
+    EXPECT_GT(deepTaken, deepInBall * 95 / 100) << deepTaken << " of " << deepInBall;
+}
+
+TEST_F(SpeedSeamTest, OnlyClassifyIsBoundedByTheWindow) {
+    LevelSetSolver solver(twoSpheres(), kDims);
+    const gpu::ScanTexture factor(std::vector<float>(countOf(kDims), 1.0F), kDims);
+    EXPECT_THROW(solver.setSpeedInputs({model::SpeedKind::Edge, 0, factor.exact(), {}, true}),
+                 std::invalid_argument);
 }
 
 } // namespace

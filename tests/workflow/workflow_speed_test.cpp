@@ -160,6 +160,7 @@ TEST(WorkflowSpeed, ClassifyWaitsForAnExampleOfEachKind) {
     // 2 mm on 1 x 1 x 2 mm voxels: the voxel sphere of the same volume, 2 / cbrt(2) voxels.
     EXPECT_NEAR(trained.outside[0].radius, 2.0 / std::cbrt(2.0), 1e-6);
     EXPECT_EQ(rig.status().speedInForce, SpeedKind::Classify);
+    EXPECT_TRUE(trained.withinWindow) << "bounded by the window by default";
 
     // Every further example retrains.
     ASSERT_TRUE(rig.act(Probe{{10.0, 6.0, 4.0}, 3.0}).accepted);
@@ -175,6 +176,19 @@ TEST(WorkflowSpeed, ClassifyWaitsForAnExampleOfEachKind) {
     EXPECT_FALSE(rig.act(ClearExamples{}).accepted);
     EXPECT_EQ(rig.status().message, "no examples to clear");
     EXPECT_EQ(rig.engine.misuse(), 0) << rig.engine.lastMisuse();
+}
+
+TEST(WorkflowSpeed, TheWindowBoundsClassifyAsTheSettingsSay) {
+    Settings s = testSettings();
+    s.classifyWithinWindow = false;
+    Rig rig(s);
+    rig.load();
+    ASSERT_TRUE(rig.act(SetSpeed{SpeedKind::Classify}).accepted);
+    EXPECT_FALSE(rig.engine.speeds.back().withinWindow) << "the threshold, waiting";
+    ASSERT_TRUE(rig.act(Probe{kInside, 3.0}).accepted);
+    ASSERT_TRUE(rig.act(MarkOutside{kOutside, 2.0}).accepted);
+    ASSERT_EQ(rig.engine.speedKind(), SpeedKind::Classify);
+    EXPECT_FALSE(rig.engine.speeds.back().withinWindow) << "the forest's answer alone";
 }
 
 TEST(WorkflowSpeed, EdgeAndThresholdIgnoreExamples) {
