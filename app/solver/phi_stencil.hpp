@@ -108,12 +108,12 @@ inline float thresholdSpeed(float intensity, const model::LevelSetParams& p) {
     return p.eps - std::abs(intensity - p.T);
 }
 
-// The classify speed c bounded by a window whose speed, divided by its half-width, is w: inside
-// where both say so, so the forest takes away what the window admits and adds nothing it
-// refuses (docs/speed.md "Classify within the window"). The GPU twin is classifyWithin() in
-// shaders/speed/data_speed.glsl.
-inline float classifyWithin(float c, float w) {
-    return std::min(std::clamp(w, -1.0F, 1.0F), c);
+// The classify speed c bounded by a window of speed d and half-width h: inside where both say
+// so, so the forest takes away what the window admits and adds nothing it refuses (docs/speed.md
+// "Classify within the window"). h may be 0 (eps = 0): the quotient stays finite or infinite,
+// never NaN. The GPU twin is classifyWithin() in shaders/speed/data_speed.glsl.
+inline float classifyWithin(float c, float d, float h) {
+    return std::min(std::clamp(d / std::max(h, 1e-20F), -1.0F, 1.0F), c);
 }
 
 // The data term of each speed (docs/speed.md) from the voxel's intensity and its precomputed
@@ -123,7 +123,7 @@ inline float dataSpeed(float intensity, float factor, model::SpeedKind kind,
                        const model::LevelSetParams& p, bool withinWindow = false) {
     switch (kind) {
     case model::SpeedKind::Classify:
-        return withinWindow ? classifyWithin(factor, thresholdSpeed(intensity, p) / p.eps) : factor;
+        return withinWindow ? classifyWithin(factor, thresholdSpeed(intensity, p), p.eps) : factor;
     case model::SpeedKind::Edge:
         return factor * thresholdSpeed(intensity, p);
     case model::SpeedKind::Threshold:

@@ -37,7 +37,7 @@ float barrierSpeed(ivec3 voxel, float dataSpeed) {
             float w = windowSpeed(voxel, 0.5 * (level + T), halfWidth);
             speed = max(speed, speedKind != 2 ? w
                                               : classifyWithin(texelFetch(speedFactor, voxel, 0).r,
-                                                               w / halfWidth));
+                                                               w, halfWidth));
         }
     }
     return speed;

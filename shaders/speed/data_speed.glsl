@@ -34,17 +34,18 @@ float windowSpeed(ivec3 voxel, float centre, float halfWidth) {
     return d;
 }
 
-// The classify speed c within a window whose speed, divided by its half-width, is w. Rises with
-// w, so the widest of several windows (a correction's tissue window, barrier_speed.glsl) gives
-// the largest value. CPU twin: classifyWithin() in app/solver/phi_stencil.hpp.
-float classifyWithin(float c, float w) {
-    return min(clamp(w, -1.0, 1.0), c);
+// The classify speed c within a window of speed d and half-width h (eps may be 0: the window
+// then admits T alone, and d / h stays finite or infinite, never NaN). Rises with d / h, so the
+// widest of several windows (a correction's tissue window, barrier_speed.glsl) gives the largest
+// value. CPU twin: classifyWithin() in app/solver/phi_stencil.hpp.
+float classifyWithin(float c, float d, float h) {
+    return min(clamp(d / max(h, 1e-20), -1.0, 1.0), c);
 }
 
 float dataSpeed(ivec3 voxel) {
     if (speedKind == 2) {
         float c = texelFetch(speedFactor, voxel, 0).r;
-        return classifyWithinWindow != 0 ? classifyWithin(c, windowSpeed(voxel, T, eps) / eps) : c;
+        return classifyWithinWindow != 0 ? classifyWithin(c, windowSpeed(voxel, T, eps), eps) : c;
     }
     return windowSpeed(voxel, T, eps);
 }

@@ -2,6 +2,7 @@
 // parameter checks.
 #include "model/level_set_params.hpp"
 #include "solver/phi_init.hpp"
+#include "solver/phi_stencil.hpp"
 #include "solver/reference_solver.hpp"
 
 #include <cmath>
@@ -21,6 +22,19 @@ double equivalentRadius(const std::vector<std::uint8_t>& mask) {
         n += m;
     }
     return std::cbrt(3.0 * static_cast<double>(n) / (4.0 * std::numbers::pi));
+}
+
+// Classify within the window, on the CPU twin: min(c, window / eps), and finite with eps = 0
+// (the window then admits T alone).
+TEST(ReferenceSolver, ClassifyWithinTheWindowIsTheSmallerOfBoth) {
+    const model::LevelSetParams p{100.0F, 20.0F, 0.5F};
+    EXPECT_FLOAT_EQ(dataSpeed(100.0F, 0.3F, model::SpeedKind::Classify, p, true), 0.3F);
+    EXPECT_FLOAT_EQ(dataSpeed(110.0F, 0.9F, model::SpeedKind::Classify, p, true), 0.5F);
+    EXPECT_FLOAT_EQ(dataSpeed(-900.0F, 0.9F, model::SpeedKind::Classify, p, true), -1.0F);
+    EXPECT_FLOAT_EQ(dataSpeed(-900.0F, 0.9F, model::SpeedKind::Classify, p, false), 0.9F);
+    const model::LevelSetParams zero{100.0F, 0.0F, 0.5F};
+    EXPECT_FLOAT_EQ(dataSpeed(100.0F, 0.9F, model::SpeedKind::Classify, zero, true), 0.0F);
+    EXPECT_FLOAT_EQ(dataSpeed(101.0F, 0.9F, model::SpeedKind::Classify, zero, true), -1.0F);
 }
 
 TEST(ReferenceSolver, CurvatureFlowShrinksSphereAsRSquaredMinus4t) {
