@@ -203,15 +203,28 @@ model::SolverOptions consoleSolverOptions() {
 void SessionEngine::addSeed(const model::Sphere& sphere) {
     const ScopedSeconds timed(work_.edit);
     requireSession().addSeed(sphere);
-    insideCounted_.reset();
     changed();
+    countThroughEdit();
 }
 
 void SessionEngine::erase(const model::Sphere& sphere) {
     const ScopedSeconds timed(work_.edit);
     requireSession().erase(sphere);
-    insideCounted_.reset();
     changed();
+    countThroughEdit();
+}
+
+// The solver counts the voxels a sphere edit moves across the surface, as it counts a step's
+// (SolverStats::netGained), and every step call ends on a check: the count taken before plus
+// what was counted since is the inside count after the edit, with no count of the pool (a read
+// of every brick: 0.13-0.32 s of a correction's first visible change on a 256^3 scan).
+void SessionEngine::countThroughEdit() {
+    if (insideCounted_) {
+        const std::int64_t net = session_->stats().netGained;
+        *insideCounted_ += net - netAtCount_;
+        netAtCount_ = net;
+        volumeVersion_ = version_;
+    }
 }
 
 bool SessionEngine::addBarrier(const model::Barrier& barrier) {
@@ -221,8 +234,8 @@ bool SessionEngine::addBarrier(const model::Barrier& barrier) {
     }
     requireSession().holdBarrier(barrier); // its sphere is on its side already
     barriers_.push_back(barrier);
-    insideCounted_.reset();
     changed();
+    countThroughEdit(); // holding a sphere moves no voxel
     return true;
 }
 

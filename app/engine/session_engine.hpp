@@ -123,6 +123,7 @@ class SessionEngine final : public workflow::Engine {
     void setBarriers(const std::vector<model::Barrier>& barriers);
     void putMask(const MaskRuns& mask);
     void keepUndoWithinBudget();
+    void countThroughEdit();
     std::size_t undoGpuBudget_;
     std::size_t undoGpuBytes_ = 0;
     std::map<workflow::SnapshotId, Snapshot> snapshots_;
@@ -133,10 +134,11 @@ class SessionEngine final : public workflow::Engine {
     std::uint64_t speedVersion_ = 0;
     std::uint32_t aheadBricks_ = 1; // the next piece of fillSpeedAhead
     mutable WorkSeconds work_;
-    // The volume: the inside voxels counted on the pool read back from the GPU (after an edit,
-    // and when asked for the exact figure; Session::insideVoxels), and while the front moves that
-    // count plus the voxels the steps moved across the surface since (SolverStats::netGained): a
-    // run reads no mask back, which on a 512x512x120 scan cost llvmpipe a frame twice a second.
+    // The volume: the inside voxels counted on the pool read back from the GPU (when asked for
+    // the exact figure after a run or a new level set; Session::insideVoxels), and while the
+    // front moves, and after a sphere edit, that count plus the voxels the steps and the edits
+    // moved across the surface since (SolverStats::netGained): a run reads no mask back, which on
+    // a 512x512x120 scan cost llvmpipe a frame twice a second.
     mutable std::optional<std::int64_t> insideCounted_;
     mutable std::int64_t netAtCount_ = 0;     // SolverStats::netGained when it was counted
     mutable std::uint64_t volumeVersion_ = 0; // the level set's version it was counted on

@@ -95,9 +95,10 @@ struct SolverStats {
     // The front's net growth at the last check: voxels that came inside minus those that left,
     // per unit of evolved time (the leak watch's signal).
     float growthRate = 0.0F;
-    // Voxels that came inside minus those that left, summed over every check since the solver
-    // was made: the inside count of a run follows from one count before it, without reading
-    // the mask back (a 512x512x120 mask costs a frame on a software renderer).
+    // Voxels that came inside minus those that left, summed over every check and every sphere
+    // edit since the solver was made: the inside count of a run or after an edit follows from
+    // one count before it, without reading the mask back (a 512x512x120 mask costs a frame on a
+    // software renderer).
     std::int64_t netGained = 0;
     int barriers = 0; // barrier spheres in force
     // Voxels the step's passes visited (the active bricks' voxels), summed over every iteration

@@ -113,6 +113,10 @@ void LevelSetSolver::editSphere(const model::Sphere& sphere, bool add) {
 void LevelSetSolver::noteChange() {
     wakeAll();
     ControlBlock ctrl = pool_->readControl();
+    // What changed side since the last check (a sphere edit's voxels, or steps that ended
+    // between checks) is the front's no longer, but the inside count's all the same.
+    stats_.netGained +=
+        static_cast<std::int64_t>(ctrl.gained) - static_cast<std::int64_t>(ctrl.lost);
     lastUsed_ = pool_->usedSlots(ctrl);
     ctrl.lastChange = ctrl.iteration;
     ctrl.lastChangeTime = ctrl.time;

@@ -1,6 +1,7 @@
 #version 310 es
 // One thread per brick of a sphere edit's bounding box: constant bricks the edit changes either
-// ask for a slot (the surface crosses them) or switch constant at once (fully covered).
+// ask for a slot (the surface crosses them) or switch constant at once (fully covered; their
+// voxels counted into gained or lost, as apply_sphere.comp counts the rest of the edit).
 #define PAGE_TABLE_ACCESS
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
@@ -33,6 +34,14 @@ void main() {
     float farthest = length(max(abs(lo - centre), abs(hi - centre))) - radius;
     if (farthest <= -PHI_FAR) {
         pageTable[brick] = addMode ? BRICK_INSIDE : BRICK_OUTSIDE;
+        // Its voxels of the scan changed side: counted as apply_sphere counts the others.
+        ivec3 extent = min(b * BRICK_SIZE + BRICK_SIZE, volumeDims) - b * BRICK_SIZE;
+        uint voxels = uint(extent.x * extent.y * extent.z);
+        if (addMode) {
+            atomicAdd(ctrl.gained, voxels);
+        } else {
+            atomicAdd(ctrl.lost, voxels);
+        }
     } else if (nearest < PHI_FAR && atomicExchange(wantEpoch[brick], epoch) != epoch) {
         requests[atomicAdd(ctrl.requestCount, 1u)] = brick;
     }

@@ -122,8 +122,18 @@ TEST_F(KioskEngine, TheVolumeWhileTheFrontMovesFollowsTheStepsCounts) {
         last = exact;
     }
     EXPECT_GT(last, 4.0 * seeded); // the front grew: the counts had something to follow
+    // An edit's voxels are counted as the GPU paints them: the figure after it is exact at once,
+    // with no count of the pool (a read of every brick).
+    const double countingSeconds = engine.workSeconds().count;
     engine.erase({centre, 4.0F});
-    EXPECT_LT(engine.volumeMl(), last); // an edit counts again at once
+    engine.addSeed({centre + glm::vec3(8.0F, 0.0F, 0.0F), 2.0F});
+    const double afterEdits = engine.exactVolumeMl();
+    EXPECT_EQ(engine.workSeconds().count, countingSeconds);
+    EXPECT_LT(afterEdits, last);
+    const glm::dvec3 s = engine.session()->scan().geometry().spacing;
+    const double counted =
+        static_cast<double>(engine.session()->insideVoxels()) * s.x * s.y * s.z / 1000.0;
+    EXPECT_NEAR(afterEdits, counted, 1e-9);
 }
 
 TEST_F(KioskEngine, LoadsSeedsStepsUndoesAndExports) {

@@ -86,5 +86,29 @@ TEST_F(SolverCopyTest, CountsTheInsideVoxelsAsTheMaskDoesBorderBricksIncluded) {
     }
 }
 
+TEST_F(SolverCopyTest, TheInsideCountFollowsStepsAndSphereEditsWithoutACount) {
+    // netGained counts what the steps and the edits moved across the surface: the count before
+    // plus it is the count after, border bricks (the low-x face, the far corner) included.
+    const auto volume = ball();
+    LevelSetSolver solver(volume, kDims);
+    solver.setParams(kParams);
+    solver.addSphere({{4.0F, 18.0F, 14.0F}, 6.0F});
+    const auto before = static_cast<std::int64_t>(solver.countInside());
+    const std::int64_t net = solver.stats().netGained;
+    solver.step(25);
+    // A second part, away from the ball, wide enough to cover whole bricks (a brick switches
+    // inside at once, without a slot), then a cut that takes whole bricks out the same way.
+    solver.addSphere({{30.0F, 20.0F, 14.0F}, 14.0F});
+    solver.removeSphere({{28.0F, 20.0F, 12.0F}, 12.0F});
+    solver.removeSphere({{4.0F, 18.0F, 14.0F}, 4.0F});
+    solver.addSphere({{44.0F, 36.0F, 28.0F}, 3.0F}); // in the far corner's partial bricks
+    solver.step(7);                                  // fewer than a check's iterations
+    solver.removeSphere({{36.0F, 20.0F, 14.0F}, 2.5F});
+    const auto after = static_cast<std::int64_t>(solver.countInside());
+    EXPECT_NE(after, before);
+    EXPECT_EQ(after - before, solver.stats().netGained - net);
+    EXPECT_EQ(after, static_cast<std::int64_t>(insideCount(solver.readMask())));
+}
+
 } // namespace
 } // namespace steerseg::test
