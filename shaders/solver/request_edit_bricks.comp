@@ -35,7 +35,7 @@ void main() {
     if (farthest <= -PHI_FAR) {
         pageTable[brick] = addMode ? BRICK_INSIDE : BRICK_OUTSIDE;
         // Its voxels of the scan changed side: counted as apply_sphere counts the others.
-        ivec3 extent = min(b * BRICK_SIZE + BRICK_SIZE, volumeDims) - b * BRICK_SIZE;
+        vec3 extent = hi - lo + 1.0;
         uint voxels = uint(extent.x * extent.y * extent.z);
         if (addMode) {
             atomicAdd(ctrl.gained, voxels);
