@@ -4,6 +4,7 @@
 // per check, iteration, evolved time, voxels gained, voxels lost, front voxels.
 #include "solver/front_check.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -13,10 +14,10 @@
 namespace steerseg::test {
 
 inline std::vector<solver::FrontCheck> frontSeries(const std::string& name) {
-    const std::string path = std::string(STEERSEG_GROWTH_DATA_DIR) + "/" + name;
+    const std::filesystem::path path = std::filesystem::path(STEERSEG_GROWTH_DATA_DIR) / name;
     std::ifstream in(path);
     if (!in) {
-        throw std::runtime_error("cannot read " + path);
+        throw std::runtime_error("cannot read " + path.string());
     }
     std::vector<solver::FrontCheck> out;
     std::string line;
@@ -28,7 +29,7 @@ inline std::vector<solver::FrontCheck> frontSeries(const std::string& name) {
         solver::FrontCheck c;
         fields >> c.iteration >> c.time >> c.gained >> c.lost >> c.front;
         if (!fields) {
-            throw std::runtime_error("bad line in " + path + ": " + line);
+            throw std::runtime_error("bad line in " + path.string() + ": " + line);
         }
         c.gainHi = {1, 1, 1};
         out.push_back(c);

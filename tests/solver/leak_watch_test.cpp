@@ -1,6 +1,7 @@
 // The leak watch's rule on growth series (no GPU): what must and must not read as a leak.
 #include "solver/leak_watch.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <sstream>
@@ -73,7 +74,7 @@ TEST(LeakWatch, ALeakIsSaidOnceUntilTheOperatorActs) {
 
 // A recorded run's checks (tests/data/growth): iteration, evolved time, net voxels.
 std::vector<GrowthSample> recorded(const std::string& name) {
-    std::ifstream in(std::string(STEERSEG_GROWTH_DATA_DIR) + "/" + name);
+    std::ifstream in(std::filesystem::path(STEERSEG_GROWTH_DATA_DIR) / name);
     std::vector<GrowthSample> out;
     std::string line;
     while (std::getline(in, line)) {
