@@ -8,6 +8,7 @@
 #include "gpu/gl_state_guard.hpp"
 #include "gpu/program.hpp"
 #include "speed/classifier_layout.h"
+#include "speed/volume_texture.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -28,21 +29,7 @@ void checkIntensityTexture(GLuint intensity, glm::ivec3 dims) {
     if (intensity == 0 || glIsTexture(intensity) == GL_FALSE) {
         throw std::invalid_argument("classifier speed: the intensity texture is not a texture");
     }
-    glActiveTexture(GL_TEXTURE0 + SPEED_SOURCE_UNIT);
-    while (glGetError() != GL_NO_ERROR) {
-    }
-    glBindTexture(GL_TEXTURE_3D, intensity);
-    if (glGetError() != GL_NO_ERROR) {
-        throw std::invalid_argument("classifier speed: the intensity texture is not a 3D texture");
-    }
-    glm::ivec3 size{0};
-    GLint format = 0;
-    glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_WIDTH, &size.x);
-    glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_HEIGHT, &size.y);
-    glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_DEPTH, &size.z);
-    glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
-    gpu::checkGl("reading the intensity texture's size");
-    if (size != dims || format != GL_R32F) {
+    if (!isVolumeTexture(intensity, dims)) {
         throw std::invalid_argument("classifier speed: the intensity texture is not R32F of " +
                                     dimsText(dims) + " voxels");
     }

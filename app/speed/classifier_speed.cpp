@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace steerseg::speed {
@@ -39,7 +40,8 @@ ForestParams forestParams(const ClassifierParams& p) {
 } // namespace
 
 ClassifierSpeed::ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<const Example> inside,
-                                 std::span<const Example> outside, const ClassifierParams& params)
+                                 std::span<const Example> outside, const ClassifierParams& params,
+                                 gpu::Texture recycled)
     : dims_(dims), maxDepth_(params.maxDepth), evaluation_(params.evaluation) {
     const ForestParams forestSettings = forestParams(params);
     if (forestSettings.trees < 1 || forestSettings.trees > 256 || forestSettings.maxDepth < 1 ||
@@ -73,7 +75,8 @@ ClassifierSpeed::ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<co
     training_.outOfBagAccuracy = forest_.outOfBagAccuracy();
 
     upload();
-    texture_ = createVolumeTexture(dims_, "classifier speed");
+    texture_ = isVolumeTexture(recycled.id(), dims_) ? std::move(recycled)
+                                                : createVolumeTexture(dims_, "classifier speed");
     if (evaluation_ == ClassifierEvaluation::OnDemand) {
         clear();
         return;

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <span>
+#include <utility>
 
 namespace steerseg::speed {
 
@@ -47,11 +48,17 @@ class ClassifierSpeed {
     // intensity: an R32F 3D texture of `dims` real-unit intensities (the scan, or its smoothed
     // copy), read with texelFetch only. Throws std::invalid_argument with one line for a bad
     // texture, bad parameters, or a class without examples or without a voxel in the scan.
+    // recycled: the texture of the classifier speed this one replaces (takeTexture()), written
+    // over instead of allocating another: a 256^3 float texture takes 0.12 s to allocate on
+    // llvmpipe, most of a retraining after a correction. Ignored unless it is R32F of `dims`.
     ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<const Example> inside,
-                    std::span<const Example> outside, const ClassifierParams& params = {});
+                    std::span<const Example> outside, const ClassifierParams& params = {},
+                    gpu::Texture recycled = {});
 
     // R32F 3D texture of dims(): P(inside) - P(outside) per voxel (on demand: where evaluated).
     [[nodiscard]] GLuint texture() const { return texture_.id(); }
+    // Gives the texture up, to the classifier speed that replaces this one; texture() is 0 after.
+    [[nodiscard]] gpu::Texture takeTexture() { return std::move(texture_); }
     // The forest for the solver to evaluate on demand; no forest (nodes 0) when the texture was
     // filled everywhere.
     [[nodiscard]] OnDemandForest onDemandForest() const;

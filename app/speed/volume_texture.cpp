@@ -24,6 +24,26 @@ gpu::Texture createVolumeTexture(const glm::ivec3& dims, const char* what) {
     return texture;
 }
 
+bool isVolumeTexture(GLuint texture, const glm::ivec3& dims) {
+    if (texture == 0 || glIsTexture(texture) == GL_FALSE) {
+        return false;
+    }
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    glActiveTexture(GL_TEXTURE0 + SPEED_SOURCE_UNIT);
+    glBindTexture(GL_TEXTURE_3D, texture);
+    if (glGetError() != GL_NO_ERROR) {
+        return false; // a texture of another target
+    }
+    glm::ivec3 size{0};
+    GLint format = 0;
+    glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_WIDTH, &size.x);
+    glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_HEIGHT, &size.y);
+    glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_DEPTH, &size.z);
+    glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+    return glGetError() == GL_NO_ERROR && size == dims && format == GL_R32F;
+}
+
 void runVolumePass(GLuint program, GLuint source, GLuint target, const glm::ivec3& dims) {
     glUseProgram(program);
     glActiveTexture(GL_TEXTURE0 + SPEED_SOURCE_UNIT);

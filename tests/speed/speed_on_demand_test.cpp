@@ -4,12 +4,15 @@
 #include "gpu/scan_texture.hpp"
 #include "solver/level_set_solver.hpp"
 #include "speed/classifier_speed.hpp"
+#include "speed/volume_texture.hpp"
 #include "speed_texture_readback.hpp"
 #include "support/gpu_fixture.hpp"
 #include "support/two_textures.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <gtest/gtest.h>
+#include <utility>
 #include <vector>
 
 namespace steerseg::test {
@@ -123,6 +126,47 @@ TEST_F(SpeedOnDemandTest, ANewSpeedIsEvaluatedAfresh) {
     EXPECT_THROW(solver.setSpeedInputs(
                      {model::SpeedKind::Edge, 0, second.texture(), second.onDemandForest()}),
                  std::invalid_argument);
+}
+
+// A retrained speed writes over its predecessor's texture (Session::setSpeed after a correction):
+// the same texture, none of the old values left where the new forest has not been evaluated,
+// and what it evaluates is a fresh speed's. Only a texture of the scan's grid is taken.
+TEST_F(SpeedOnDemandTest, ARetrainedSpeedWritesOverItsPredecessorsTexture) {
+    const std::vector<float> scan = twoTextures();
+    const gpu::ScanTexture texture(scan, kDims);
+    ClassifierSpeed first = classifier(texture, ClassifierEvaluation::OnDemand);
+    LevelSetSolver solver(texture);
+    run(solver, first);
+    solver.setSpeedInputs({});
+    const GLuint id = first.texture();
+    std::vector<float> values = readVolumeTexture(id, kDims);
+    ASSERT_GT(std::count_if(values.begin(), values.end(), [](float v) { return v != 0.0F; }), 0);
+
+    ClassifierParams params;
+    params.evaluation = ClassifierEvaluation::OnDemand;
+    ClassifierSpeed second(texture.exact(), kDims, kInside, kOutside, params, first.takeTexture());
+    EXPECT_EQ(first.texture(), 0U);
+    EXPECT_EQ(second.texture(), id);
+    values = readVolumeTexture(second.texture(), kDims);
+    EXPECT_EQ(std::count_if(values.begin(), values.end(), [](float v) { return v != 0.0F; }), 0);
+    LevelSetSolver fresh(texture);
+    const ClassifierSpeed everywhere = classifier(texture, ClassifierEvaluation::Everywhere);
+    const std::vector<float> expected = run(fresh, everywhere);
+    LevelSetSolver again(texture);
+    EXPECT_EQ(run(again, second), expected);
+
+    // Everywhere fills a recycled texture whole; a texture of another grid is not taken.
+    params.evaluation = ClassifierEvaluation::Everywhere;
+    const ClassifierSpeed filled(texture.exact(), kDims, kInside, kOutside, params,
+                                 second.takeTexture());
+    EXPECT_EQ(filled.texture(), id);
+    const std::vector<float> whole = readVolumeTexture(everywhere.texture(), kDims);
+    EXPECT_EQ(readVolumeTexture(filled.texture(), kDims), whole);
+    gpu::Texture other = speed::createVolumeTexture(glm::ivec3(8, 8, 8), "another grid");
+    const GLuint otherId = other.id();
+    const ClassifierSpeed own(texture.exact(), kDims, kInside, kOutside, params, std::move(other));
+    EXPECT_NE(own.texture(), otherId);
+    EXPECT_EQ(readVolumeTexture(own.texture(), kDims), whole);
 }
 
 } // namespace
