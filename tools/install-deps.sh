@@ -15,7 +15,7 @@ packages=(
   libdcmtk-dev dicom3tools python3-pydicom
   orthanc dcmtk openssl
   dpkg-dev fakeroot lintian systemd
-  libtomlplusplus-dev nlohmann-json3-dev libimgui-dev fonts-dejavu-core
+  libtomlplusplus-dev nlohmann-json3-dev libimgui-dev fonts-dejavu-core libboost-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
 if [[ "${1:-}" == "--bench" ]]; then

@@ -180,7 +180,8 @@ workflow::ScanInfo SessionEngine::scanInfo() const {
 }
 
 workflow::ProbeResult SessionEngine::probe(const glm::dvec3& voxel, double radiusMm) const {
-    const workflow::ProbeResult r = measure(voxel, radiusMm);
+    const session::ProbeStats s = requireSession().probeAt(voxel, radiusMm, session::Stray::LeaveOut);
+    const workflow::ProbeResult r{s.mean, s.stddev, s.count, s.leftOut};
     if (r.count > 0) {
         // At least one voxel: the noise is measured between neighbours inside the sphere.
         const Geometry& g = requireSession().scan().geometry();
@@ -190,7 +191,7 @@ workflow::ProbeResult SessionEngine::probe(const glm::dvec3& voxel, double radiu
 }
 
 workflow::ProbeResult SessionEngine::measure(const glm::dvec3& voxel, double radiusMm) const {
-    const session::ProbeStats s = requireSession().probeAt(voxel, radiusMm);
+    const session::ProbeStats s = requireSession().probeAt(voxel, radiusMm, session::Stray::Keep);
     return {s.mean, s.stddev, s.count};
 }
 

@@ -332,8 +332,8 @@ glm::ivec2 Session::pictureSize(int index) const {
     return gpu_->renderer.target(index).size();
 }
 
-ProbeStats Session::probeAt(const glm::dvec3& index, double radiusMm) const {
-    return probe(scan_, index, radiusMm);
+ProbeStats Session::probeAt(const glm::dvec3& index, double radiusMm, Stray stray) const {
+    return probe(scan_, index, radiusMm, stray);
 }
 
 } // namespace steerseg::session

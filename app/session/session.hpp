@@ -144,7 +144,8 @@ class Session {
     [[nodiscard]] glm::ivec2 pictureSize(int index) const;
 
     // Intensity statistics around a voxel-index point (the probe of any view).
-    [[nodiscard]] ProbeStats probeAt(const glm::dvec3& index, double radiusMm) const;
+    [[nodiscard]] ProbeStats probeAt(const glm::dvec3& index, double radiusMm,
+                                     Stray stray = Stray::LeaveOut) const;
 
   private:
     struct Gpu;

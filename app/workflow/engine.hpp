@@ -38,7 +38,8 @@ struct LoadPoll {
 struct ProbeResult {
     double mean = 0.0;
     double stddev = 0.0;
-    std::size_t count = 0; // 0: the sphere missed the scan
+    std::size_t count = 0;   // voxels counted; 0: the sphere missed the scan
+    std::size_t leftOut = 0; // a probe's stray voxel left out of mean and spread (0 or 1)
 };
 
 // The data term the engine should run (docs/speed.md). Threshold and Edge read T, eps and alpha

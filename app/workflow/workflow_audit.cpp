@@ -63,6 +63,7 @@ nlohmann::json Workflow::resultOf(const model::Action& action) const {
                 r["mean"] = lastProbe_.mean;
                 r["stddev"] = lastProbe_.stddev;
                 r["count"] = lastProbe_.count;
+                r["left_out"] = lastProbe_.leftOut;
                 r.update(speed());
                 return r;
             } else if constexpr (std::is_same_v<A, model::ApplyPreset>) {
