@@ -180,7 +180,8 @@ workflow::ScanInfo SessionEngine::scanInfo() const {
 }
 
 workflow::ProbeResult SessionEngine::probe(const glm::dvec3& voxel, double radiusMm) const {
-    const session::ProbeStats s = requireSession().probeAt(voxel, radiusMm, session::Stray::LeaveOut);
+    const session::ProbeStats s =
+        requireSession().probeAt(voxel, radiusMm, session::Stray::LeaveOut);
     const workflow::ProbeResult r{s.mean, s.stddev, s.count, s.leftOut};
     if (r.count > 0) {
         // At least one voxel: the noise is measured between neighbours inside the sphere.

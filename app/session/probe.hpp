@@ -16,7 +16,7 @@ enum class Stray { Keep, LeaveOut };
 // volume.
 struct ProbeStats {
     double mean = 0.0;
-    double stddev = 0.0; // population standard deviation of the voxels counted
+    double stddev = 0.0;     // population standard deviation of the voxels counted
     std::size_t count = 0;   // voxels counted
     std::size_t leftOut = 0; // 1 where the test left a voxel out
 };

@@ -75,8 +75,9 @@ ClassifierSpeed::ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<co
     training_.outOfBagAccuracy = forest_.outOfBagAccuracy();
 
     upload();
-    texture_ = isVolumeTexture(recycled.id(), dims_) ? std::move(recycled)
-                                                : createVolumeTexture(dims_, "classifier speed");
+    texture_ = isVolumeTexture(recycled.id(), dims_)
+                   ? std::move(recycled)
+                   : createVolumeTexture(dims_, "classifier speed");
     if (evaluation_ == ClassifierEvaluation::OnDemand) {
         clear();
         return;
