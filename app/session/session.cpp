@@ -153,13 +153,19 @@ void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progr
     g.speed = {};
     g.timing = {};
     g.factor.reset();
+    const bool smooth = !(settings.smoothing == g.smoothedWith) ||
+                        (settings.smoothing.iterations > 0 && !g.smoothed);
     // A retrained classifier writes over its predecessor's texture (allocating a 256^3 one
-    // was 0.12 s of a correction's first visible change on llvmpipe); freed below if unused.
-    gpu::Texture recycled = g.classifier ? g.classifier->takeTexture() : gpu::Texture{};
+    // was 0.12 s of a correction's first visible change on llvmpipe). Only where nothing else
+    // is allocated before it: kept through a smoothing pass, it would raise the GPU memory's
+    // peak by a scan's floats.
+    gpu::Texture recycled;
+    if (g.classifier && settings.kind == model::SpeedKind::Classify && !smooth) {
+        recycled = g.classifier->takeTexture();
+    }
     g.classifier.reset();
     const auto start = std::chrono::steady_clock::now();
-    if (!(settings.smoothing == g.smoothedWith) ||
-        (settings.smoothing.iterations > 0 && !g.smoothed)) {
+    if (smooth) {
         g.smoothed.reset(); // before the new copy: two smoothed copies would not fit a large scan
         g.smoothedWith = {};
         speed::SmoothingProgress step;
