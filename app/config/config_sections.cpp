@@ -186,6 +186,9 @@ void readSpeed(TableReader& t, SpeedConfig& s) {
     if (auto v = t.boolean("classify_within_window")) {
         s.classifyWithinWindow = *v;
     }
+    if (auto v = t.number("classify_place_reach", {0.0, 100.0})) {
+        s.classifyPlaceReach = *v;
+    }
     if (auto v = t.integer("smooth_iterations", {0, 1000})) {
         s.smoothIterations = static_cast<int>(*v);
     }

@@ -79,6 +79,9 @@ struct SpeedConfig {
     double kappaFactor = 1.0;       // kappa = factor * the probe's noise (per voxel)
     // Classify bounded by the threshold's window (workflow::Settings::classifyWithinWindow).
     bool classifyWithinWindow = true;
+    // Classify: how far, in its radii, an example decides where the classifier is unsure
+    // (workflow::Settings::classifyPlaceReach).
+    double classifyPlaceReach = 3.0;
     bool operator==(const SpeedConfig&) const = default;
 };
 

@@ -304,6 +304,7 @@ void SessionEngine::setSpeed(const workflow::SpeedChoice& choice) {
     settings.outside.insert(settings.outside.end(), choice.paintedOutside.begin(),
                             choice.paintedOutside.end());
     settings.withinWindow = choice.withinWindow;
+    settings.placeReach = choice.placeReach;
     // Preprocessing and training run here, on the frame loop (a blocking step: docs/speed.md).
     s.setSpeed(settings);
     changed();

@@ -15,6 +15,7 @@ workflow::Settings workflowSettings(const config::KioskConfig& config) {
     s.correctionReach = config.brush.correctionReach;
     s.defaultSpeed = config.speed.kind;
     s.classifyWithinWindow = config.speed.classifyWithinWindow;
+    s.classifyPlaceReach = config.speed.classifyPlaceReach;
     s.exportFolder = config.exports.folder;
     s.exportFormats = config.exports.formats;
     return s;

@@ -33,6 +33,7 @@ std::string segmentReport(const Session& session, const RunOutcome& run,
         sp["inside_examples"] = speed.inside.size();
         sp["outside_examples"] = speed.outside.size();
         sp["within_window"] = speed.withinWindow;
+        sp["place_reach"] = speed.placeReach;
     }
     j["speed"] = sp;
     j["preprocessing_seconds"] = session.speedTiming().preprocessingSeconds;

@@ -202,6 +202,7 @@ void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progr
         // and would stop the kiosk's screen for that long (docs/speed.md).
         speed::ClassifierParams params;
         params.evaluation = speed::ClassifierEvaluation::OnDemand;
+        params.placeReach = static_cast<float>(settings.placeReach);
         g.classifier.emplace(intensity, dims, examples(settings.inside), examples(settings.outside),
                              params, std::move(recycled));
         factor = g.classifier->texture();

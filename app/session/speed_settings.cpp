@@ -2,6 +2,7 @@
 
 #include "speed/edge_factor.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -34,6 +35,9 @@ void validateSpeedSettings(const SpeedSettings& settings, const glm::ivec3& dims
     }
     if (settings.withinWindow && settings.kind != model::SpeedKind::Classify) {
         throw std::invalid_argument("only the classify speed is bounded by the window");
+    }
+    if (!std::isfinite(settings.placeReach) || settings.placeReach < 0.0) {
+        throw std::invalid_argument("the classify speed's place reach must be finite and >= 0");
     }
     checkExamples(settings.inside, dims, "inside example");
     checkExamples(settings.outside, dims, "outside example");

@@ -22,11 +22,15 @@ struct SpeedSettings {
     std::vector<model::Sphere> outside;
     // classify: bounded by the threshold's window T +- eps (speed::SpeedInputs::withinWindow).
     bool withinWindow = false;
+    // classify: how far, in its radii, an example decides where appearance is unsure
+    // (speed::ClassifierParams::placeReach, the kiosk's [speed] classify_place_reach); 0: never.
+    double placeReach = 3.0;
 };
 
 // Throws std::invalid_argument (one line) for settings no speed can run with: smoothing out of
 // range, edge without kappa > 0, classify without an inside and an outside example, an example
-// that does not fit the scan (dims), a window bound on another speed than classify.
+// that does not fit the scan (dims), a window bound on another speed than classify, a place
+// reach that is not finite or is negative.
 void validateSpeedSettings(const SpeedSettings& settings, const glm::ivec3& dims);
 
 // Seconds spent making the speed's textures (GPU work finished).

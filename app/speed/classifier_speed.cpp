@@ -5,6 +5,8 @@
 #include "gpu/gl_state_guard.hpp"
 #include "gpu/program.hpp"
 #include "speed/classifier_features.hpp"
+#include "speed/classifier_layout.h"
+#include "speed/place_vote.hpp"
 #include "speed/volume_texture.hpp"
 
 #include <algorithm>
@@ -36,6 +38,8 @@ ForestParams forestParams(const ClassifierParams& p) {
     forest.seed = p.seed;
     return forest;
 }
+
+static_assert(kPlaceVoteCell == CLASSIFIER_PLACE_CELL);
 
 } // namespace
 
@@ -74,6 +78,7 @@ ClassifierSpeed::ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<co
     training_.trainSeconds = secondsSince(start);
     training_.outOfBagAccuracy = forest_.outOfBagAccuracy();
 
+    placeVote_ = speed::placeVote(inside, outside, dims, params.placeReach);
     upload();
     texture_ = isVolumeTexture(recycled.id(), dims_)
                    ? std::move(recycled)
@@ -95,7 +100,8 @@ OnDemandForest ClassifierSpeed::onDemandForest() const {
 }
 
 OnDemandForest ClassifierSpeed::gpuForest() const {
-    return {nodes_.id(), roots_.id(), static_cast<int>(forest_.roots().size()), maxDepth_};
+    return {nodes_.id(), roots_.id(), static_cast<int>(forest_.roots().size()), maxDepth_,
+            place_.id()};
 }
 
 void bindClassifierForest(GLuint program, const OnDemandForest& forest, const glm::ivec3& dims) {
@@ -105,6 +111,8 @@ void bindClassifierForest(GLuint program, const OnDemandForest& forest, const gl
                        dims.z);
     glProgramUniform1i(program, glGetUniformLocation(program, "treeCount"), forest.trees);
     glProgramUniform1i(program, glGetUniformLocation(program, "maxDepth"), forest.maxDepth);
+    glActiveTexture(GL_TEXTURE0 + CLASSIFIER_PLACE_UNIT);
+    glBindTexture(GL_TEXTURE_3D, forest.place);
 }
 
 void ClassifierSpeed::upload() {
@@ -116,6 +124,21 @@ void ClassifierSpeed::upload() {
     roots_ = gpu::createBuffer(GL_SHADER_STORAGE_BUFFER,
                                static_cast<GLsizeiptr>(roots.size() * sizeof(std::int32_t)),
                                roots.data(), GL_STATIC_DRAW);
+    // R16F: filterable in GLES 3.1 core (R32F is not), and a vote needs no more.
+    place_ = gpu::createTexture();
+    glActiveTexture(GL_TEXTURE0 + CLASSIFIER_PLACE_UNIT);
+    glBindTexture(GL_TEXTURE_3D, place_.id());
+    const glm::ivec3 cells = placeVote_.dims;
+    glTexStorage3D(GL_TEXTURE_3D, 1, GL_R16F, cells.x, cells.y, cells.z);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, cells.x, cells.y, cells.z, GL_RED, GL_FLOAT,
+                    placeVote_.values.data());
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    gpu::checkGl("uploading the classifier's place vote");
 }
 
 // 0 is "no preference" to a speed view; a slice at a time keeps the host's zeros small.

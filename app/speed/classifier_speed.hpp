@@ -3,9 +3,11 @@
 // The classification speed (issue 13, docs/speed.md): the operator's inside and outside examples
 // train a random forest over per-voxel features (GPU gather, CPU training), and the forest,
 // evaluated at every voxel on the GPU, gives the data speed P(inside) - P(outside) in [-1, 1]
-// as an R32F 3D texture for the solver. Needs a current GLES 3.1 context for its whole life.
+// as an R32F 3D texture for the solver; where the forest is unsure, the examples near the voxel
+// decide (speed/place_vote, issue 27). Needs a current GLES 3.1 context for its whole life.
 #include "gpu/gl_handle.hpp"
 #include "speed/example_voxels.hpp"
+#include "speed/place_vote.hpp"
 #include "speed/random_forest.hpp"
 #include "speed/speed_inputs.hpp"
 
@@ -29,6 +31,9 @@ struct ClassifierParams {
     int maxDepth = 10;
     int maxSamplesPerClass = 20000; // in [1, 2^20]
     std::uint32_t seed = 1;
+    // How far, in its radii, a mark decides where appearance is unsure (speed/place_vote); 0:
+    // appearance alone.
+    float placeReach = 3.0F;
 };
 
 // What the training took and found; seconds of wall time, GPU work finished.
@@ -65,6 +70,7 @@ class ClassifierSpeed {
     [[nodiscard]] glm::ivec3 dims() const { return dims_; }
     [[nodiscard]] const ClassifierTraining& training() const { return training_; }
     [[nodiscard]] const RandomForest& forest() const { return forest_; }
+    [[nodiscard]] const PlaceVote& placeVote() const { return placeVote_; }
 
   private:
     [[nodiscard]] OnDemandForest gpuForest() const;
@@ -79,11 +85,14 @@ class ClassifierSpeed {
     ClassifierTraining training_;
     gpu::Buffer nodes_; // forest_ flattened for the GPU (classifier_forest.glsl)
     gpu::Buffer roots_;
+    PlaceVote placeVote_;
+    gpu::Texture place_; // placeVote_ for the GPU, R16F, linear filtering
     gpu::Texture texture_;
 };
 
-// Binds the forest's buffers and sets the uniforms of speed/classifier_forest.glsl on a program
-// that includes it, for a scan of `dims` (the caller binds the intensity at SPEED_SOURCE_UNIT).
+// Binds the forest's buffers and the place vote and sets the uniforms of
+// speed/classifier_forest.glsl on a program that includes it, for a scan of `dims` (the caller
+// binds the intensity at SPEED_SOURCE_UNIT).
 void bindClassifierForest(GLuint program, const OnDemandForest& forest, const glm::ivec3& dims);
 
 } // namespace steerseg::speed

@@ -13,7 +13,7 @@ void validateSpeedInputs(const SpeedInputs& inputs) {
     }
     const OnDemandForest& f = inputs.onDemand;
     if (f.nodes != 0 && (inputs.kind != model::SpeedKind::Classify || f.roots == 0 || f.trees < 1 ||
-                         f.maxDepth < 1)) {
+                         f.maxDepth < 1 || f.place == 0)) {
         throw std::invalid_argument(
             "a speed evaluated on demand needs the classify kind and a whole forest");
     }

@@ -21,6 +21,7 @@ struct OnDemandForest {
     GLuint roots = 0; // SSBO of each tree's root node index
     int trees = 0;
     int maxDepth = 0;
+    GLuint place = 0; // the place vote's 3D texture (speed/place_vote)
 };
 
 struct SpeedInputs {
@@ -32,8 +33,8 @@ struct SpeedInputs {
 };
 
 // Throws std::invalid_argument when a kind that reads the factor texture has none, for a
-// forest given with another kind than classify or without its roots, trees or depth, and for a
-// window bound on another kind than classify.
+// forest given with another kind than classify or without its roots, trees, depth or place vote,
+// and for a window bound on another kind than classify.
 void validateSpeedInputs(const SpeedInputs& inputs);
 
 // Binds I (inputs.intensity, or `rawScan`, the exact scan texture, when 0) and the factor to

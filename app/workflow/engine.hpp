@@ -58,6 +58,9 @@ struct SpeedChoice {
     std::vector<model::Sphere> paintedOutside = {};
     // Classify only: bounded by the window T +- eps (Settings::classifyWithinWindow).
     bool withinWindow = false;
+    // Classify only: how far, in its radii, an example decides where appearance is unsure
+    // (Settings::classifyPlaceReach).
+    double placeReach = 0.0;
     bool operator==(const SpeedChoice&) const = default;
     [[nodiscard]] bool hasInside() const { return !inside.empty() || !paintedInside.empty(); }
     [[nodiscard]] bool hasOutside() const { return !outside.empty() || !paintedOutside.empty(); }

@@ -38,6 +38,9 @@ void validateSettings(const Settings& s) {
     require(std::isfinite(s.correctionReach) && s.correctionReach >= 0.0,
             "correction reach must be a finite number of brush radii >= 0 (got " +
                 number(s.correctionReach) + ")");
+    require(std::isfinite(s.classifyPlaceReach) && s.classifyPlaceReach >= 0.0,
+            "classify place reach must be a finite number of example radii >= 0 (got " +
+                number(s.classifyPlaceReach) + ")");
     require(s.maxUndo >= 1 && s.maxUndo <= 10000,
             "undo depth must be within [1, 10000] (got " + std::to_string(s.maxUndo) + ")");
     require(model::validSpeedKind(s.defaultSpeed), "the default speed is not a known speed");

@@ -52,6 +52,10 @@ struct Settings {
     // where an unbounded forest may take in tissue unlike any example (the air around a liver
     // after one erase: docs/steering.md).
     bool classifyWithinWindow = true;
+    // Classify: an example decides where the classifier is unsure, within this many of its
+    // radii (speed/place_vote, docs/speed.md "Where appearance is unsure"): an erase in a
+    // tumour's leak holds the tissue around it out though it looks like the tumour. 0: never.
+    double classifyPlaceReach = 3.0;
     WallClock clock; // export names' time stamps; empty: the system clock (tests fix it)
 };
 

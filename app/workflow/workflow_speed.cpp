@@ -20,6 +20,7 @@ SpeedChoice Workflow::speedFor(const ParamValues& values) const {
         if (chosen.hasInside() && chosen.hasOutside()) {
             SpeedChoice bounded = chosen;
             bounded.withinWindow = settings_.classifyWithinWindow;
+            bounded.placeReach = settings_.classifyPlaceReach;
             return bounded;
         }
         SpeedChoice waiting;

@@ -52,6 +52,9 @@
 // zero crossing), the same textures as the solver's.
 #define VIEW_SURFACE_INTENSITY_UNIT 5
 #define VIEW_SURFACE_FACTOR_UNIT 6
+// speed/classifier_forest.glsl (speed/classifier_evaluate.comp, solver/evaluate_speed.comp): the
+// examples' vote of where (speed/place_vote), linear filtering; within gpu::GlStateGuard's 7.
+#define CLASSIFIER_PLACE_UNIT 2
 
 // Image units.
 #define VIEW_OUT_IMAGE_UNIT 0      // render/view_common.glsl: the rendered picture

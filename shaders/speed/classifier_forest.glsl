@@ -1,5 +1,9 @@
 // The classifier speed at one voxel: its features (speed/classifier_features.glsl), then the mean
-// over the forest's trees of the leaf's P(inside) - P(outside). One code for the evaluation over
+// over the forest's trees of the leaf's P(inside) - P(outside), `look`; where look is unsure,
+// the operator's marks near the voxel decide (speed/place_vote: +1 at an inside mark, -1 at an
+// outside one, 0 beyond their reach): look + (1 - |look|) place. Appearance cannot tell a
+// tumour from the tissue of its leak, but an erase in the leak and a seed in the tumour tell
+// where each lies; far from every mark, look decides alone. One code for the evaluation over
 // the whole scan (speed/classifier_evaluate.comp) and for the solver's evaluation of the bricks
 // the front reaches (solver/evaluate_speed.comp), so both give the same number at a voxel.
 #include "speed/classifier_features.glsl"
@@ -20,6 +24,15 @@ layout(std430, binding = CLASSIFIER_ROOTS_BINDING) readonly buffer Roots {
 };
 uniform int treeCount;
 uniform int maxDepth; // bounds each walk, whatever the buffer holds
+// R16F, ceil(classifierDims / CLASSIFIER_PLACE_CELL) cells, cell c's texel centre at voxel
+// c * cell + (cell - 1) / 2.
+layout(binding = CLASSIFIER_PLACE_UNIT) uniform highp sampler3D classifierPlace;
+
+float classifierPlaceAt(ivec3 v) {
+    ivec3 cells = (classifierDims + CLASSIFIER_PLACE_CELL - 1) / CLASSIFIER_PLACE_CELL;
+    vec3 at = (vec3(v) + 0.5) / (vec3(cells) * float(CLASSIFIER_PLACE_CELL));
+    return textureLod(classifierPlace, at, 0.0).r;
+}
 
 // A walk written as an unbounded while over the node buffer was miscompiled by llvmpipe (only the
 // first tree counted, and 50 times slower): the bounded for is what runs.
@@ -34,5 +47,6 @@ float classifierSpeedAt(ivec3 v) {
         }
         sum += node.value;
     }
-    return sum / float(treeCount);
+    float look = sum / float(treeCount);
+    return look + (1.0 - abs(look)) * classifierPlaceAt(v);
 }

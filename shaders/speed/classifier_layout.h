@@ -10,4 +10,7 @@
 //   7 gradient magnitude (central differences of the 3x3x3 mean)
 #define CLASSIFIER_FEATURE_COUNT 8
 
+// Voxels a side of a cell of the place vote's grid (speed/place_vote.hpp, kPlaceVoteCell).
+#define CLASSIFIER_PLACE_CELL 4
+
 #endif

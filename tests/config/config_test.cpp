@@ -83,6 +83,7 @@ std::vector<std::string> differences(const KioskConfig& a, const KioskConfig& b)
     field("speed.kind", a.speed.kind == b.speed.kind);
     field("speed.classify_within_window",
           a.speed.classifyWithinWindow == b.speed.classifyWithinWindow);
+    field("speed.classify_place_reach", a.speed.classifyPlaceReach == b.speed.classifyPlaceReach);
     field("speed.smooth_iterations", a.speed.smoothIterations == b.speed.smoothIterations);
     field("speed.conductance_factor", a.speed.conductanceFactor == b.speed.conductanceFactor);
     field("speed.kappa_factor", a.speed.kappaFactor == b.speed.kappaFactor);
@@ -336,12 +337,15 @@ TEST_F(ConfigTest, OutOfRange) {
 TEST_F(ConfigTest, Speed) {
     const fs::path file = write("speed.toml", "[speed]\nkind = \"edge\"\nsmooth_iterations = 0\n"
                                               "conductance_factor = 0.1\nkappa_factor = 0.5\n"
-                                              "classify_within_window = false\n");
+                                              "classify_within_window = false\n"
+                                              "classify_place_reach = 0\n");
     const config::LoadedConfig loaded = load({file});
     EXPECT_TRUE(loaded.problems.empty()) << describeAll(loaded.problems);
     EXPECT_EQ(loaded.config.speed.kind, model::SpeedKind::Edge);
     EXPECT_FALSE(loaded.config.speed.classifyWithinWindow);
     EXPECT_TRUE(config::KioskConfig{}.speed.classifyWithinWindow);
+    EXPECT_EQ(loaded.config.speed.classifyPlaceReach, 0.0);
+    EXPECT_EQ(config::KioskConfig{}.speed.classifyPlaceReach, 3.0);
     EXPECT_EQ(loaded.config.speed.smoothIterations, 0);
     EXPECT_EQ(loaded.config.speed.conductanceFactor, 0.1);
     EXPECT_EQ(loaded.config.speed.kappaFactor, 0.5);
@@ -350,6 +354,8 @@ TEST_F(ConfigTest, Speed) {
     expectRejected("[speed]\nkind = 2\n", 2, "speed.kind", "expected a string");
     expectRejected("[speed]\nclassify_within_window = 1\n", 2, "speed.classify_within_window",
                    "true or false");
+    expectRejected("[speed]\nclassify_place_reach = -1\n", 2, "speed.classify_place_reach",
+                   "at least 0");
     expectRejected("[speed]\nsmooth_iterations = 1001\n", 2, "speed.smooth_iterations",
                    "at most 1000");
     expectRejected("[speed]\nsmooth_iterations = -1\n", 2, "speed.smooth_iterations", "at least 0");

@@ -1,5 +1,5 @@
-#include "workflow/param_ranges.hpp"
 #include "support/workflow_rig.hpp"
+#include "workflow/param_ranges.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -156,6 +156,9 @@ TEST(WorkflowParams, BadSettingsAreNamedInOneLine) {
     }
     s = testSettings();
     s.epsFloor = std::nan("");
+    EXPECT_THROW(validateSettings(s), std::invalid_argument);
+    s = testSettings();
+    s.classifyPlaceReach = -1.0;
     EXPECT_THROW(validateSettings(s), std::invalid_argument);
 }
 

@@ -161,6 +161,7 @@ TEST(WorkflowSpeed, ClassifyWaitsForAnExampleOfEachKind) {
     EXPECT_NEAR(trained.outside[0].radius, 2.0 / std::cbrt(2.0), 1e-6);
     EXPECT_EQ(rig.status().speedInForce, SpeedKind::Classify);
     EXPECT_TRUE(trained.withinWindow) << "bounded by the window by default";
+    EXPECT_EQ(trained.placeReach, 3.0) << "the examples decide near them by default";
 
     // Every further example retrains.
     ASSERT_TRUE(rig.act(Probe{{10.0, 6.0, 4.0}, 3.0}).accepted);
@@ -178,9 +179,10 @@ TEST(WorkflowSpeed, ClassifyWaitsForAnExampleOfEachKind) {
     EXPECT_EQ(rig.engine.misuse(), 0) << rig.engine.lastMisuse();
 }
 
-TEST(WorkflowSpeed, TheWindowBoundsClassifyAsTheSettingsSay) {
+TEST(WorkflowSpeed, TheWindowAndThePlaceReachAreTheSettings) {
     Settings s = testSettings();
     s.classifyWithinWindow = false;
+    s.classifyPlaceReach = 1.5;
     Rig rig(s);
     rig.load();
     ASSERT_TRUE(rig.act(SetSpeed{SpeedKind::Classify}).accepted);
@@ -189,6 +191,7 @@ TEST(WorkflowSpeed, TheWindowBoundsClassifyAsTheSettingsSay) {
     ASSERT_TRUE(rig.act(MarkOutside{kOutside, 2.0}).accepted);
     ASSERT_EQ(rig.engine.speedKind(), SpeedKind::Classify);
     EXPECT_FALSE(rig.engine.speeds.back().withinWindow) << "the forest's answer alone";
+    EXPECT_EQ(rig.engine.speeds.back().placeReach, 1.5);
 }
 
 TEST(WorkflowSpeed, EdgeAndThresholdIgnoreExamples) {
