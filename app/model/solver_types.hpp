@@ -88,6 +88,7 @@ struct SolverStats {
     std::size_t levelSetBytes = 0; // phi pool + shell scratch + page table, now
     std::size_t peakLevelSetBytes = 0;
     std::size_t bookkeepingBytes = 0; // slot map, lists, states
+    std::size_t speedBytes = 0;       // each slot's speeds, kept between steps
     std::size_t densePhiBytes = 0;    // one float per voxel, for comparison
     int poolGrowths = 0;
     int poolShrinks = 0;

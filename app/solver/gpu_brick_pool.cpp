@@ -93,9 +93,14 @@ std::size_t GpuBrickPool::shellBytes() const {
     return (b * b * b - (b - 2) * (b - 2) * (b - 2)) * sizeof(float);
 }
 
+std::size_t GpuBrickPool::speedBytes() const {
+    return static_cast<std::size_t>(capacity_) * (brickBytes() + 4);
+}
+
+// The speed cache is the largest buffer over the slots: a brick of speeds and a tag each.
 std::uint32_t GpuBrickPool::maxCapacity() const {
     return static_cast<std::uint32_t>(std::min<std::size_t>(
-        {brickCount_, limits_.maxShaderStorageBlockBytes / brickBytes(),
+        {brickCount_, limits_.maxShaderStorageBlockBytes / (brickBytes() + 4),
          static_cast<std::size_t>(limits_.maxComputeWorkGroupCount[0]) * kSlotsPerGroup}));
 }
 
@@ -105,9 +110,9 @@ std::string GpuBrickPool::capacityLimitText() const {
     if (most == brickCount_) {
         return "every brick of the volume (" + bricks + ")";
     }
-    if (most == limits_.maxShaderStorageBlockBytes / brickBytes()) {
-        return bricks + " (" + gpu::bytesText(static_cast<double>(most) * brickBytes()) +
-               " of phi), the most GL_MAX_SHADER_STORAGE_BLOCK_SIZE " +
+    if (most == limits_.maxShaderStorageBlockBytes / (brickBytes() + 4)) {
+        return bricks + " (" + gpu::bytesText(static_cast<double>(most) * (brickBytes() + 4)) +
+               " of their kept speeds), the most GL_MAX_SHADER_STORAGE_BLOCK_SIZE " +
                gpu::bytesText(static_cast<double>(limits_.maxShaderStorageBlockBytes)) +
                " of this GPU holds";
     }
@@ -136,6 +141,13 @@ void GpuBrickPool::allocateSlotBuffers(std::uint32_t capacity) {
     slotState_ = makeBuffer(capacity * 4);
     bandList_ = makeBuffer(capacity * 4);
     slotFront_ = makeBuffer(capacity * 8);
+    speedCache_ = makeBuffer(capacity * (brickBytes() + 4));
+    forgetSpeed(); // the speeds themselves are written before they are read
+}
+
+void GpuBrickPool::forgetSpeed() {
+    const std::vector<std::uint32_t> none(capacity_, 0);
+    gpu::writeBuffer(speedCache_, 0, none.data(), none.size() * 4);
 }
 
 void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
@@ -279,7 +291,9 @@ void GpuBrickPool::grow(std::uint32_t newCapacity, const ControlBlock& ctrl) {
     gpu::Buffer oldFree = std::move(freeList_);
     gpu::Buffer oldState = std::move(slotState_);
     gpu::Buffer oldFront = std::move(slotFront_);
+    gpu::Buffer oldSpeed = std::move(speedCache_);
     allocateSlotBuffers(newCapacity);
+    copySpeeds(oldSpeed, old);
     copyBuffer(oldPhi, phi_, 0, 0, old * brickBytes());
     copyBuffer(oldSlotBrick, slotBrick_, 0, 0, old * 4);
     copyBuffer(oldState, slotState_, 0, 0, old * 4);
@@ -334,8 +348,11 @@ void GpuBrickPool::shrink(std::uint32_t newCapacity, const ControlBlock& ctrl) {
     std::vector<std::uint32_t> freeList(lowFree.begin() + static_cast<std::ptrdiff_t>(nextFree),
                                         lowFree.end());
     gpu::Buffer oldPhi = std::move(phi_);
+    gpu::Buffer oldSpeed = std::move(speedCache_);
+    const std::uint32_t oldCapacity = capacity_;
     allocateSlotBuffers(newCapacity);
     copyBuffer(oldPhi, phi_, 0, 0, newCapacity * brickBytes());
+    copySpeeds(oldSpeed, oldCapacity); // a moved brick's tag stays behind: computed again
     gpu::writeBuffer(slotBrick_, 0, slotBrick.data(), newCapacity * 4);
     gpu::writeBuffer(slotState_, 0, state.data(), newCapacity * 4);
     gpu::writeBuffer(slotFront_, 0, front.data(), newCapacity * 8);
@@ -345,6 +362,15 @@ void GpuBrickPool::shrink(std::uint32_t newCapacity, const ControlBlock& ctrl) {
     next.freeCount = static_cast<std::uint32_t>(freeList.size());
     writeControl(next);
     gpu::checkGl("shrinking the brick pool");
+}
+
+// The speeds of the slots both the old cache (of oldCapacity slots) and the current one have;
+// the tags sit before the speeds, so the speeds' offset follows the capacity.
+void GpuBrickPool::copySpeeds(const gpu::Buffer& old, std::uint32_t oldCapacity) {
+    const std::uint32_t kept = std::min(oldCapacity, capacity_);
+    copyBuffer(old, speedCache_, 0, 0, kept * std::size_t{4});
+    copyBuffer(old, speedCache_, oldCapacity * std::size_t{4}, capacity_ * std::size_t{4},
+               kept * brickBytes());
 }
 
 void GpuBrickPool::bind() const {
@@ -360,6 +386,7 @@ void GpuBrickPool::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SLOT_STATE_BINDING, slotState_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BAND_LIST_BINDING, bandList_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SLOT_FRONT_BINDING, slotFront_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SPEED_CACHE_BINDING, speedCache_.id());
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, control_.id());
 }
 

@@ -73,6 +73,9 @@ class GpuBrickPool {
     void shrink(std::uint32_t newCapacity, const ControlBlock& ctrl);
 
     void bind() const;
+    // Every slot's speeds (solver/speed_cache.glsl) no longer hold: the speed, its parameters or
+    // a barrier changed. The next pass over a brick computes them again.
+    void forgetSpeed();
 
     [[nodiscard]] ControlBlock readControl() const;
     void writeControl(const ControlBlock& ctrl);
@@ -95,12 +98,15 @@ class GpuBrickPool {
     [[nodiscard]] std::size_t levelSetBytes() const;
     // Slot map, free, active and band lists, states, fronts, requests and epochs.
     [[nodiscard]] std::size_t bookkeepingBytes() const;
+    // Each slot's speeds and their tags (solver/speed_cache.glsl): a brick of floats and a word.
+    [[nodiscard]] std::size_t speedBytes() const;
     [[nodiscard]] BrickPoolView view() const;
     [[nodiscard]] const glm::ivec3& brickGrid() const { return grid_; }
     [[nodiscard]] int brickSize() const { return brickSize_; }
 
   private:
     void allocateSlotBuffers(std::uint32_t capacity);
+    void copySpeeds(const gpu::Buffer& old, std::uint32_t oldCapacity);
     // The control block of a pool just filled: nothing requested or active, `freeCount` free.
     void resetControl(std::uint32_t freeCount);
     [[nodiscard]] glm::ivec3 brickOrigin(std::uint32_t brick) const;
@@ -124,7 +130,8 @@ class GpuBrickPool {
     gpu::Buffer wantEpoch_;
     gpu::Buffer slotState_;
     gpu::Buffer bandList_;
-    gpu::Buffer slotFront_; // two words per slot
+    gpu::Buffer slotFront_;  // two words per slot
+    gpu::Buffer speedCache_; // a tag per slot, then each slot's speeds
 };
 
 } // namespace steerseg::solver::detail

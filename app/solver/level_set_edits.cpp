@@ -173,7 +173,8 @@ void LevelSetSolver::uploadReach() {
                        s.radius);
 }
 
-// Sets the barrier uniforms of the passes that evaluate the speed (barrier_speed.glsl).
+// Sets the barrier uniforms of the pass that evaluates the speed (barrier_speed.glsl), whose
+// values the slots kept for the old barriers (or alpha) then no longer hold.
 void LevelSetSolver::uploadBarriers() {
     std::vector<float> packed;
     std::vector<float> levels; // level, reach (0: none)
@@ -191,17 +192,18 @@ void LevelSetSolver::uploadBarriers() {
     // data term for a barrier to act through.
     const float alpha = haveParams_ ? params_.alpha : 1.0F;
     const float hold = alpha > 0.0F ? (1.0F + 3.0F * (1.0F - alpha)) / alpha : 0.0F;
-    for (GLuint p : {programs_->measureSpeed.id(), programs_->updatePhi.id()}) {
-        glProgramUniform1i(p, glGetUniformLocation(p, "barrierCount"),
-                           static_cast<GLint>(barriers_.size()));
-        if (!barriers_.empty()) {
-            glProgramUniform4fv(p, glGetUniformLocation(p, "barriers"),
-                                static_cast<GLsizei>(barriers_.size()), packed.data());
-            glProgramUniform2fv(p, glGetUniformLocation(p, "barrierLevels"),
-                                static_cast<GLsizei>(barriers_.size()), levels.data());
-        }
-        glProgramUniform1f(p, glGetUniformLocation(p, "barrierHold"), hold);
+    const GLuint p = programs_->measureSpeed.id();
+    glProgramUniform1i(p, glGetUniformLocation(p, "barrierCount"),
+                       static_cast<GLint>(barriers_.size()));
+    if (!barriers_.empty()) {
+        glProgramUniform4fv(p, glGetUniformLocation(p, "barriers"),
+                            static_cast<GLsizei>(barriers_.size()), packed.data());
+        glProgramUniform2fv(p, glGetUniformLocation(p, "barrierLevels"),
+                            static_cast<GLsizei>(barriers_.size()), levels.data());
     }
+    glProgramUniform1f(p, glGetUniformLocation(p, "barrierHold"), hold);
+    gpu::GlStateGuard guard;
+    pool_->forgetSpeed();
 }
 
 } // namespace steerseg::solver

@@ -104,12 +104,13 @@ void LevelSetSolver::setParams(const model::LevelSetParams& params) {
     haveParams_ = true;
     for (GLuint p : {programs_->measureSpeed.id(), programs_->updatePhi.id()}) {
         setUniform(p, "alpha", params.alpha);
-        setUniform(p, "T", params.T);
-        setUniform(p, "eps", params.eps);
     }
+    // Only measure_speed evaluates the speed (update_phi steps at the speeds it kept).
+    setUniform(programs_->measureSpeed.id(), "T", params.T);
+    setUniform(programs_->measureSpeed.id(), "eps", params.eps);
     setUniform(programs_->chooseTimeStep.id(), "courant", rule.courant);
     setUniform(programs_->chooseTimeStep.id(), "fixedRate", rule.fixedRate);
-    uploadBarriers(); // their hold depends on alpha
+    uploadBarriers(); // their hold depends on alpha; forgets the speeds the slots kept
     noteChange();
 }
 
@@ -373,6 +374,7 @@ model::SolverStats LevelSetSolver::stats() const {
     s.capacity = pool_->capacity();
     s.levelSetBytes = pool_->levelSetBytes();
     s.bookkeepingBytes = pool_->bookkeepingBytes();
+    s.speedBytes = pool_->speedBytes();
     s.barriers = static_cast<int>(barriers_.size());
     s.visitedVoxelsPerIteration =
         lastIteration_ > 0 ? static_cast<double>(s.visitedVoxels) / lastIteration_ : 0.0;

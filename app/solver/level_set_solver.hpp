@@ -53,10 +53,13 @@ class LevelSetSolver {
     // Wakes every sleeping brick at the next iteration. Anything that changes the speed or
     // the level set outside a step must call it (setParams, edits, barriers and uploads do):
     // a sleeping brick's phi and its time-step bound are only valid for the speed it last saw.
+    // The speed changes only through setParams, setSpeedInputs and the barriers, which also
+    // forget the speeds each brick keeps between steps (shaders/solver/speed_cache.glsl).
     void wakeAll();
     // What the data term reads (speed::SpeedInputs, docs/speed.md); by default the threshold
-    // speed on the raw scan. The textures are borrowed: they must stay alive while the solver
-    // steps with them. A change restarts the convergence clock and the leak watch, as
+    // speed on the raw scan. The textures are borrowed: they must stay alive, and as they
+    // were, while the solver steps with them (it keeps the speeds it read: set the inputs
+    // again after writing to one). A change restarts the convergence clock and the leak watch, as
     // setParams does. std::invalid_argument for inputs speed::validateSpeedInputs refuses.
     void setSpeedInputs(const speed::SpeedInputs& inputs);
     [[nodiscard]] const speed::SpeedInputs& speedInputs() const { return speedInputs_; }

@@ -23,12 +23,11 @@ void LevelSetSolver::setSpeedInputs(const speed::SpeedInputs& inputs) {
         onDemand_->reset();
     }
     speedInputs_ = inputs;
-    for (GLuint p : {programs_->measureSpeed.id(), programs_->updatePhi.id()}) {
-        glProgramUniform1i(p, glGetUniformLocation(p, "speedKind"),
-                           static_cast<GLint>(inputs.kind));
-        glProgramUniform1i(p, glGetUniformLocation(p, "classifyWithinWindow"),
-                           inputs.withinWindow ? 1 : 0);
-    }
+    const GLuint p = programs_->measureSpeed.id(); // the one pass that evaluates the speed
+    glProgramUniform1i(p, glGetUniformLocation(p, "speedKind"), static_cast<GLint>(inputs.kind));
+    glProgramUniform1i(p, glGetUniformLocation(p, "classifyWithinWindow"),
+                       inputs.withinWindow ? 1 : 0);
+    pool_->forgetSpeed();
     noteChange();
 }
 

@@ -34,6 +34,9 @@
 // a count, then one word per brick, non-zero once its speed is stored. The training's gather,
 // which has the same number, runs alone.
 #define SPEED_READY_BINDING 12
+// Each slot's speeds (solver/speed_cache.glsl), read by the solver's steps; the training's
+// features, which have the same number, are gathered alone.
+#define SPEED_CACHE_BINDING 13
 
 // Texture units of the samplers (glActiveTexture(GL_TEXTURE0 + unit)).
 #define SOLVER_SCAN_UNIT 0    // speed/data_speed.glsl, solver: I (scan or smoothed copy)

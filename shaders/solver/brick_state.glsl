@@ -1,16 +1,17 @@
 // Work-group reduction of a brick's slotState word over its voxels: the state
-// (solver_common.glsl's STATE_*) and the faces the band reaches (FACE_REACH_SHIFT).
-shared uint stateLive;
-shared uint stateNegative;
-shared uint statePositive;
-shared uint stateFaces;
+// (solver_common.glsl's STATE_*) and the faces the band reaches (FACE_REACH_SHIFT). Each
+// invocation ORs its voxels' bits (voxelState) and adds them to the group's once
+// (noteBrickState): a shared atomic per voxel was a large part of a step on llvmpipe, which
+// runs each lane's atomic in turn.
+const uint VOXEL_LIVE = 1u;     // |phi| < PHI_FAR
+const uint VOXEL_NEGATIVE = 2u; // clamped inside
+const uint VOXEL_POSITIVE = 4u; // clamped outside
+const uint VOXEL_FACES_SHIFT = 3u; // a live voxel's brick faces (facesOf)
+shared uint stateBits;
 
 void beginBrickState() {
     if (gl_LocalInvocationIndex == 0u) {
-        stateLive = 0u;
-        stateNegative = 0u;
-        statePositive = 0u;
-        stateFaces = 0u;
+        stateBits = 0u;
     }
 }
 
@@ -21,28 +22,28 @@ uint facesOf(ivec3 l) {
     return low.x | (high.x << 1) | (low.y << 2) | (high.y << 3) | (low.z << 4) | (high.z << 5);
 }
 
-// phi of local voxel l (inside the volume).
-void noteVoxelState(ivec3 l, float phi) {
+// The bits of local voxel l (inside the volume) with this phi.
+uint voxelState(ivec3 l, float phi) {
     if (abs(phi) < PHI_FAR) {
-        atomicOr(stateLive, 1u);
-        uint faces = facesOf(l);
-        if (faces != 0u) {
-            atomicOr(stateFaces, faces);
-        }
-    } else if (phi < 0.0) {
-        atomicOr(stateNegative, 1u);
-    } else {
-        atomicOr(statePositive, 1u);
+        return VOXEL_LIVE | (facesOf(l) << VOXEL_FACES_SHIFT);
+    }
+    return phi < 0.0 ? VOXEL_NEGATIVE : VOXEL_POSITIVE;
+}
+
+// An invocation's voxels' bits, OR-ed; call between beginBrickState's barrier and the next.
+void noteBrickState(uint bits) {
+    if (bits != 0u) {
+        atomicOr(stateBits, bits);
     }
 }
 
 // Call after a barrier().
 uint brickState() {
-    if (stateLive != 0u) {
-        return STATE_LIVE | (stateFaces << FACE_REACH_SHIFT);
+    if ((stateBits & VOXEL_LIVE) != 0u) {
+        return STATE_LIVE | ((stateBits >> VOXEL_FACES_SHIFT) << FACE_REACH_SHIFT);
     }
-    if (stateNegative != 0u && statePositive != 0u) {
+    if ((stateBits & VOXEL_NEGATIVE) != 0u && (stateBits & VOXEL_POSITIVE) != 0u) {
         return STATE_MIXED;
     }
-    return stateNegative != 0u ? STATE_INSIDE : STATE_OUTSIDE;
+    return (stateBits & VOXEL_NEGATIVE) != 0u ? STATE_INSIDE : STATE_OUTSIDE;
 }

@@ -14,12 +14,14 @@ void main() {
     ivec3 origin = hasWork ? brickCoord(slotBrick[slot]) * BRICK_SIZE : ivec3(0);
     beginBrickState();
     barrier();
+    uint state = 0u;
     for (uint v = gl_LocalInvocationIndex; hasWork && v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
         ivec3 l = localVoxel(v);
         if (all(lessThan(origin + l, volumeDims))) {
-            noteVoxelState(l, phiPool[slot * BRICK_VOXELS + v]);
+            state |= voxelState(l, phiPool[slot * BRICK_VOXELS + v]);
         }
     }
+    noteBrickState(state);
     barrier();
     if (hasWork && gl_LocalInvocationIndex == 0u) {
         slotState[slot] = brickState();

@@ -1,7 +1,8 @@
 #version 310 es
 // One group per active brick: the largest data speed |alpha * D| on the front, which sets the
 // next time step (choose_time_step.comp), and the front's voxels; both kept per slot for the
-// iterations the brick sleeps (slotFront).
+// iterations the brick sleeps (slotFront). The first pass of an iteration over the active
+// bricks, so it fills the speeds of a brick whose slot has none (solver/speed_cache.glsl).
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
 #define DATA_SPEED_INTENSITY_UNIT SOLVER_SCAN_UNIT
@@ -10,24 +11,28 @@
 #include "solver/barrier_speed.glsl"
 #include "solver/phi_stencil.glsl"
 #include "solver/phi_tile.glsl"
+#include "solver/speed_cache.glsl"
 layout(local_size_x = LOCAL_SIZE) in;
 
 uniform float alpha;
 shared uint groupMax;
 shared uint groupFront;
+shared bool fillSpeed;
 
 // Every invocation reaches both barriers (GLSL ES 3.10): groups past the list only skip work.
 void main() {
     uint n = activeListIndex();
     bool hasWork = n != NO_BRICK;
     uint slot = hasWork ? activeList[n] : 0u;
-    ivec3 origin = hasWork ? brickCoord(slotBrick[slot]) * BRICK_SIZE : ivec3(0);
+    uint brick = hasWork ? slotBrick[slot] : 0u;
+    ivec3 origin = brickCoord(brick) * BRICK_SIZE;
     if (hasWork) {
         loadTile(origin);
     }
     if (gl_LocalInvocationIndex == 0u) {
         groupMax = 0u;
         groupFront = 0u;
+        fillSpeed = hasWork && !speedCached(slot, brick);
     }
     barrier();
     float localMax = 0.0;
@@ -38,9 +43,10 @@ void main() {
         if (any(greaterThanEqual(g, volumeDims))) {
             continue;
         }
+        float speed = fillSpeed ? storeSpeed(slot, v, barrierSpeed(g, dataSpeed(g))) : 0.0;
         if (onFront(tileFaces(l))) {
             ++localFront;
-            localMax = max(localMax, abs(alpha * barrierSpeed(g, dataSpeed(g))));
+            localMax = max(localMax, abs(alpha * (fillSpeed ? speed : cachedSpeed(slot, v))));
         }
     }
     atomicMax(groupMax, floatBitsToUint(localMax));
@@ -51,5 +57,8 @@ void main() {
         atomicAdd(ctrl.frontVoxels, groupFront);
         slotFront[2u * slot] = groupMax;
         slotFront[2u * slot + 1u] = groupFront;
+        if (fillSpeed) {
+            markSpeedCached(slot, brick); // after the barrier: every invocation read fillSpeed
+        }
     }
 }

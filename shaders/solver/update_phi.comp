@@ -1,21 +1,19 @@
 #version 310 es
 // One group per active brick: one step of phi (phi_stencil.glsl) from the brick and a one-voxel
-// apron staged in shared memory; records the brick's new state and whether any voxel changed
-// side (convergence), and counts the voxels that changed side with the box of those that came
-// inside (the leak watch: app/solver/leak_watch.hpp), and whether the brick and its faces
-// moved by more than the sleep tolerance (solver_common.glsl's QUIET_SHIFT). phi is stored once: the interior is updated in place, the shell goes to
-// shellNext until commit_shells (solver/brick_shell.glsl).
+// apron staged in shared memory, at the speeds measure_speed kept for it (speed_cache.glsl);
+// records the brick's new state and whether any voxel changed side (convergence), and counts
+// the voxels that changed side with the box of those that came inside (the leak watch:
+// app/solver/leak_watch.hpp), and whether the brick and its faces moved by more than the sleep
+// tolerance (solver_common.glsl's QUIET_SHIFT). phi is stored once: the interior is updated in
+// place, the shell goes to shellNext until commit_shells (solver/brick_shell.glsl).
 #define PHI_POOL_ACCESS
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
-#define DATA_SPEED_INTENSITY_UNIT SOLVER_SCAN_UNIT
-#define DATA_SPEED_FACTOR_UNIT SOLVER_FACTOR_UNIT
-#include "speed/data_speed.glsl"
-#include "solver/barrier_speed.glsl"
 #include "solver/phi_stencil.glsl"
 #include "solver/brick_state.glsl"
 #include "solver/phi_tile.glsl"
 #include "solver/brick_shell.glsl"
+#include "solver/speed_cache.glsl"
 layout(local_size_x = LOCAL_SIZE) in;
 
 uniform float alpha;
@@ -62,6 +60,14 @@ void main() {
     barrier();
     float dt = ctrl.dt;
     float tolerance = sleepTolerance;
+    // This invocation's voxels, added to the group's once after the loop (see brick_state.glsl).
+    uint state = 0u;
+    bool movedMine = false;
+    uint movedFacesMine = 0u;
+    uint gainedMine = 0u;
+    uint lostMine = 0u;
+    uvec3 gainLoMine = uvec3(0xFFFFFFFFu);
+    uvec3 gainHiMine = uvec3(0u);
     for (uint v = gl_LocalInvocationIndex; hasWork && v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
         ivec3 l = localVoxel(v);
         ivec3 g = origin + l;
@@ -69,23 +75,20 @@ void main() {
         float out_ = s.c;
         if (all(lessThan(g, volumeDims))) {
             if (dt > 0.0 && inNarrowBand(s) && inReach(g)) {
-                out_ = phiStep(s, barrierSpeed(g, dataSpeed(g)), alpha, dt);
+                out_ = phiStep(s, cachedSpeed(slot, v), alpha, dt); // measure_speed's
             }
-            noteVoxelState(l, out_);
+            state |= voxelState(l, out_);
             if (abs(out_ - s.c) > tolerance) {
-                atomicOr(movedAny, 1u);
-                atomicOr(movedFaces, facesOf(l));
+                movedMine = true;
+                movedFacesMine |= facesOf(l);
             }
             if ((out_ < 0.0) != (s.c < 0.0)) {
-                atomicOr(changedSide, 1u);
                 if (out_ < 0.0) {
-                    atomicAdd(gained, 1u);
-                    for (int a = 0; a < 3; ++a) {
-                        atomicMin(gainLo[a], uint(g[a]));
-                        atomicMax(gainHi[a], uint(g[a]));
-                    }
+                    ++gainedMine;
+                    gainLoMine = min(gainLoMine, uvec3(g));
+                    gainHiMine = max(gainHiMine, uvec3(g));
                 } else {
-                    atomicAdd(lost, 1u);
+                    ++lostMine;
                 }
             }
         }
@@ -93,6 +96,22 @@ void main() {
             shellNext[slot * SHELL_VOXELS + shellIndex(l)] = out_;
         } else {
             phiPool[slot * BRICK_VOXELS + v] = out_;
+        }
+    }
+    noteBrickState(state);
+    if (movedMine) {
+        atomicOr(movedAny, 1u);
+        atomicOr(movedFaces, movedFacesMine);
+    }
+    if (gainedMine + lostMine > 0u) {
+        atomicOr(changedSide, 1u);
+        atomicAdd(gained, gainedMine);
+        atomicAdd(lost, lostMine);
+    }
+    if (gainedMine > 0u) {
+        for (int a = 0; a < 3; ++a) {
+            atomicMin(gainLo[a], gainLoMine[a]);
+            atomicMax(gainHi[a], gainHiMine[a]);
         }
     }
     barrier();

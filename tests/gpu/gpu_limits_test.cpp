@@ -95,13 +95,13 @@ TEST_F(GpuLimitsTest, AFrontOutgrowingTheStorageBlockStopsWithTheLimitNamed) {
         EXPECT_GT(free.stats().capacity, 40U); // the run below needs more than its 40 slots
     }
     gpu::GpuLimits lower;
-    lower.maxShaderStorageBlockBytes = 40 * 2048; // 40 bricks of phi
+    lower.maxShaderStorageBlockBytes = 40 * 2052; // 40 bricks' kept speeds and their tags
     const gpu::TestGpuLimits in(lower);
     LevelSetSolver bound(volume, kDims);
     bound.addSphere(seed);
     bound.setParams(grow);
     EXPECT_EQ(capacityError([&] { bound.step(60); }),
-              "the level set outgrew 40 bricks (80 KiB of phi), the most "
+              "the level set outgrew 40 bricks (80 KiB of their kept speeds), the most "
               "GL_MAX_SHADER_STORAGE_BLOCK_SIZE 80 KiB of this GPU holds");
 }
 

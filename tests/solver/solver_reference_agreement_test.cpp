@@ -39,5 +39,31 @@ TEST_F(SolverAgreementTest, GrowingBallMatchesReference) {
     expectAgree(d, gpu.readMask(), cpu.mask());
 }
 
+// Each brick keeps its speeds between steps (shaders/solver/speed_cache.glsl); a change of T and
+// eps must reach them. The second window refuses the ball, so the front that grew into it
+// shrinks back; with the speeds of the first it would go on growing.
+TEST_F(SolverAgreementTest, ANewWindowMidRunMatchesReference) {
+    const glm::ivec3 d{48, 44, 40};
+    const auto volume = ballVolume(d, 0.0F, 100.0F, {24, 22, 20}, 15.0F);
+    const LevelSetParams grow{100.0F, 30.0F, 0.7F};
+    const LevelSetParams shrink{50.0F, 10.0F, 0.7F};
+    const Sphere seed{{22, 20, 19}, 4.0F};
+    LevelSetSolver gpu(volume, d);
+    ReferenceSolver cpu(volume, d);
+    gpu.addSphere(seed);
+    cpu.addSphere(seed);
+    gpu.setParams(grow);
+    cpu.setParams(grow);
+    gpu.step(40);
+    cpu.step(40);
+    const std::size_t grown = insideCount(cpu.mask());
+    gpu.setParams(shrink);
+    cpu.setParams(shrink);
+    gpu.step(20);
+    cpu.step(20);
+    EXPECT_LT(insideCount(cpu.mask()), grown);
+    expectAgree(d, gpu.readMask(), cpu.mask());
+}
+
 } // namespace
 } // namespace steerseg::test
