@@ -93,14 +93,18 @@ std::size_t GpuBrickPool::shellBytes() const {
     return (b * b * b - (b - 2) * (b - 2) * (b - 2)) * sizeof(float);
 }
 
-std::size_t GpuBrickPool::speedBytes() const {
-    return static_cast<std::size_t>(capacity_) * (brickBytes() + 4);
+std::size_t GpuBrickPool::speedSlotBytes() const {
+    return brickBytes() + kSpeedHeaderWords * 4;
 }
 
-// The speed cache is the largest buffer over the slots: a brick of speeds and a tag each.
+std::size_t GpuBrickPool::speedBytes() const {
+    return static_cast<std::size_t>(capacity_) * speedSlotBytes();
+}
+
+// The speed cache is the largest buffer over the slots: a brick of speeds and a header each.
 std::uint32_t GpuBrickPool::maxCapacity() const {
     return static_cast<std::uint32_t>(std::min<std::size_t>(
-        {brickCount_, limits_.maxShaderStorageBlockBytes / (brickBytes() + 4),
+        {brickCount_, limits_.maxShaderStorageBlockBytes / speedSlotBytes(),
          static_cast<std::size_t>(limits_.maxComputeWorkGroupCount[0]) * kSlotsPerGroup}));
 }
 
@@ -110,8 +114,8 @@ std::string GpuBrickPool::capacityLimitText() const {
     if (most == brickCount_) {
         return "every brick of the volume (" + bricks + ")";
     }
-    if (most == limits_.maxShaderStorageBlockBytes / (brickBytes() + 4)) {
-        return bricks + " (" + gpu::bytesText(static_cast<double>(most) * (brickBytes() + 4)) +
+    if (most == limits_.maxShaderStorageBlockBytes / speedSlotBytes()) {
+        return bricks + " (" + gpu::bytesText(static_cast<double>(most) * speedSlotBytes()) +
                " of their kept speeds), the most GL_MAX_SHADER_STORAGE_BLOCK_SIZE " +
                gpu::bytesText(static_cast<double>(limits_.maxShaderStorageBlockBytes)) +
                " of this GPU holds";
@@ -141,13 +145,18 @@ void GpuBrickPool::allocateSlotBuffers(std::uint32_t capacity) {
     slotState_ = makeBuffer(capacity * 4);
     bandList_ = makeBuffer(capacity * 4);
     slotFront_ = makeBuffer(capacity * 8);
-    speedCache_ = makeBuffer(capacity * (brickBytes() + 4));
+    speedCache_ = makeBuffer(capacity * speedSlotBytes());
     forgetSpeed(); // the speeds themselves are written before they are read
 }
 
 void GpuBrickPool::forgetSpeed() {
-    const std::vector<std::uint32_t> none(capacity_, 0);
+    const std::vector<std::uint32_t> none(std::size_t{kSpeedHeaderWords} * capacity_, 0);
     gpu::writeBuffer(speedCache_, 0, none.data(), none.size() * 4);
+}
+
+void GpuBrickPool::forgetMeasures() {
+    const std::vector<std::uint32_t> never(capacity_, 0);
+    gpu::writeBuffer(speedCache_, std::size_t{2} * capacity_ * 4, never.data(), never.size() * 4);
 }
 
 void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
@@ -364,13 +373,16 @@ void GpuBrickPool::shrink(std::uint32_t newCapacity, const ControlBlock& ctrl) {
     gpu::checkGl("shrinking the brick pool");
 }
 
-// The speeds of the slots both the old cache (of oldCapacity slots) and the current one have;
-// the tags sit before the speeds, so the speeds' offset follows the capacity.
+// The tags, side changes and speeds of the slots both the old cache (of oldCapacity slots) and
+// the current one have; each part of the header is a run of one word a slot, so the offsets
+// follow the capacity. The measures are not kept: every brick is measured again.
 void GpuBrickPool::copySpeeds(const gpu::Buffer& old, std::uint32_t oldCapacity) {
-    const std::uint32_t kept = std::min(oldCapacity, capacity_);
-    copyBuffer(old, speedCache_, 0, 0, kept * std::size_t{4});
-    copyBuffer(old, speedCache_, oldCapacity * std::size_t{4}, capacity_ * std::size_t{4},
-               kept * brickBytes());
+    const std::size_t kept = std::min(oldCapacity, capacity_);
+    const std::size_t was = oldCapacity;
+    const std::size_t now = capacity_;
+    copyBuffer(old, speedCache_, 0, 0, kept * 4);             // tags
+    copyBuffer(old, speedCache_, was * 4, now * 4, kept * 4); // side changes
+    copyBuffer(old, speedCache_, 3 * was * 4, 3 * now * 4, kept * brickBytes());
 }
 
 void GpuBrickPool::bind() const {

@@ -74,8 +74,10 @@ class GpuBrickPool {
 
     void bind() const;
     // Every slot's speeds (solver/speed_cache.glsl) no longer hold: the speed, its parameters or
-    // a barrier changed. The next pass over a brick computes them again.
+    // a barrier changed. The next pass over a brick computes them and its front again.
     void forgetSpeed();
+    // Every slot's front must be measured again: the level set changed outside a step.
+    void forgetMeasures();
 
     [[nodiscard]] ControlBlock readControl() const;
     void writeControl(const ControlBlock& ctrl);
@@ -98,7 +100,8 @@ class GpuBrickPool {
     [[nodiscard]] std::size_t levelSetBytes() const;
     // Slot map, free, active and band lists, states, fronts, requests and epochs.
     [[nodiscard]] std::size_t bookkeepingBytes() const;
-    // Each slot's speeds and their tags (solver/speed_cache.glsl): a brick of floats and a word.
+    // What measure_speed keeps per slot (solver/speed_cache.glsl): a brick of speeds and a
+    // header (the tag, the last side change, the last measure).
     [[nodiscard]] std::size_t speedBytes() const;
     [[nodiscard]] BrickPoolView view() const;
     [[nodiscard]] const glm::ivec3& brickGrid() const { return grid_; }
@@ -107,6 +110,8 @@ class GpuBrickPool {
   private:
     void allocateSlotBuffers(std::uint32_t capacity);
     void copySpeeds(const gpu::Buffer& old, std::uint32_t oldCapacity);
+    [[nodiscard]] std::size_t speedSlotBytes() const;
+    static constexpr std::uint32_t kSpeedHeaderWords = 3;
     // The control block of a pool just filled: nothing requested or active, `freeCount` free.
     void resetControl(std::uint32_t freeCount);
     [[nodiscard]] glm::ivec3 brickOrigin(std::uint32_t brick) const;
@@ -131,7 +136,7 @@ class GpuBrickPool {
     gpu::Buffer slotState_;
     gpu::Buffer bandList_;
     gpu::Buffer slotFront_;  // two words per slot
-    gpu::Buffer speedCache_; // a tag per slot, then each slot's speeds
+    gpu::Buffer speedCache_; // the header's three runs of a word a slot, then each slot's speeds
 };
 
 } // namespace steerseg::solver::detail

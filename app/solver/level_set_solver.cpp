@@ -147,6 +147,9 @@ void LevelSetSolver::allocateAndList() {
     glProgramUniform1i(p.buildActiveList.id(),
                        glGetUniformLocation(p.buildActiveList.id(), "wakeAll"),
                        wakePending_ ? 1 : 0);
+    if (wakePending_) {
+        pool_->forgetMeasures(); // what woke them may have changed sides outside a step
+    }
     wakePending_ = false;
     dispatch(p.buildActiveList.id(), groupsOf(pool_->capacity(), detail::kSlotsPerGroup));
     dispatch(p.prepareDispatch.id(), 1);

@@ -6,6 +6,7 @@
 #define PHI_POOL_ACCESS
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
+#include "solver/speed_cache.glsl"
 layout(local_size_x = LOCAL_SIZE) in;
 
 layout(std430, binding = FREE_LIST_BINDING) readonly buffer FreeList { uint freeList[]; };
@@ -40,5 +41,6 @@ void main() {
         slotBrick[slot] = brick;
         slotState[slot] = old == BRICK_INSIDE ? STATE_INSIDE : STATE_OUTSIDE;
         pageTable[brick] = slot;
+        forgetMeasured(slot); // what measure_speed kept is another brick's
     }
 }

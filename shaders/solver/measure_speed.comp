@@ -2,7 +2,8 @@
 // One group per active brick: the largest data speed |alpha * D| on the front, which sets the
 // next time step (choose_time_step.comp), and the front's voxels; both kept per slot for the
 // iterations the brick sleeps (slotFront). The first pass of an iteration over the active
-// bricks, so it fills the speeds of a brick whose slot has none (solver/speed_cache.glsl).
+// bricks, so it fills the speeds of a brick whose slot has none, and it measures only a brick
+// whose front may have changed since it last did (solver/speed_cache.glsl).
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
 #define DATA_SPEED_INTENSITY_UNIT SOLVER_SCAN_UNIT
@@ -18,26 +19,30 @@ uniform float alpha;
 shared uint groupMax;
 shared uint groupFront;
 shared bool fillSpeed;
+shared bool measureFront;
 
-// Every invocation reaches both barriers (GLSL ES 3.10): groups past the list only skip work.
+// Every invocation reaches every barrier (GLSL ES 3.10): groups past the list only skip work.
 void main() {
     uint n = activeListIndex();
     bool hasWork = n != NO_BRICK;
     uint slot = hasWork ? activeList[n] : 0u;
     uint brick = hasWork ? slotBrick[slot] : 0u;
     ivec3 origin = brickCoord(brick) * BRICK_SIZE;
-    if (hasWork) {
-        loadTile(origin);
-    }
     if (gl_LocalInvocationIndex == 0u) {
         groupMax = 0u;
         groupFront = 0u;
         fillSpeed = hasWork && !speedCached(slot, brick);
+        measureFront = hasWork && (fillSpeed || frontMayHaveChanged(slot, brickCoord(brick)));
+    }
+    barrier();
+    if (measureFront) {
+        loadTile(origin);
     }
     barrier();
     float localMax = 0.0;
     uint localFront = 0u;
-    for (uint v = gl_LocalInvocationIndex; hasWork && v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
+    for (uint v = gl_LocalInvocationIndex; measureFront && v < BRICK_VOXELS;
+         v += uint(LOCAL_SIZE)) {
         ivec3 l = localVoxel(v);
         ivec3 g = origin + l;
         if (any(greaterThanEqual(g, volumeDims))) {
@@ -52,13 +57,17 @@ void main() {
     atomicMax(groupMax, floatBitsToUint(localMax));
     atomicAdd(groupFront, localFront);
     barrier();
+    // After the barrier: every invocation has read fillSpeed and measureFront.
     if (hasWork && gl_LocalInvocationIndex == 0u) {
-        atomicMax(ctrl.maxRateBits, groupMax);
-        atomicAdd(ctrl.frontVoxels, groupFront);
-        slotFront[2u * slot] = groupMax;
-        slotFront[2u * slot + 1u] = groupFront;
-        if (fillSpeed) {
-            markSpeedCached(slot, brick); // after the barrier: every invocation read fillSpeed
+        if (measureFront) {
+            slotFront[2u * slot] = groupMax;
+            slotFront[2u * slot + 1u] = groupFront;
+            noteMeasured(slot, ctrl.iteration);
+            if (fillSpeed) {
+                markSpeedCached(slot, brick);
+            }
         }
+        atomicMax(ctrl.maxRateBits, slotFront[2u * slot]);
+        atomicAdd(ctrl.frontVoxels, slotFront[2u * slot + 1u]);
     }
 }

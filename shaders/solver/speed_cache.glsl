@@ -1,27 +1,68 @@
-// Each slot keeps the speed of its brick's voxels, barrierSpeed(dataSpeed) before the alpha
-// weighting, because it only changes when the speed does (a new speed, T, eps, alpha or a
-// barrier: the host then forgets every slot's, GpuBrickPool::forgetSpeed) while a brick is
-// stepped hundreds of times: on llvmpipe the texture reads and the barrier loop were more than
-// half of measure_speed's and update_phi's time. measure_speed fills a slot's speeds the first
-// time it lists the brick; update_phi reads them in the same iteration.
-// Layout (host: app/solver/gpu_brick_pool.hpp): the first `capacity` words are tags, 1 + the
-// brick whose speeds the slot holds (0: none); slot s's speeds follow at capacity + s *
-// BRICK_VOXELS, as float bits. A tag names the brick, not only the slot, so slots that move
-// (a shrink) or change hands (retired, then allocated) never read another brick's speeds.
+// What measure_speed keeps per slot between steps, beside its outputs in slotFront.
+// - The speeds of the brick's voxels, barrierSpeed(dataSpeed) before the alpha weighting: they
+//   only change when the speed does (a new speed, T, eps, alpha or a barrier: the host then
+//   forgets every slot's, GpuBrickPool::forgetSpeed) while a brick is stepped hundreds of times,
+//   and on llvmpipe the texture reads and the barrier loop were a large part of measure_speed's
+//   and update_phi's time. measure_speed fills a slot's the first time it lists the brick;
+//   update_phi reads them in the same iteration.
+// - When its front last changed: the front's maximum and voxel count depend only on the speeds
+//   and on which side of the surface the brick's voxels and its face neighbours' lie, and in a
+//   step only about one active brick in ten has a voxel change side. measure_speed measures a
+//   brick again only when it or a face neighbour did since it last measured it (or its speeds
+//   were forgotten); otherwise it adds the slot's last measure, as build_active_list does for a
+//   sleeping brick.
+// Layout (host: app/solver/gpu_brick_pool.hpp), C = the slots: [0, C) tags, 1 + the brick whose
+// speeds the slot holds (0: none); [C, 2C) the step count after which a voxel last changed side
+// in the slot (update_phi); [2C, 3C) 1 + the step count at which measure_speed last measured it
+// (0: never; the host clears them when the level set changes outside a step, and
+// allocate_bricks when a slot changes hands); then slot s's speeds at 3C + s * BRICK_VOXELS, as
+// float bits. A tag names the brick, not only the slot, so slots that move (a shrink) or change
+// hands (retired, then allocated) never read another brick's speeds.
 // Include after common/brick_pool.glsl.
 layout(std430, binding = SPEED_CACHE_BINDING) buffer SpeedCache { uint speedCache[]; };
 
-uint speedCapacity() { return uint(speedCache.length()) / (BRICK_VOXELS + 1u); }
+uint speedCapacity() { return uint(speedCache.length()) / (BRICK_VOXELS + 3u); }
 
 bool speedCached(uint slot, uint brick) { return speedCache[slot] == brick + 1u; }
 
 void markSpeedCached(uint slot, uint brick) { speedCache[slot] = brick + 1u; }
 
-uint speedIndex(uint slot, uint v) { return speedCapacity() + slot * BRICK_VOXELS + v; }
+uint speedIndex(uint slot, uint v) { return 3u * speedCapacity() + slot * BRICK_VOXELS + v; }
 
 float cachedSpeed(uint slot, uint v) { return uintBitsToFloat(speedCache[speedIndex(slot, v)]); }
 
 float storeSpeed(uint slot, uint v, float speed) {
     speedCache[speedIndex(slot, v)] = floatBitsToUint(speed);
     return speed;
+}
+
+// After a step `steps` (the count once it is done) changed a voxel of the slot's side.
+void noteSideChanged(uint slot, uint steps) { speedCache[speedCapacity() + slot] = steps; }
+
+uint sideChangedAt(uint slot) { return speedCache[speedCapacity() + slot]; }
+
+// measure_speed measured the slot after `steps` steps.
+void noteMeasured(uint slot, uint steps) { speedCache[2u * speedCapacity() + slot] = steps + 1u; }
+
+void forgetMeasured(uint slot) { speedCache[2u * speedCapacity() + slot] = 0u; }
+
+// The slot's front may differ from its last measure: never measured, or a voxel of it or of a
+// face neighbour with a slot changed side since. A neighbour without one holds a constant, which
+// changes only through a slot of its own.
+bool frontMayHaveChanged(uint slot, ivec3 brick) {
+    uint measured = speedCache[2u * speedCapacity() + slot];
+    if (measured == 0u || sideChangedAt(slot) >= measured) {
+        return true;
+    }
+    for (int f = 0; f < 6; ++f) {
+        ivec3 b = brick + FACE_NEIGHBOURS[f];
+        if (!brickInGrid(b)) {
+            continue;
+        }
+        uint s = pageTable[brickIndex(b)];
+        if (s != BRICK_INSIDE && s != BRICK_OUTSIDE && sideChangedAt(s) >= measured) {
+            return true;
+        }
+    }
+    return false;
 }

@@ -123,6 +123,7 @@ void main() {
         }
         slotState[slot] = brickState() | (quiet << QUIET_SHIFT) | (movedFaces << MOVED_SHIFT);
         if (changedSide != 0u) {
+            noteSideChanged(slot, ctrl.iteration); // measure_speed measures it and its neighbours
             atomicMax(ctrl.lastChange, ctrl.iteration);
             ctrl.lastChangeTime = ctrl.time;
             atomicAdd(ctrl.gained, gained);

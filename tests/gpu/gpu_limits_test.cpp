@@ -95,7 +95,7 @@ TEST_F(GpuLimitsTest, AFrontOutgrowingTheStorageBlockStopsWithTheLimitNamed) {
         EXPECT_GT(free.stats().capacity, 40U); // the run below needs more than its 40 slots
     }
     gpu::GpuLimits lower;
-    lower.maxShaderStorageBlockBytes = 40 * 2052; // 40 bricks' kept speeds and their tags
+    lower.maxShaderStorageBlockBytes = 40 * 2060; // 40 bricks' kept speeds and their headers
     const gpu::TestGpuLimits in(lower);
     LevelSetSolver bound(volume, kDims);
     bound.addSphere(seed);

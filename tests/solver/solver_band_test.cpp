@@ -122,5 +122,53 @@ TEST_F(SolverBandTest, StoresOnlyBricksTheBandOccupiesOrReachesAcrossAFace) {
     }
 }
 
+// Voxels of the mask with a face neighbour on the other side (the volume's edge repeats the
+// border voxel, as phiAt does).
+std::uint32_t frontOf(const glm::ivec3& d, const std::vector<std::uint8_t>& mask) {
+    std::uint32_t front = 0;
+    for (int k = 0; k < d.z; ++k) {
+        for (int j = 0; j < d.y; ++j) {
+            for (int i = 0; i < d.x; ++i) {
+                const std::uint8_t side = mask[voxelIndex(d, i, j, k)];
+                const std::array<glm::ivec3, 6> faces{{{i - 1, j, k},
+                                                       {i + 1, j, k},
+                                                       {i, j - 1, k},
+                                                       {i, j + 1, k},
+                                                       {i, j, k - 1},
+                                                       {i, j, k + 1}}};
+                bool other = false;
+                for (glm::ivec3 n : faces) {
+                    n = glm::clamp(n, glm::ivec3(0), d - 1);
+                    other = other || mask[voxelIndex(d, n.x, n.y, n.z)] != side;
+                }
+                front += other ? 1U : 0U;
+            }
+        }
+    }
+    return front;
+}
+
+// measure_speed measures a brick's front again only where it or a face neighbour changed side
+// since it last did (docs/solver.md, Storage): the front it counts is the mask's after every
+// step. Every brick awake, so that no sleeping brick's last measure stands in for its own; a
+// ball grown across many brick faces, and then shrunk by a new window.
+TEST_F(SolverBandTest, TheFrontMeasuredIsTheMasksAtEveryStep) {
+    const glm::ivec3 d{40, 36, 32};
+    const auto volume = ballVolume(d, 0.0F, 100.0F, {20, 18, 16}, 12.0F);
+    SolverOptions options;
+    options.sleep = false;
+    LevelSetSolver gpu(volume, d, options);
+    gpu.addSphere({{19, 17, 15}, 3.0F});
+    gpu.setParams({100.0F, 30.0F, 0.7F});
+    for (int n = 0; n < 60; ++n) {
+        if (n == 40) {
+            gpu.setParams({50.0F, 10.0F, 0.7F});
+        }
+        const auto before = gpu.readMask(); // what the step's measure sees
+        gpu.step(1);
+        ASSERT_EQ(gpu.stats().frontVoxels, frontOf(d, before)) << "step " << n;
+    }
+}
+
 } // namespace
 } // namespace steerseg::test
