@@ -65,5 +65,28 @@ TEST_F(SolverAgreementTest, ANewWindowMidRunMatchesReference) {
     expectAgree(d, gpu.readMask(), cpu.mask());
 }
 
+// A shrink moves bricks to lower slots, where the speeds kept are another brick's (or none):
+// the tags must send each moved brick back to measure_speed. A seed larger than a bright ball
+// retreats onto it and the pool shrinks under the front, which then goes on stepping where
+// the speed changes sign; with a neighbour's speeds a moved brick's front would drift.
+TEST_F(SolverAgreementTest, AfterThePoolShrankUnderTheFrontMatchesReference) {
+    const glm::ivec3 d{64, 64, 56};
+    const auto volume = ballVolume(d, 0.0F, 100.0F, {32, 32, 28}, 13.0F);
+    const LevelSetParams params{100.0F, 30.0F, 0.7F};
+    const Sphere seed{{32, 32, 28}, 21.0F};
+    LevelSetSolver gpu(volume, d);
+    ReferenceSolver cpu(volume, d);
+    gpu.addSphere(seed);
+    cpu.addSphere(seed);
+    gpu.setParams(params);
+    cpu.setParams(params);
+    gpu.step(48);
+    cpu.step(48);
+    ASSERT_GE(gpu.stats().poolShrinks, 1);
+    gpu.step(32);
+    cpu.step(32);
+    expectAgree(d, gpu.readMask(), cpu.mask());
+}
+
 } // namespace
 } // namespace steerseg::test
