@@ -39,30 +39,40 @@ TEST_F(SolverAgreementTest, GrowingBallMatchesReference) {
     expectAgree(d, gpu.readMask(), cpu.mask());
 }
 
+// The GPU solver and the reference from the same seed and parameters, stepped together.
+struct SolverPair {
+    LevelSetSolver gpu;
+    ReferenceSolver cpu;
+    SolverPair(const std::vector<float>& volume, const glm::ivec3& d, const Sphere& seed,
+               const LevelSetParams& params)
+        : gpu(volume, d), cpu(volume, d) {
+        gpu.addSphere(seed);
+        cpu.addSphere(seed);
+        setParams(params);
+    }
+    void setParams(const LevelSetParams& params) {
+        gpu.setParams(params);
+        cpu.setParams(params);
+    }
+    void step(int n) {
+        gpu.step(n);
+        cpu.step(n);
+    }
+};
+
 // Each brick keeps its speeds between steps (shaders/solver/speed_cache.glsl); a change of T and
 // eps must reach them. The second window refuses the ball, so the front that grew into it
 // shrinks back; with the speeds of the first it would go on growing.
 TEST_F(SolverAgreementTest, ANewWindowMidRunMatchesReference) {
     const glm::ivec3 d{48, 44, 40};
     const auto volume = ballVolume(d, 0.0F, 100.0F, {24, 22, 20}, 15.0F);
-    const LevelSetParams grow{100.0F, 30.0F, 0.7F};
-    const LevelSetParams shrink{50.0F, 10.0F, 0.7F};
-    const Sphere seed{{22, 20, 19}, 4.0F};
-    LevelSetSolver gpu(volume, d);
-    ReferenceSolver cpu(volume, d);
-    gpu.addSphere(seed);
-    cpu.addSphere(seed);
-    gpu.setParams(grow);
-    cpu.setParams(grow);
-    gpu.step(40);
-    cpu.step(40);
-    const std::size_t grown = insideCount(cpu.mask());
-    gpu.setParams(shrink);
-    cpu.setParams(shrink);
-    gpu.step(20);
-    cpu.step(20);
-    EXPECT_LT(insideCount(cpu.mask()), grown);
-    expectAgree(d, gpu.readMask(), cpu.mask());
+    SolverPair run(volume, d, {{22, 20, 19}, 4.0F}, {100.0F, 30.0F, 0.7F});
+    run.step(40);
+    const std::size_t grown = insideCount(run.cpu.mask());
+    run.setParams({50.0F, 10.0F, 0.7F});
+    run.step(20);
+    EXPECT_LT(insideCount(run.cpu.mask()), grown);
+    expectAgree(d, run.gpu.readMask(), run.cpu.mask());
 }
 
 // A shrink moves bricks to lower slots, where the speeds kept are another brick's (or none):
@@ -72,20 +82,11 @@ TEST_F(SolverAgreementTest, ANewWindowMidRunMatchesReference) {
 TEST_F(SolverAgreementTest, AfterThePoolShrankUnderTheFrontMatchesReference) {
     const glm::ivec3 d{64, 64, 56};
     const auto volume = ballVolume(d, 0.0F, 100.0F, {32, 32, 28}, 13.0F);
-    const LevelSetParams params{100.0F, 30.0F, 0.7F};
-    const Sphere seed{{32, 32, 28}, 21.0F};
-    LevelSetSolver gpu(volume, d);
-    ReferenceSolver cpu(volume, d);
-    gpu.addSphere(seed);
-    cpu.addSphere(seed);
-    gpu.setParams(params);
-    cpu.setParams(params);
-    gpu.step(48);
-    cpu.step(48);
-    ASSERT_GE(gpu.stats().poolShrinks, 1);
-    gpu.step(32);
-    cpu.step(32);
-    expectAgree(d, gpu.readMask(), cpu.mask());
+    SolverPair run(volume, d, {{32, 32, 28}, 21.0F}, {100.0F, 30.0F, 0.7F});
+    run.step(48);
+    ASSERT_GE(run.gpu.stats().poolShrinks, 1);
+    run.step(32);
+    expectAgree(d, run.gpu.readMask(), run.cpu.mask());
 }
 
 } // namespace
