@@ -6,6 +6,7 @@
 #include "gpu/gl_error.hpp"
 #include "model/level_set_params.hpp"
 #include "solver/control_block.hpp"
+#include "solver/pool_buffers.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,26 +19,6 @@ namespace steerseg::solver::detail {
 namespace {
 
 constexpr std::uint32_t kMinCapacity = 16;
-
-gpu::Buffer makeBuffer(std::size_t bytes, const void* data = nullptr) {
-    return gpu::createBuffer(GL_SHADER_STORAGE_BUFFER,
-                             static_cast<GLsizeiptr>(std::max<std::size_t>(bytes, 4)), data,
-                             GL_DYNAMIC_COPY);
-}
-
-// Copies and host writes must see the shaders' earlier writes (and not be overtaken by them):
-// without GL_BUFFER_UPDATE_BARRIER_BIT a pool growth on the NVIDIA driver copied some bricks as
-// they were before the last iteration, and the same run gave different masks (llvmpipe, which
-// finishes each dispatch before the next command, never showed it).
-void copyBuffer(const gpu::Buffer& from, const gpu::Buffer& to, std::size_t fromOffset,
-                std::size_t toOffset, std::size_t bytes) {
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glBindBuffer(GL_COPY_READ_BUFFER, from.id());
-    glBindBuffer(GL_COPY_WRITE_BUFFER, to.id());
-    glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER,
-                        static_cast<GLintptr>(fromOffset), static_cast<GLintptr>(toOffset),
-                        static_cast<GLsizeiptr>(bytes));
-}
 
 } // namespace
 
@@ -93,14 +74,6 @@ std::size_t GpuBrickPool::shellBytes() const {
     return (b * b * b - (b - 2) * (b - 2) * (b - 2)) * sizeof(float);
 }
 
-std::size_t GpuBrickPool::speedSlotBytes() const {
-    return brickBytes() + kSpeedHeaderWords * 4;
-}
-
-std::size_t GpuBrickPool::speedBytes() const {
-    return static_cast<std::size_t>(capacity_) * speedSlotBytes();
-}
-
 // The speed cache is the largest buffer over the slots: a brick of speeds and a header each.
 std::uint32_t GpuBrickPool::maxCapacity() const {
     return static_cast<std::uint32_t>(std::min<std::size_t>(
@@ -147,16 +120,6 @@ void GpuBrickPool::allocateSlotBuffers(std::uint32_t capacity) {
     slotFront_ = makeBuffer(capacity * 8);
     speedCache_ = makeBuffer(capacity * speedSlotBytes());
     forgetSpeed(); // the speeds themselves are written before they are read
-}
-
-void GpuBrickPool::forgetSpeed() {
-    const std::vector<std::uint32_t> none(std::size_t{kSpeedHeaderWords} * capacity_, 0);
-    gpu::writeBuffer(speedCache_, 0, none.data(), none.size() * 4);
-}
-
-void GpuBrickPool::forgetMeasures() {
-    const std::vector<std::uint32_t> never(capacity_, 0);
-    gpu::writeBuffer(speedCache_, std::size_t{2} * capacity_ * 4, never.data(), never.size() * 4);
 }
 
 void GpuBrickPool::upload(std::span<const float> phi, bool dense) {
@@ -371,18 +334,6 @@ void GpuBrickPool::shrink(std::uint32_t newCapacity, const ControlBlock& ctrl) {
     next.freeCount = static_cast<std::uint32_t>(freeList.size());
     writeControl(next);
     gpu::checkGl("shrinking the brick pool");
-}
-
-// The tags, side changes and speeds of the slots both the old cache (of oldCapacity slots) and
-// the current one have; each part of the header is a run of one word a slot, so the offsets
-// follow the capacity. The measures are not kept: every brick is measured again.
-void GpuBrickPool::copySpeeds(const gpu::Buffer& old, std::uint32_t oldCapacity) {
-    const std::size_t kept = std::min(oldCapacity, capacity_);
-    const std::size_t was = oldCapacity;
-    const std::size_t now = capacity_;
-    copyBuffer(old, speedCache_, 0, 0, kept * 4);             // tags
-    copyBuffer(old, speedCache_, was * 4, now * 4, kept * 4); // side changes
-    copyBuffer(old, speedCache_, 3 * was * 4, 3 * now * 4, kept * brickBytes());
 }
 
 void GpuBrickPool::bind() const {

@@ -111,7 +111,7 @@ class GpuBrickPool {
     void allocateSlotBuffers(std::uint32_t capacity);
     void copySpeeds(const gpu::Buffer& old, std::uint32_t oldCapacity);
     [[nodiscard]] std::size_t speedSlotBytes() const;
-    static constexpr std::uint32_t kSpeedHeaderWords = 3;
+    static constexpr std::uint32_t kSpeedHeaderWords = 3; // gpu_brick_pool_speed.cpp's runs
     // The control block of a pool just filled: nothing requested or active, `freeCount` free.
     void resetControl(std::uint32_t freeCount);
     [[nodiscard]] glm::ivec3 brickOrigin(std::uint32_t brick) const;

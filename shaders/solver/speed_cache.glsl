@@ -11,23 +11,33 @@
 //   brick again only when it or a face neighbour did since it last measured it (or its speeds
 //   were forgotten); otherwise it adds the slot's last measure, as build_active_list does for a
 //   sleeping brick.
-// Layout (host: app/solver/gpu_brick_pool.hpp), C = the slots: [0, C) tags, 1 + the brick whose
-// speeds the slot holds (0: none); [C, 2C) the step count after which a voxel last changed side
-// in the slot (update_phi); [2C, 3C) 1 + the step count at which measure_speed last measured it
-// (0: never; the host clears them when the level set changes outside a step, and
+// Layout (host: app/solver/gpu_brick_pool_speed.cpp), C = the slots: [0, C) tags, 1 + the brick
+// whose speeds the slot holds (0: none); [C, 2C) the step count after which a voxel last changed
+// side in the slot (update_phi); [2C, 3C) 1 + the step count at which measure_speed last
+// measured it (0: never; the host clears them when the level set changes outside a step, and
 // allocate_bricks when a slot changes hands); then slot s's speeds at 3C + s * BRICK_VOXELS, as
 // float bits. A tag names the brick, not only the slot, so slots that move (a shrink) or change
 // hands (retired, then allocated) never read another brick's speeds.
 // Include after common/brick_pool.glsl.
 layout(std430, binding = SPEED_CACHE_BINDING) buffer SpeedCache { uint speedCache[]; };
 
-uint speedCapacity() { return uint(speedCache.length()) / (BRICK_VOXELS + 3u); }
+// The header's runs (one word a slot each) in order, as the host names them.
+const uint SIDE_CHANGE_RUN = 1u;
+const uint MEASURE_RUN = 2u;
+const uint HEADER_RUNS = 3u;
+
+uint speedCapacity() { return uint(speedCache.length()) / (BRICK_VOXELS + HEADER_RUNS); }
+
+// Slot `slot`'s word in header run `run`.
+uint headerIndex(uint run, uint slot) { return run * speedCapacity() + slot; }
 
 bool speedCached(uint slot, uint brick) { return speedCache[slot] == brick + 1u; }
 
 void markSpeedCached(uint slot, uint brick) { speedCache[slot] = brick + 1u; }
 
-uint speedIndex(uint slot, uint v) { return 3u * speedCapacity() + slot * BRICK_VOXELS + v; }
+uint speedIndex(uint slot, uint v) {
+    return HEADER_RUNS * speedCapacity() + slot * BRICK_VOXELS + v;
+}
 
 float cachedSpeed(uint slot, uint v) { return uintBitsToFloat(speedCache[speedIndex(slot, v)]); }
 
@@ -37,20 +47,24 @@ float storeSpeed(uint slot, uint v, float speed) {
 }
 
 // After a step `steps` (the count once it is done) changed a voxel of the slot's side.
-void noteSideChanged(uint slot, uint steps) { speedCache[speedCapacity() + slot] = steps; }
+void noteSideChanged(uint slot, uint steps) {
+    speedCache[headerIndex(SIDE_CHANGE_RUN, slot)] = steps;
+}
 
-uint sideChangedAt(uint slot) { return speedCache[speedCapacity() + slot]; }
+uint sideChangedAt(uint slot) { return speedCache[headerIndex(SIDE_CHANGE_RUN, slot)]; }
 
 // measure_speed measured the slot after `steps` steps.
-void noteMeasured(uint slot, uint steps) { speedCache[2u * speedCapacity() + slot] = steps + 1u; }
+void noteMeasured(uint slot, uint steps) {
+    speedCache[headerIndex(MEASURE_RUN, slot)] = steps + 1u;
+}
 
-void forgetMeasured(uint slot) { speedCache[2u * speedCapacity() + slot] = 0u; }
+void forgetMeasured(uint slot) { speedCache[headerIndex(MEASURE_RUN, slot)] = 0u; }
 
 // The slot's front may differ from its last measure: never measured, or a voxel of it or of a
 // face neighbour with a slot changed side since. A neighbour without one holds a constant, which
 // changes only through a slot of its own.
 bool frontMayHaveChanged(uint slot, ivec3 brick) {
-    uint measured = speedCache[2u * speedCapacity() + slot];
+    uint measured = speedCache[headerIndex(MEASURE_RUN, slot)];
     if (measured == 0u || sideChangedAt(slot) >= measured) {
         return true;
     }
