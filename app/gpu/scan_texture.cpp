@@ -51,7 +51,8 @@ Texture allocate(GLenum format, const glm::ivec3& dims, GLenum filter) {
 
 } // namespace
 
-ScanTexture::ScanTexture(const Volume& volume, ScanDisplay display) : dims_(volume.dims()) {
+ScanTexture::ScanTexture(const Volume& volume, ScanDisplay display)
+    : dims_(volume.dims()), spacing_(volume.geometry().spacing) {
     checkSize(dims_);
     const IntensityStats& stats = volume.stats();
     min_ = stats.min;

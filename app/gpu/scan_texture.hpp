@@ -36,6 +36,8 @@ class ScanTexture {
     [[nodiscard]] bool displaysExact() const { return !display_; }
     [[nodiscard]] glm::vec2 toNormalised() const;
     [[nodiscard]] glm::ivec3 dims() const { return dims_; }
+    // The voxel size in millimetres (1, 1, 1 for a texture made from bare intensities).
+    [[nodiscard]] glm::dvec3 spacing() const { return spacing_; }
     [[nodiscard]] double rangeMin() const { return min_; }
     [[nodiscard]] double rangeMax() const { return max_; }
     // Real units -> [0, 1] over the scan's range.
@@ -45,6 +47,7 @@ class ScanTexture {
     template <typename SliceSource> void upload(const SliceSource& slices, ScanDisplay display);
 
     glm::ivec3 dims_{0};
+    glm::dvec3 spacing_{1.0};
     double min_ = 0.0;
     double max_ = 1.0;
     Texture exact_;

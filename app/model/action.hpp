@@ -75,7 +75,7 @@ struct SetWindow {
     double level = 0.0;
     double width = 1.0;
 };
-struct AddSeed { // voxel-index centre, radius in voxels
+struct AddSeed { // voxel-index centre, radius in voxels along the finest axis (Sphere)
     glm::dvec3 voxel{0.0};
     double radius = 0.0; // <= 0: the brush radius (Param::Radius)
 };

@@ -1,5 +1,6 @@
 #include "model/level_set_params.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -29,6 +30,26 @@ TimeStepRule timeStepRule(const LevelSetParams& p) {
 
 float stableTimeStep(const TimeStepRule& rule, float maxDataRate) {
     return 1.0F / (maxDataRate / rule.courant + rule.fixedRate);
+}
+
+glm::vec3 sphereScale(const glm::dvec3& spacing) {
+    for (int a = 0; a < 3; ++a) {
+        if (!std::isfinite(spacing[a]) || spacing[a] <= 0.0) {
+            return glm::vec3(1.0F);
+        }
+    }
+    const double finest = std::min({spacing.x, spacing.y, spacing.z});
+    return glm::vec3(spacing / finest);
+}
+
+float sphereDistance(const Sphere& s, const glm::vec3& voxel, const glm::vec3& scale) {
+    const glm::vec3 q = voxel - s.centre;
+    const float n = sphereNorm(q, scale);
+    // f = |q * scale| - r has gradient q * scale^2 / n: f / |grad f| is the distance in voxel
+    // steps near the surface; at the centre, the nearest surface lies along the coarsest axis.
+    const float g =
+        n > 0.0F ? glm::length(q * scale * scale) / n : std::max({scale.x, scale.y, scale.z});
+    return (n - s.radius) / g;
 }
 
 void validateSphere(const Sphere& s, const glm::ivec3& dims) {

@@ -50,7 +50,11 @@ struct TimeStepRule {
 TimeStepRule timeStepRule(const LevelSetParams& params);
 float stableTimeStep(const TimeStepRule& rule, float maxDataRate);
 
-// A sphere edit in voxel-index coordinates (i, j, k in storage order; radius in voxels).
+// A sphere edit in voxel-index coordinates (i, j, k in storage order). Its radius counts voxels
+// along the scan's finest axis, and the sphere is round in millimetres: on a scan with 3 mm
+// slices and 1 mm pixels a radius of 6 spans 6 pixels and 2 slices (sphereScale). The operator
+// sizes a brush by what a slice shows; a ball in voxel steps would reach three times as far
+// through the slices as it does across them.
 struct Sphere {
     glm::vec3 centre{0.0F};
     float radius = 0.0F;
@@ -63,9 +67,24 @@ struct Sphere {
 // it: a larger radius adds nothing but overflows the edit's voxel bounds.
 void validateSphere(const Sphere& sphere, const glm::ivec3& dims);
 
-// Signed distance from voxel centre `voxel` to the sphere's surface (negative inside).
-inline float sphereDistance(const Sphere& s, const glm::vec3& voxel) {
-    return glm::length(voxel - s.centre) - s.radius;
+// A voxel step's length along each axis in units of the finest spacing (at least 1 each): what
+// a sphere's radius is measured in (Sphere). (1, 1, 1) for an isotropic scan or spacing that is
+// not finite and positive.
+glm::vec3 sphereScale(const glm::dvec3& spacing);
+
+// The sphere's distance from its centre, in its radius's units.
+inline float sphereNorm(const glm::vec3& offset, const glm::vec3& scale) {
+    return glm::length(offset * scale);
+}
+
+// Signed distance from voxel centre `voxel` to the sphere's surface (negative inside), in voxel
+// steps to first order: the level set's units. The twin of shaders/solver/sphere_metric.glsl.
+float sphereDistance(const Sphere& s, const glm::vec3& voxel,
+                     const glm::vec3& scale = glm::vec3(1.0F));
+
+// Half the sphere's extent along each axis, in voxels.
+inline glm::vec3 sphereHalfExtent(const Sphere& s, const glm::vec3& scale) {
+    return s.radius / scale;
 }
 
 std::string describe(const LevelSetParams& params);

@@ -203,6 +203,7 @@ void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progr
         speed::ClassifierParams params;
         params.evaluation = speed::ClassifierEvaluation::OnDemand;
         params.placeReach = static_cast<float>(settings.placeReach);
+        params.sphereScale = g.solver.sphereScale();
         g.classifier.emplace(intensity, dims, examples(settings.inside), examples(settings.outside),
                              params, std::move(recycled));
         factor = g.classifier->texture();

@@ -60,7 +60,8 @@ class Session {
     [[nodiscard]] const Volume& scan() const;
     [[nodiscard]] const std::string& format() const; // "nifti", "dicom", "builtin", ...
 
-    // Seeds grow the level set, erasers cut it; voxel-index centre, radius in voxels. A sphere
+    // Seeds grow the level set, erasers cut it; voxel-index centre, radius in voxels along the
+    // finest axis, round in mm (model::Sphere). A sphere
     // whose centre is outside the scan or whose radius is not a positive finite number is
     // refused (std::invalid_argument naming the problem).
     void addSeed(const model::Sphere& sphere);

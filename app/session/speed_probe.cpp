@@ -11,12 +11,13 @@ namespace steerseg::session {
 SpeedProbe probeSpeed(const Volume& volume, const model::Sphere& sphere) {
     model::validateSphere(sphere, volume.dims());
     const glm::dvec3 c(sphere.centre);
+    const glm::dvec3 scale(model::sphereScale(volume.geometry().spacing));
     const double r = static_cast<double>(sphere.radius);
     const glm::ivec3 dims = volume.dims();
-    const glm::ivec3 lo = glm::max(glm::ivec3(glm::ceil(c - r)), glm::ivec3(0));
-    const glm::ivec3 hi = glm::min(glm::ivec3(glm::floor(c + r)), dims - 1);
+    const glm::ivec3 lo = glm::max(glm::ivec3(glm::ceil(c - r / scale)), glm::ivec3(0));
+    const glm::ivec3 hi = glm::min(glm::ivec3(glm::floor(c + r / scale)), dims - 1);
     const auto inside = [&](int i, int j, int k) {
-        const glm::dvec3 d = glm::dvec3(i, j, k) - c;
+        const glm::dvec3 d = (glm::dvec3(i, j, k) - c) * scale;
         return glm::dot(d, d) <= r * r;
     };
     double sum = 0.0;

@@ -34,9 +34,9 @@ inline constexpr double kKappaFactor = 1.0;
 // The noise the suggestions assume at least (real units, a quarter of the eps floor).
 inline constexpr double kNoiseFloor = 2.5;
 
-// Voxels whose centres lie within sphere.radius voxels of sphere.centre (voxel indices, like
-// --seed). std::invalid_argument when the sphere does not fit the scan or holds fewer than 2
-// voxels.
+// Voxels whose centres lie inside the sphere (voxel indices and a radius along the finest axis,
+// like --seed: model::Sphere). std::invalid_argument when the sphere does not fit the scan or
+// holds fewer than 2 voxels.
 SpeedProbe probeSpeed(const Volume& volume, const model::Sphere& sphere);
 
 } // namespace steerseg::session

@@ -62,7 +62,10 @@ void LevelSetSolver::editSphere(const model::Sphere& sphere, bool add) {
     gpu::GlStateGuard guard;
     wakeAll(); // the sphere may cover sleeping bricks: classify_bricks must see them
     const int b = options_.brickSize;
-    const float reach = sphere.radius + model::kPhiFar + 1.0F;
+    // The voxels within kPhiFar + 1 voxel steps of the sphere (request_edit_bricks' bound).
+    const float coarsest = std::max({sphereScale_.x, sphereScale_.y, sphereScale_.z});
+    const model::Sphere band{sphere.centre, sphere.radius + coarsest * (model::kPhiFar + 1.0F)};
+    const glm::vec3 reach = model::sphereHalfExtent(band, sphereScale_);
     const glm::ivec3 lo = glm::clamp(glm::ivec3(glm::floor(sphere.centre - reach)) / b,
                                      glm::ivec3(0), pool_->brickGrid() - 1);
     const glm::ivec3 hi = glm::clamp(glm::ivec3(glm::ceil(sphere.centre + reach)) / b,

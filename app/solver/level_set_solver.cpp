@@ -45,8 +45,9 @@ LevelSetSolver::LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own,
                                const gpu::ScanTexture* borrowed,
                                const model::SolverOptions& options)
     : ownScan_(std::move(own)), scan_(ownScan_ ? ownScan_.get() : borrowed), dims_(scan_->dims()),
-      options_(options), settleWatch_(std::max(options.settleIterations, 1),
-                                      static_cast<double>(options.settleDisplacement)),
+      sphereScale_(model::sphereScale(scan_->spacing())), options_(options),
+      settleWatch_(std::max(options.settleIterations, 1),
+                   static_cast<double>(options.settleDisplacement)),
       runawayWatch_(static_cast<double>(options.runawayFactor)) {
     gpu::GlStateGuard guard;
     const glm::ivec3 dims = dims_;
@@ -81,6 +82,8 @@ LevelSetSolver::LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own,
                            dims.z);
         glProgramUniform3i(p.id(), glGetUniformLocation(p.id(), "brickGrid"), grid.x, grid.y,
                            grid.z);
+        glProgramUniform3f(p.id(), glGetUniformLocation(p.id(), "sphereScale"), sphereScale_.x,
+                           sphereScale_.y, sphereScale_.z);
     });
 
     glProgramUniform1ui(programs_->buildActiveList.id(),

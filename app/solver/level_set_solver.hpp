@@ -72,7 +72,8 @@ class LevelSetSolver {
     // set (where the front went, and any filled ahead); 0 for a speed computed everywhere. One
     // word read back from the GPU: for reports, not per frame (stats() reads nothing back).
     [[nodiscard]] std::uint32_t speedBricksEvaluated() const;
-    // Sphere edits (voxel indices, radius in voxels), between any two iterations.
+    // Sphere edits (voxel indices, radius in voxels along the finest axis: model::Sphere),
+    // between any two iterations.
     void addSphere(const model::Sphere& sphere);
     void removeSphere(const model::Sphere& sphere);
     // Barriers: spheres the surface may not enter (a leak's neck) or may not leave (a kept
@@ -124,6 +125,8 @@ class LevelSetSolver {
     [[nodiscard]] const gpu::ScanTexture& scan() const { return *scan_; }
     [[nodiscard]] model::SolverStats stats() const;
     [[nodiscard]] const glm::ivec3& dims() const { return dims_; }
+    // What a sphere's radius is measured in on this scan (model::sphereScale).
+    [[nodiscard]] glm::vec3 sphereScale() const { return sphereScale_; }
     // Called with every check's counters (benchmarks record series for tests/data/growth);
     // an empty function stops it.
     void setCheckObserver(std::function<void(const FrontCheck&)> observer) {
@@ -159,6 +162,7 @@ class LevelSetSolver {
     std::unique_ptr<gpu::ScanTexture> ownScan_;
     const gpu::ScanTexture* scan_;
     glm::ivec3 dims_;
+    glm::vec3 sphereScale_; // model::sphereScale of the scan's spacing
     model::SolverOptions options_;
     std::unique_ptr<detail::SolverPrograms> programs_;
     std::unique_ptr<detail::GpuBrickPool> pool_;

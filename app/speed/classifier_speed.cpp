@@ -59,9 +59,11 @@ ClassifierSpeed::ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<co
 
     auto start = std::chrono::steady_clock::now();
     const auto cap = static_cast<std::size_t>(params.maxSamplesPerClass);
-    const ExampleVoxels in = exampleVoxels(inside, dims, cap, params.seed, "inside");
+    const ExampleVoxels in =
+        exampleVoxels(inside, dims, cap, params.seed, "inside", params.sphereScale);
     const ExampleVoxels out =
-        exampleVoxels(outside, dims, cap, static_cast<std::uint64_t>(params.seed) + 1, "outside");
+        exampleVoxels(outside, dims, cap, static_cast<std::uint64_t>(params.seed) + 1, "outside",
+                      params.sphereScale);
     std::vector<glm::ivec3> voxels = in.voxels;
     voxels.insert(voxels.end(), out.voxels.begin(), out.voxels.end());
     const std::vector<float> features = gatherClassifierFeatures(intensity, dims, voxels);
@@ -78,7 +80,7 @@ ClassifierSpeed::ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<co
     training_.trainSeconds = secondsSince(start);
     training_.outOfBagAccuracy = forest_.outOfBagAccuracy();
 
-    placeVote_ = speed::placeVote(inside, outside, dims, params.placeReach);
+    placeVote_ = speed::placeVote(inside, outside, dims, params.placeReach, params.sphereScale);
     upload();
     texture_ = isVolumeTexture(recycled.id(), dims_)
                    ? std::move(recycled)

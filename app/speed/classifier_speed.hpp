@@ -34,6 +34,8 @@ struct ClassifierParams {
     // How far, in its radii, a mark decides where appearance is unsure (speed/place_vote); 0:
     // appearance alone.
     float placeReach = 3.0F;
+    // What the examples' radii are measured in (model::sphereScale of the scan's spacing).
+    glm::vec3 sphereScale{1.0F};
 };
 
 // What the training took and found; seconds of wall time, GPU work finished.

@@ -14,15 +14,16 @@ namespace steerseg::speed {
 
 namespace {
 
-bool contains(const Example& e, glm::ivec3 v) {
-    const glm::dvec3 d = glm::dvec3(v) - glm::dvec3(e.centre);
+bool contains(const Example& e, glm::ivec3 v, const glm::dvec3& scale) {
+    const glm::dvec3 d = (glm::dvec3(v) - glm::dvec3(e.centre)) * scale;
     return glm::dot(d, d) <= static_cast<double>(e.radius) * static_cast<double>(e.radius);
 }
 
 } // namespace
 
 ExampleVoxels exampleVoxels(std::span<const Example> examples, glm::ivec3 dims,
-                            std::size_t maxSamples, std::uint64_t seed, std::string_view what) {
+                            std::size_t maxSamples, std::uint64_t seed, std::string_view what,
+                            const glm::vec3& scale) {
     const std::string name(what);
     if (examples.empty()) {
         throw std::invalid_argument("classifier speed: no " + name + " examples");
@@ -50,7 +51,7 @@ ExampleVoxels exampleVoxels(std::span<const Example> examples, glm::ivec3 dims,
         glm::ivec3 hi;
         for (int a = 0; a < 3; ++a) {
             const double c = static_cast<double>(e.centre[a]);
-            const double r = static_cast<double>(e.radius);
+            const double r = static_cast<double>(e.radius) / static_cast<double>(scale[a]);
             lo[a] =
                 static_cast<int>(std::clamp(std::ceil(c - r), 0.0, static_cast<double>(dims[a])));
             hi[a] = static_cast<int>(
@@ -77,7 +78,7 @@ ExampleVoxels exampleVoxels(std::span<const Example> examples, glm::ivec3 dims,
             for (int j = lo.y; j <= hi.y; ++j) {
                 for (int i = lo.x; i <= hi.x; ++i) {
                     const glm::ivec3 v(i, j, k);
-                    if (!contains(e, v)) {
+                    if (!contains(e, v, glm::dvec3(scale))) {
                         continue;
                     }
                     const glm::ivec3 d = v - unionLo;

@@ -13,7 +13,7 @@ constexpr float kMinRadius = 0.5F;
 
 // The strongest weight of `marks` at every cell centre, into `strongest`.
 void strongestWeights(std::span<const Example> marks, const glm::ivec3& cells, float reach,
-                      std::vector<float>& strongest) {
+                      const glm::vec3& scale, std::vector<float>& strongest) {
     const float cell = static_cast<float>(kPlaceVoteCell);
     for (const Example& m : marks) {
         if (!std::isfinite(m.centre.x) || !std::isfinite(m.centre.y) ||
@@ -24,21 +24,25 @@ void strongestWeights(std::span<const Example> marks, const glm::ivec3& cells, f
         const float extent = std::max(m.radius, kMinRadius) * std::max(reach, 1.0F);
         // The cells whose centres (voxel c * cell + (cell - 1) / 2) lie within the extent,
         // clamped to the grid in floats, so that a huge mark or one far away stays in range.
-        auto cellRange = [&](float centre, int count) {
+        auto cellRange = [&](float centre, int count, float step) {
+            const float extentHere = extent / step;
             const float offset = (cell - 1.0F) * 0.5F;
             const float top = static_cast<float>(count - 1);
-            const float lo = std::clamp(std::ceil((centre - extent - offset) / cell), 0.0F, top);
-            const float hi = std::clamp(std::floor((centre + extent - offset) / cell), -1.0F, top);
+            const float lo =
+                std::clamp(std::ceil((centre - extentHere - offset) / cell), 0.0F, top);
+            const float hi =
+                std::clamp(std::floor((centre + extentHere - offset) / cell), -1.0F, top);
             return glm::ivec2(static_cast<int>(lo), static_cast<int>(hi));
         };
-        const glm::ivec2 rx = cellRange(m.centre.x, cells.x);
-        const glm::ivec2 ry = cellRange(m.centre.y, cells.y);
-        const glm::ivec2 rz = cellRange(m.centre.z, cells.z);
+        const glm::ivec2 rx = cellRange(m.centre.x, cells.x, scale.x);
+        const glm::ivec2 ry = cellRange(m.centre.y, cells.y, scale.y);
+        const glm::ivec2 rz = cellRange(m.centre.z, cells.z, scale.z);
         for (int z = rz.x; z <= rz.y; ++z) {
             for (int y = ry.x; y <= ry.y; ++y) {
                 for (int x = rx.x; x <= rx.y; ++x) {
                     const glm::vec3 p = glm::vec3(x, y, z) * cell + (cell - 1.0F) * 0.5F;
-                    const float w = placeWeight(glm::length(p - m.centre), m.radius, reach);
+                    const float w =
+                        placeWeight(glm::length((p - m.centre) * scale), m.radius, reach);
                     const std::size_t i =
                         static_cast<std::size_t>(x) +
                         static_cast<std::size_t>(cells.x) *
@@ -65,7 +69,7 @@ float placeWeight(float distance, float radius, float reach) {
 }
 
 PlaceVote placeVote(std::span<const Example> inside, std::span<const Example> outside,
-                    glm::ivec3 dims, float reach) {
+                    glm::ivec3 dims, float reach, const glm::vec3& scale) {
     if (dims.x < 1 || dims.y < 1 || dims.z < 1) {
         throw std::invalid_argument("place vote: the scan's dimensions must be at least 1");
     }
@@ -80,8 +84,8 @@ PlaceVote placeVote(std::span<const Example> inside, std::span<const Example> ou
     std::vector<float> in(n, 0.0F);
     std::vector<float> out(n, 0.0F);
     if (reach > 0.0F) {
-        strongestWeights(inside, vote.dims, reach, in);
-        strongestWeights(outside, vote.dims, reach, out);
+        strongestWeights(inside, vote.dims, reach, scale, in);
+        strongestWeights(outside, vote.dims, reach, scale, out);
     }
     vote.values.resize(n);
     std::transform(in.begin(), in.end(), out.begin(), vote.values.begin(),

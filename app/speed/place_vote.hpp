@@ -22,9 +22,9 @@ struct PlaceVote {
     std::vector<float> values; // raster order (i fastest), each in [-1, 1]
 };
 
-// One mark's weight at distance d (voxels) from its centre: 1 within its radius, falling
-// linearly to 0 at reach x radius (radius at least half a voxel); reach <= 1: 1 within the
-// radius, 0 beyond.
+// One mark's weight at distance d (in its radius's units, model::Sphere) from its centre: 1 within
+// its radius, falling linearly to 0 at reach x radius (radius at least half a voxel); reach <= 1: 1
+// within the radius, 0 beyond.
 float placeWeight(float distance, float radius, float reach);
 
 // At the centre of each cell: the strongest inside mark's weight less the strongest outside
@@ -33,7 +33,7 @@ float placeWeight(float distance, float radius, float reach);
 // the scan. Throws std::invalid_argument for dims below 1, a reach that is not finite or
 // negative, or a mark whose centre or radius is not finite or whose radius is negative.
 PlaceVote placeVote(std::span<const Example> inside, std::span<const Example> outside,
-                    glm::ivec3 dims, float reach);
+                    glm::ivec3 dims, float reach, const glm::vec3& scale = glm::vec3(1.0F));
 
 // The vote at voxel v as the GPU reads it (speed/classifier_forest.glsl): linear between cell
 // centres, the edge cells' values beyond them.

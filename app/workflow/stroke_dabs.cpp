@@ -5,7 +5,8 @@
 namespace steerseg::workflow {
 
 std::optional<std::vector<glm::dvec3>> strokeDabs(std::span<const glm::dvec3> points,
-                                                  double spacing, std::size_t maxDabs) {
+                                                  double spacing, std::size_t maxDabs,
+                                                  const glm::dvec3& scale) {
     std::vector<glm::dvec3> dabs;
     if (points.empty()) {
         return dabs;
@@ -17,7 +18,7 @@ std::optional<std::vector<glm::dvec3>> strokeDabs(std::span<const glm::dvec3> po
     for (std::size_t p = 1; p < points.size(); ++p) {
         const glm::dvec3 from = dabs.back();
         const glm::dvec3 to = points[p];
-        const double length = glm::length(to - from);
+        const double length = glm::length((to - from) * scale);
         if (length < spacing) {
             continue;
         }

@@ -174,7 +174,7 @@ std::optional<model::TissueLevel> Workflow::tissueLevel(const model::Sphere& sph
     if (reach <= 0.0) {
         return std::nullopt;
     }
-    // The largest ball in mm inside the sphere, which is in voxel units.
+    // The sphere in mm (its radius counts voxels along the finest axis: model::Sphere).
     const glm::dvec3& spacing = status_.scan.spacing;
     const double radiusMm =
         static_cast<double>(sphere.radius) * std::min({spacing.x, spacing.y, spacing.z});

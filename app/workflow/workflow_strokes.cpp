@@ -62,8 +62,8 @@ Workflow::Outcome Workflow::on(const model::PaintStroke& a) {
     // Half the radius apart: the tube the spheres paint is nearly as wide between two of them as
     // at their centres.
     const double spacing = std::max(0.5 * radius, 0.5);
-    const std::optional<std::vector<glm::dvec3>> centres =
-        strokeDabs(a.points, spacing, kMaxStrokeDabs);
+    const std::optional<std::vector<glm::dvec3>> centres = strokeDabs(
+        a.points, spacing, kMaxStrokeDabs, glm::dvec3(model::sphereScale(status_.scan.spacing)));
     if (!centres) {
         std::ostringstream msg;
         msg << "the stroke is too long for a brush of radius " << radius << " (more than "

@@ -1,5 +1,7 @@
 #include "steering/click_robot.hpp"
 
+#include "model/level_set_params.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -220,8 +222,8 @@ std::optional<RobotClick> correctionClick(const MaskGrid& grid,
 }
 
 double brushRadius(const MaskGrid& grid, const RobotClick& click, double maxRadius) {
-    const double coarsest = std::max({grid.spacing.x, grid.spacing.y, grid.spacing.z});
-    return std::clamp(click.depthMm / coarsest, 1.0, std::max(1.0, maxRadius));
+    const double finest = std::min({grid.spacing.x, grid.spacing.y, grid.spacing.z});
+    return std::clamp(click.depthMm / finest, 1.0, std::max(1.0, maxRadius));
 }
 
 double dice(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
@@ -288,12 +290,13 @@ double surfaceDice(const MaskGrid& grid, const std::vector<std::uint8_t>& a,
 void paintSphere(const MaskGrid& grid, std::vector<std::uint8_t>& mask, const glm::dvec3& centre,
                  double radius, std::uint8_t value) {
     const glm::ivec3 d = grid.dims;
-    const glm::ivec3 lo = glm::max(glm::ivec3(glm::ceil(centre - radius)), glm::ivec3(0));
-    const glm::ivec3 hi = glm::min(glm::ivec3(glm::floor(centre + radius)), d - 1);
+    const glm::dvec3 scale(model::sphereScale(grid.spacing));
+    const glm::ivec3 lo = glm::max(glm::ivec3(glm::ceil(centre - radius / scale)), glm::ivec3(0));
+    const glm::ivec3 hi = glm::min(glm::ivec3(glm::floor(centre + radius / scale)), d - 1);
     for (int k = lo.z; k <= hi.z; ++k) {
         for (int j = lo.y; j <= hi.y; ++j) {
             for (int i = lo.x; i <= hi.x; ++i) {
-                if (glm::length(glm::dvec3(i, j, k) - centre) <= radius) {
+                if (glm::length((glm::dvec3(i, j, k) - centre) * scale) <= radius) {
                     mask[at(d, i, j, k)] = value;
                 }
             }

@@ -56,9 +56,9 @@ std::optional<RobotClick> correctionClick(const MaskGrid& grid,
                                           const std::vector<std::uint8_t>& mask,
                                           const std::vector<std::uint8_t>& label);
 
-// The brush an operator would choose for a click: the largest sphere (in voxel units, as the
-// product's spheres are) that stays inside the component in mm, at least 1 voxel, at most
-// `maxRadius`.
+// The brush an operator would choose for a click: the largest sphere that stays inside the
+// component in mm, its radius in voxels along the finest axis as the product's spheres are
+// (model::Sphere), at least 1, at most `maxRadius`.
 double brushRadius(const MaskGrid& grid, const RobotClick& click, double maxRadius);
 
 // Dice of two masks' non-zero voxels (two empty masks agree: 1).
@@ -69,7 +69,7 @@ double dice(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>&
 double surfaceDice(const MaskGrid& grid, const std::vector<std::uint8_t>& a,
                    const std::vector<std::uint8_t>& b, double toleranceMm);
 
-// Paint-only's edit: every voxel within `radius` voxels of `centre` set to `value`.
+// Paint-only's edit: every voxel of the sphere (model::Sphere's units) set to `value`.
 void paintSphere(const MaskGrid& grid, std::vector<std::uint8_t>& mask, const glm::dvec3& centre,
                  double radius, std::uint8_t value);
 

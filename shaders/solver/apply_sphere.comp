@@ -7,6 +7,7 @@
 #define PHI_POOL_ACCESS
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
+#include "solver/sphere_metric.glsl"
 layout(local_size_x = LOCAL_SIZE) in;
 
 uniform ivec3 boxMin;
@@ -28,7 +29,7 @@ void main() {
     uint localFlipped = 0u;
     for (uint v = gl_LocalInvocationIndex; hasWork && v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
         ivec3 g = b * BRICK_SIZE + localVoxel(v);
-        float d = length(vec3(g) - centre) - radius;
+        float d = sphereDistance(vec3(g) - centre, radius);
         uint at = slot * BRICK_VOXELS + v;
         float before = phiPool[at];
         float p = clamp(addMode ? min(before, d) : max(before, -d), -PHI_FAR, PHI_FAR);

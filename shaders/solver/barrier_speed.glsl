@@ -10,28 +10,27 @@
 // the partial volume between it and the added tissue. The classify speed learns the sphere
 // instead; bounded by the window (classifyWithinWindow), its bound widens there as the
 // threshold's does. The host side: LevelSetSolver::uploadBarriers (app/solver/level_set_edits.cpp).
-// Include after speed/data_speed.glsl.
+// Include after speed/data_speed.glsl and solver/sphere_metric.glsl.
 #ifndef MAX_BARRIERS
 #define MAX_BARRIERS 16
 #endif
 uniform int barrierCount;
-uniform vec4 barriers[MAX_BARRIERS]; // centre (voxel indices), signed radius (voxels)
-uniform vec2 barrierLevels[MAX_BARRIERS]; // tissue level (real units), reach (voxels; 0: none)
+uniform vec4 barriers[MAX_BARRIERS]; // centre (voxel indices), signed radius (sphere_metric.glsl)
+uniform vec2 barrierLevels[MAX_BARRIERS]; // tissue level (real units), reach (as a radius; 0: none)
 uniform float barrierHold;
 
 float barrierSpeed(ivec3 voxel, float dataSpeed) {
     vec3 p = vec3(voxel);
     float speed = dataSpeed;
     for (int n = barrierCount - 1; n >= 0; --n) {
-        vec3 q = p - barriers[n].xyz;
         float w = barriers[n].w;
-        float d2 = dot(q, q);
-        if (d2 <= w * w) {
+        float d = sphereNorm(p - barriers[n].xyz);
+        if (d <= abs(w)) {
             float held = max(abs(dataSpeed), barrierHold);
             return w < 0.0 ? held : -held;
         }
         float reach = barrierLevels[n].y;
-        if ((speedKind != 2 || classifyWithinWindow != 0) && reach > 0.0 && d2 <= reach * reach) {
+        if ((speedKind != 2 || classifyWithinWindow != 0) && reach > 0.0 && d <= reach) {
             float level = barrierLevels[n].x; // the window [min(T, L) - eps, max(T, L) + eps]
             float halfWidth = eps + 0.5 * abs(level - T);
             float w = windowSpeed(voxel, 0.5 * (level + T), halfWidth);

@@ -9,6 +9,7 @@
 #define DATA_SPEED_INTENSITY_UNIT SOLVER_SCAN_UNIT
 #define DATA_SPEED_FACTOR_UNIT SOLVER_FACTOR_UNIT
 #include "speed/data_speed.glsl"
+#include "solver/sphere_metric.glsl"
 #include "solver/barrier_speed.glsl"
 #include "solver/phi_stencil.glsl"
 #include "solver/phi_tile.glsl"

@@ -5,6 +5,7 @@
 #define PAGE_TABLE_ACCESS
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
+#include "solver/sphere_metric.glsl"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 layout(std430, binding = REQUESTS_BINDING) writeonly buffer Requests { uint requests[]; };
@@ -13,7 +14,7 @@ layout(std430, binding = WANT_EPOCH_BINDING) buffer WantEpoch { uint wantEpoch[]
 uniform ivec3 boxMin;  // bricks
 uniform ivec3 boxSize; // bricks
 uniform vec3 centre;   // voxels
-uniform float radius;  // voxels
+uniform float radius;  // voxels along the finest axis (sphere_metric.glsl)
 uniform bool addMode;  // true: union with the sphere, false: cut it out
 uniform uint epoch;
 
@@ -30,8 +31,11 @@ void main() {
     }
     vec3 lo = vec3(b * BRICK_SIZE);
     vec3 hi = vec3(min(b * BRICK_SIZE + BRICK_SIZE, volumeDims) - 1);
-    float nearest = length(clamp(centre, lo, hi) - centre) - radius;
-    float farthest = length(max(abs(lo - centre), abs(hi - centre))) - radius;
+    // Bounds on apply_sphere's distance over the brick: it is (norm - radius) / g with g
+    // between 1 and the coarsest step, so dividing by the coarsest step is the weaker claim.
+    float coarsest = max(sphereScale.x, max(sphereScale.y, sphereScale.z));
+    float nearest = (sphereNorm(clamp(centre, lo, hi) - centre) - radius) / coarsest;
+    float farthest = (sphereNorm(max(abs(lo - centre), abs(hi - centre))) - radius) / coarsest;
     if (farthest <= -PHI_FAR) {
         pageTable[brick] = addMode ? BRICK_INSIDE : BRICK_OUTSIDE;
         // Its voxels of the scan changed side: counted as apply_sphere counts the others.

@@ -14,6 +14,7 @@
 #include "solver/phi_tile.glsl"
 #include "solver/brick_shell.glsl"
 #include "solver/speed_cache.glsl"
+#include "solver/sphere_metric.glsl"
 layout(local_size_x = LOCAL_SIZE) in;
 
 uniform float alpha;
@@ -24,8 +25,7 @@ uniform float sleepTolerance; // voxels per step
 uniform vec4 reach;
 
 bool inReach(ivec3 g) {
-    vec3 q = vec3(g) - reach.xyz;
-    return reach.w <= 0.0 || dot(q, q) <= reach.w * reach.w;
+    return reach.w <= 0.0 || sphereNorm(vec3(g) - reach.xyz) <= reach.w;
 }
 
 shared uint changedSide;

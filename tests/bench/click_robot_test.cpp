@@ -86,8 +86,8 @@ TEST(ClickRobot, TheInitialClickIsTheDeepestVoxelInMillimetres) {
     EXPECT_TRUE(c->positive);
     EXPECT_NEAR(c->depthMm, 3.0, 1e-6);
     EXPECT_EQ(c->componentVoxels, 11U * 11U * 11U);
-    // The brush stays inside in mm: 3 mm at the coarsest 1 mm spacing.
-    EXPECT_NEAR(brushRadius(g, *c, 100.0), 3.0, 1e-6);
+    // The brush stays inside in mm: 3 mm, in voxels along the finest axis (0.5 mm).
+    EXPECT_NEAR(brushRadius(g, *c, 100.0), 6.0, 1e-6);
     EXPECT_NEAR(brushRadius(g, *c, 2.0), 2.0, 1e-6);
 }
 
@@ -151,6 +151,14 @@ TEST(ClickRobot, PaintedSpheresAndTheAucOfTheFirstSixPredictions) {
     EXPECT_EQ(m[at(g, 6, 6, 6)], 1); // sqrt(3) <= 2
     paintSphere(g, m, {5, 5, 5}, 1.0, 0);
     EXPECT_EQ(m[at(g, 5, 5, 5)], 0);
+    // On 2 mm slices the sphere is round in mm: 4 pixels across, 2 slices through.
+    const MaskGrid thick{{11, 11, 11}, {0.5, 0.5, 1.0}};
+    std::vector<std::uint8_t> t(thick.count(), 0);
+    paintSphere(thick, t, {5, 5, 5}, 4.0, 1);
+    EXPECT_EQ(t[at(thick, 9, 5, 5)], 1);
+    EXPECT_EQ(t[at(thick, 5, 5, 7)], 1);
+    EXPECT_EQ(t[at(thick, 5, 5, 8)], 0);
+    EXPECT_EQ(t[at(thick, 5, 9, 6)], 0); // (4, 2) steps are sqrt(16 + 4) > 4
     EXPECT_DOUBLE_EQ(diceAuc({0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.9}), 2.5);
     EXPECT_DOUBLE_EQ(diceAuc({0.0, 1.0}), 0.5);
     EXPECT_DOUBLE_EQ(diceAuc({0.7}), 0.0);

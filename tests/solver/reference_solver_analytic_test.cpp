@@ -94,6 +94,25 @@ TEST(LevelSetParams, RejectsBadValuesWithClearMessages) {
     EXPECT_EQ(message({100.0F, 0.0F, 0.0F}), "accepted");
 }
 
+TEST(LevelSetParams, ASphereCountsItsRadiusAlongTheFinestAxis) {
+    EXPECT_EQ(sphereScale({0.5, 0.5, 2.0}), glm::vec3(1.0F, 1.0F, 4.0F));
+    EXPECT_EQ(sphereScale({1.0, 1.0, 1.0}), glm::vec3(1.0F));
+    EXPECT_EQ(sphereScale({1.0, 0.0, 1.0}), glm::vec3(1.0F)); // no spacing: voxel steps
+    EXPECT_EQ(sphereScale({1.0, std::nan(""), 1.0}), glm::vec3(1.0F));
+    const Sphere s{{10.0F, 10.0F, 10.0F}, 4.0F};
+    // Isotropic: the Euclidean distance, exactly.
+    EXPECT_FLOAT_EQ(sphereDistance(s, {13.0F, 14.0F, 10.0F}), 1.0F);
+    EXPECT_FLOAT_EQ(sphereDistance(s, {10.0F, 10.0F, 10.0F}), -4.0F);
+    // Slices 4 pixels thick: the surface is 1 slice above the centre and 4 pixels beside it,
+    // and the distance is in voxel steps.
+    const glm::vec3 thick(1.0F, 1.0F, 4.0F);
+    EXPECT_FLOAT_EQ(sphereDistance(s, {10.0F, 10.0F, 11.0F}, thick), 0.0F);
+    EXPECT_FLOAT_EQ(sphereDistance(s, {10.0F, 10.0F, 12.0F}, thick), 1.0F);
+    EXPECT_FLOAT_EQ(sphereDistance(s, {16.0F, 10.0F, 10.0F}, thick), 2.0F);
+    EXPECT_FLOAT_EQ(sphereDistance(s, {10.0F, 10.0F, 10.0F}, thick), -1.0F);
+    EXPECT_FLOAT_EQ(sphereHalfExtent(s, thick).z, 1.0F);
+}
+
 TEST(LevelSetParams, RejectsSpheresOutsideTheVolume) {
     const glm::ivec3 d{10, 10, 10};
     EXPECT_THROW(validateSphere({{10, 5, 5}, 2.0F}, d), std::invalid_argument);

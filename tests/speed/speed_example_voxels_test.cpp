@@ -34,6 +34,18 @@ TEST(SpeedExampleVoxels, CountsEachVoxelOnce) {
     EXPECT_LT(got.covered, 2 * kRadius2Ball);
 }
 
+TEST(SpeedExampleVoxels, OnThickSlicesASphereIsRoundInMillimetres) {
+    // Slices twice as thick as the pixels are wide: radius 2 spans 2 pixels and 1 slice, so
+    // the ball is the radius-2 disc (13 voxels) and, above and below, the radius-0 point.
+    const std::vector<Example> one{{glm::vec3(10.0F, 8.0F, 6.0F), 2.0F}};
+    const ExampleVoxels got =
+        exampleVoxels(one, kDims, 1000, 1, "inside", glm::vec3(1.0F, 1.0F, 2.0F));
+    EXPECT_EQ(got.covered, 13U + 2U);
+    for (const glm::ivec3 v : got.voxels) {
+        EXPECT_LE(std::abs(v.z - 6), 1);
+    }
+}
+
 TEST(SpeedExampleVoxels, ClipsToTheScan) {
     // Centred on the corner voxel: one octant of the ball, planes included.
     const std::vector<Example> corner{{glm::vec3(0.0F), 2.0F}};

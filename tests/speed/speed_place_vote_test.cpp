@@ -47,6 +47,17 @@ TEST(PlaceVote, InsideMarksVoteInOutsideMarksOutAndFarFromBothNobodyVotes) {
     }
 }
 
+TEST(PlaceVote, OnThickSlicesAMarkReachesAsFarInMillimetresThroughTheSlices) {
+    // Slices twice as thick as the pixels: the mark's 3 radii are 12 pixels and 6 slices.
+    const std::vector<Example> inside{{glm::vec3(14.0F, 20.0F, 20.0F), 4.0F}};
+    const speed::PlaceVote vote = placeVote(inside, {}, kDims, 3.0F, glm::vec3(1.0F, 1.0F, 2.0F));
+    EXPECT_GT(placeVoteAt(vote, {14, 20, 20}), 0.8F);
+    EXPECT_GT(placeVoteAt(vote, {22, 20, 20}), 0.3F);
+    EXPECT_LT(placeVoteAt(vote, {14, 20, 28}), 0.15F); // 8 slices are 16 pixels away
+    const speed::PlaceVote round = placeVote(inside, {}, kDims, 3.0F);
+    EXPECT_GT(placeVoteAt(round, {14, 20, 28}), 0.3F);
+}
+
 TEST(PlaceVote, ReachOneKeepsEachMarkToItsSphereAndZeroLeavesAppearanceAlone) {
     const std::vector<Example> inside{{glm::vec3(14.0F, 20.0F, 20.0F), 4.0F}};
     const speed::PlaceVote sphere = placeVote(inside, {}, kDims, 1.0F);

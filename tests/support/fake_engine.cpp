@@ -138,12 +138,15 @@ void FakeEngine::paint(const model::Sphere& s, std::uint8_t value) {
     if (!editError.empty()) {
         throw std::runtime_error(editError);
     }
-    const glm::ivec3 lo = glm::max(glm::ivec3(glm::ceil(s.centre - s.radius)), glm::ivec3(0));
-    const glm::ivec3 hi = glm::min(glm::ivec3(glm::floor(s.centre + s.radius)), d - 1);
+    // Round in mm, as the real solver's spheres are (model::Sphere).
+    const glm::vec3 scale = model::sphereScale(scan_.spacing);
+    const glm::vec3 half = model::sphereHalfExtent(s, scale);
+    const glm::ivec3 lo = glm::max(glm::ivec3(glm::ceil(s.centre - half)), glm::ivec3(0));
+    const glm::ivec3 hi = glm::min(glm::ivec3(glm::floor(s.centre + half)), d - 1);
     for (int k = lo.z; k <= hi.z; ++k) {
         for (int j = lo.y; j <= hi.y; ++j) {
             for (int i = lo.x; i <= hi.x; ++i) {
-                if (model::sphereDistance(s, glm::vec3(i, j, k)) > 0.0F) {
+                if (model::sphereDistance(s, glm::vec3(i, j, k), scale) > 0.0F) {
                     continue;
                 }
                 std::uint8_t& m = mask_[static_cast<std::size_t>(i + d.x * (j + d.y * k))];

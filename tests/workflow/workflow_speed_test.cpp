@@ -157,8 +157,8 @@ TEST(WorkflowSpeed, ClassifyWaitsForAnExampleOfEachKind) {
     ASSERT_EQ(trained.outside.size(), 1U);
     EXPECT_EQ(trained.inside[0].centre, glm::vec3(kInside));
     EXPECT_EQ(trained.outside[0].centre, glm::vec3(kOutside));
-    // 2 mm on 1 x 1 x 2 mm voxels: the voxel sphere of the same volume, 2 / cbrt(2) voxels.
-    EXPECT_NEAR(trained.outside[0].radius, 2.0 / std::cbrt(2.0), 1e-6);
+    // 2 mm on 1 x 1 x 2 mm voxels: 2 voxels along the finest axis (model::Sphere).
+    EXPECT_NEAR(trained.outside[0].radius, 2.0, 1e-6);
     EXPECT_EQ(rig.status().speedInForce, SpeedKind::Classify);
     EXPECT_TRUE(trained.withinWindow) << "bounded by the window by default";
     EXPECT_EQ(trained.placeReach, 3.0) << "the examples decide near them by default";
@@ -203,8 +203,8 @@ TEST(WorkflowSpeed, EdgeAndThresholdIgnoreExamples) {
     ASSERT_TRUE(rig.act(MarkOutside{kOutside, 0.0}).accepted);
     EXPECT_EQ(rig.engine.speeds.size(), calls) << "the edge speed learns nothing";
     EXPECT_EQ(rig.status().outsideExamples.size(), 1U) << "kept for classify";
-    // No radius: the probe's (5 mm).
-    EXPECT_NEAR(rig.status().outsideExamples[0].radius, 5.0 / std::cbrt(2.0), 1e-6);
+    // No radius: the probe's (5 mm, 5 voxels along the finest axis).
+    EXPECT_NEAR(rig.status().outsideExamples[0].radius, 5.0, 1e-6);
     ASSERT_TRUE(rig.act(SetSpeed{SpeedKind::Classify}).accepted);
     EXPECT_EQ(rig.engine.speedKind(), SpeedKind::Classify) << "the examples were there";
     EXPECT_TRUE(rig.status().message.empty()) << rig.status().message;

@@ -43,6 +43,10 @@ TEST(WorkflowStroke, StrokeDabsLeaveNoGap) {
     }
     EXPECT_EQ(workflow::strokeDabs(points, 1.5, 12), std::nullopt) << "13 dabs needed";
     EXPECT_EQ(workflow::strokeDabs(std::vector<glm::dvec3>{{1, 2, 3}}, 1.0, 1)->size(), 1U);
+    // Through slices 3 pixels thick, 4 slices are 12 pixels: 8 steps of 1.5, not 3.
+    const std::vector<glm::dvec3> through{{0, 0, 0}, {0, 0, 4}};
+    EXPECT_EQ(workflow::strokeDabs(through, 1.5, 100, {1, 1, 3})->size(), 9U);
+    EXPECT_EQ(workflow::strokeDabs(through, 1.5, 100)->size(), 4U);
 }
 
 TEST(WorkflowStroke, AnAddStrokeSeedsAlongItsPathAsOneUndoStep) {
