@@ -20,9 +20,12 @@ Workflow::Outcome Workflow::on(const model::Correct& a) {
         status_.state == model::State::Evolving || status_.state == model::State::Paused;
     const SpeedChoice speedBefore = engineSpeed_;
     Outcome out = sphereEdit(a.voxel, a.radius, a.positive);
-    // The table then runs the solver from the surface this leaves. A correction that changed
-    // the speed (classify learning from its sphere) changed it everywhere: its run is global.
-    if (out.accepted && steering && status_.hasLevelSet && engineSpeed_ == speedBefore) {
+    // The table then runs the solver from the surface this leaves. An erase that changed the
+    // speed (classify learning from its sphere) changed it everywhere: its run is global, so
+    // that the tissue it names leaves the surface wherever it lies. An added part is missing
+    // where it was put: its run stays around it though the speed learnt from it too.
+    if (out.accepted && steering && status_.hasLevelSet &&
+        (engineSpeed_ == speedBefore || a.positive)) {
         reachAround(brushSphere(a.voxel, a.radius));
     }
     return out;

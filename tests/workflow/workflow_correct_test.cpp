@@ -201,6 +201,14 @@ TEST(WorkflowCorrect, ALaterOneRunsWithinItsReachUntilTheRunEnds) {
     ASSERT_TRUE(classify.act(model::Correct{{12.0, 6.0, 4.0}, false, 1.0}).accepted);
     EXPECT_EQ(classify.status().speedInForce, model::SpeedKind::Classify);
     EXPECT_FALSE(classify.engine.reach().has_value());
+    // An added part is missing where it was put: classify learns from it too, but its run
+    // stays around it (the sarcoma CT's leak came back on a positive click's global run).
+    const std::size_t trained = classify.engine.speeds.size();
+    ASSERT_TRUE(classify.act(model::Correct{{10.0, 8.0, 4.0}, true, 1.0}).accepted);
+    EXPECT_EQ(classify.engine.speeds.size(), trained + 1) << "it is an example";
+    ASSERT_TRUE(classify.engine.reach().has_value());
+    EXPECT_EQ(classify.engine.reach()->centre, glm::vec3(10.0F, 8.0F, 4.0F));
+    EXPECT_FLOAT_EQ(classify.engine.reach()->radius, 3.0F);
 
     workflow::Settings everywhere = testSettings();
     everywhere.correctionReach = 0.0;
