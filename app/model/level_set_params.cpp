@@ -52,6 +52,13 @@ float sphereDistance(const Sphere& s, const glm::vec3& voxel, const glm::vec3& s
     return (n - s.radius) / g;
 }
 
+VoxelBox sphereVoxelBox(const Sphere& s, const glm::vec3& scale, const glm::ivec3& dims) {
+    const glm::dvec3 c(s.centre);
+    const glm::dvec3 half = static_cast<double>(s.radius) / glm::dvec3(scale);
+    return {glm::max(glm::ivec3(glm::ceil(c - half)), glm::ivec3(0)),
+            glm::min(glm::ivec3(glm::floor(c + half)), dims - 1)};
+}
+
 void validateSphere(const Sphere& s, const glm::ivec3& dims) {
     if (!std::isfinite(s.radius) || s.radius <= 0.0F) {
         throw std::invalid_argument("sphere radius must be a positive number of voxels (got " +

@@ -87,6 +87,20 @@ inline glm::vec3 sphereHalfExtent(const Sphere& s, const glm::vec3& scale) {
     return s.radius / scale;
 }
 
+// Whether voxel centre `voxel` lies in the sphere (on its surface included), in double.
+inline bool sphereHolds(const Sphere& s, const glm::dvec3& voxel, const glm::vec3& scale) {
+    const glm::dvec3 d = (voxel - glm::dvec3(s.centre)) * glm::dvec3(scale);
+    return glm::dot(d, d) <= static_cast<double>(s.radius) * static_cast<double>(s.radius);
+}
+
+// The box of voxels a sphere may hold, clipped to a grid of `dims` (inclusive; empty where
+// hi < lo): what a CPU loop over a sphere's voxels visits before asking sphereHolds.
+struct VoxelBox {
+    glm::ivec3 lo{0};
+    glm::ivec3 hi{-1};
+};
+VoxelBox sphereVoxelBox(const Sphere& s, const glm::vec3& scale, const glm::ivec3& dims);
+
 std::string describe(const LevelSetParams& params);
 
 // A sphere whose side of the surface the operator fixed for the rest of the run

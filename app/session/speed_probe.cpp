@@ -10,15 +10,10 @@ namespace steerseg::session {
 
 SpeedProbe probeSpeed(const Volume& volume, const model::Sphere& sphere) {
     model::validateSphere(sphere, volume.dims());
-    const glm::dvec3 c(sphere.centre);
-    const glm::dvec3 scale(model::sphereScale(volume.geometry().spacing));
-    const double r = static_cast<double>(sphere.radius);
-    const glm::ivec3 dims = volume.dims();
-    const glm::ivec3 lo = glm::max(glm::ivec3(glm::ceil(c - r / scale)), glm::ivec3(0));
-    const glm::ivec3 hi = glm::min(glm::ivec3(glm::floor(c + r / scale)), dims - 1);
+    const glm::vec3 scale = model::sphereScale(volume.geometry().spacing);
+    const auto [lo, hi] = model::sphereVoxelBox(sphere, scale, volume.dims());
     const auto inside = [&](int i, int j, int k) {
-        const glm::dvec3 d = (glm::dvec3(i, j, k) - c) * scale;
-        return glm::dot(d, d) <= r * r;
+        return model::sphereHolds(sphere, glm::dvec3(i, j, k), scale);
     };
     double sum = 0.0;
     double sumSq = 0.0;

@@ -110,12 +110,11 @@ std::vector<std::uint8_t> thresholdMask(std::span<const float> values, float lo,
     return mask;
 }
 
-void applySphere(std::vector<float>& phi, const glm::ivec3& d, const model::Sphere& s, bool add,
-                 const glm::vec3& scale) {
+void applySphere(std::vector<float>& phi, const glm::ivec3& d, const model::Sphere& s, bool add) {
     for (int k = 0; k < d.z; ++k) {
         for (int j = 0; j < d.y; ++j) {
             for (int i = 0; i < d.x; ++i) {
-                const float sd = model::sphereDistance(s, glm::vec3(i, j, k), scale);
+                const float sd = model::sphereDistance(s, glm::vec3(i, j, k));
                 float& p = phi[linearIndex(d, i, j, k)];
                 p = clampPhi(add ? std::min(p, sd) : std::max(p, -sd));
             }

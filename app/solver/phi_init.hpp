@@ -26,10 +26,10 @@ std::vector<float> smoothMaskPhi(std::span<const std::uint8_t> mask, const glm::
 // 1 where lo <= value <= hi. Throws std::invalid_argument for lo > hi or NaN bounds.
 std::vector<std::uint8_t> thresholdMask(std::span<const float> values, float lo, float hi);
 
-// Union (add) or difference (remove) of a dense phi with a sphere, clamped; `scale` is what the
-// radius is measured in (model::sphereScale; the reference solver's scans are isotropic).
+// Union (add) or difference (remove) of a dense phi with a sphere, clamped. In voxel steps: the
+// reference solver's scans are isotropic, where a sphere round in mm is a ball of voxels.
 void applySphere(std::vector<float>& phi, const glm::ivec3& dims, const model::Sphere& sphere,
-                 bool add, const glm::vec3& scale = glm::vec3(1.0F));
+                 bool add);
 
 // 1 where phi < 0.
 std::vector<std::uint8_t> insideMask(std::span<const float> phi);

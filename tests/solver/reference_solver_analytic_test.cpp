@@ -111,6 +111,12 @@ TEST(LevelSetParams, ASphereCountsItsRadiusAlongTheFinestAxis) {
     EXPECT_FLOAT_EQ(sphereDistance(s, {16.0F, 10.0F, 10.0F}, thick), 2.0F);
     EXPECT_FLOAT_EQ(sphereDistance(s, {10.0F, 10.0F, 10.0F}, thick), -1.0F);
     EXPECT_FLOAT_EQ(sphereHalfExtent(s, thick).z, 1.0F);
+    EXPECT_TRUE(sphereHolds(s, {14.0, 10.0, 10.0}, thick));
+    EXPECT_TRUE(sphereHolds(s, {10.0, 10.0, 11.0}, thick));
+    EXPECT_FALSE(sphereHolds(s, {11.0, 10.0, 11.0}, thick));
+    const VoxelBox box = sphereVoxelBox(s, thick, {12, 30, 30});
+    EXPECT_EQ(box.lo, glm::ivec3(6, 6, 9));
+    EXPECT_EQ(box.hi, glm::ivec3(11, 14, 11)) << "clipped to the grid";
 }
 
 TEST(LevelSetParams, RejectsSpheresOutsideTheVolume) {

@@ -140,13 +140,11 @@ void FakeEngine::paint(const model::Sphere& s, std::uint8_t value) {
     }
     // Round in mm, as the real solver's spheres are (model::Sphere).
     const glm::vec3 scale = model::sphereScale(scan_.spacing);
-    const glm::vec3 half = model::sphereHalfExtent(s, scale);
-    const glm::ivec3 lo = glm::max(glm::ivec3(glm::ceil(s.centre - half)), glm::ivec3(0));
-    const glm::ivec3 hi = glm::min(glm::ivec3(glm::floor(s.centre + half)), d - 1);
+    const auto [lo, hi] = model::sphereVoxelBox(s, scale, d);
     for (int k = lo.z; k <= hi.z; ++k) {
         for (int j = lo.y; j <= hi.y; ++j) {
             for (int i = lo.x; i <= hi.x; ++i) {
-                if (model::sphereDistance(s, glm::vec3(i, j, k), scale) > 0.0F) {
+                if (!model::sphereHolds(s, glm::dvec3(i, j, k), scale)) {
                     continue;
                 }
                 std::uint8_t& m = mask_[static_cast<std::size_t>(i + d.x * (j + d.y * k))];
