@@ -18,6 +18,7 @@
 #include "scan/scan_reader.hpp"
 #include "steering/click_robot.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -89,7 +90,8 @@ const char* kindOf(int click, bool positive) {
     return click == 0 ? "initial" : (positive ? "positive" : "negative");
 }
 
-Json entry(int click, const bench::RobotClick& c, double radius, double dice, double nsd) {
+Json entry(int click, const bench::RobotClick& c, double radius,
+           const std::vector<std::uint8_t>& mask, double dice, double nsd) {
     Json j;
     j["click"] = click;
     j["kind"] = kindOf(click, c.positive);
@@ -97,6 +99,8 @@ Json entry(int click, const bench::RobotClick& c, double radius, double dice, do
     j["radius"] = radius;
     j["depth_mm"] = c.depthMm;
     j["component_voxels"] = c.componentVoxels;
+    j["mask_voxels"] =
+        std::count_if(mask.begin(), mask.end(), [](std::uint8_t v) { return v != 0; });
     j["dice"] = dice;
     j["nsd"] = nsd;
     return j;
@@ -127,7 +131,7 @@ Json robot(const bench::MaskGrid& grid, const std::vector<std::uint8_t>& label, 
         Json extra = Json::object();
         const std::vector<std::uint8_t> mask = act(n, *c, radius, extra);
         const double d = bench::dice(mask, label);
-        Json j = entry(n, *c, radius, d, bench::surfaceDice(grid, mask, label, o.nsdMm));
+        Json j = entry(n, *c, radius, mask, d, bench::surfaceDice(grid, mask, label, o.nsdMm));
         j.update(extra);
         std::fprintf(stderr, "  click %2d %-8s (%d, %d, %d) r %.1f: Dice %.3f%s\n", n,
                      kindOf(n, c->positive), c->voxel.x, c->voxel.y, c->voxel.z, radius, d,
@@ -195,6 +199,7 @@ int run(const Options& o) {
                 const engine::ClickOutcome r = session.apply(click, o.maxIterations);
                 extra["seconds"] = r.seconds;
                 extra["first_change_seconds"] = r.firstChangeSeconds;
+                extra["taken_back"] = r.takenBack;
                 const engine::WorkSeconds& w = r.firstChangeWork;
                 extra["first_change_breakdown"] = {{"snapshot", w.snapshot},
                                                    {"edit", w.edit},

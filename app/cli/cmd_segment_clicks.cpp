@@ -141,6 +141,7 @@ int runSegmentClicks(const Args& args) {
         j["T"] = r.T;
         j["eps"] = r.eps;
         j["barriers"] = r.barriers;
+        j["taken_back"] = r.takenBack;
         if (reference) {
             j["dice"] = maskOverlap(session.mask(), *reference, referenceLabel).dice();
         }

@@ -207,6 +207,9 @@ void readBrush(TableReader& t, BrushConfig& b) {
     if (auto v = t.number("correction_reach", {0.0, 100.0})) {
         b.correctionReach = *v;
     }
+    if (auto v = t.number("erase_run_growth", {0.0, 100.0})) {
+        b.eraseRunGrowth = *v;
+    }
 }
 
 void readExport(TableReader& t, ExportConfig& e) {

@@ -60,6 +60,7 @@ struct ProbeConfig {
 struct BrushConfig {
     double radius = 3.0;          // voxels
     double correctionReach = 3.0; // brush radii around a correction its run may move (0: all)
+    double eraseRunGrowth = 0.25; // an erase's global run's growth before it is taken back
     bool operator==(const BrushConfig&) const = default;
 };
 

@@ -42,6 +42,7 @@ ClickSession::ClickSession(const std::string& scanPath, const workflow::Settings
 ClickOutcome ClickSession::apply(const model::Correct& click, int maxIterations) {
     const auto start = Clock::now();
     const WorkSeconds workBefore = engine_.workSeconds();
+    const int takenBackBefore = flow_.status().eraseRunsTakenBack;
     const workflow::Workflow::Outcome out = flow_.handle(click);
     if (!out.accepted) {
         throw std::runtime_error("the click was refused: " + out.reason);
@@ -80,6 +81,7 @@ ClickOutcome ClickSession::apply(const model::Correct& click, int maxIterations)
     r.T = static_cast<double>(flow_.status().params.T);
     r.eps = static_cast<double>(flow_.status().params.eps);
     r.barriers = engine_.barriers();
+    r.takenBack = flow_.status().eraseRunsTakenBack != takenBackBefore;
     return r;
 }
 

@@ -29,6 +29,7 @@ struct ClickOutcome {
     double T = 0.0;
     double eps = 0.0;
     int barriers = 0;
+    bool takenBack = false; // an erase's run grew too far and went back to the erase
 };
 
 class ClickSession {

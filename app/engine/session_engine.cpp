@@ -241,7 +241,7 @@ bool SessionEngine::addBarrier(const model::Barrier& barrier) {
     return true;
 }
 
-void SessionEngine::setReach(const std::optional<model::Sphere>& reach) {
+void SessionEngine::setReach(const std::optional<model::Reach>& reach) {
     if (reach || session_) {
         requireSession().setReach(reach);
     }

@@ -58,7 +58,7 @@ class SessionEngine final : public workflow::Engine {
     bool addBarrier(const model::Barrier& barrier) override;
     [[nodiscard]] int barriers() const override { return static_cast<int>(barriers_.size()); }
     [[nodiscard]] const std::vector<model::Barrier>& barrierList() const { return barriers_; }
-    void setReach(const std::optional<model::Sphere>& reach) override;
+    void setReach(const std::optional<model::Reach>& reach) override;
     void clearLevelSet() override;
     [[nodiscard]] bool hasLevelSet() const override;
     void setParams(const model::LevelSetParams& params) override;

@@ -13,6 +13,7 @@ workflow::Settings workflowSettings(const config::KioskConfig& config) {
     s.probeRadiusMm = config.probe.radiusMm;
     s.defaultRadius = config.brush.radius;
     s.correctionReach = config.brush.correctionReach;
+    s.eraseRunGrowth = config.brush.eraseRunGrowth;
     s.defaultSpeed = config.speed.kind;
     s.classifyWithinWindow = config.speed.classifyWithinWindow;
     s.classifyPlaceReach = config.speed.classifyPlaceReach;

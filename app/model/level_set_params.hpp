@@ -61,6 +61,15 @@ struct Sphere {
     bool operator==(const Sphere&) const = default;
 };
 
+// Where a run may move the surface (workflow::Engine::setReach): within the sphere both ways;
+// outside it phi stays, or with `recedeOutside` it may only rise, so that the surface there
+// withdraws but never advances (an erase's run that grew too far: docs/steering.md).
+struct Reach {
+    Sphere sphere;
+    bool recedeOutside = false;
+    bool operator==(const Reach&) const = default;
+};
+
 // Throws std::invalid_argument unless the radius is positive, finite and at most the volume's
 // diagonal (dims, in voxels) and the centre lies inside the volume. Every sphere edit (the GPU
 // and reference solvers' addSphere/removeSphere, the command line's --seed/--erase) goes through

@@ -90,7 +90,7 @@ void Session::clearBarriers() {
     gpu_->solver.clearBarriers();
 }
 
-void Session::setReach(const std::optional<model::Sphere>& reach) {
+void Session::setReach(const std::optional<model::Reach>& reach) {
     gpu_->solver.setReach(reach);
 }
 

@@ -73,7 +73,7 @@ class Session {
     void holdBarrier(const model::Barrier& barrier);
     void clearBarriers();
     // Where the surface may move (solver::LevelSetSolver::setReach); nullopt: everywhere.
-    void setReach(const std::optional<model::Sphere>& reach);
+    void setReach(const std::optional<model::Reach>& reach);
     // A mask on the scan's grid (inside where > 0.5) replaces the level set. Throws
     // std::runtime_error naming the file when it cannot be read or its grid differs.
     void startFromMask(const std::filesystem::path& mask);

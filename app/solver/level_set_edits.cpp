@@ -160,9 +160,9 @@ void LevelSetSolver::clearBarriers() {
     noteChange();
 }
 
-void LevelSetSolver::setReach(const std::optional<model::Sphere>& reach) {
+void LevelSetSolver::setReach(const std::optional<model::Reach>& reach) {
     if (reach) {
-        model::validateSphere(*reach, dims_);
+        model::validateSphere(reach->sphere, dims_);
     }
     reach_ = reach;
     uploadReach();
@@ -171,9 +171,11 @@ void LevelSetSolver::setReach(const std::optional<model::Sphere>& reach) {
 
 void LevelSetSolver::uploadReach() {
     const GLuint p = programs_->updatePhi.id();
-    const model::Sphere s = reach_.value_or(model::Sphere{}); // radius 0: everywhere
+    const model::Reach r = reach_.value_or(model::Reach{}); // radius 0: everywhere
+    const model::Sphere& s = r.sphere;
     glProgramUniform4f(p, glGetUniformLocation(p, "reach"), s.centre.x, s.centre.y, s.centre.z,
                        s.radius);
+    glProgramUniform1i(p, glGetUniformLocation(p, "recedeOutside"), r.recedeOutside ? 1 : 0);
 }
 
 // Sets the barrier uniforms of the pass that evaluates the speed (barrier_speed.glsl), whose

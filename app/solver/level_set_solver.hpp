@@ -89,8 +89,9 @@ class LevelSetSolver {
     [[nodiscard]] const std::vector<model::Barrier>& barriers() const { return barriers_; }
     // Where the surface may move (shaders/solver/update_phi.comp): a sphere, for a correction's
     // run, which should change the surface around the correction and leave the rest as the
-    // operator accepted it; nullopt: everywhere. Validated as a sphere (std::invalid_argument).
-    void setReach(const std::optional<model::Sphere>& reach);
+    // operator accepted it (or only withdraw there: model::Reach); nullopt: everywhere.
+    // Validated as a sphere (std::invalid_argument).
+    void setReach(const std::optional<model::Reach>& reach);
     // Replace the level set.
     // `intensities`: the scan's real-unit values, i fastest (the solver keeps no host copy).
     void initFromThreshold(std::span<const float> intensities, float lo, float hi);
@@ -180,7 +181,7 @@ class LevelSetSolver {
     bool settled_ = false; // SettleWatch at the last check
     bool wakePending_ = true;
     std::vector<model::Barrier> barriers_;
-    std::optional<model::Sphere> reach_;
+    std::optional<model::Reach> reach_;
     LeakWatch leakWatch_;
     SettleWatch settleWatch_;
     RunawayWatch runawayWatch_;

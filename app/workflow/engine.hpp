@@ -103,7 +103,7 @@ class Engine {
     // everywhere. Not part of the level set's state: the workflow sets it for a correction's
     // run and clears it when the run stops. std::invalid_argument for a sphere the scan
     // cannot hold.
-    virtual void setReach(const std::optional<model::Sphere>& reach) = 0;
+    virtual void setReach(const std::optional<model::Reach>& reach) = 0;
     virtual void clearLevelSet() = 0;
     [[nodiscard]] virtual bool hasLevelSet() const = 0;
 

@@ -37,6 +37,13 @@ struct Settings {
     // A later correction's run moves the surface only within this many of its brush radii of
     // the click (docs/steering.md): the rest stays as the operator accepted it. 0: everywhere.
     double correctionReach = 3.0;
+    // An erase that changed the speed runs over the whole surface, so that the tissue it names
+    // leaves it wherever it lies; that run may leave the surface larger than before the erase
+    // by at most this fraction of its volume. Past it the front is creeping through tissue the
+    // speed cannot tell from the structure (docs/steering.md): the run is taken back to the
+    // erase and goes on with the surface beyond the correction's reach only withdrawing.
+    // 0: no limit.
+    double eraseRunGrowth = 0.25;
     // Default exports: <folder>/<scan>_<UTC time>.<format>.
     std::filesystem::path exportFolder = ".";
     // A default export writes one file per format, in this order ("nii.gz", "nii", "nrrd": the

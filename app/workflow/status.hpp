@@ -80,6 +80,9 @@ struct Status {
     double evolvedTime = 0.0;
     double volumeMl = 0.0;
     bool converged = false;
+    // Erase runs that grew past Settings::eraseRunGrowth and went back to their erase, since
+    // the scan was loaded (docs/steering.md).
+    int eraseRunsTakenBack = 0;
     bool canUndo = false;
     bool canRedo = false;
     std::string preset;                     // the last preset applied ("" = none)

@@ -226,6 +226,7 @@ void Workflow::forgetScan() {
     status_.evolvedTime = 0.0;
     status_.volumeMl = 0.0;
     status_.converged = false;
+    status_.eraseRunsTakenBack = 0;
     status_.preset.clear();
     status_.exportedPath.clear();
     status_.exportedFiles.clear();

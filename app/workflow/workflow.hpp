@@ -118,7 +118,14 @@ class Workflow {
     // A correction's run moves the surface only near it (Settings::correctionReach); the
     // reach ends with the run, or when the speed or its parameters change.
     void reachAround(const model::Sphere& brush);
+    // The sphere a correction's run may move the surface in; nullopt: everywhere.
+    [[nodiscard]] std::optional<model::Sphere> reachOf(const model::Sphere& brush) const;
     void endReach();
+    // An erase's run over the whole surface is watched (Settings::eraseRunGrowth): grown past
+    // its limit, it is taken back to the erase and goes on withdrawing only beyond the reach.
+    void watchEraseRun(const model::Sphere& brush, double volumeBeforeMl);
+    // True when it took the run back.
+    bool takeBackEraseRun();
     Outcome on(const model::Quit& a);
 
     // States and transitions (workflow.cpp).
@@ -204,7 +211,13 @@ class Workflow {
     bool scanLoaded_ = false;
     bool dirty_ = false; // the level set changed since it was last exported
     bool quit_ = false;
-    std::optional<model::Sphere> reach_; // a correction's run's, while it lasts
+    std::optional<model::Reach> reach_; // a correction's run's, while it lasts
+    struct EraseRunWatch {
+        model::Sphere reach;  // where the run moves both ways once taken back
+        double limitMl = 0.0; // the volume it may not pass
+        SnapshotId start = 0; // the surface the erase left (its undo entry's)
+    };
+    std::optional<EraseRunWatch> eraseWatch_; // an erase's global run's, while it lasts
     // Transitions made while handling one action, audited after the action's own record.
     struct PendingTransition {
         model::State from;

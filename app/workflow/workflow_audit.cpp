@@ -81,7 +81,7 @@ nlohmann::json Workflow::resultOf(const model::Action& action) const {
                 nlohmann::json r = params();
                 r.update(levelSet());
                 r["barriers"] = engine_.barriers();
-                r["reach"] = reach_ ? nlohmann::json(reach_->radius) : nlohmann::json();
+                r["reach"] = reach_ ? nlohmann::json(reach_->sphere.radius) : nlohmann::json();
                 return r;
             } else if constexpr (std::is_same_v<A, model::PaintStroke>) {
                 nlohmann::json r = levelSet();

@@ -19,25 +19,40 @@ Workflow::Outcome Workflow::on(const model::Correct& a) {
     const bool steering =
         status_.state == model::State::Evolving || status_.state == model::State::Paused;
     const SpeedChoice speedBefore = engineSpeed_;
+    const double volumeBeforeMl = status_.volumeMl;
     Outcome out = sphereEdit(a.voxel, a.radius, a.positive);
+    if (!out.accepted || !steering || !status_.hasLevelSet) {
+        return out;
+    }
     // The table then runs the solver from the surface this leaves. An erase that changed the
     // speed (classify learning from its sphere) changed it everywhere: its run is global, so
-    // that the tissue it names leaves the surface wherever it lies. An added part is missing
-    // where it was put: its run stays around it though the speed learnt from it too.
-    if (out.accepted && steering && status_.hasLevelSet &&
-        (engineSpeed_ == speedBefore || a.positive)) {
-        reachAround(brushSphere(a.voxel, a.radius));
+    // that the tissue it names leaves the surface wherever it lies, and watched, since the
+    // same run goes on advancing wherever the speed allows. An added part is missing where it
+    // was put: its run stays around it though the speed learnt from it too.
+    const model::Sphere brush = brushSphere(a.voxel, a.radius);
+    if (engineSpeed_ == speedBefore || a.positive) {
+        reachAround(brush);
+    } else {
+        watchEraseRun(brush, volumeBeforeMl);
     }
     return out;
 }
 
-void Workflow::reachAround(const model::Sphere& brush) {
+std::optional<model::Sphere> Workflow::reachOf(const model::Sphere& brush) const {
     const double radius = settings_.correctionReach * static_cast<double>(brush.radius);
     if (radius <= 0.0 || radius >= glm::length(glm::dvec3(status_.scan.dims))) {
+        return std::nullopt;
+    }
+    return model::Sphere{brush.centre, static_cast<float>(radius)};
+}
+
+void Workflow::reachAround(const model::Sphere& brush) {
+    const std::optional<model::Sphere> sphere = reachOf(brush);
+    if (!sphere) {
         endReach();
         return;
     }
-    const model::Sphere reach{brush.centre, static_cast<float>(radius)};
+    const model::Reach reach{*sphere};
     try {
         engine_.setReach(reach);
         reach_ = reach;
@@ -48,6 +63,7 @@ void Workflow::reachAround(const model::Sphere& brush) {
 }
 
 void Workflow::endReach() {
+    eraseWatch_.reset();
     if (!reach_) {
         return;
     }
@@ -57,6 +73,38 @@ void Workflow::endReach() {
     } catch (const std::exception&) {
         // An engine that fails here fails the next step too, which says so.
     }
+}
+
+void Workflow::watchEraseRun(const model::Sphere& brush, double volumeBeforeMl) {
+    const std::optional<model::Sphere> reach = reachOf(brush);
+    const UndoEntry* erase = undo_.undoTop();
+    if (settings_.eraseRunGrowth <= 0.0 || !reach || erase == nullptr || !erase->after.snapshot ||
+        !(volumeBeforeMl > 0.0)) {
+        return;
+    }
+    eraseWatch_ = EraseRunWatch{*reach, volumeBeforeMl * (1.0 + settings_.eraseRunGrowth),
+                                *erase->after.snapshot};
+}
+
+// The volume read while evolving may lag the level set by a few steps: the run is taken back
+// a little later than it passed the limit, which changes nothing it keeps.
+bool Workflow::takeBackEraseRun() {
+    if (!eraseWatch_ || !(status_.volumeMl > eraseWatch_->limitMl)) {
+        return false;
+    }
+    const EraseRunWatch watch = *eraseWatch_;
+    eraseWatch_.reset();
+    engine_.restore(watch.start);
+    const model::Reach reach{watch.reach, true};
+    engine_.setReach(reach);
+    reach_ = reach;
+    refreshEngineStatus();
+    ++status_.eraseRunsTakenBack;
+    status_.message =
+        "the erase's run grew the surface by more than " +
+        std::to_string(static_cast<int>(std::lround(settings_.eraseRunGrowth * 100.0))) +
+        " %: back to the erase, and away from it the surface only withdraws";
+    return true;
 }
 
 Workflow::Outcome Workflow::first(const model::Correct& a) {

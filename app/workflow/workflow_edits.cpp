@@ -34,6 +34,7 @@ void Workflow::refreshUndoFlags() {
 }
 
 void Workflow::afterLevelSetChange() {
+    eraseWatch_.reset(); // the surface it would go back to is not this one's
     dirty_ = true;
     status_.converged = false;
     refreshEngineStatus();

@@ -21,6 +21,13 @@ model::StepResult Workflow::evolve(int iterations) {
         dirty_ = true;
         status_.converged = r.converged;
         refreshEngineStatus();
+        if (takeBackEraseRun()) {
+            // The run goes on from the erase: what this step said of its end is the grown one's.
+            r.converged = false;
+            r.stopReason = model::StopReason::IterationLimit;
+            r.leak.reset();
+            status_.converged = false;
+        }
     } catch (const std::exception& e) {
         enter(model::State::Error, oneLine(e.what()));
         noteAuditError();

@@ -21,8 +21,11 @@ uniform float alpha;
 uniform float sleepTolerance; // voxels per step
 // Where phi may change (LevelSetSolver::setReach): centre (voxel indices) and radius (voxels) of
 // a correction's reach; radius <= 0: everywhere. Outside, the step leaves phi as it is, so the
-// surface there stays what the operator accepted, whatever the speed says.
+// surface there stays what the operator accepted, whatever the speed says; with recedeOutside
+// phi there may only rise: the surface withdraws from what the speed refuses, and advances
+// nowhere (an erase's run that grew too far, model::Reach).
 uniform vec4 reach;
+uniform bool recedeOutside;
 
 bool inReach(ivec3 g) {
     return reach.w <= 0.0 || sphereNorm(vec3(g) - reach.xyz) <= reach.w;
@@ -74,8 +77,10 @@ void main() {
         PhiStencil s = tileStencil(l);
         float out_ = s.c;
         if (all(lessThan(g, volumeDims))) {
-            if (dt > 0.0 && inNarrowBand(s) && inReach(g)) {
-                out_ = phiStep(s, cachedSpeed(slot, v), alpha, dt); // measure_speed's
+            bool within = inReach(g);
+            if (dt > 0.0 && inNarrowBand(s) && (within || recedeOutside)) {
+                float next = phiStep(s, cachedSpeed(slot, v), alpha, dt); // measure_speed's
+                out_ = within ? next : max(next, s.c);
             }
             state |= voxelState(l, out_);
             if (abs(out_ - s.c) > tolerance) {

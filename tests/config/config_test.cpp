@@ -80,6 +80,7 @@ std::vector<std::string> differences(const KioskConfig& a, const KioskConfig& b)
     field("probe.eps_floor", a.probe.epsFloor == b.probe.epsFloor);
     field("brush.radius", a.brush.radius == b.brush.radius);
     field("brush.correction_reach", a.brush.correctionReach == b.brush.correctionReach);
+    field("brush.erase_run_growth", a.brush.eraseRunGrowth == b.brush.eraseRunGrowth);
     field("speed.kind", a.speed.kind == b.speed.kind);
     field("speed.classify_within_window",
           a.speed.classifyWithinWindow == b.speed.classifyWithinWindow);
@@ -221,7 +222,7 @@ TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
     other.frame = {50.0, 0.25, 2, 99, 0.75};
     other.ui = {12.0, 2.0, 900};
     other.probe = {7.0, 3.0, 20.0};
-    other.brush = {9.0, 1.5};
+    other.brush = {9.0, 1.5, 0.5};
     other.speed = {model::SpeedKind::Edge, 40, 0.5, 0.25, false};
     other.exports = {"elsewhere", {"nrrd"}};
     other.audit = {"elsewhere.jsonl"};
@@ -241,9 +242,9 @@ TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
     for (config::InputDeviceConfig& d : other.input.devices) {
         d = {d.name + "x", config::InputDeviceKind::GpioLed, 1, 2, 3, 4, "/x", "c", "l", true, 1.0};
     }
-    // 34 plain fields, 6 per preset (its name is its identity), every binding.
+    // 36 plain fields, 6 per preset (its name is its identity), every binding.
     ASSERT_EQ(differences(other, config::defaultConfig()).size(),
-              35U + 6U * other.presets.size() + other.bindings.keys.size() +
+              36U + 6U * other.presets.size() + other.bindings.keys.size() +
                   other.bindings.knobs.size() + other.bindings.buttons.size() +
                   other.input.devices.size());
 
@@ -356,6 +357,7 @@ TEST_F(ConfigTest, Speed) {
                    "true or false");
     expectRejected("[speed]\nclassify_place_reach = -1\n", 2, "speed.classify_place_reach",
                    "at least 0");
+    expectRejected("[brush]\nerase_run_growth = -0.1\n", 2, "brush.erase_run_growth", "at least 0");
     expectRejected("[speed]\nsmooth_iterations = 1001\n", 2, "speed.smooth_iterations",
                    "at most 1000");
     expectRejected("[speed]\nsmooth_iterations = -1\n", 2, "speed.smooth_iterations", "at least 0");

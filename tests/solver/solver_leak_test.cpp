@@ -168,7 +168,7 @@ TEST_F(SolverLeakTest, AReachMovesTheSurfaceOnlyAroundTheCorrection) {
     solver.setParams(kParams);
     solver.addSphere({kBallA, 3.0F});
     solver.addSphere({kBallB, 3.0F});
-    solver.setReach(Sphere{kBallA, kBallRadius + 3.0F});
+    solver.setReach(Reach{Sphere{kBallA, kBallRadius + 3.0F}});
     EXPECT_EQ(solver.runUntilConverged(3000).stopReason, StopReason::Converged);
     std::vector<std::uint8_t> m = solver.readMask();
     EXPECT_EQ(inAt(m, kBallA + glm::vec3(9.0F, 0.0F, 0.0F)), 1) << "ball A fills";
@@ -180,7 +180,31 @@ TEST_F(SolverLeakTest, AReachMovesTheSurfaceOnlyAroundTheCorrection) {
     m = solver.readMask();
     EXPECT_EQ(inAt(m, kBallB + glm::vec3(6.0F, 0.0F, 0.0F)), 1) << "lifted, ball B fills";
     EXPECT_EQ(inAt(m, {kNeckMiddleX, 16.0F, 16.0F}), 1);
-    EXPECT_THROW(solver.setReach(Sphere{{400.0F, 16.0F, 16.0F}, 3.0F}), std::invalid_argument);
+    EXPECT_THROW(solver.setReach(Reach{Sphere{{400.0F, 16.0F, 16.0F}, 3.0F}}),
+                 std::invalid_argument);
+}
+
+// A reach that recedes outside (an erase's run taken back, docs/steering.md): beyond it the
+// surface withdraws from what the speed refuses and advances nowhere; the plain reach leaves
+// both as they are.
+TEST_F(SolverLeakTest, BeyondARecedingReachTheSurfaceOnlyWithdraws) {
+    const std::vector<float> volume = dumbbell();
+    const glm::vec3 stray{54.0F, 4.0F, 4.0F}; // background, 17 voxels from ball B's centre
+    for (const bool recede : {true, false}) {
+        LevelSetSolver solver(volume, kDims);
+        solver.setParams(kParams);
+        solver.addSphere({kBallA, 3.0F});
+        solver.addSphere({kBallB, 3.0F});
+        solver.addSphere({stray, 2.5F});
+        solver.setReach(Reach{Sphere{kBallA, kBallRadius + 3.0F}, recede});
+        solver.runUntilConverged(3000);
+        const std::vector<std::uint8_t> m = solver.readMask();
+        EXPECT_EQ(inAt(m, kBallA + glm::vec3(9.0F, 0.0F, 0.0F)), 1) << "ball A fills";
+        EXPECT_EQ(inAt(m, kBallB), 1) << "ball B's seed stays";
+        EXPECT_EQ(inAt(m, kBallB + glm::vec3(6.0F, 0.0F, 0.0F)), 0) << "and does not grow";
+        EXPECT_EQ(inAt(m, {kNeckMiddleX, 16.0F, 16.0F}), 0) << "the front stops at the reach";
+        EXPECT_EQ(inAt(m, stray), recede ? 0 : 1) << (recede ? "withdraws" : "stays");
+    }
 }
 
 TEST_F(SolverLeakTest, RefusesMoreBarriersThanTheShaderHolds) {

@@ -170,7 +170,7 @@ void FakeEngine::erase(const model::Sphere& sphere) {
     paint(sphere, 0);
 }
 
-void FakeEngine::setReach(const std::optional<model::Sphere>& reach) {
+void FakeEngine::setReach(const std::optional<model::Reach>& reach) {
     if (reach) {
         requireScan("setReach");
     }
@@ -249,6 +249,9 @@ model::StepResult FakeEngine::step(int iterations) {
     }
     if (!stepError.empty()) {
         throw std::runtime_error(stepError);
+    }
+    if (stepGrows) {
+        paint(*stepGrows, 1);
     }
     iterations_ += iterations;
     sinceChange_ += iterations;

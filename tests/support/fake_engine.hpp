@@ -36,6 +36,8 @@ class FakeEngine : public workflow::Engine {
     std::string speedError;
     double probeStddev = 10.0; // the spread every probe reports
     int convergeAfter = 40;    // iterations without an edit or new parameters until converged
+    // Set: every step paints this sphere inside, as a front creeping there would (reach or not).
+    std::optional<model::Sphere> stepGrows;
     bool writeExports = false; // exportMask writes a small file at the path
 
     // --- what happened ----------------------------------------------------------------------
@@ -65,8 +67,8 @@ class FakeEngine : public workflow::Engine {
     bool addBarrier(const model::Barrier& barrier) override;
     [[nodiscard]] int barriers() const override { return static_cast<int>(barriers_.size()); }
     [[nodiscard]] const std::vector<model::Barrier>& barrierList() const { return barriers_; }
-    void setReach(const std::optional<model::Sphere>& reach) override;
-    [[nodiscard]] const std::optional<model::Sphere>& reach() const { return reach_; }
+    void setReach(const std::optional<model::Reach>& reach) override;
+    [[nodiscard]] const std::optional<model::Reach>& reach() const { return reach_; }
     void clearLevelSet() override;
     [[nodiscard]] bool hasLevelSet() const override { return inside_ > 0; }
     void setParams(const model::LevelSetParams& params) override;
@@ -105,7 +107,7 @@ class FakeEngine : public workflow::Engine {
     model::LevelSetParams params_;
     workflow::SpeedChoice speed_;
     std::vector<model::Barrier> barriers_;
-    std::optional<model::Sphere> reach_;
+    std::optional<model::Reach> reach_;
     std::map<workflow::SnapshotId, LevelSet> snapshots_;
     workflow::SnapshotId nextId_ = 1;
     mutable int misuse_ = 0;

@@ -176,8 +176,8 @@ TEST(WorkflowCorrect, ALaterOneRunsWithinItsReachUntilTheRunEnds) {
     ASSERT_TRUE(r.act(model::Pause{}).accepted);
     ASSERT_TRUE(r.act(model::Correct{{10.0, 6.0, 4.0}, false, 1.5}).accepted);
     ASSERT_TRUE(r.engine.reach().has_value());
-    EXPECT_EQ(r.engine.reach()->centre, glm::vec3(10.0F, 6.0F, 4.0F));
-    EXPECT_FLOAT_EQ(r.engine.reach()->radius, 4.5F); // 3 x the brush
+    EXPECT_EQ(r.engine.reach()->sphere.centre, glm::vec3(10.0F, 6.0F, 4.0F));
+    EXPECT_FLOAT_EQ(r.engine.reach()->sphere.radius, 4.5F); // 3 x the brush
     for (int i = 0; i < 100 && r.state() == State::Evolving; ++i) {
         r.wf->evolve(10);
     }
@@ -207,8 +207,8 @@ TEST(WorkflowCorrect, ALaterOneRunsWithinItsReachUntilTheRunEnds) {
     ASSERT_TRUE(classify.act(model::Correct{{10.0, 8.0, 4.0}, true, 1.0}).accepted);
     EXPECT_EQ(classify.engine.speeds.size(), trained + 1) << "it is an example";
     ASSERT_TRUE(classify.engine.reach().has_value());
-    EXPECT_EQ(classify.engine.reach()->centre, glm::vec3(10.0F, 8.0F, 4.0F));
-    EXPECT_FLOAT_EQ(classify.engine.reach()->radius, 3.0F);
+    EXPECT_EQ(classify.engine.reach()->sphere.centre, glm::vec3(10.0F, 8.0F, 4.0F));
+    EXPECT_FLOAT_EQ(classify.engine.reach()->sphere.radius, 3.0F);
 
     workflow::Settings everywhere = testSettings();
     everywhere.correctionReach = 0.0;
@@ -217,6 +217,50 @@ TEST(WorkflowCorrect, ALaterOneRunsWithinItsReachUntilTheRunEnds) {
     ASSERT_TRUE(all.act(model::Correct{{8.0, 6.0, 4.0}, true, 2.0}).accepted);
     ASSERT_TRUE(all.act(model::Correct{{12.0, 6.0, 4.0}, true, 1.0}).accepted);
     EXPECT_FALSE(all.engine.reach().has_value());
+}
+
+// An erase that changed the speed runs over the whole surface, watched: grown by more than
+// Settings::eraseRunGrowth of what the surface held before it, the run goes back to the erase
+// and on from there, beyond the erase's reach only withdrawing.
+TEST(WorkflowCorrect, AnEraseRunThatGrowsTooFarIsTakenBackToTheErase) {
+    for (const double growth : {0.25, 0.0, 10.0}) {
+        workflow::Settings learning = testSettings();
+        learning.defaultSpeed = model::SpeedKind::Classify;
+        learning.eraseRunGrowth = growth;
+        Rig r(learning);
+        r.load();
+        ASSERT_TRUE(r.act(model::Correct{{8.0, 6.0, 4.0}, true, 2.0}).accepted);
+        ASSERT_TRUE(r.act(model::Pause{}).accepted);
+        const std::size_t held = r.engine.insideVoxels();
+        ASSERT_TRUE(r.act(model::Correct{{10.0, 6.0, 4.0}, false, 1.0}).accepted);
+        ASSERT_EQ(r.status().speedInForce, model::SpeedKind::Classify);
+        ASSERT_FALSE(r.engine.reach().has_value()) << "its run is the whole surface's";
+        const std::size_t erased = r.engine.insideVoxels();
+        ASSERT_LT(erased, held);
+        // A creep far from the erase, as big again as the surface.
+        r.engine.stepGrows = model::Sphere{{3.0F, 6.0F, 4.0F}, 2.0F};
+        r.wf->evolve(10);
+        EXPECT_EQ(r.state(), State::Evolving);
+        if (growth != 0.25) {
+            EXPECT_TRUE(r.engine.inside({3, 6, 4})) << "no limit, or far above it";
+            EXPECT_FALSE(r.engine.reach().has_value());
+            continue;
+        }
+        EXPECT_FALSE(r.engine.inside({3, 6, 4})) << "taken back";
+        EXPECT_EQ(r.engine.insideVoxels(), erased) << "to the surface the erase left";
+        ASSERT_TRUE(r.engine.reach().has_value());
+        EXPECT_TRUE(r.engine.reach()->recedeOutside);
+        EXPECT_EQ(r.engine.reach()->sphere.centre, glm::vec3(10.0F, 6.0F, 4.0F));
+        EXPECT_FLOAT_EQ(r.engine.reach()->sphere.radius, 3.0F); // 3 x the brush
+        EXPECT_NE(r.status().message.find("back to the erase"), std::string::npos)
+            << r.status().message;
+        EXPECT_TRUE(r.status().canUndo) << "the erase is still one undo step";
+        EXPECT_EQ(r.status().eraseRunsTakenBack, 1);
+        // Once: the run goes on from there, whatever it grows to (this fake ignores the reach).
+        r.wf->evolve(10);
+        EXPECT_TRUE(r.engine.inside({3, 6, 4}));
+        EXPECT_TRUE(r.engine.reach()->recedeOutside);
+    }
 }
 
 TEST(WorkflowCorrect, ReviewAndDoneRefuseIt) {
