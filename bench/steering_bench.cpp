@@ -200,6 +200,7 @@ int run(const Options& o) {
                 extra["seconds"] = r.seconds;
                 extra["first_change_seconds"] = r.firstChangeSeconds;
                 extra["taken_back"] = r.takenBack;
+                extra["withdraw_only"] = r.withdrawOnly;
                 const engine::WorkSeconds& w = r.firstChangeWork;
                 extra["first_change_breakdown"] = {{"snapshot", w.snapshot},
                                                    {"edit", w.edit},

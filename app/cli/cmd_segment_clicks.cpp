@@ -142,6 +142,7 @@ int runSegmentClicks(const Args& args) {
         j["eps"] = r.eps;
         j["barriers"] = r.barriers;
         j["taken_back"] = r.takenBack;
+        j["withdraw_only"] = r.withdrawOnly;
         if (reference) {
             j["dice"] = maskOverlap(session.mask(), *reference, referenceLabel).dice();
         }

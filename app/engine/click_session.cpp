@@ -43,6 +43,7 @@ ClickOutcome ClickSession::apply(const model::Correct& click, int maxIterations)
     const auto start = Clock::now();
     const WorkSeconds workBefore = engine_.workSeconds();
     const int takenBackBefore = flow_.status().eraseRunsTakenBack;
+    const int withdrawOnlyBefore = flow_.status().erasesWithdrawOnly;
     const workflow::Workflow::Outcome out = flow_.handle(click);
     if (!out.accepted) {
         throw std::runtime_error("the click was refused: " + out.reason);
@@ -82,6 +83,7 @@ ClickOutcome ClickSession::apply(const model::Correct& click, int maxIterations)
     r.eps = static_cast<double>(flow_.status().params.eps);
     r.barriers = engine_.barriers();
     r.takenBack = flow_.status().eraseRunsTakenBack != takenBackBefore;
+    r.withdrawOnly = flow_.status().erasesWithdrawOnly != withdrawOnlyBefore;
     return r;
 }
 

@@ -29,7 +29,8 @@ struct ClickOutcome {
     double T = 0.0;
     double eps = 0.0;
     int barriers = 0;
-    bool takenBack = false; // an erase's run grew too far and went back to the erase
+    bool takenBack = false;    // an erase's run grew too far and went back to the erase
+    bool withdrawOnly = false; // an erase's run withdrew beyond its reach from the start
 };
 
 class ClickSession {

@@ -41,7 +41,8 @@ struct Settings {
     // leaves it wherever it lies; that run may leave the surface larger than before the erase
     // by at most this fraction of its volume. Past it the front is creeping through tissue the
     // speed cannot tell from the structure (docs/steering.md): the run is taken back to the
-    // erase and goes on with the surface beyond the correction's reach only withdrawing.
+    // erase and goes on with the surface beyond the correction's reach only withdrawing, and
+    // later erases' runs do so from the start until T, eps, alpha or the kind of speed change.
     // 0: no limit.
     double eraseRunGrowth = 0.25;
     // Default exports: <folder>/<scan>_<UTC time>.<format>.

@@ -83,6 +83,9 @@ struct Status {
     // Erase runs that grew past Settings::eraseRunGrowth and went back to their erase, since
     // the scan was loaded (docs/steering.md).
     int eraseRunsTakenBack = 0;
+    // Erases whose runs withdrew beyond their reach from the start, as one taken back had
+    // under the same T, eps, alpha and kind of speed.
+    int erasesWithdrawOnly = 0;
     bool canUndo = false;
     bool canRedo = false;
     std::string preset;                     // the last preset applied ("" = none)

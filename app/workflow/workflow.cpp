@@ -227,6 +227,8 @@ void Workflow::forgetScan() {
     status_.volumeMl = 0.0;
     status_.converged = false;
     status_.eraseRunsTakenBack = 0;
+    status_.erasesWithdrawOnly = 0;
+    erasesCreep_ = false;
     status_.preset.clear();
     status_.exportedPath.clear();
     status_.exportedFiles.clear();

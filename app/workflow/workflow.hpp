@@ -117,12 +117,14 @@ class Workflow {
     Outcome first(const model::Correct& a);
     // A correction's run moves the surface only near it (Settings::correctionReach); the
     // reach ends with the run, or when the speed or its parameters change.
-    void reachAround(const model::Sphere& brush);
+    // recedeOutside: beyond the reach the surface only withdraws (model::Reach).
+    void reachAround(const model::Sphere& brush, bool recedeOutside = false);
     // The sphere a correction's run may move the surface in; nullopt: everywhere.
     [[nodiscard]] std::optional<model::Sphere> reachOf(const model::Sphere& brush) const;
     void endReach();
     // An erase's run over the whole surface is watched (Settings::eraseRunGrowth): grown past
-    // its limit, it is taken back to the erase and goes on withdrawing only beyond the reach.
+    // its limit, it is taken back to the erase and goes on withdrawing only beyond the reach,
+    // and so do later erases' runs until T, eps, alpha or the kind of speed change.
     void watchEraseRun(const model::Sphere& brush, double volumeBeforeMl);
     // True when it took the run back.
     bool takeBackEraseRun();
@@ -213,11 +215,12 @@ class Workflow {
     bool quit_ = false;
     std::optional<model::Reach> reach_; // a correction's run's, while it lasts
     struct EraseRunWatch {
-        model::Sphere reach;  // where the run moves both ways once taken back
+        model::Sphere brush;  // the erase's: its reach is where the run moves both ways after
         double limitMl = 0.0; // the volume it may not pass
         SnapshotId start = 0; // the surface the erase left (its undo entry's)
     };
     std::optional<EraseRunWatch> eraseWatch_; // an erase's global run's, while it lasts
+    bool erasesCreep_ = false; // an erase's run went back under the speed now in force
     // Transitions made while handling one action, audited after the action's own record.
     struct PendingTransition {
         model::State from;

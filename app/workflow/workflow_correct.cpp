@@ -20,6 +20,7 @@ Workflow::Outcome Workflow::on(const model::Correct& a) {
         status_.state == model::State::Evolving || status_.state == model::State::Paused;
     const SpeedChoice speedBefore = engineSpeed_;
     const double volumeBeforeMl = status_.volumeMl;
+    const std::string messageBefore = status_.message;
     Outcome out = sphereEdit(a.voxel, a.radius, a.positive);
     if (!out.accepted || !steering || !status_.hasLevelSet) {
         return out;
@@ -32,6 +33,15 @@ Workflow::Outcome Workflow::on(const model::Correct& a) {
     const model::Sphere brush = brushSphere(a.voxel, a.radius);
     if (engineSpeed_ == speedBefore || a.positive) {
         reachAround(brush);
+    } else if (erasesCreep_) {
+        // An earlier erase's run crept under the same T, eps and kind of speed: this one's
+        // would spend its steps up to the limit first, and go back all the same.
+        reachAround(brush, true);
+        ++status_.erasesWithdrawOnly;
+        if (status_.message == messageBefore) { // the edit's own notice comes first
+            status_.message = "erased; an earlier erase's run crept under this speed: away from "
+                              "this one the surface only withdraws";
+        }
     } else {
         watchEraseRun(brush, volumeBeforeMl);
     }
@@ -46,13 +56,13 @@ std::optional<model::Sphere> Workflow::reachOf(const model::Sphere& brush) const
     return model::Sphere{brush.centre, static_cast<float>(radius)};
 }
 
-void Workflow::reachAround(const model::Sphere& brush) {
+void Workflow::reachAround(const model::Sphere& brush, bool recedeOutside) {
     const std::optional<model::Sphere> sphere = reachOf(brush);
     if (!sphere) {
         endReach();
         return;
     }
-    const model::Reach reach{*sphere};
+    const model::Reach reach{*sphere, recedeOutside};
     try {
         engine_.setReach(reach);
         reach_ = reach;
@@ -76,13 +86,12 @@ void Workflow::endReach() {
 }
 
 void Workflow::watchEraseRun(const model::Sphere& brush, double volumeBeforeMl) {
-    const std::optional<model::Sphere> reach = reachOf(brush);
     const UndoEntry* erase = undo_.undoTop();
-    if (settings_.eraseRunGrowth <= 0.0 || !reach || erase == nullptr || !erase->after.snapshot ||
-        !(volumeBeforeMl > 0.0)) {
+    if (settings_.eraseRunGrowth <= 0.0 || !reachOf(brush) || erase == nullptr ||
+        !erase->after.snapshot || !(volumeBeforeMl > 0.0)) {
         return;
     }
-    eraseWatch_ = EraseRunWatch{*reach, volumeBeforeMl * (1.0 + settings_.eraseRunGrowth),
+    eraseWatch_ = EraseRunWatch{brush, volumeBeforeMl * (1.0 + settings_.eraseRunGrowth),
                                 *erase->after.snapshot};
 }
 
@@ -95,10 +104,9 @@ bool Workflow::takeBackEraseRun() {
     const EraseRunWatch watch = *eraseWatch_;
     eraseWatch_.reset();
     engine_.restore(watch.start);
-    const model::Reach reach{watch.reach, true};
-    engine_.setReach(reach);
-    reach_ = reach;
+    reachAround(watch.brush, true);
     refreshEngineStatus();
+    erasesCreep_ = true;
     ++status_.eraseRunsTakenBack;
     status_.message =
         "the erase's run grew the surface by more than " +

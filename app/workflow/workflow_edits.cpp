@@ -253,6 +253,7 @@ Workflow::Outcome Workflow::on(const model::SetEraseMode& a) {
 }
 
 Workflow::Outcome Workflow::on(const model::Restart&) {
+    erasesCreep_ = false;
     editLevelSet(
         "restart", [&] { engine_.clearLevelSet(); }, 0, 0);
     return ok();

@@ -38,6 +38,9 @@ void Workflow::applyParams(const ParamValues& values, bool force) {
     SpeedChoice want = speedFor(values);
     const bool newSpeed = force || want != engineSpeed_;
     if (newSpeed) {
+        if (want.kind != engineSpeed_.kind) {
+            erasesCreep_ = false; // another speed may tell the structure from its surroundings
+        }
         endReach(); // the operator's new speed applies everywhere
         engine_.setSpeed(want);
         engineSpeed_ = std::move(want);
@@ -49,6 +52,7 @@ void Workflow::applyParams(const ParamValues& values, bool force) {
                                   static_cast<float>(values.values[indexOf(model::Param::Alpha)])};
     const model::LevelSetParams& now = status_.params;
     if (force || p.T != now.T || p.eps != now.eps || p.alpha != now.alpha) {
+        erasesCreep_ = false;
         endReach();
         engine_.setParams(p);
         status_.converged = false; // the front moves again under a new speed

@@ -260,6 +260,23 @@ TEST(WorkflowCorrect, AnEraseRunThatGrowsTooFarIsTakenBackToTheErase) {
         r.wf->evolve(10);
         EXPECT_TRUE(r.engine.inside({3, 6, 4}));
         EXPECT_TRUE(r.engine.reach()->recedeOutside);
+
+        // The next erase under the same speed would creep as well: its run withdraws beyond its
+        // reach from the start, until the operator changes T.
+        r.engine.stepGrows.reset();
+        ASSERT_TRUE(r.act(model::Pause{}).accepted);
+        ASSERT_TRUE(r.act(model::Correct{{4.0, 6.0, 4.0}, false, 1.0}).accepted);
+        ASSERT_TRUE(r.engine.reach().has_value());
+        EXPECT_TRUE(r.engine.reach()->recedeOutside);
+        EXPECT_EQ(r.engine.reach()->sphere.centre, glm::vec3(4.0F, 6.0F, 4.0F));
+        EXPECT_EQ(r.status().erasesWithdrawOnly, 1);
+        EXPECT_NE(r.status().message.find("only withdraws"), std::string::npos)
+            << r.status().message;
+        ASSERT_TRUE(r.act(model::NudgeParam{model::Param::T, 1.0}).accepted);
+        ASSERT_TRUE(r.act(model::Pause{}).accepted);
+        ASSERT_TRUE(r.act(model::Correct{{5.0, 6.0, 4.0}, false, 1.0}).accepted);
+        EXPECT_FALSE(r.engine.reach().has_value()) << "a new T: watched again, run everywhere";
+        EXPECT_EQ(r.status().erasesWithdrawOnly, 1);
     }
 }
 
