@@ -34,8 +34,8 @@ Workflow::Outcome Workflow::on(const model::Correct& a) {
     if (engineSpeed_ == speedBefore || a.positive) {
         reachAround(brush);
     } else if (erasesCreep_) {
-        // An earlier erase's run crept under the same T, eps and kind of speed: this one's
-        // would spend its steps up to the limit first, and go back all the same.
+        // An earlier erase's run crept under the same T, eps, alpha and kind of speed: this
+        // one's would spend its steps up to the limit first, and go back all the same.
         reachAround(brush, true);
         ++status_.erasesWithdrawOnly;
         if (status_.message == messageBefore) { // the edit's own notice comes first
