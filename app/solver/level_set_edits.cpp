@@ -176,6 +176,10 @@ void LevelSetSolver::uploadReach() {
     glProgramUniform4f(p, glGetUniformLocation(p, "reach"), s.centre.x, s.centre.y, s.centre.z,
                        s.radius);
     glProgramUniform1i(p, glGetUniformLocation(p, "recedeOutside"), r.recedeOutside ? 1 : 0);
+    // Beyond a receding reach the surface still withdraws: only a plain one holds it there.
+    const GLuint list = programs_->buildActiveList.id();
+    glProgramUniform4f(list, glGetUniformLocation(list, "heldBeyond"), s.centre.x, s.centre.y,
+                       s.centre.z, r.recedeOutside ? 0.0F : s.radius);
 }
 
 // Sets the barrier uniforms of the pass that evaluates the speed (barrier_speed.glsl), whose

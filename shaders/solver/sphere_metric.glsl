@@ -14,3 +14,9 @@ float sphereDistance(vec3 offset, float radius) {
                       : max(sphereScale.x, max(sphereScale.y, sphereScale.z));
     return (n - radius) / g;
 }
+
+// Whether a correction's reach (centre xyz, radius w in voxels; model::Reach) takes in p;
+// radius <= 0: everywhere.
+bool inReach(vec3 p, vec4 sphere) {
+    return sphere.w <= 0.0 || sphereNorm(p - sphere.xyz) <= sphere.w;
+}

@@ -27,10 +27,6 @@ uniform float sleepTolerance; // voxels per step
 uniform vec4 reach;
 uniform bool recedeOutside;
 
-bool inReach(ivec3 g) {
-    return reach.w <= 0.0 || sphereNorm(vec3(g) - reach.xyz) <= reach.w;
-}
-
 shared uint changedSide;
 shared uint movedAny;
 shared uint movedFaces;
@@ -77,7 +73,7 @@ void main() {
         PhiStencil s = tileStencil(l);
         float out_ = s.c;
         if (all(lessThan(g, volumeDims))) {
-            bool within = inReach(g);
+            bool within = inReach(vec3(g), reach);
             if (dt > 0.0 && inNarrowBand(s) && (within || recedeOutside)) {
                 float next = phiStep(s, cachedSpeed(slot, v), alpha, dt); // measure_speed's
                 out_ = within ? next : max(next, s.c);

@@ -184,6 +184,28 @@ TEST_F(SolverLeakTest, AReachMovesTheSurfaceOnlyAroundTheCorrection) {
                  std::invalid_argument);
 }
 
+// A run within a plain reach processes only the bricks the reach takes in: ball B's seed, which
+// the reach holds as it is, adds no brick to any step (its speed is not evaluated either); a
+// receding reach, beyond which the surface may still withdraw, keeps them awake.
+TEST_F(SolverLeakTest, ARunWithinAReachProcessesNoBrickBeyondIt) {
+    const std::vector<float> volume = dumbbell();
+    const auto activeAfterOneStep = [&](bool seedB, bool recede) {
+        LevelSetSolver solver(volume, kDims);
+        solver.setParams(kParams);
+        solver.addSphere({kBallA, 3.0F});
+        if (seedB) {
+            solver.addSphere({kBallB, 3.0F});
+        }
+        solver.setReach(Reach{Sphere{kBallA, kBallRadius + 3.0F}, recede});
+        solver.step(1);
+        return solver.stats().activeBricks;
+    };
+    const std::uint32_t aAlone = activeAfterOneStep(false, false);
+    EXPECT_GT(aAlone, 0U);
+    EXPECT_EQ(activeAfterOneStep(true, false), aAlone);
+    EXPECT_GT(activeAfterOneStep(true, true), aAlone);
+}
+
 // A reach that recedes outside (an erase's run taken back, docs/steering.md): beyond it the
 // surface withdraws from what the speed refuses and advances nowhere; the plain reach leaves
 // both as they are.
