@@ -52,6 +52,7 @@ ClickOutcome ClickSession::apply(const model::Correct& click, int maxIterations)
     engine_.session()->finishGpuWork();
     r.firstChangeSeconds = since(start);
     r.firstChangeWork = engine_.workSeconds() - workBefore;
+    engine_.keepUndoWithinBudget(); // as the kiosk does after the frame that shows the change
     const int startIterations = engine_.stats().iterations;
     int done = 0;
     model::StepResult last;

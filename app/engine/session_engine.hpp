@@ -90,9 +90,12 @@ class SessionEngine final : public workflow::Engine {
     bool fillSpeedAhead(double seconds);
     [[nodiscard]] std::uint64_t speedVersion() const { return speedVersion_; }
     [[nodiscard]] const WorkSeconds& workSeconds() const { return work_; }
-    // GPU memory undo's copies hold now (at most the budget) and snapshots kept as masks.
+    // GPU memory undo's copies hold now and snapshots kept as masks. At most the budget, but
+    // for an edit's two newest copies until keepUndoWithinBudget: a snapshot leaves the older
+    // copies' move to host memory to the frame after the edit it belongs to.
     [[nodiscard]] std::size_t undoGpuBytes() const { return undoGpuBytes_; }
     [[nodiscard]] std::size_t undoMasks() const;
+    void keepUndoWithinBudget();
 
   private:
     session::Session& requireSession() const;
@@ -122,10 +125,13 @@ class SessionEngine final : public workflow::Engine {
     };
     void setBarriers(const std::vector<model::Barrier>& barriers);
     void putMask(const MaskRuns& mask);
-    void keepUndoWithinBudget();
     void countThroughEdit();
     std::size_t undoGpuBudget_;
     std::size_t undoGpuBytes_ = 0;
+    // The copies taken since the last keepUndoWithinBudget, which may stand above the budget.
+    static constexpr int kUntidyCopies = 2;
+    std::size_t untidyBytes_ = 0;
+    int untidyCopies_ = 0;
     std::map<workflow::SnapshotId, Snapshot> snapshots_;
     std::vector<model::Barrier> barriers_; // as the solver holds them
     workflow::SnapshotId nextSnapshot_ = 1;

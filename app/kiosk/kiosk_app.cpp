@@ -62,6 +62,9 @@ bool Kiosk::step() {
     autosave();
     drawScreen(hadInput);
     present(frameStart);
+    // After the frame that shows an edit: the older undo copies leave the GPU here, not
+    // before it (SessionEngine::snapshot).
+    engine_.keepUndoWithinBudget();
     service_.framePresented(flow_.status());
     saveFrames();
     if (stopReason()) {

@@ -224,7 +224,8 @@ TEST_F(KioskEngine, UndoCopiesStayWithinTheirGpuBudgetAndRestoreWhatTheyTook) {
     roomy.drop(second);
     EXPECT_EQ(roomy.undoGpuBytes(), 0U);
 
-    // Room for one copy: the older one moves to host memory.
+    // Room for one copy: the older one moves to host memory, once the frame after the edit
+    // asks (keepUndoWithinBudget); until then an edit's two copies may stand above the budget.
     SessionEngine tight(model::SolverOptions{}, {}, oneCopy + oneCopy / 2);
     seeded(tight);
     const std::vector<std::uint8_t> mask = tight.session()->mask();
@@ -232,6 +233,9 @@ TEST_F(KioskEngine, UndoCopiesStayWithinTheirGpuBudgetAndRestoreWhatTheyTook) {
     tight.step(20);
     const std::vector<float> newerPhi = tight.session()->phi();
     const workflow::SnapshotId newer = tight.snapshot();
+    EXPECT_GT(tight.undoGpuBytes(), oneCopy + oneCopy / 2);
+    EXPECT_EQ(tight.undoMasks(), 0U);
+    tight.keepUndoWithinBudget();
     EXPECT_LE(tight.undoGpuBytes(), oneCopy + oneCopy / 2);
     EXPECT_EQ(tight.undoMasks(), 1U);
     tight.step(20);
@@ -242,6 +246,17 @@ TEST_F(KioskEngine, UndoCopiesStayWithinTheirGpuBudgetAndRestoreWhatTheyTook) {
     tight.drop(newer);
     EXPECT_EQ(tight.undoGpuBytes(), 0U);
     EXPECT_EQ(tight.undoMasks(), 1U);
+
+    // A third copy with no frame since the last two: it moves the older ones out itself, so
+    // no more than an edit's two ever stand above the budget.
+    const workflow::SnapshotId third = tight.snapshot();
+    const workflow::SnapshotId fourth = tight.snapshot();
+    const workflow::SnapshotId fifth = tight.snapshot();
+    EXPECT_LE(tight.undoGpuBytes(), 2 * oneCopy);
+    EXPECT_EQ(tight.undoMasks(), 3U);
+    for (const workflow::SnapshotId id : {third, fourth, fifth}) {
+        tight.drop(id);
+    }
 
     // No room at all: every snapshot is a mask, and still restores.
     SessionEngine none(model::SolverOptions{}, {}, 0);
