@@ -40,7 +40,9 @@ workflow::SnapshotId SessionEngine::snapshot() {
     return id;
 }
 
-// The oldest copies leave the GPU first: undo reaches them last.
+// The oldest copies leave the GPU first: undo reaches them last. A copy that cannot be read
+// back stays a copy, above the budget, and the next call tries again: the kiosk calls this
+// every frame, outside any edit that could be taken back, and a failing GPU says so elsewhere.
 void SessionEngine::keepUndoWithinBudget() {
     untidyBytes_ = 0;
     untidyCopies_ = 0;
@@ -48,7 +50,11 @@ void SessionEngine::keepUndoWithinBudget() {
          ++it) {
         Snapshot& s = it->second;
         if (s.copy) {
-            s.mask = encodeRuns(requireSession().maskOf(*s.copy));
+            try {
+                s.mask = encodeRuns(requireSession().maskOf(*s.copy));
+            } catch (const std::exception&) {
+                return;
+            }
             undoGpuBytes_ -= s.copy->levelSet.bytes();
             s.copy.reset();
         }
