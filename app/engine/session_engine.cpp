@@ -132,7 +132,6 @@ workflow::LoadPoll SessionEngine::pollLoad() {
         session_.reset();
         snapshots_.clear();
         undoGpuBytes_ = 0;
-        untidyBytes_ = 0;
         untidyCopies_ = 0;
         lastProbe_.reset();
         session_ = std::make_unique<session::Session>(std::move(load->result), options_);

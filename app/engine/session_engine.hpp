@@ -130,7 +130,6 @@ class SessionEngine final : public workflow::Engine {
     std::size_t undoGpuBytes_ = 0;
     // The copies taken since the last keepUndoWithinBudget, which may stand above the budget.
     static constexpr int kUntidyCopies = 2;
-    std::size_t untidyBytes_ = 0;
     int untidyCopies_ = 0;
     std::map<workflow::SnapshotId, Snapshot> snapshots_;
     std::vector<model::Barrier> barriers_; // as the solver holds them

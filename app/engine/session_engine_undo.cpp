@@ -28,13 +28,10 @@ workflow::SnapshotId SessionEngine::snapshot() {
     snapshots_[id] = std::move(s);
     // Moving the older copies out reads each back and encodes its mask: 0.13-0.19 s of a
     // correction's first visible change on a 207x256x215 scan, were it done here. It waits
-    // for the frame after the change (keepUndoWithinBudget): meanwhile the copies since then,
-    // an edit's two (before and after it), may stand above the budget. More, older ones above
-    // it without them, or a copy that does not fit alone, and they go out now.
-    untidyBytes_ += bytes;
-    ++untidyCopies_;
-    if (untidyCopies_ > kUntidyCopies || undoGpuBytes_ > undoGpuBudget_ + untidyBytes_ ||
-        bytes > undoGpuBudget_) {
+    // for the frame after the change (keepUndoWithinBudget), which leaves the copies within
+    // the budget: meanwhile the copies since then, an edit's two (before and after it), may
+    // stand above it. A third, or a copy that does not fit alone, and they go out now.
+    if (++untidyCopies_ > kUntidyCopies || bytes > undoGpuBudget_) {
         keepUndoWithinBudget();
     }
     return id;
@@ -44,7 +41,6 @@ workflow::SnapshotId SessionEngine::snapshot() {
 // back stays a copy, above the budget, and the next call tries again: the kiosk calls this
 // every frame, outside any edit that could be taken back, and a failing GPU says so elsewhere.
 void SessionEngine::keepUndoWithinBudget() {
-    untidyBytes_ = 0;
     untidyCopies_ = 0;
     for (auto it = snapshots_.begin(); it != snapshots_.end() && undoGpuBytes_ > undoGpuBudget_;
          ++it) {
