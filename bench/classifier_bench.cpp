@@ -1,8 +1,9 @@
-// Classification speed benchmark (docs/speed.md): the training split (sample voxels, feature
-// gather on the GPU, forest on the CPU) and the evaluation at every voxel, on a synthetic
-// textured phantom of N^3 voxels, or on a real scan with examples given. Prints a markdown
-// table. Not a test: figures depend on the machine (llvmpipe on a shared 2-core box is slow
-// and noisy; run it alone).
+// Classification speed benchmark (docs/speed.md): the training split (sample voxels, their
+// features from the CPU twin on the host scan as the console computes them, with the GPU's
+// gather of the same samples timed and compared beside it, forest on the CPU) and the evaluation at
+// every voxel, on a synthetic textured phantom of N^3 voxels, or on a real scan with examples
+// given. Prints a markdown table. Not a test: figures depend on the machine (llvmpipe on a shared
+// 2-core box is slow and noisy; run it alone).
 //   classifier_bench [--size N] [--train-size N] [--trees N] [--depth N] [--samples N]
 //                    [--repeat N] [--scan PATH --inside i,j,k,r --outside i,j,k,r ...
 //                     [--truth MASK]]
@@ -12,8 +13,10 @@
 #include "bench/bench_scan.hpp"
 #include "gpu/gpu_info.hpp"
 #include "gpu/scan_texture.hpp"
+#include "gpu/texture_readback.hpp"
 #include "platform/egl/offscreen_context.hpp"
 #include "speed/classifier_features.hpp"
+#include "speed/classifier_features_cpu.hpp"
 #include "speed/classifier_speed.hpp"
 #include "speed/example_voxels.hpp"
 #include "speed/random_forest.hpp"
@@ -21,6 +24,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -108,18 +112,30 @@ Phantom phantom(int n) {
     return p;
 }
 
+// The phantom as a scan on the host, as the console holds one.
+Volume volumeOf(const Phantom& p) {
+    Geometry g;
+    g.dims = p.dims;
+    Volume volume(VoxelType::Float32, g);
+    std::copy(p.intensity.begin(), p.intensity.end(), volume.voxels<float>().begin());
+    volume.invalidateStats();
+    return volume;
+}
+
 double secondsSince(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
 // Training alone (what the operator waits for before the evaluation starts), median of repeats.
 void timeTraining(const Phantom& p, const speed::ClassifierParams& params, int repeat) {
-    const gpu::ScanTexture scan(p.intensity, p.dims);
+    const Volume volume = volumeOf(p);
+    const gpu::ScanTexture scan(volume);
     speed::ForestParams forest;
     forest.trees = params.trees;
     forest.maxDepth = params.maxDepth;
     forest.seed = params.seed;
-    std::vector<double> gather;
+    std::vector<double> features; // the console's: the CPU twin on the host scan
+    std::vector<double> gather;   // the GPU's gather of the same samples, for comparison
     std::vector<double> train;
     std::size_t samples = 0;
     double accuracy = 0.0;
@@ -130,7 +146,10 @@ void timeTraining(const Phantom& p, const speed::ClassifierParams& params, int r
         const speed::ExampleVoxels out = speed::exampleVoxels(p.outside, p.dims, cap, 2, "outside");
         std::vector<glm::ivec3> voxels = in.voxels;
         voxels.insert(voxels.end(), out.voxels.begin(), out.voxels.end());
-        const std::vector<float> f = speed::gatherClassifierFeatures(scan.exact(), p.dims, voxels);
+        const std::vector<float> f = speed::cpuClassifierFeatures(volume, voxels);
+        features.push_back(secondsSince(t));
+        t = std::chrono::steady_clock::now();
+        (void)speed::gatherClassifierFeatures(scan.exact(), p.dims, voxels);
         gather.push_back(secondsSince(t));
         t = std::chrono::steady_clock::now();
         std::vector<std::uint8_t> labels(voxels.size(), 0);
@@ -142,58 +161,68 @@ void timeTraining(const Phantom& p, const speed::ClassifierParams& params, int r
         samples = voxels.size();
         accuracy = trained.outOfBagAccuracy();
     }
+    std::sort(features.begin(), features.end());
     std::sort(gather.begin(), gather.end());
     std::sort(train.begin(), train.end());
+    std::fprintf(stderr, "%d^3: the GPU's gather of the same samples %.3f s (median)\n", p.dims.x,
+                 gather[gather.size() / 2]);
     std::printf("| %d^3 training only | %zu | %.3f | %.3f | - | %.3f | - |\n", p.dims.x, samples,
-                gather[gather.size() / 2], train[train.size() / 2], accuracy);
+                features[features.size() / 2], train[train.size() / 2], accuracy);
 }
 
-void timeWhole(const gpu::ScanTexture& scan, const std::string& label,
+// What the GPU's gather returns for the training samples against the CPU twin the training now
+// uses (issue 47: the H100's gather handed the forest other samples' features).
+void compareGather(const gpu::ScanTexture& scan, const Volume& volume, const std::string& label,
+                   const std::vector<speed::Example>& inside,
+                   const std::vector<speed::Example>& outside,
+                   const speed::ClassifierParams& params) {
+    const auto cap = static_cast<std::size_t>(params.maxSamplesPerClass);
+    std::vector<glm::ivec3> voxels =
+        speed::exampleVoxels(inside, scan.dims(), cap, 1, "inside").voxels;
+    const std::vector<glm::ivec3> out =
+        speed::exampleVoxels(outside, scan.dims(), cap, 2, "outside").voxels;
+    voxels.insert(voxels.end(), out.begin(), out.end());
+    const std::vector<float> gpu =
+        speed::gatherClassifierFeatures(scan.exact(), scan.dims(), voxels);
+    const std::vector<float> cpu = speed::cpuClassifierFeatures(volume, voxels);
+    double largest = 0.0;
+    for (std::size_t n = 0; n < cpu.size(); ++n) {
+        largest =
+            std::max(largest, std::abs(static_cast<double>(gpu[n]) - static_cast<double>(cpu[n])));
+    }
+    std::fprintf(
+        stderr,
+        "%s: gathered features against the CPU twin: largest difference %g over %zu samples\n",
+        label.c_str(), largest, voxels.size());
+}
+
+void timeWhole(const gpu::ScanTexture& scan, const Volume& volume, const std::string& label,
                const std::vector<speed::Example>& inside,
                const std::vector<speed::Example>& outside, const speed::ClassifierParams& params,
                int repeat, const std::vector<std::uint8_t>* truth) {
+    compareGather(scan, volume, label, inside, outside, params);
     std::vector<speed::ClassifierTraining> runs;
     double agreement = -1.0;
     double dice = -1.0;
     for (int r = 0; r < repeat; ++r) {
-        const speed::ClassifierSpeed s(scan.exact(), scan.dims(), inside, outside, params);
+        // As the console trains it: the samples' features from the scan on the host.
+        const speed::ClassifierSpeed s(scan.exact(), scan.dims(), inside, outside, params, {},
+                                       &volume);
         runs.push_back(s.training());
         if (truth != nullptr && r == 0) {
             // The sign against the phantom's truth, read back once (not timed).
-            const glm::ivec3 d = scan.dims();
-            std::vector<float> values(truth->size());
-            GLuint fb = 0;
-            glGenFramebuffers(1, &fb);
-            glBindFramebuffer(GL_READ_FRAMEBUFFER, fb);
+            // Through the product's one read-back path (gpu/texture_readback: the fetch barrier
+            // after the evaluation's image stores, the buffer read after the copy pass).
+            const std::vector<float> values = gpu::readVolumeTexture(s.texture(), scan.dims());
             std::size_t right = 0;
-            // RGBA/FLOAT is the one pair GLES guarantees for a float colour buffer: GL_RED is
-            // llvmpipe's extra, and the NVIDIA driver refuses it, leaving zeros.
-            const auto slice = static_cast<std::size_t>(d.x) * static_cast<std::size_t>(d.y);
-            std::vector<float> rgba(slice * 4);
-            for (int k = 0; k < d.z; ++k) {
-                glFramebufferTextureLayer(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, s.texture(), 0,
-                                          k);
-                glReadPixels(0, 0, d.x, d.y, GL_RGBA, GL_FLOAT, rgba.data());
-                for (std::size_t v = 0; v < slice; ++v) {
-                    values[slice * static_cast<std::size_t>(k) + v] = rgba[v * 4];
-                }
-            }
-            const GLenum fbStatus = glCheckFramebufferStatus(GL_READ_FRAMEBUFFER);
-            const GLenum glError = glGetError();
-            glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-            glDeleteFramebuffers(1, &fb);
-            // What the sign column rests on: a readback that failed reads as all zeros.
             std::size_t positive = 0;
             std::size_t negative = 0;
             for (const float value : values) {
                 positive += value > 0.0F ? 1 : 0;
                 negative += value < 0.0F ? 1 : 0;
             }
-            std::fprintf(stderr,
-                         "%s: speed > 0 at %zu voxels, < 0 at %zu, = 0 at %zu (framebuffer 0x%x, "
-                         "GL error 0x%x)\n",
-                         label.c_str(), positive, negative, values.size() - positive - negative,
-                         fbStatus, glError);
+            std::fprintf(stderr, "%s: speed > 0 at %zu voxels, < 0 at %zu, = 0 at %zu\n",
+                         label.c_str(), positive, negative, values.size() - positive - negative);
             for (std::size_t v = 0; v < values.size(); ++v) {
                 right += ((values[v] > 0.0F) == ((*truth)[v] != 0)) ? 1 : 0;
             }
@@ -253,9 +282,10 @@ int main(int argc, char** argv) {
         }
         if (size > 0) {
             const Phantom p = phantom(size);
-            const gpu::ScanTexture scan(p.intensity, p.dims);
-            timeWhole(scan, std::to_string(size) + "^3 phantom", p.inside, p.outside, params,
-                      repeat, &p.truth);
+            const Volume volume = volumeOf(p);
+            const gpu::ScanTexture scan(volume);
+            timeWhole(scan, volume, std::to_string(size) + "^3 phantom", p.inside, p.outside,
+                      params, repeat, &p.truth);
         }
         if (!scanPath.empty()) {
             const Volume volume = bench::loadScan(scanPath);
@@ -273,7 +303,7 @@ int main(int argc, char** argv) {
                     truth[v] = mask.storedAt(v) > 0.0 ? 1 : 0;
                 }
             }
-            timeWhole(scan,
+            timeWhole(scan, volume,
                       std::to_string(d.x) + "x" + std::to_string(d.y) + "x" + std::to_string(d.z) +
                           " " + scanPath.substr(scanPath.find_last_of('/') + 1),
                       examplesOf(argc, argv, "--inside"), examplesOf(argc, argv, "--outside"),

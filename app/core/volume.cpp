@@ -204,7 +204,7 @@ void Volume::realValues(std::size_t first, std::span<float> out) const {
         throw std::out_of_range("Volume::realValues: range past the last voxel");
     }
     for (std::size_t n = 0; n < out.size(); ++n) {
-        out[n] = static_cast<float>(rescale_.apply(storedAt(first + n)));
+        out[n] = static_cast<float>(realAt(first + n));
     }
 }
 

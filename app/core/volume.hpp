@@ -97,8 +97,9 @@ class Volume {
     // Stored value at a voxel as double (no rescale).
     [[nodiscard]] double storedAt(std::size_t linear) const;
     // Real-unit value at a voxel.
-    [[nodiscard]] double valueAt(int i, int j, int k) const {
-        return rescale_.apply(storedAt(linearIndex(i, j, k)));
+    [[nodiscard]] double valueAt(int i, int j, int k) const { return realAt(linearIndex(i, j, k)); }
+    [[nodiscard]] double realAt(std::size_t linear) const {
+        return rescale_.apply(storedAt(linear));
     }
 
     // Smallest and largest stored value (no rescale); {0, 0} for an empty volume.

@@ -19,6 +19,13 @@ class GpuCapacityError : public GlError {
     using GlError::GlError;
 };
 
+// The GPU computed numbers that cannot be right (a buffer it should have written read back
+// unwritten, values its CPU twin refutes): a GlError, so that callers treat it as a GPU failure.
+class GpuNumericsError : public GlError {
+  public:
+    using GlError::GlError;
+};
+
 std::string glErrorName(GLenum code);
 
 // Throws GlError naming `what` if the GL error flag is set (drains all pending errors).

@@ -205,7 +205,7 @@ void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progr
         params.placeReach = static_cast<float>(settings.placeReach);
         params.sphereScale = g.solver.sphereScale();
         g.classifier.emplace(intensity, dims, examples(settings.inside), examples(settings.outside),
-                             params, std::move(recycled));
+                             params, std::move(recycled), g.smoothed ? nullptr : &scan_);
         factor = g.classifier->texture();
         g.timing.trainingSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - prepared).count();

@@ -7,9 +7,14 @@
 #include "gpu/gl_handle.hpp"
 #include "gpu/gl_state_guard.hpp"
 #include "gpu/program.hpp"
+#include "speed/classifier_gather_fault.hpp"
 #include "speed/classifier_layout.h"
 #include "speed/volume_texture.hpp"
 
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -19,10 +24,15 @@ static_assert(kClassifierFeatureCount == CLASSIFIER_FEATURE_COUNT,
               "the C++ and GLSL feature counts must agree");
 
 namespace {
+std::atomic<bool> reverseRows{false};
 constexpr int kGroupSize = 64; // classifier_gather.comp's local size
 // Samples per dispatch: within the 65535 groups a dimension allows.
 constexpr std::size_t kMaxDispatchSamples = std::size_t{65535} * kGroupSize;
 } // namespace
+
+void fault::reverseGatheredRows(bool on) {
+    reverseRows = on;
+}
 
 void checkIntensityTexture(GLuint intensity, glm::ivec3 dims) {
     gpu::GlStateGuard guard;
@@ -54,9 +64,11 @@ std::vector<float> gatherClassifierFeatures(GLuint intensity, glm::ivec3 dims,
     const gpu::Buffer in = gpu::createBuffer(
         GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(coords.size() * sizeof(glm::ivec4)),
         coords.data(), GL_STATIC_DRAW);
+    // NaN until the dispatch writes a row: stale or unwritten memory then reads as what it is.
+    std::fill(features.begin(), features.end(), std::numeric_limits<float>::quiet_NaN());
     const gpu::Buffer out = gpu::createBuffer(
-        GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(features.size() * sizeof(float)), nullptr,
-        GL_STREAM_READ);
+        GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(features.size() * sizeof(float)),
+        features.data(), GL_STREAM_READ);
     glUseProgram(program.id());
     glActiveTexture(GL_TEXTURE0 + SPEED_SOURCE_UNIT);
     glBindTexture(GL_TEXTURE_3D, intensity);
@@ -76,6 +88,28 @@ std::vector<float> gatherClassifierFeatures(GLuint intensity, glm::ivec3 dims,
     gpu::readBufferBytes(out, 0, features.data(), features.size() * sizeof(float),
                          "the classifier's sample features");
     gpu::checkGl("gathering the classifier's sample features");
+    if (reverseRows) {
+        for (std::size_t a = 0, b = voxels.size() - 1; a < b; ++a, --b) {
+            std::swap_ranges(
+                features.begin() + static_cast<std::ptrdiff_t>(a * kClassifierFeatureCount),
+                features.begin() + static_cast<std::ptrdiff_t>((a + 1) * kClassifierFeatureCount),
+                features.begin() + static_cast<std::ptrdiff_t>(b * kClassifierFeatureCount));
+        }
+    }
+    std::size_t unwritten = 0;
+    for (std::size_t row = 0; row < voxels.size(); ++row) {
+        const auto first =
+            features.begin() + static_cast<std::ptrdiff_t>(row * kClassifierFeatureCount);
+        unwritten += std::all_of(first, first + kClassifierFeatureCount,
+                                 [](float f) { return std::isfinite(f); })
+                         ? 0
+                         : 1;
+    }
+    if (unwritten > 0) {
+        throw gpu::GpuNumericsError(
+            "classifier speed: the GPU returned " + std::to_string(unwritten) + " of " +
+            std::to_string(voxels.size()) + " training samples' features unwritten or not finite");
+    }
     return features;
 }
 

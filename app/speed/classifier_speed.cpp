@@ -45,7 +45,7 @@ static_assert(kPlaceVoteCell == CLASSIFIER_PLACE_CELL);
 
 ClassifierSpeed::ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<const Example> inside,
                                  std::span<const Example> outside, const ClassifierParams& params,
-                                 gpu::Texture recycled)
+                                 gpu::Texture recycled, const Volume* hostScan)
     : dims_(dims), maxDepth_(params.maxDepth), evaluation_(params.evaluation) {
     const ForestParams forestSettings = forestParams(params);
     if (forestSettings.trees < 1 || forestSettings.trees > 256 || forestSettings.maxDepth < 1 ||
@@ -56,6 +56,9 @@ ClassifierSpeed::ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<co
     }
     gpu::GlStateGuard guard;
     checkIntensityTexture(intensity, dims);
+    if (hostScan != nullptr && hostScan->dims() != dims) {
+        throw std::invalid_argument("classifier speed: the host scan is not of the texture's size");
+    }
 
     auto start = std::chrono::steady_clock::now();
     const auto cap = static_cast<std::size_t>(params.maxSamplesPerClass);
@@ -66,7 +69,9 @@ ClassifierSpeed::ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<co
                       params.sphereScale);
     std::vector<glm::ivec3> voxels = in.voxels;
     voxels.insert(voxels.end(), out.voxels.begin(), out.voxels.end());
-    const std::vector<float> features = gatherClassifierFeatures(intensity, dims, voxels);
+    const std::vector<float> features = hostScan != nullptr
+                                            ? cpuClassifierFeatures(*hostScan, voxels)
+                                            : gatherClassifierFeatures(intensity, dims, voxels);
     training_.featureSeconds = secondsSince(start);
     training_.insideSamples = in.voxels.size();
     training_.outsideSamples = out.voxels.size();

@@ -5,6 +5,7 @@
 // evaluated at every voxel on the GPU, gives the data speed P(inside) - P(outside) in [-1, 1]
 // as an R32F 3D texture for the solver; where the forest is unsure, the examples near the voxel
 // decide (speed/place_vote, issue 27). Needs a current GLES 3.1 context for its whole life.
+#include "core/volume.hpp"
 #include "gpu/gl_handle.hpp"
 #include "speed/example_voxels.hpp"
 #include "speed/place_vote.hpp"
@@ -58,9 +59,13 @@ class ClassifierSpeed {
     // recycled: the texture of the classifier speed this one replaces (takeTexture()), written
     // over instead of allocating another: a 256^3 float texture takes 0.12 s to allocate on
     // llvmpipe, most of a retraining after a correction. Ignored unless it is R32F of `dims`.
+    // hostScan: the intensity texture's values on the host (the raw scan it was uploaded from),
+    // or null. Given, the training samples' features come from the CPU twin
+    // (speed/classifier_features_cpu), so that the forest learns the scan's numbers whatever a
+    // GPU's gather returns (issue 47); else from the GPU's gather.
     ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<const Example> inside,
                     std::span<const Example> outside, const ClassifierParams& params = {},
-                    gpu::Texture recycled = {});
+                    gpu::Texture recycled = {}, const Volume* hostScan = nullptr);
 
     // R32F 3D texture of dims(): P(inside) - P(outside) per voxel (on demand: where evaluated).
     [[nodiscard]] GLuint texture() const { return texture_.id(); }

@@ -38,10 +38,14 @@
 // features, which have the same number, are gathered alone.
 #define SPEED_CACHE_BINDING 13
 
+// gpu/texture_readback (gpu/read_volume.comp), which runs alone: the buffer it fills.
+#define READ_VOLUME_BINDING 0
+
 // Texture units of the samplers (glActiveTexture(GL_TEXTURE0 + unit)).
 #define SOLVER_SCAN_UNIT 0    // speed/data_speed.glsl, solver: I (scan or smoothed copy)
 #define SOLVER_FACTOR_UNIT 1  // speed/data_speed.glsl, solver: edge g or classifier output
 #define SPEED_SOURCE_UNIT 0   // speed/*.comp (each runs alone): the texture it reads
+#define READ_VOLUME_UNIT 0    // gpu/read_volume.comp (runs alone): the texture it reads
 #define VIEW_SCAN_UNIT 0      // render/view_common.glsl: the scan, linear filtering
 #define VIEW_TF_LUT_UNIT 1    // render/raycast.comp: transfer function
 #define VIEW_SKIP_GRID_UNIT 2 // render/raycast.comp: block min/max for empty-space skipping

@@ -6,8 +6,10 @@
 #include "gpu/gl_state_guard.hpp"
 #include "gpu/program.hpp"
 #include "gpu/scan_texture.hpp"
+#include "gpu/texture_readback.hpp"
 #include "speed/classifier_features.hpp"
 #include "speed/classifier_speed.hpp"
+#include "speed/classifier_speed_cpu.hpp"
 #include "speed/place_vote.hpp"
 #include "speed/split_mix.hpp"
 #include "support/gpu_fixture.hpp"
@@ -77,52 +79,13 @@ std::vector<double> cpuFeatures(const std::vector<float>& vol, glm::ivec3 d, glm
     return {at(v), m3, m5, m9, s3, s5, s9, glm::length(g)};
 }
 
-// Values of a 3D R32F texture at the voxels given.
-std::vector<float> readAt(GLuint texture, const std::vector<glm::ivec3>& voxels) {
-    static constexpr const char* kSource = R"(#version 310 es
-precision highp float;
-precision highp sampler3D;
-layout(local_size_x = 64) in;
-layout(binding = 0) uniform sampler3D tex;
-layout(std430, binding = 0) readonly buffer In { ivec4 at[]; };
-layout(std430, binding = 1) writeonly buffer Out { float value[]; };
-uniform int count;
-void main() {
-    int n = int(gl_GlobalInvocationID.x);
-    if (n >= count) {
-        return;
-    }
-    value[n] = texelFetch(tex, at[n].xyz, 0).r;
-}
-)";
-    gpu::GlStateGuard guard;
-    std::vector<glm::ivec4> coords;
+// Values of a 3D R32F texture at the voxels given, through the product's one read-back path.
+std::vector<float> readAt(GLuint texture, glm::ivec3 d, const std::vector<glm::ivec3>& voxels) {
+    const std::vector<float> all = gpu::readVolumeTexture(texture, d);
+    std::vector<float> values;
+    values.reserve(voxels.size());
     for (const glm::ivec3 v : voxels) {
-        coords.emplace_back(v, 0);
-    }
-    const gpu::Program program = gpu::buildComputeProgramFromSource("readAt", kSource);
-    const gpu::Buffer in =
-        gpu::createBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(coords.size() * 16),
-                          coords.data(), GL_STATIC_DRAW);
-    const gpu::Buffer out =
-        gpu::createBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(voxels.size() * 4),
-                          nullptr, GL_STREAM_READ);
-    glUseProgram(program.id());
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_3D, texture);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
-    glUniform1i(glGetUniformLocation(program.id(), "count"), static_cast<GLint>(voxels.size()));
-    glDispatchCompute(static_cast<GLuint>((voxels.size() + 63) / 64), 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, out.id());
-    std::vector<float> values(voxels.size());
-    const void* mapped = glMapBufferRange(
-        GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(values.size() * 4), GL_MAP_READ_BIT);
-    EXPECT_NE(mapped, nullptr);
-    if (mapped != nullptr) {
-        std::memcpy(values.data(), mapped, values.size() * 4);
-        glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+        values.push_back(all[indexOf(d, v)]);
     }
     return values;
 }
@@ -190,7 +153,7 @@ TEST_F(ClassifierSpeedTest, TwoTexturesMeetAtTheirBorder) {
     EXPECT_GT(t.insideSamples, 800U);
     EXPECT_GT(t.outOfBagAccuracy, 0.95);
 
-    const std::vector<float> out = readAt(speed.texture(), allVoxels(kTwoDims));
+    const std::vector<float> out = readAt(speed.texture(), kTwoDims, allVoxels(kTwoDims));
     // Per slab of constant x: the share of voxels the speed calls inside.
     std::vector<double> insideShare(kTwoDims.x, 0.0);
     for (const glm::ivec3 p : allVoxels(kTwoDims)) {
@@ -235,7 +198,7 @@ TEST_F(ClassifierSpeedTest, GpuEvaluationMatchesTheCpuForest) {
     voxels.push_back(kTwoDims - 1);
     const std::vector<float> features =
         speed::gatherClassifierFeatures(scan.exact(), kTwoDims, voxels);
-    const std::vector<float> gpuValues = readAt(speed.texture(), voxels);
+    const std::vector<float> gpuValues = readAt(speed.texture(), kTwoDims, voxels);
     std::size_t near = 0;
     std::size_t between = 0;
     for (std::size_t n = 0; n < voxels.size(); ++n) {
@@ -265,7 +228,7 @@ TEST_F(ClassifierSpeedTest, WhereAppearanceIsUnsureTheNearestMarksDecide) {
     params.trees = 12;
     const ClassifierSpeed speed(scan.exact(), d, inside, outside, params);
     const std::vector<glm::ivec3> voxels = allVoxels(d);
-    const std::vector<float> out = readAt(speed.texture(), voxels);
+    const std::vector<float> out = readAt(speed.texture(), d, voxels);
     const std::vector<float> features = speed::gatherClassifierFeatures(scan.exact(), d, voxels);
     // Shares called inside: within 6 voxels of each mark (its radius and a half), and beyond
     // both marks' reach.
@@ -276,7 +239,7 @@ TEST_F(ClassifierSpeedTest, WhereAppearanceIsUnsureTheNearestMarksDecide) {
         const float look = speed.forest().predict(
             std::span(features).subspan(n * kClassifierFeatureCount, kClassifierFeatureCount));
         const float want =
-            look + (1.0F - std::abs(look)) * speed::placeVoteAt(speed.placeVote(), voxels[n]);
+            speed::classifierSpeedFrom(look, speed::placeVoteAt(speed.placeVote(), voxels[n]));
         worst = std::max(worst, static_cast<double>(std::abs(want - out[n])));
         const glm::vec3 p(voxels[n]);
         const std::size_t where = glm::length(p - inside[0].centre) <= 6.0F    ? 0
@@ -317,7 +280,7 @@ TEST_F(ClassifierSpeedTest, EvaluatesEverySlabOfALongScan) {
         }
     }
     std::size_t outside = 0;
-    for (const float v : readAt(speed.texture(), last)) {
+    for (const float v : readAt(speed.texture(), d, last)) {
         outside += v < 0.0F ? 1 : 0;
     }
     EXPECT_GT(outside, last.size() * 9 / 10);

@@ -2,10 +2,10 @@
 // speed computed brick by brick on demand is the run with the speed computed everywhere first,
 // it evaluates only part of the scan, and filling ahead completes the same texture.
 #include "gpu/scan_texture.hpp"
+#include "gpu/texture_readback.hpp"
 #include "solver/level_set_solver.hpp"
 #include "speed/classifier_speed.hpp"
 #include "speed/volume_texture.hpp"
-#include "speed_texture_readback.hpp"
 #include "support/gpu_fixture.hpp"
 #include "support/two_textures.hpp"
 
@@ -82,8 +82,8 @@ TEST_F(SpeedOnDemandTest, TheFrontMovesAsWithTheSpeedComputedEverywhere) {
     EXPECT_EQ(a.speedBricksEvaluated(), 0U);
     EXPECT_GT(b.speedBricksEvaluated(), 0U);
     EXPECT_LT(b.speedBricksEvaluated(), stats.totalBricks / 2);
-    const std::vector<float> full = readVolumeTexture(everywhere.texture(), kDims);
-    std::vector<float> partial = readVolumeTexture(onDemand.texture(), kDims);
+    const std::vector<float> full = gpu::readVolumeTexture(everywhere.texture(), kDims);
+    std::vector<float> partial = gpu::readVolumeTexture(onDemand.texture(), kDims);
     std::size_t evaluated = 0;
     for (std::size_t n = 0; n < partial.size(); ++n) {
         if (partial[n] != 0.0F) {
@@ -101,7 +101,7 @@ TEST_F(SpeedOnDemandTest, TheFrontMovesAsWithTheSpeedComputedEverywhere) {
         left = b.evaluateSpeedAhead(64);
     }
     EXPECT_EQ(b.speedBricksEvaluated(), stats.totalBricks);
-    partial = readVolumeTexture(onDemand.texture(), kDims);
+    partial = gpu::readVolumeTexture(onDemand.texture(), kDims);
     EXPECT_EQ(partial, full);
     EXPECT_EQ(a.evaluateSpeedAhead(16), 0U); // complete from the start
 }
@@ -139,7 +139,7 @@ TEST_F(SpeedOnDemandTest, ARetrainedSpeedWritesOverItsPredecessorsTexture) {
     run(solver, first);
     solver.setSpeedInputs({});
     const GLuint id = first.texture();
-    std::vector<float> values = readVolumeTexture(id, kDims);
+    std::vector<float> values = gpu::readVolumeTexture(id, kDims);
     ASSERT_GT(std::count_if(values.begin(), values.end(), [](float v) { return v != 0.0F; }), 0);
 
     ClassifierParams params;
@@ -147,7 +147,7 @@ TEST_F(SpeedOnDemandTest, ARetrainedSpeedWritesOverItsPredecessorsTexture) {
     ClassifierSpeed second(texture.exact(), kDims, kInside, kOutside, params, first.takeTexture());
     EXPECT_EQ(first.texture(), 0U);
     EXPECT_EQ(second.texture(), id);
-    values = readVolumeTexture(second.texture(), kDims);
+    values = gpu::readVolumeTexture(second.texture(), kDims);
     EXPECT_EQ(std::count_if(values.begin(), values.end(), [](float v) { return v != 0.0F; }), 0);
     LevelSetSolver fresh(texture);
     const ClassifierSpeed everywhere = classifier(texture, ClassifierEvaluation::Everywhere);
@@ -160,13 +160,13 @@ TEST_F(SpeedOnDemandTest, ARetrainedSpeedWritesOverItsPredecessorsTexture) {
     const ClassifierSpeed filled(texture.exact(), kDims, kInside, kOutside, params,
                                  second.takeTexture());
     EXPECT_EQ(filled.texture(), id);
-    const std::vector<float> whole = readVolumeTexture(everywhere.texture(), kDims);
-    EXPECT_EQ(readVolumeTexture(filled.texture(), kDims), whole);
+    const std::vector<float> whole = gpu::readVolumeTexture(everywhere.texture(), kDims);
+    EXPECT_EQ(gpu::readVolumeTexture(filled.texture(), kDims), whole);
     gpu::Texture other = speed::createVolumeTexture(glm::ivec3(8, 8, 8), "another grid");
     const GLuint otherId = other.id();
     const ClassifierSpeed own(texture.exact(), kDims, kInside, kOutside, params, std::move(other));
     EXPECT_NE(own.texture(), otherId);
-    EXPECT_EQ(readVolumeTexture(own.texture(), kDims), whole);
+    EXPECT_EQ(gpu::readVolumeTexture(own.texture(), kDims), whole);
 }
 
 } // namespace

@@ -1,11 +1,11 @@
 // The speed's preprocessing on the GPU: the edge-preserving smoothing (against a plain box blur)
 // and the edge-stopping factor, on a noisy step edge.
 #include "gpu/scan_texture.hpp"
-#include "support/solver_test_support.hpp"
+#include "gpu/texture_readback.hpp"
 #include "speed/edge_factor.hpp"
 #include "speed/smoothing.hpp"
-#include "speed_texture_readback.hpp"
 #include "support/gpu_fixture.hpp"
+#include "support/solver_test_support.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -125,7 +125,7 @@ TEST_F(SpeedPreprocessTest, SmoothingRemovesNoiseAndKeepsTheStep) {
             EXPECT_EQ(total, 10);
         });
     EXPECT_EQ(calls, 10);
-    const std::vector<float> pm = readVolumeTexture(smoothed.id(), kDims);
+    const std::vector<float> pm = gpu::readVolumeTexture(smoothed.id(), kDims);
     const std::vector<float> box = boxBlur(raw);
     const double rawNoise = flatNoise(raw);
     EXPECT_NEAR(rawNoise, kNoiseD, 0.5);
@@ -151,7 +151,7 @@ TEST_F(SpeedPreprocessTest, EdgeFactorIsSmallAtTheStepAndNearOneWhereFlat) {
     const gpu::ScanTexture scan(noisyStep(), kDims);
     const gpu::Texture smoothed = speed::smoothScan(scan.exact(), kDims, {10, 3.0F * kNoise});
     const gpu::Texture factor = speed::edgeFactor(smoothed.id(), kDims, kNoise);
-    const std::vector<float> g = readVolumeTexture(factor.id(), kDims);
+    const std::vector<float> g = gpu::readVolumeTexture(factor.id(), kDims);
     for (const float x : g) {
         ASSERT_TRUE(x > 0.0F && x <= 1.0F) << x;
     }
