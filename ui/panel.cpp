@@ -42,10 +42,12 @@ class Drawer {
                       IM_COL32_WHITE, m.banner.c_str());
         ImGui::PopFont();
         ImGui::Dummy(ImVec2(w, h));
-        if (!m.auditAlarm.empty()) {
-            ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
-            ImGui::TextWrapped("%s", m.auditAlarm.c_str());
-            ImGui::PopStyleColor();
+        for (const std::string* alarm : {&m.auditAlarm, &m.gpuAlarm}) {
+            if (!alarm->empty()) {
+                ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
+                ImGui::TextWrapped("%s", alarm->c_str());
+                ImGui::PopStyleColor();
+            }
         }
         if (!m.scanName.empty()) {
             ImGui::TextDisabled("%s", m.scanName.c_str());

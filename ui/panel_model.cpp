@@ -115,6 +115,9 @@ void addReadouts(const workflow::Status& st, PanelModel& m) {
 // matter only to classify, so its tools appear only when it is chosen.
 void addSpeed(const workflow::Status& st, PanelModel& m) {
     for (model::SpeedKind k : model::kSpeedKinds) {
+        if (std::find(st.speedsOff.begin(), st.speedsOff.end(), k) != st.speedsOff.end()) {
+            continue; // this GPU computes it wrong (Status::gpuAlarm says so)
+        }
         m.speeds.push_back({speedLabel(k) + "##speed", model::SetSpeed{k}, st.speed == k});
     }
     if (st.speed != model::SpeedKind::Classify) {
@@ -179,6 +182,7 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
             (st.auditAcknowledged ? ". Acknowledged: exports are recorded once it can be written."
                                   : ". Export waits for an acknowledgement.");
     }
+    m.gpuAlarm = st.gpuAlarm;
     if (s == State::Done && !st.exportedPath.empty() && m.message.empty()) {
         m.message = "Saved to " + st.exportedPath;
     }

@@ -51,6 +51,8 @@ struct PanelModel {
     bool error = false;
     // The audit log cannot be written: shown above all else until it can ("" = it can).
     std::string auditAlarm;
+    // A speed is off because this GPU computed it wrong at start-up: shown all along ("" = none).
+    std::string gpuAlarm;
     std::optional<double> progress; // Loading: 0..1, < 0 when unknown
     std::vector<Readout> readouts;
     std::vector<ParamRow> params;

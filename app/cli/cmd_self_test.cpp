@@ -15,6 +15,7 @@
 #include "model/solver_types.hpp"
 #include "platform/egl/offscreen_context.hpp"
 #include "platform/input/sources.hpp"
+#include "session/numerics_check.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -131,6 +132,31 @@ CheckResult checkShaders() {
     return r;
 }
 
+// Each speed computed on this GPU against its CPU twin (session/numerics_check): a speed whose
+// numbers are wrong here would give an operator a wrong mask, so it fails the self-test.
+std::vector<CheckResult> checkNumerics() {
+    const session::NumericsReport report = session::checkGpuNumerics();
+    std::vector<CheckResult> out;
+    for (const session::SpeedNumerics& s : report.speeds) {
+        char largest[32];
+        std::snprintf(largest, sizeof largest, "%.3g", s.largestDifference);
+        out.push_back({"numerics " + std::string(model::speedKindName(s.kind)),
+                       s.passed ? CheckLevel::Ok : CheckLevel::Fail,
+                       std::string(s.passed ? "matches the CPU" : "WRONG on this GPU") +
+                           ", largest difference " + largest + ": " + s.detail,
+                       {}});
+    }
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.2f", report.seconds);
+    out.push_back({"numerics",
+                   report.allPassed() ? CheckLevel::Ok : CheckLevel::Fail,
+                   std::to_string(report.speeds.size()) +
+                       " speeds on the built-in phantom against their CPU twins in " + seconds +
+                       " s",
+                   {}});
+    return out;
+}
+
 } // namespace
 
 int runSelfTest(std::span<const std::string> words) {
@@ -159,6 +185,9 @@ int runSelfTest(std::span<const std::string> words) {
     if (context) {
         results.push_back(checkGl(context->backendName()));
         results.push_back(checkShaders());
+        for (CheckResult& r : checkNumerics()) {
+            results.push_back(std::move(r));
+        }
     }
 
     const config::BindingCheck bindable = model::isBindable;

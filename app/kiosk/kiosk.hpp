@@ -20,6 +20,7 @@
 #include "kiosk/view_painter.hpp"
 #include "platform/display.hpp"
 #include "script/script_player.hpp"
+#include "session/numerics_check.hpp"
 #include "ui/layout.hpp"
 #include "ui/screen_rotation.hpp"
 #include "ui/touch_ui.hpp"
@@ -48,10 +49,11 @@ inline double secondsSince(Clock::time_point t) {
 class Kiosk {
   public:
     // `liveDevices`: open the configured input devices (not offscreen, where a script's raw
-    // records are the only device input).
+    // records are the only device input). `numerics`: the display's GPU checked against the CPU
+    // (session/numerics_check); a speed it failed is off for the session.
     Kiosk(const KioskOptions& options, const config::KioskConfig& cfg,
           std::unique_ptr<script::ScriptPlayer> player, std::unique_ptr<platform::Display> display,
-          bool liveDevices, std::ostream& err);
+          bool liveDevices, const session::NumericsReport& numerics, std::ostream& err);
 
     // One frame; false when the kiosk should stop.
     bool step();
@@ -65,6 +67,8 @@ class Kiosk {
     void finish(std::ostream& out);
 
   private:
+    // The start-up check's verdict in the audit log, and each speed it turned off in the journal.
+    void recordNumerics(const session::NumericsReport& numerics);
     static std::vector<std::string> scanList(const KioskOptions& options);
 
     [[nodiscard]] ui::Layout layout() const;

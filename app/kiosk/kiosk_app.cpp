@@ -9,6 +9,8 @@
 #include "platform/display_choice.hpp"
 #include "scan/scan_reader.hpp"
 
+#include <cmath>
+#include <nlohmann/json.hpp>
 #include <ostream>
 #include <thread>
 #include <utility>
@@ -17,7 +19,8 @@ namespace steerseg::kiosk {
 
 Kiosk::Kiosk(const KioskOptions& options, const config::KioskConfig& cfg,
              std::unique_ptr<script::ScriptPlayer> player,
-             std::unique_ptr<platform::Display> display, bool liveDevices, std::ostream& err)
+             std::unique_ptr<platform::Display> display, bool liveDevices,
+             const session::NumericsReport& numerics, std::ostream& err)
     : options_(options), cfg_(cfg), err_(err), player_(std::move(player)),
       display_(std::move(display)), info_(display_->info()),
       dpi_(cfg.display.dpi > 0.0 ? cfg.display.dpi : info_.dpi),
@@ -27,7 +30,7 @@ Kiosk::Kiosk(const KioskOptions& options, const config::KioskConfig& cfg,
       engine_(engine::consoleSolverOptions(),
               {cfg.speed.smoothIterations, cfg.speed.conductanceFactor, cfg.speed.kappaFactor}),
       autosave_(cfg.autosave, cfg.audit.path, options.resume, err), audit_(cfg.audit.path),
-      flow_(engine_, workflowSettings(cfg), &audit_),
+      flow_(engine_, workflowSettings(cfg, &numerics), &audit_),
       touch_({dpi_, cfg.ui.touchTargetMm, cfg.ui.fontScale, cfg.probe.radiusMm,
               static_cast<double>(cfg.ui.longPressMs), "", scanList(options)}),
       keys_(cfg.bindings.keys),
@@ -43,6 +46,7 @@ Kiosk::Kiosk(const KioskOptions& options, const config::KioskConfig& cfg,
     if (const auto note = audit_.takeRepairNote()) {
         err_ << kLogPrefix << *note << '\n';
     }
+    recordNumerics(numerics);
     if (!options.scan.empty() && !player_ && !autosave_.resuming()) {
         actions_.emplace_back(model::LoadScan{options.scan});
     }
@@ -72,6 +76,27 @@ bool Kiosk::step() {
     }
     idle(hadInput);
     return true;
+}
+
+void Kiosk::recordNumerics(const session::NumericsReport& numerics) {
+    nlohmann::json speeds = nlohmann::json::array();
+    for (const session::SpeedNumerics& s : numerics.speeds) {
+        // JSON has no infinity: a value that was not a number is the largest difference there is.
+        speeds.push_back({{"speed", model::speedKindName(s.kind)},
+                          {"passed", s.passed},
+                          {"largest_difference", std::isfinite(s.largestDifference)
+                                                     ? nlohmann::json(s.largestDifference)
+                                                     : nlohmann::json("not a number")},
+                          {"detail", s.detail}});
+        if (!s.passed) {
+            err_ << kLogPrefix << "GPU numerics check: the " << model::speedKindName(s.kind)
+                 << " speed is WRONG on this GPU and is off: " << s.detail << '\n';
+        }
+    }
+    audit_.numericsCheck(numerics.allPassed(), speeds, numerics.seconds);
+    if (const std::string& alarm = flow_.status().gpuAlarm; !alarm.empty()) {
+        err_ << kLogPrefix << alarm << '\n';
+    }
 }
 
 void Kiosk::reportAudit() {
@@ -215,8 +240,11 @@ int runKiosk(const KioskOptions& options, std::ostream& out, std::ostream& err) 
     std::unique_ptr<platform::Display> display = openDisplay(platformName, displayOpts);
     out << kLogPrefix << display->info().description << '\n';
     StopSignals signals;
+    // Before the first frame, on the display's own context: a speed this GPU computes wrong is
+    // off before an operator can choose it.
+    const session::NumericsReport numerics = session::checkGpuNumerics();
     Kiosk kiosk(options, cfg, std::move(player), std::move(display), platformName != "offscreen",
-                err);
+                numerics, err);
     while (kiosk.step()) {
     }
     kiosk.finish(out);

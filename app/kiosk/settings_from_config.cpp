@@ -1,8 +1,33 @@
 #include "kiosk/settings_from_config.hpp"
 
+#include <algorithm>
+
 namespace steerseg::kiosk {
 
-workflow::Settings workflowSettings(const config::KioskConfig& config) {
+namespace {
+
+void turnOffFailedSpeeds(workflow::Settings& s, const session::NumericsReport& numerics) {
+    for (const session::SpeedNumerics& n : numerics.speeds) {
+        if (!n.passed) {
+            s.speedsOff.push_back({n.kind, n.failure});
+        }
+    }
+    if (numerics.passed(s.defaultSpeed)) {
+        return;
+    }
+    const auto passed = std::find_if(model::kSpeedKinds.begin(), model::kSpeedKinds.end(),
+                                     [&](model::SpeedKind k) { return numerics.passed(k); });
+    // None passed: the solver itself is wrong here. The paper's speed stays on, the alarm says
+    // what failed, and the operator's eyes judge the masks.
+    s.defaultSpeed = passed != model::kSpeedKinds.end() ? *passed : model::SpeedKind::Threshold;
+    std::erase_if(s.speedsOff,
+                  [&](const workflow::SpeedOff& off) { return off.kind == s.defaultSpeed; });
+}
+
+} // namespace
+
+workflow::Settings workflowSettings(const config::KioskConfig& config,
+                                    const session::NumericsReport* numerics) {
     workflow::Settings s;
     for (const config::Preset& p : config.presets) {
         s.presets.push_back(
@@ -19,6 +44,9 @@ workflow::Settings workflowSettings(const config::KioskConfig& config) {
     s.classifyPlaceReach = config.speed.classifyPlaceReach;
     s.exportFolder = config.exports.folder;
     s.exportFormats = config.exports.formats;
+    if (numerics != nullptr) {
+        turnOffFailedSpeeds(s, *numerics);
+    }
     return s;
 }
 

@@ -294,6 +294,18 @@ void AuditLog::transition(model::State from, model::State to, std::string_view c
     }
 }
 
+void AuditLog::numericsCheck(bool passed, const nlohmann::json& speeds, double seconds) {
+    try {
+        nlohmann::json r{{"event", "numerics_check"},
+                         {"passed", passed},
+                         {"speeds", speeds},
+                         {"seconds", seconds}};
+        write(r);
+    } catch (const std::exception& e) {
+        fail(path_.string() + ": record failed: " + e.what());
+    }
+}
+
 void AuditLog::send(std::string_view peer, std::string_view file, std::string_view sopInstanceUid,
                     int attempt, bool accepted, std::string_view problem) {
     try {

@@ -48,6 +48,9 @@ class AuditLog {
     void transition(model::State from, model::State to, std::string_view cause,
                     std::string_view scan, std::string_view message);
 
+    // The start-up check of this GPU's numbers (session/numerics_check): `speeds` holds one
+    // object per speed (name, passed, largest difference, detail).
+    void numericsCheck(bool passed, const nlohmann::json& speeds, double seconds);
     // One attempt to send `file` (a DICOM object, `sopInstanceUid`) to a DICOM peer: the
     // outbox's record (docs/dicom-network.md). `problem`: "" when the peer accepted it.
     void send(std::string_view peer, std::string_view file, std::string_view sopInstanceUid,

@@ -47,6 +47,9 @@ void validateSettings(const Settings& s) {
     require(s.maxUndo >= 1 && s.maxUndo <= 10000,
             "undo depth must be within [1, 10000] (got " + std::to_string(s.maxUndo) + ")");
     require(model::validSpeedKind(s.defaultSpeed), "the default speed is not a known speed");
+    for (const SpeedOff& off : s.speedsOff) {
+        require(off.kind != s.defaultSpeed, "the default speed is off on this GPU");
+    }
     require(!s.exportFormats.empty(), "at least one export format is needed");
     for (const std::string& format : s.exportFormats) {
         require(!format.empty() && format.find_first_of("/\\") == std::string::npos &&

@@ -26,6 +26,13 @@ struct TissuePreset {
 
 using WallClock = std::function<std::chrono::system_clock::time_point()>;
 
+// A speed this GPU computed wrong in the start-up numerics check (session/numerics_check): the
+// check's one line on why.
+struct SpeedOff {
+    model::SpeedKind kind = model::SpeedKind::Classify;
+    std::string why;
+};
+
 struct Settings {
     std::vector<TissuePreset> presets; // in the order the panel lists them
     // A small probe in homogeneous tissue has a tiny spread and the front would never move:
@@ -64,6 +71,10 @@ struct Settings {
     // radii (speed/place_vote, docs/speed.md "Where appearance is unsure"): an erase in a
     // tumour's leak holds the tissue around it out though it looks like the tumour. 0: never.
     double classifyPlaceReach = 3.0;
+    // Speeds off on this GPU: the panel leaves them out, SetSpeed refuses them, and whatever
+    // names one (a resumed session) runs defaultSpeed instead, which must not be one of them;
+    // the screen says why all along (Status::gpuAlarm).
+    std::vector<SpeedOff> speedsOff;
     WallClock clock; // export names' time stamps; empty: the system clock (tests fix it)
 };
 

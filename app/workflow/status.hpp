@@ -51,6 +51,10 @@ struct Status {
     // Why the audit log cannot be written ("" while it is): the screen shows it until it clears,
     // whatever the message; export waits for AcknowledgeAudit meanwhile.
     std::string auditProblem;
+    // Speeds off on this GPU (Settings::speedsOff), and what the screen says about them all
+    // along ("" when none is).
+    std::vector<model::SpeedKind> speedsOff;
+    std::string gpuAlarm;
     bool auditAcknowledged = false;
     double loadProgress = 0.0;
     ScanInfo scan;

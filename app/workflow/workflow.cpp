@@ -52,6 +52,18 @@ Workflow::Workflow(Engine& engine, Settings settings, AuditLog* audit)
         status_.presets.push_back(p.name);
     }
     status_.exportFormats = settings_.exportFormats;
+    for (const SpeedOff& off : settings_.speedsOff) {
+        status_.speedsOff.push_back(off.kind);
+        status_.gpuAlarm += std::string(status_.gpuAlarm.empty() ? "" : " ") + "The " +
+                            std::string(model::speedKindName(off.kind)) +
+                            " speed is off: this GPU computed it wrong at start-up (" + off.why +
+                            ").";
+    }
+    if (!status_.gpuAlarm.empty()) {
+        status_.gpuAlarm = "GPU CHECK FAILED. " + status_.gpuAlarm + " The " +
+                           std::string(model::speedKindName(settings_.defaultSpeed)) +
+                           " speed runs instead.";
+    }
     status_.radius = settings_.defaultRadius;
     params_.values[indexOf(model::Param::Radius)] = settings_.defaultRadius;
     noteAuditError();

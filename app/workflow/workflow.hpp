@@ -158,6 +158,8 @@ class Workflow {
     // fallback; the examples (and the window's bound, Settings::classifyWithinWindow) travel
     // only with Classify.
     [[nodiscard]] SpeedChoice speedFor(const ParamValues& values) const;
+    // Settings::speedsOff's entry for `kind`, or null while it runs on this GPU.
+    [[nodiscard]] const SpeedOff* speedOff(model::SpeedKind kind) const;
     // An example sphere in voxels for a probe-sized sphere in mm; nullopt outside the scan.
     [[nodiscard]] std::optional<model::Sphere> exampleAt(const glm::dvec3& voxel,
                                                          double radiusMm) const;

@@ -14,8 +14,23 @@
 
 namespace steerseg::workflow {
 
+const SpeedOff* Workflow::speedOff(model::SpeedKind kind) const {
+    for (const SpeedOff& off : settings_.speedsOff) {
+        if (off.kind == kind) {
+            return &off;
+        }
+    }
+    return nullptr;
+}
+
 SpeedChoice Workflow::speedFor(const ParamValues& values) const {
     const SpeedChoice& chosen = values.speed;
+    // A resumed session or an old undo entry may name a speed this GPU computes wrong.
+    if (speedOff(chosen.kind) != nullptr) {
+        SpeedChoice instead;
+        instead.kind = settings_.defaultSpeed;
+        return instead;
+    }
     if (chosen.kind == model::SpeedKind::Classify) {
         if (chosen.hasInside() && chosen.hasOutside()) {
             SpeedChoice bounded = chosen;
@@ -24,7 +39,8 @@ SpeedChoice Workflow::speedFor(const ParamValues& values) const {
             return bounded;
         }
         SpeedChoice waiting;
-        waiting.kind = values.fallback;
+        waiting.kind =
+            speedOff(values.fallback) != nullptr ? settings_.defaultSpeed : values.fallback;
         return waiting;
     }
     SpeedChoice plain;
@@ -77,6 +93,11 @@ void Workflow::showSpeed(const ParamValues& values, model::SpeedKind inForce) {
 Workflow::Outcome Workflow::on(const model::SetSpeed& a) {
     if (!model::validSpeedKind(a.kind)) {
         return no("unknown speed");
+    }
+    if (speedOff(a.kind) != nullptr) {
+        // The why stands in the alarm above the message (Status::gpuAlarm).
+        return no("the " + std::string(model::speedKindName(a.kind)) +
+                  " speed is off: this GPU computed it wrong at start-up");
     }
     if (a.kind == params_.speed.kind) {
         return ok();

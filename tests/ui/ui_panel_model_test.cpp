@@ -212,6 +212,25 @@ TEST(UiPanelModel, TheSpeedsAreOfferedWhereParametersAre) {
     }
 }
 
+// A speed this GPU computed wrong at start-up (issue 47) is not offered, and the alarm that says
+// why stands in every state.
+TEST(UiPanelModel, ASpeedOffOnThisGpuIsLeftOutAndTheAlarmStands) {
+    for (State state : {State::NoScan, State::Inspect, State::Evolving, State::Done}) {
+        workflow::Status st = status(state);
+        st.speedsOff = {model::SpeedKind::Classify};
+        st.gpuAlarm = "GPU CHECK FAILED. The classify speed is off.";
+        const ui::PanelModel m = modelOf(st);
+        EXPECT_EQ(m.gpuAlarm, st.gpuAlarm) << ui::stateLabel(state);
+        for (const auto& speed : m.speeds) {
+            EXPECT_NE(std::get<model::SetSpeed>(speed.action).kind, model::SpeedKind::Classify);
+        }
+        if (state == State::Inspect || state == State::Evolving) {
+            EXPECT_EQ(m.speeds.size(), 2U) << ui::stateLabel(state);
+        }
+    }
+    EXPECT_TRUE(modelOf(status(State::Inspect)).gpuAlarm.empty());
+}
+
 TEST(UiPanelModel, ClassifyShowsItsExamplesAndTools) {
     workflow::Status st = status(State::Paused);
     st.speed = model::SpeedKind::Classify;

@@ -71,6 +71,32 @@ TEST(WorkflowSpeed, ARefusedDefaultSpeedLeavesTheThresholdSpeedAndSaysWhy) {
     EXPECT_EQ(rig.engine.misuse(), 0) << rig.engine.lastMisuse();
 }
 
+// A speed this GPU computed wrong in the start-up check (Settings::speedsOff, issue 47) never
+// reaches the engine: SetSpeed is refused with the check's reason, and the alarm says why.
+TEST(WorkflowSpeed, ASpeedOffOnThisGpuIsNeverRun) {
+    Settings s = testSettings();
+    s.speedsOff = {{SpeedKind::Classify, "gathered features within 75.8"}};
+    Rig rig(s);
+    EXPECT_EQ(rig.status().speedsOff, std::vector<SpeedKind>{SpeedKind::Classify});
+    EXPECT_EQ(rig.status().gpuAlarm,
+              "GPU CHECK FAILED. The classify speed is off: this GPU computed it wrong at start-up "
+              "(gathered features within 75.8). The threshold speed runs instead.");
+    rig.load();
+    const Workflow::Outcome classify = rig.act(SetSpeed{SpeedKind::Classify});
+    EXPECT_FALSE(classify.accepted);
+    EXPECT_EQ(classify.reason, "the classify speed is off: this GPU computed it wrong at start-up");
+    EXPECT_TRUE(rig.act(SetSpeed{SpeedKind::Edge}).accepted);
+    for (const SpeedChoice& c : rig.engine.speeds) {
+        EXPECT_NE(c.kind, SpeedKind::Classify);
+    }
+    EXPECT_EQ(rig.engine.misuse(), 0) << rig.engine.lastMisuse();
+
+    Settings off = testSettings();
+    off.defaultSpeed = SpeedKind::Classify;
+    off.speedsOff = {{SpeedKind::Classify, "x"}};
+    EXPECT_THROW(Rig{off}, std::invalid_argument) << "the kiosk runs a speed that passed instead";
+}
+
 TEST(WorkflowSpeed, SpeedAndExamplesChangeWhereParametersDo) {
     const std::vector<std::pair<State, std::string>> states{
         {State::NoScan, "no scan loaded: load one first"},
