@@ -5,10 +5,12 @@
 // with sleeping off (every brick of the band does its full work); the last table runs a front
 // that has stopped with sleeping on and off (voxels visited per iteration beside iterations/s).
 //   solver_bench [--size N] [--iterations N] [--dense-size N]
+#include "gpu/gl_counts.hpp"
 #include "gpu/gpu_info.hpp"
 #include "platform/egl/offscreen_context.hpp"
 #include "solver/level_set_solver.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -22,17 +24,21 @@ namespace {
 struct Measurement {
     double iterationsPerSecond = 0.0;
     model::SolverStats stats;
+    gpu::GlCounts calls; // over the timed steps (gpu/gl_counts)
+    int iterations = 0;
 };
 
 // `iterations` steps timed with the GPU's work finished on both sides; the rate and the stats.
 Measurement timedSteps(solver::LevelSetSolver& solver, int iterations) {
     glFinish();
     const auto start = std::chrono::steady_clock::now();
+    const gpu::GlCounts before = gpu::glCounts();
     const model::StepResult r = solver.step(iterations);
+    const gpu::GlCounts calls = gpu::glCounts() - before;
     glFinish();
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return {r.iterations / seconds, solver.stats()};
+    return {r.iterations / seconds, solver.stats(), calls, r.iterations};
 }
 
 // A static-ish workload: a sphere of radius r under a zero data speed (T = intensity) and a
@@ -112,6 +118,21 @@ int main(int argc, char** argv) {
         const double voxels = static_cast<double>(m.stats.activeBricks) * b * b * b;
         std::printf("| %d | %u | %.0f | %.1f | %.1f |\n", b, m.stats.activeBricks, voxels,
                     m.iterationsPerSecond, voxels * m.iterationsPerSecond / 1e6);
+    }
+
+    {
+        // What an iteration costs whatever the GPU (issue 50): its passes, not its work.
+        const Measurement m = measure(size, static_cast<float>(size) / 16.0F, {}, iterations);
+        const auto per = [&](std::uint64_t n) {
+            return static_cast<double>(n) / static_cast<double>(std::max(m.iterations, 1));
+        };
+        std::printf("\n## GL calls per iteration, small front (sphere r = %d, sleeping on)\n\n",
+                    size / 16);
+        std::printf("| active bricks | iterations/s | dispatches | memory barriers | host syncs "
+                    "(read-backs + glFinish) |\n|---|---|---|---|---|\n");
+        std::printf("| %u | %.1f | %.2f | %.2f | %.3f |\n", m.stats.activeBricks,
+                    m.iterationsPerSecond, per(m.calls.dispatches), per(m.calls.barriers),
+                    per(m.calls.hostSyncs()));
     }
 
     std::printf("\n## Sparse vs dense (brick %d)\n\n", model::defaultBrickSize());

@@ -2,6 +2,7 @@
 
 #include "engine/view_setup.hpp"
 #include "gpu/gl.hpp"
+#include "gpu/gl_counts.hpp"
 #include "model/speed_kind.hpp"
 #include "render/slice_frame.hpp"
 #include "scan/read_progress.hpp"
@@ -318,7 +319,7 @@ bool SessionEngine::fillSpeedAhead(double seconds) {
     }
     const auto start = std::chrono::steady_clock::now();
     session_->evaluateSpeedAhead(aheadBricks_);
-    glFinish(); // the piece's cost sizes the next one
+    gpu::finish(); // the piece's cost sizes the next one
     const double spent =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double next = static_cast<double>(aheadBricks_) * seconds / std::max(spent, 1e-5);
@@ -330,7 +331,7 @@ bool SessionEngine::fillSpeedAhead(double seconds) {
 model::StepResult SessionEngine::step(int iterations) {
     const model::StepResult result = requireSession().step(iterations);
     // The frame loop times this call against its budget: the GPU's work belongs to it.
-    glFinish();
+    gpu::finish();
     changed();
     return result;
 }

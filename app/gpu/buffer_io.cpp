@@ -1,5 +1,6 @@
 #include "gpu/buffer_io.hpp"
 
+#include "gpu/gl_counts.hpp"
 #include "gpu/gl_error.hpp"
 
 #include <cstring>
@@ -13,11 +14,12 @@ void readBufferBytes(const Buffer& buffer, std::size_t offset, void* out, std::s
         return;
     }
     const auto size = static_cast<GLsizeiptr>(bytes);
+    countReadBack();
     // Read through a staging copy: on the H100's driver a buffer mapped directly after the
     // shaders' last dispatch lacked that dispatch's atomics (the solver's requestCount read 0
     // where the next iteration served requests), even after GL_BUFFER_UPDATE_BARRIER_BIT and
     // glFinish.
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    gpu::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     const Buffer staging = createBuffer(GL_COPY_WRITE_BUFFER, size, nullptr, GL_STREAM_READ);
     glBindBuffer(GL_COPY_READ_BUFFER, buffer.id());
     glBindBuffer(GL_COPY_WRITE_BUFFER, staging.id());
@@ -36,7 +38,7 @@ void writeBuffer(const Buffer& buffer, std::size_t offset, const void* data, std
     if (bytes == 0) {
         return;
     }
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    gpu::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.id());
     glBufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(offset),
                     static_cast<GLsizeiptr>(bytes), data);

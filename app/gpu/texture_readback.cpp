@@ -2,6 +2,7 @@
 
 #include "common/bindings.h"
 #include "gpu/buffer_io.hpp"
+#include "gpu/gl_counts.hpp"
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_handle.hpp"
 #include "gpu/gl_state_guard.hpp"
@@ -29,7 +30,7 @@ std::vector<float> readVolumeTexture(GLuint texture, const glm::ivec3& dims) {
         createBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(count * sizeof(float)),
                      nullptr, GL_STREAM_READ);
     // Whatever pass wrote the texture through an image is seen by this one's fetches.
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    gpu::memoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     glUseProgram(program.id());
     glActiveTexture(GL_TEXTURE0 + READ_VOLUME_UNIT);
     glBindTexture(GL_TEXTURE_3D, texture);
@@ -39,8 +40,8 @@ std::vector<float> readVolumeTexture(GLuint texture, const glm::ivec3& dims) {
     const auto groups = [](int n) { return static_cast<GLuint>((n + kGroup - 1) / kGroup); };
     for (int z = 0; z < dims.z; z += kSlabSlices) {
         glUniform1i(zOffsetAt, z);
-        glDispatchCompute(groups(dims.x), groups(dims.y),
-                          groups(std::min(kSlabSlices, dims.z - z)));
+        gpu::dispatchCompute(groups(dims.x), groups(dims.y),
+                             groups(std::min(kSlabSlices, dims.z - z)));
     }
     checkGl("reading a volume texture back");
     return readBuffer<float>(out, count, "a volume texture's values");

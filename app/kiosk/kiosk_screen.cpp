@@ -1,6 +1,7 @@
 // The kiosk's screen passes: the views and the panel composed and presented within the frame's
 // budget, and the frames a script asked for, saved once complete.
 #include "exports/image_file.hpp"
+#include "gpu/gl_counts.hpp"
 #include "kiosk/kiosk.hpp"
 
 #include <algorithm>
@@ -50,7 +51,7 @@ void Kiosk::drawScreen(bool hadInput) {
 void Kiosk::present(Clock::time_point frameStart) {
     if (composed_) {
         screen_.present(display_->framebuffer(), physical_);
-        glFinish(); // the panel's and the present's cost, for the next frame's split
+        gpu::finish(); // the panel's and the present's cost, for the next frame's split
         panelSeconds_ = 0.8 * panelSeconds_ + 0.2 * secondsSince(panelStart_);
         display_->present();
     }

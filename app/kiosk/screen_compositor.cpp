@@ -1,5 +1,6 @@
 #include "kiosk/screen_compositor.hpp"
 
+#include "gpu/gl_counts.hpp"
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_state_guard.hpp"
 #include "gpu/program.hpp"
@@ -64,7 +65,7 @@ void ScreenCompositor::drawPicture(unsigned int texture, const glm::ivec2& pictu
     }
     gpu::GlStateGuard guard;
     // The compute shaders' writes must land before the blit reads them.
-    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    gpu::memoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, source_.id());
     glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, screen_.framebuffer());

@@ -1,6 +1,7 @@
 #include "render/band_bounds.hpp"
 
 #include "common/bindings.h"
+#include "gpu/gl_counts.hpp"
 #include "gpu/gl_error.hpp"
 
 #include <array>
@@ -43,8 +44,8 @@ void BandBounds::update(const solver::BrickPoolView& pool) {
         return; // no bricks: the box stays empty
     }
     const GLuint groupsX = groups < kMaxGroupsX ? groups : kMaxGroupsX;
-    glDispatchCompute(groupsX, (groups + groupsX - 1) / groupsX, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    gpu::dispatchCompute(groupsX, (groups + groupsX - 1) / groupsX, 1);
+    gpu::memoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     gpu::checkGl("finding the level set's band for the 3D view");
 }
 

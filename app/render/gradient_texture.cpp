@@ -1,6 +1,7 @@
 #include "render/gradient_texture.hpp"
 
 #include "common/bindings.h"
+#include "gpu/gl_counts.hpp"
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_state_guard.hpp"
 #include "gpu/gpu_limits.hpp"
@@ -47,9 +48,10 @@ GradientTexture::GradientTexture(const gpu::ScanTexture& scan, std::size_t budge
                        GL_RGBA16F);
     glUniform3i(glGetUniformLocation(program.id(), "volumeDims"), dims.x, dims.y, dims.z);
     glUniform1f(glGetUniformLocation(program.id(), "toNormalised"), scan.toNormalised().x);
-    glDispatchCompute(static_cast<GLuint>((dims.x + 3) / 4), static_cast<GLuint>((dims.y + 3) / 4),
-                      static_cast<GLuint>((dims.z + 3) / 4));
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    gpu::dispatchCompute(static_cast<GLuint>((dims.x + 3) / 4),
+                         static_cast<GLuint>((dims.y + 3) / 4),
+                         static_cast<GLuint>((dims.z + 3) / 4));
+    gpu::memoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     gpu::checkGl("computing the scan's gradient texture");
     texture_ = std::move(texture);
     bytes_ = bytes;

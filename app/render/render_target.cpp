@@ -1,5 +1,6 @@
 #include "render/render_target.hpp"
 
+#include "gpu/gl_counts.hpp"
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_state_guard.hpp"
 #include "gpu/gpu_limits.hpp"
@@ -44,12 +45,13 @@ RgbaImage RenderTarget::readback() const {
         throw std::logic_error("nothing rendered yet");
     }
     gpu::GlStateGuard guard;
-    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    gpu::memoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
     glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     RgbaImage image{size_.x, size_.y, {}};
     image.pixels.resize(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y) * 4);
+    gpu::countReadBack();
     glReadPixels(0, 0, size_.x, size_.y, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
     gpu::checkGl("reading the picture back");
     return image;

@@ -1,6 +1,7 @@
 #include "render/view_bindings.hpp"
 
 #include "common/bindings.h"
+#include "gpu/gl_counts.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -66,10 +67,10 @@ void dispatchRegion(GLuint program, const ViewParams& params) {
         return;
     }
     glUniform2i(uniform(program, "firstPixel"), first.x, first.y);
-    glDispatchCompute(static_cast<GLuint>((count.x + 7) / 8),
-                      static_cast<GLuint>((count.y + 7) / 8), 1);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
-                    GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    gpu::dispatchCompute(static_cast<GLuint>((count.x + 7) / 8),
+                         static_cast<GLuint>((count.y + 7) / 8), 1);
+    gpu::memoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                       GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
 } // namespace steerseg::render

@@ -53,6 +53,19 @@ std::string segmentReport(const Session& session, const RunOutcome& run,
     j["voxels_visited_per_iteration"] = stats.visitedVoxelsPerIteration;
     j["front_voxels"] = stats.frontVoxels;
     j["band_bricks"] = stats.bandBricks;
+    // What an iteration costs whatever the GPU: its passes, their barriers and the host's waits
+    // (issue 50); the run's own, so per iteration of this call.
+    const RunCalls& calls = run.calls;
+    const double perIteration =
+        run.result.iterations > 0 ? 1.0 / static_cast<double>(run.result.iterations) : 0.0;
+    j["gl_calls"] = {{"dispatches", calls.dispatches},
+                     {"memory_barriers", calls.barriers},
+                     {"read_backs", calls.readBacks},
+                     {"finishes", calls.finishes}};
+    j["dispatches_per_iteration"] = static_cast<double>(calls.dispatches) * perIteration;
+    j["barriers_per_iteration"] = static_cast<double>(calls.barriers) * perIteration;
+    j["host_syncs_per_iteration"] =
+        static_cast<double>(calls.readBacks + calls.finishes) * perIteration;
     j["converged"] = session.converged();
     j["stop_reason"] = model::stopReasonName(run.result.stopReason);
     if (const auto& leak = run.result.leak) {

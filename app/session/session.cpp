@@ -3,6 +3,7 @@
 #include "core/mask_inside.hpp"
 #include "exports/export_writer.hpp"
 #include "gpu/gl.hpp"
+#include "gpu/gl_counts.hpp"
 #include "gpu/scan_texture.hpp"
 #include "render/renderer.hpp"
 #include "scan/scan_reader.hpp"
@@ -182,7 +183,7 @@ void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progr
             progress("edge factor", 1, 1);
         }
     }
-    glFinish(); // the time covers the GPU work
+    gpu::finish(); // the time covers the GPU work
     const auto prepared = std::chrono::steady_clock::now();
     g.timing.preprocessingSeconds = std::chrono::duration<double>(prepared - start).count();
     GLuint factor = g.factor.id();
@@ -247,6 +248,7 @@ model::StepResult Session::step(int iterations) {
 
 RunOutcome Session::run(const RunMode& mode) {
     const auto start = std::chrono::steady_clock::now();
+    const gpu::GlCounts before = gpu::glCounts();
     RunOutcome out;
     switch (mode.kind) {
     case RunMode::Iterations:
@@ -259,7 +261,9 @@ RunOutcome Session::run(const RunMode& mode) {
         out.result = gpu_->solver.runUntilConverged(mode.iterations);
         break;
     }
-    glFinish(); // the solver's time includes its GPU work, not the caller's next readback
+    const gpu::GlCounts calls = gpu::glCounts() - before;
+    out.calls = {calls.dispatches, calls.barriers, calls.readBacks, calls.finishes};
+    gpu::finish(); // the solver's time includes its GPU work, not the caller's next readback
     out.solveSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
@@ -329,7 +333,7 @@ RgbaImage Session::picture() const {
 }
 
 void Session::finishGpuWork() const {
-    glFinish();
+    gpu::finish();
 }
 
 unsigned int Session::pictureTexture(int index) const {

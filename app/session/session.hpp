@@ -34,9 +34,18 @@ struct RunMode {
     float time = 0.0F;
 };
 
+// The GL calls of a run (gpu/gl_counts): what an iteration costs whatever the GPU (issue 50).
+struct RunCalls {
+    std::uint64_t dispatches = 0;
+    std::uint64_t barriers = 0;
+    std::uint64_t readBacks = 0; // the host waiting for buffers the GPU wrote
+    std::uint64_t finishes = 0;
+};
+
 struct RunOutcome {
     model::StepResult result;
     double solveSeconds = 0.0; // solver only, GPU work finished
+    RunCalls calls;            // the solver's, without the finish that ends the timing
 };
 
 // The level set copied in GPU memory for undo (Session::copyLevelSet, solver::LevelSetCopy).

@@ -1,6 +1,7 @@
 #include "solver/level_set_solver.hpp"
 
 #include "common/bindings.h"
+#include "gpu/gl_counts.hpp"
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_state_guard.hpp"
 #include "gpu/gpu_limits.hpp"
@@ -129,14 +130,14 @@ void LevelSetSolver::requireParams() const {
 
 void LevelSetSolver::dispatch(GLuint program, GLuint x, GLuint y, GLuint z) {
     glUseProgram(program);
-    glDispatchCompute(x, y, z);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    gpu::dispatchCompute(x, y, z);
+    gpu::memoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 }
 
 void LevelSetSolver::dispatchIndirect(GLuint program, GLintptr offset) {
     glUseProgram(program);
-    glDispatchComputeIndirect(offset);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    gpu::dispatchComputeIndirect(offset);
+    gpu::memoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 }
 
 // Serves pending slot requests and lists the active bricks.

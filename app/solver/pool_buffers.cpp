@@ -1,5 +1,7 @@
 #include "solver/pool_buffers.hpp"
 
+#include "gpu/gl_counts.hpp"
+
 #include <algorithm>
 
 namespace steerseg::solver::detail {
@@ -16,7 +18,7 @@ gpu::Buffer makeBuffer(std::size_t bytes, const void* data) {
 // finishes each dispatch before the next command, never showed it).
 void copyBuffer(const gpu::Buffer& from, const gpu::Buffer& to, std::size_t fromOffset,
                 std::size_t toOffset, std::size_t bytes) {
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    gpu::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glBindBuffer(GL_COPY_READ_BUFFER, from.id());
     glBindBuffer(GL_COPY_WRITE_BUFFER, to.id());
     glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER,

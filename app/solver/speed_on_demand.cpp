@@ -2,6 +2,7 @@
 
 #include "common/bindings.h"
 #include "gpu/buffer_io.hpp"
+#include "gpu/gl_counts.hpp"
 #include "gpu/gl_error.hpp"
 #include "gpu/program.hpp"
 #include "solver/solver_programs.hpp"
@@ -43,7 +44,7 @@ void SpeedOnDemand::bind(const speed::SpeedInputs& inputs) const {
 void SpeedOnDemand::evaluateActive(GLintptr argsOffset) const {
     glUseProgram(program_.id());
     glUniform1i(glGetUniformLocation(program_.id(), "fromActiveList"), 1);
-    glDispatchComputeIndirect(argsOffset);
+    gpu::dispatchComputeIndirect(argsOffset);
     finishPass();
 }
 
@@ -55,7 +56,7 @@ std::uint32_t SpeedOnDemand::evaluateAhead(std::uint32_t maxBricks) {
         glUseProgram(p);
         glUniform1i(glGetUniformLocation(p, "fromActiveList"), 0);
         glUniform1ui(glGetUniformLocation(p, "firstBrick"), aheadCursor_);
-        glDispatchCompute(count, 1, 1);
+        gpu::dispatchCompute(count, 1, 1);
         finishPass();
         aheadCursor_ += count;
     }
@@ -64,8 +65,8 @@ std::uint32_t SpeedOnDemand::evaluateAhead(std::uint32_t maxBricks) {
 
 // The data speed's readers fetch the texture, and the next pass reads the ready words.
 void SpeedOnDemand::finishPass() const {
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                    GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    gpu::memoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                       GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 }
 
 std::uint32_t SpeedOnDemand::evaluatedBricks() const {

@@ -3,6 +3,7 @@
 #include "common/bindings.h"
 #include "core/volume.hpp"
 #include "gpu/buffer_io.hpp"
+#include "gpu/gl_counts.hpp"
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_handle.hpp"
 #include "gpu/gl_state_guard.hpp"
@@ -83,7 +84,7 @@ std::vector<float> gatherClassifierFeatures(GLuint intensity, glm::ivec3 dims,
                           static_cast<GLintptr>(first * kClassifierFeatureCount * sizeof(float)),
                           static_cast<GLsizeiptr>(count * kClassifierFeatureCount * sizeof(float)));
         glUniform1i(countAt, static_cast<GLint>(count));
-        glDispatchCompute(static_cast<GLuint>((count + kGroupSize - 1) / kGroupSize), 1, 1);
+        gpu::dispatchCompute(static_cast<GLuint>((count + kGroupSize - 1) / kGroupSize), 1, 1);
     }
     gpu::readBufferBytes(out, 0, features.data(), features.size() * sizeof(float),
                          "the classifier's sample features");

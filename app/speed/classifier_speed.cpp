@@ -1,6 +1,7 @@
 #include "speed/classifier_speed.hpp"
 
 #include "common/bindings.h"
+#include "gpu/gl_counts.hpp"
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_state_guard.hpp"
 #include "gpu/program.hpp"
@@ -175,14 +176,14 @@ void ClassifierSpeed::evaluate(GLuint intensity) {
     const GLint zOffsetAt = glGetUniformLocation(program.id(), "zOffset");
     for (int z = 0; z < dims_.z; z += kSlabSlices) {
         glUniform1i(zOffsetAt, z);
-        glDispatchCompute(groups(dims_.x), groups(dims_.y),
-                          groups(std::min(kSlabSlices, dims_.z - z)));
+        gpu::dispatchCompute(groups(dims_.x), groups(dims_.y),
+                             groups(std::min(kSlabSlices, dims_.z - z)));
         glFlush(); // each slab its own submission
     }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    gpu::memoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     // Finished here, so that the timing is the evaluation's and the solver's first read waits
     // on nothing.
-    glFinish();
+    gpu::finish();
     gpu::checkGl("evaluating the classifier speed");
 }
 

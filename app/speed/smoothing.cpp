@@ -1,5 +1,6 @@
 #include "speed/smoothing.hpp"
 
+#include "gpu/gl_counts.hpp"
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_state_guard.hpp"
 #include "gpu/program.hpp"
@@ -49,7 +50,7 @@ gpu::Texture smoothScan(GLuint scan, const glm::ivec3& dims, const SmoothingPara
         const GLuint target = toPartner ? partner.id() : result.id();
         runVolumePass(program.id(), source, target, dims);
         if (progress) {
-            glFinish(); // the callback reports work done, not work queued
+            gpu::finish(); // the callback reports work done, not work queued
             progress(n + 1, params.iterations);
         }
     }

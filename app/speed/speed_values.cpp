@@ -1,6 +1,7 @@
 #include "speed/speed_values.hpp"
 
 #include "common/bindings.h"
+#include "gpu/gl_counts.hpp"
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_state_guard.hpp"
 #include "gpu/program.hpp"
@@ -28,12 +29,13 @@ gpu::Texture speedValues(const SpeedInputs& inputs, GLuint rawScan, const glm::i
     glUniform1i(glGetUniformLocation(id, "speedKind"), static_cast<GLint>(inputs.kind));
     glUniform1i(glGetUniformLocation(id, "classifyWithinWindow"), inputs.withinWindow ? 1 : 0);
     // The factor texture and the intensity may have been written by image stores just before.
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    gpu::memoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     bindSpeedTextures(inputs, rawScan, SOLVER_SCAN_UNIT, SOLVER_FACTOR_UNIT);
     glBindImageTexture(SPEED_OUT_IMAGE_UNIT, out.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-    glDispatchCompute(static_cast<GLuint>((dims.x + 3) / 4), static_cast<GLuint>((dims.y + 3) / 4),
-                      static_cast<GLuint>((dims.z + 3) / 4));
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    gpu::dispatchCompute(static_cast<GLuint>((dims.x + 3) / 4),
+                         static_cast<GLuint>((dims.y + 3) / 4),
+                         static_cast<GLuint>((dims.z + 3) / 4));
+    gpu::memoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     gpu::checkGl("evaluating the speed at every voxel");
     return out;
 }

@@ -2,6 +2,7 @@
 
 #include "common/bindings.h"
 #include "core/volume.hpp"
+#include "gpu/gl_counts.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -50,10 +51,11 @@ void runVolumePass(GLuint program, GLuint source, GLuint target, const glm::ivec
     glBindTexture(GL_TEXTURE_3D, source);
     glBindImageTexture(SPEED_OUT_IMAGE_UNIT, target, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
     glUniform3i(glGetUniformLocation(program, "volumeDims"), dims.x, dims.y, dims.z);
-    glDispatchCompute(static_cast<GLuint>((dims.x + 3) / 4), static_cast<GLuint>((dims.y + 3) / 4),
-                      static_cast<GLuint>((dims.z + 3) / 4));
+    gpu::dispatchCompute(static_cast<GLuint>((dims.x + 3) / 4),
+                         static_cast<GLuint>((dims.y + 3) / 4),
+                         static_cast<GLuint>((dims.z + 3) / 4));
     // The next pass (or the solver) fetches what this one stored.
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    gpu::memoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
 } // namespace steerseg::speed

@@ -1,0 +1,90 @@
+// What an iteration costs in GL calls (gpu/gl_counts, issue 50): a known run's dispatches,
+// memory barriers and host synchronisations, counted the same on llvmpipe as on any GPU. The
+// counts are the solver's structure, so a change that folds or adds a pass changes them here.
+#include "gpu/gl_counts.hpp"
+#include "model/solver_types.hpp"
+#include "solver/level_set_solver.hpp"
+#include "speed/classifier_speed.hpp"
+#include "support/gpu_fixture.hpp"
+#include "support/solver_test_support.hpp"
+
+#include <gtest/gtest.h>
+
+namespace steerseg::test {
+namespace {
+
+class SolverGlCountsTest : public GpuTest {};
+
+constexpr glm::ivec3 kDims{48, 48, 48};
+constexpr int kChecks = 4;
+
+// A small front growing in a ball, past its first check (programs built, the pool sized).
+struct GrowingFront {
+    std::vector<float> volume = ballVolume(kDims, 0.0F, 100.0F, {24, 24, 24}, 14.0F);
+    solver::LevelSetSolver solver{volume, kDims};
+    int interval = model::SolverOptions{}.checkInterval;
+    GrowingFront() {
+        solver.addSphere({{24, 24, 24}, 3.0F});
+        solver.setParams({100.0F, 30.0F, 0.8F});
+        solver.step(interval);
+    }
+    // The calls of kChecks check intervals of iterations.
+    gpu::GlCounts count() {
+        const gpu::GlCounts before = gpu::glCounts();
+        EXPECT_EQ(solver.step(kChecks * interval).iterations, kChecks * interval);
+        return gpu::glCounts() - before;
+    }
+};
+
+TEST_F(SolverGlCountsTest, AThresholdIterationIsTenDispatchesEachBehindABarrier) {
+    GrowingFront run;
+    const gpu::GlCounts c = run.count();
+    const auto iterations = static_cast<std::uint64_t>(kChecks * run.interval);
+    // begin_iteration, allocate_bricks, build_active_list, prepare_dispatch, measure_speed,
+    // choose_time_step, update_phi, commit_shells, retire_bricks, mark_wanted_bricks.
+    EXPECT_EQ(c.dispatches, 10 * iterations);
+    // One after each dispatch; the rest at the checks, around the host's reads and writes of
+    // the control block (this run: 30 over 4 checks).
+    EXPECT_GE(c.barriers, c.dispatches);
+    EXPECT_LE(c.barriers, c.dispatches + 8 * kChecks);
+    // The host waits only at the checks, never between them: the control block, the leak
+    // watch's counters, a pool growth (this run: 9 read-backs over 4 checks, no glFinish).
+    EXPECT_EQ(c.finishes, 0U);
+    EXPECT_GE(c.readBacks, static_cast<std::uint64_t>(kChecks));
+    EXPECT_LE(c.readBacks, static_cast<std::uint64_t>(3 * kChecks));
+}
+
+TEST_F(SolverGlCountsTest, AClassifyIterationEvaluatesTheBricksTheFrontReachesInOneMore) {
+    GrowingFront run;
+    const std::vector<speed::Example> inside{{glm::vec3(24.0F), 4.0F}};
+    const std::vector<speed::Example> outside{{glm::vec3(4.0F), 3.0F}};
+    speed::ClassifierParams params;
+    params.evaluation = speed::ClassifierEvaluation::OnDemand;
+    params.trees = 4;
+    const gpu::ScanTexture& scan = run.solver.scan();
+    const speed::ClassifierSpeed classify(scan.exact(), kDims, inside, outside, params);
+    run.solver.setSpeedInputs(
+        {model::SpeedKind::Classify, 0, classify.texture(), classify.onDemandForest(), true});
+    run.solver.step(run.interval);
+    const gpu::GlCounts c = run.count();
+    const auto iterations = static_cast<std::uint64_t>(kChecks * run.interval);
+    EXPECT_EQ(c.dispatches, 11 * iterations);
+    EXPECT_EQ(c.finishes, 0U);
+    EXPECT_LE(c.readBacks, static_cast<std::uint64_t>(3 * kChecks));
+}
+
+TEST_F(SolverGlCountsTest, CountsAreTheCallingThreadsAndSubtract) {
+    const gpu::GlCounts before = gpu::glCounts();
+    gpu::memoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    gpu::finish();
+    gpu::countReadBack();
+    const gpu::GlCounts d = gpu::glCounts() - before;
+    EXPECT_EQ(d.dispatches, 0U);
+    EXPECT_EQ(d.barriers, 1U);
+    EXPECT_EQ(d.finishes, 1U);
+    EXPECT_EQ(d.readBacks, 1U);
+    EXPECT_EQ(d.hostSyncs(), 2U);
+}
+
+} // namespace
+} // namespace steerseg::test
