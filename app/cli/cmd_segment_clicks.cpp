@@ -122,6 +122,12 @@ int runSegmentClicks(const Args& args) {
     engine::ClickSession session(
         input, kiosk::workflowSettings(cfg),
         {cfg.speed.smoothIterations, cfg.speed.conductanceFactor, cfg.speed.kappaFactor});
+    for (const model::Correct& c : clicks) {
+        if (const std::string problem = session.workflow().correctionRadiusProblem(c.radius);
+            !problem.empty()) {
+            throw UsageError("--click: " + problem);
+        }
+    }
     if (reference && reference->dims() != session.scan().dims()) {
         throw UsageError("--reference is not on the scan's grid (" + dimsText(reference->dims()) +
                          " voxels, the scan " + dimsText(session.scan().dims()) + ")");

@@ -63,6 +63,11 @@ class Workflow {
 
     [[nodiscard]] model::State state() const { return status_.state; }
     [[nodiscard]] const Status& status() const { return status_; }
+    // Why a correction's own radius (voxels; <= 0: the brush's) typed by a person cannot be
+    // taken on the loaded scan: outside the brush's range, to which a correction is clamped (a
+    // robot's largest ball in the error may be), where a typed 1e9 must not silently become
+    // the largest brush; "" when it can.
+    [[nodiscard]] std::string correctionRadiusProblem(double radius) const;
     [[nodiscard]] bool quitRequested() const { return quit_; }
     [[nodiscard]] const Settings& settings() const { return settings_; }
     // The undo history's depth on each side, for tests and the soak's invariants.

@@ -8,8 +8,20 @@
 #include <cmath>
 #include <exception>
 #include <glm/geometric.hpp>
+#include <sstream>
 
 namespace steerseg::workflow {
+
+std::string Workflow::correctionRadiusProblem(double radius) const {
+    const ParamRange& r = status_.ranges[indexOf(model::Param::Radius)];
+    if (!(radius <= 0.0) && !(radius >= r.min && radius <= r.max)) {
+        std::ostringstream msg;
+        msg << "a correction's radius of " << radius << " voxels lies outside the brush's range ["
+            << r.min << ", " << r.max << "] on this scan";
+        return msg.str();
+    }
+    return {};
+}
 
 Workflow::Outcome Workflow::on(const model::Correct& a) {
     if (!status_.hasLevelSet) {

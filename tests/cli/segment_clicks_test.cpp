@@ -22,6 +22,7 @@ TEST(SegmentClicks, BadClicksAndTheOptionsTheyReplaceAreRefused) {
              Case{"--click 1,2,3,*", "must be + or -"},
              Case{"--click 1,2,x,+", "--click's voxel index"},
              Case{"--click 80,56,52,+,0", "radius must be > 0"},
+             Case{"--click 80,56,52,+,1e9", "lies outside the brush's range [1, 48]"},
              Case{"--click 80,56,52,-", "first --click must be positive"},
              Case{"--click 80,56,52,+ --seed 80,56,52,3", "--seed does not go with --click"},
              Case{"--click 80,56,52,+ --converge", "--converge does not go with --click"},

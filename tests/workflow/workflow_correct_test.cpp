@@ -40,6 +40,23 @@ TEST(WorkflowCorrect, TheFirstCannotRemove) {
     EXPECT_FALSE(r.act(model::Correct{{80.0, 6.0, 4.0}, true, 2.0}).accepted) << "outside";
 }
 
+// A correction's own radius outside the brush's range, as `segment --click` refuses it (a
+// typed 1e9 became the largest brush and a run of minutes, issue 51); the brush's own (<= 0)
+// and the range's ends are taken.
+TEST(WorkflowCorrect, ARadiusBeyondTheBrushsRangeIsNamed) {
+    Rig r;
+    r.load();
+    const workflow::ParamRange range = r.status().ranges[workflow::indexOf(model::Param::Radius)];
+    for (const double radius : {1e9, range.max + 0.5, range.min - 0.5}) {
+        EXPECT_NE(r.wf->correctionRadiusProblem(radius).find("outside the brush's range"),
+                  std::string::npos)
+            << radius;
+    }
+    for (const double radius : {0.0, range.min, range.max}) {
+        EXPECT_EQ(r.wf->correctionRadiusProblem(radius), "") << radius;
+    }
+}
+
 TEST(WorkflowCorrect, APositiveOneSeedsAndLeavesTAndEps) {
     Rig r;
     r.load();
