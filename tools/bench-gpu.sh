@@ -7,7 +7,7 @@
 # Writes bench-gpu.md (the tables) and bench-gpu.json (the same figures) to the output folder.
 #
 #   tools/bench-gpu.sh [--small] [--skip PART[,PART...]] [--out DIR] [--bin DIR]
-#   tools/bench-gpu.sh --pack DIR
+#   tools/bench-gpu.sh --pack DIR [--tests] [--no-scans]
 #
 # PARTs: solver, render, segment, pictures, kiosk, large. --small uses sizes a software rasteriser
 # finishes in a minute or two (CI runs it, so the script cannot rot between GPU sessions).
@@ -21,6 +21,11 @@
 # cases' scans (from STEERSEG_DATA_DIR) in DIR; there, `DIR/bench-gpu.sh --bin DIR` runs them.
 # large_scan_bench (GDCM) is not packed: --bin skips that part. It says so when the renderer is
 # a software one: those figures are not GPU figures.
+#
+# --tests packs the GPU tests as well: the light build's GoogleTest programs labelled "gpu"
+# (stripped), the files their compiled-in paths name and tools/test-gpu.sh; there,
+# `DIR/test-gpu.sh` runs them (its --help; docs/benchmarks-gpu.md). --no-scans leaves the real
+# cases' scans out (the segment part and the tests that read them then skip them), 7 MiB less.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 
@@ -29,6 +34,8 @@ skip=""
 out=${STEERSEG_OUT:-out/bench-gpu}
 bin=""
 pack=""
+tests=0
+scans=1
 while (($#)); do
   case $1 in
     --small) small=1 ;;
@@ -36,12 +43,18 @@ while (($#)); do
     --out) out=${2:?--out needs a folder}; shift ;;
     --bin) bin=${2:?--bin needs a folder}; shift ;;
     --pack) pack=${2:?--pack needs a folder}; shift ;;
-    -h|--help) sed -n '2,24p' "$0"; exit 0 ;;
+    --tests) tests=1 ;;
+    --no-scans) scans=0 ;;
+    -h|--help) sed -n '2,28p' "$0"; exit 0 ;;
     *) echo "bench-gpu: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
 done
 wants() { [[ ",$skip," != *",$1,"* ]]; }
+if [[ -z $pack ]] && ((tests || !scans)); then
+  echo "bench-gpu: --tests and --no-scans go with --pack (the packed DIR/test-gpu.sh runs the tests)" >&2
+  exit 2
+fi
 
 data=${STEERSEG_DATA_DIR:-$root/../shared/data}
 # The ITK comparison's cases: scan, expert mask, seed, T, eps, alpha and ITK's converged time and
@@ -52,8 +65,8 @@ cases=(
 )
 
 build_benches() { # build-dir light(ON|OFF) [more targets]
-  cmake -S "$root" -B "$1" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSTEERSEG_BUILD_TESTS=OFF \
-    -DSTEERSEG_LIGHT="$2" >/dev/null
+  cmake -S "${src_link:-$root}" -B "$1" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+    -DSTEERSEG_BUILD_TESTS="${with_tests:-OFF}" -DSTEERSEG_LIGHT="$2" >/dev/null
   local io=()
   if [[ $2 == OFF ]]; then
     io=(large_scan_bench) # the DICOM series needs GDCM
@@ -64,19 +77,82 @@ build_benches() { # build-dir light(ON|OFF) [more targets]
 
 if [[ -n $pack ]]; then
   "$root/tools/install-deps.sh"
-  build_benches "$root/build/bench-gpu-pack" ON steerseg
+  # The pack's build sees the tree and itself through one fixed link, $link -> build/gpu-pack
+  # (src/ there a link to the tree, build/ the build): the paths the tests have compiled in (the
+  # goldens, a test shader, a helper program) start with it, and DIR/test-gpu.sh points it at
+  # the pack, which holds those files at the same places below it, on a machine where the tree
+  # lies elsewhere or not at all. (After a run of a pack here the link points at that pack; this
+  # puts it back before building.)
+  link=/tmp/steerseg-gpupack
+  if [[ -e $link && ! -L $link ]]; then
+    echo "bench-gpu: $link is in the way: the pack's build needs it as a link to $root/build/gpu-pack" >&2
+    exit 1
+  fi
+  mkdir -p "$root/build/gpu-pack/build"
+  ln -sfn "$root" "$root/build/gpu-pack/src"
+  ln -sfn "$root/build/gpu-pack" "$link"
+  src_link=$link/src
+  built=$link/build
+  with_tests=OFF
+  more=(steerseg)
+  if ((tests)); then
+    with_tests=ON
+    more+=(steerseg_gpu_tests)
+  fi
+  build_benches "$built" ON "${more[@]}"
+  # A pack made again in the same folder: only this run's test programs are listed.
+  rm -f "$pack/tests/programs.txt" "$pack/test-gpu.sh" "$pack/data/sources.txt"
   mkdir -p "$pack/lib" "$pack/data" "$pack/tools" "$pack/bench/kiosk"
   for b in solver_bench render_frame_bench segment_bench; do
-    cp "$root/build/bench-gpu-pack/bench/$b" "$pack/"
+    cp "$built/bench/$b" "$pack/"
   done
-  cp "$root/build/bench-gpu-pack/steerseg" "$pack/"
+  cp "$built/steerseg" "$pack/"
   cp "$0" "$pack/bench-gpu.sh"
+  programs=()
+  if ((tests)); then
+    # The GL test programs the light build lists (tests/CMakeLists.txt), stripped: the symbol
+    # tables are most of their size, and a failure's report comes from the test, not a debugger.
+    mkdir -p "$pack/tests" "$pack/src" "$pack/build"
+    while read -r program; do
+      [[ -n $program ]] || continue
+      cp "$program" "$pack/tests/"
+      programs+=("$pack/tests/$(basename "$program")")
+      basename "$program" >>"$pack/tests/programs.txt"
+    done <"$built/gpu_tests.txt"
+    # Every file or folder of the tree or the build that a compile definition names, copied to
+    # the same path below the pack. Not the tree's root (the data folder's default, which
+    # STEERSEG_DATA_DIR overrides) nor the build's steerseg (STEERSEG_BINARY: the pack's own).
+    python3 - "$built/compile_commands.json" "$link" <<'EOF' >"$pack/tests/compiled-in.txt"
+import json, re, sys
+prefix = re.escape(sys.argv[2] + "/")
+found = set()
+for entry in json.load(open(sys.argv[1])):
+    for m in re.finditer(r'-D\w+=\\?"' + prefix + r'((?:src|build)/[^"\\]+)\\?"', entry["command"]):
+        found.add(m[1])
+found.discard("build/steerseg")
+print("\n".join(sorted(found)))
+EOF
+    while read -r rel; do
+      if [[ ! -e $link/$rel ]]; then
+        echo "bench-gpu: a test names $link/$rel, which is not there: not packed" >&2
+        continue
+      fi
+      mkdir -p "$pack/$(dirname "$rel")"
+      cp -RLT "$link/$rel" "$pack/$rel" # -T: into a folder a packing before made, not below it
+      if [[ $rel == build/* && -f $pack/$rel && -x $pack/$rel ]]; then
+        programs+=("$pack/$rel") # a helper program: stripped and its libraries carried too
+      fi
+    done <"$pack/tests/compiled-in.txt"
+    strip --strip-unneeded "${programs[@]}"
+    echo "$link" >"$pack/tests/link"
+    cp "$root/tools/test-gpu.sh" "$pack/test-gpu.sh"
+  fi
   # bench-kiosk.sh where its own root finds it and its sessions (DIR/tools/.. = DIR).
   cp "$root/tools/bench-kiosk.sh" "$pack/tools/"
   cp "$root"/bench/kiosk/*.session "$pack/bench/kiosk/"
   # Every library the binaries load beyond what a base system with the GPU's driver has.
   base='^(linux-vdso|ld-linux|libc|libm|libstdc\+\+|libgcc_s|libEGL|libGLESv2|libGLdispatch|libgbm|libdrm|libz)\.so'
-  carried=$(ldd "$pack"/steerseg "$pack"/*_bench | awk '/=>/ { print $1, $3 }' | sort -u |
+  carried=$(ldd "$pack"/steerseg "$pack"/*_bench "${programs[@]}" | awk '/=>/ { print $1, $3 }' | sort -u |
     grep -Ev "$base" || true)
   while read -r name path; do
     [[ -n $name ]] && cp -L "$path" "$pack/lib/$name"
@@ -84,14 +160,21 @@ if [[ -n $pack ]]; then
   echo "bench-gpu: carried $(echo "$carried" | awk '{ print $1 }' | tr '\n' ' ')($(du -sh "$pack/lib" | cut -f1))"
   for c in "${cases[@]}"; do
     IFS='|' read -r name scan mask _ <<<"$c"
-    if [[ -f $data/$scan && -f $data/$mask ]]; then
+    if ((!scans)); then
+      echo "bench-gpu: $name not packed (--no-scans)" >&2
+    elif [[ -f $data/$scan && -f $data/$mask ]]; then
       cp "$data/$scan" "$pack/data/$name.nii.gz"
       cp "$data/$mask" "$pack/data/${name}_mask.nii.gz"
+      # Their places in the data folder, for DIR/test-gpu.sh: solver_gpu's real-scan tests read them.
+      printf '%s %s\n' "$name.nii.gz" "$scan" "${name}_mask.nii.gz" "$mask" >>"$pack/data/sources.txt"
     else
       echo "bench-gpu: $name not packed: $data/$scan or its mask is missing" >&2
     fi
   done
   echo "bench-gpu: packed in $pack ($(du -sh "$pack" | cut -f1)); run '$pack/bench-gpu.sh --bin $pack' there"
+  if ((tests)); then
+    echo "bench-gpu: and the GPU tests ($(du -sh "$pack/tests" | cut -f1)): '$pack/test-gpu.sh'"
+  fi
   exit 0
 fi
 
