@@ -57,6 +57,11 @@ class GpuBrickPool {
     // Dense phi of the current buffer (tests, mask output; not per iteration), or of a copy.
     [[nodiscard]] std::vector<float> download() const;
     [[nodiscard]] std::vector<float> download(const PoolCopy& copy) const;
+    // The inside mask (phi < 0) of the current buffer or of a copy, without a dense phi: a
+    // quarter of the memory, and a constant brick's rows filled at once (the kiosk's autosave
+    // reads it on the frame thread).
+    [[nodiscard]] std::vector<std::uint8_t> downloadMask() const;
+    [[nodiscard]] std::vector<std::uint8_t> downloadMask(const PoolCopy& copy) const;
     // Voxels inside (phi < 0), counted on the pool as it is stored: the page table and the
     // slots' phi read back, no dense phi built.
     [[nodiscard]] std::uint64_t countInside() const;
@@ -115,8 +120,12 @@ class GpuBrickPool {
     // The control block of a pool just filled: nothing requested or active, `freeCount` free.
     void resetControl(std::uint32_t freeCount);
     [[nodiscard]] glm::ivec3 brickOrigin(std::uint32_t brick) const;
-    [[nodiscard]] std::vector<float> densePhi(const gpu::Buffer& pageTable, const gpu::Buffer& phi,
-                                              std::uint32_t capacity) const;
+    // The grid of `pageTable` and `phi` as a dense volume of T: `inside` and `outside` for the
+    // constant bricks, fromPhi(phi) for a stored brick's voxels; brick by brick, a row at a time.
+    template <typename T, typename FromPhi>
+    [[nodiscard]] std::vector<T> dense(const gpu::Buffer& pageTable, const gpu::Buffer& phi,
+                                       std::uint32_t capacity, T inside, T outside,
+                                       const FromPhi& fromPhi) const;
 
     glm::ivec3 dims_;
     glm::ivec3 grid_;

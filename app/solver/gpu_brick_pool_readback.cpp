@@ -40,40 +40,61 @@ std::uint64_t GpuBrickPool::countInside() const {
     return inside;
 }
 
-std::vector<float> GpuBrickPool::download() const {
-    return densePhi(pageTable_, phi_, capacity_);
-}
-
-std::vector<float> GpuBrickPool::download(const PoolCopy& copy) const {
-    return densePhi(copy.pageTable, copy.phi, copy.capacity);
-}
-
-std::vector<float> GpuBrickPool::densePhi(const gpu::Buffer& pageTable, const gpu::Buffer& phiPool,
-                                          std::uint32_t capacity) const {
+template <typename T, typename FromPhi>
+std::vector<T> GpuBrickPool::dense(const gpu::Buffer& pageTable, const gpu::Buffer& phiPool,
+                                   std::uint32_t capacity, T inside, T outside,
+                                   const FromPhi& fromPhi) const {
     const auto page = gpu::readBuffer<std::uint32_t>(pageTable, brickCount_, "a solver buffer");
     const std::size_t bv = brickBytes() / sizeof(float);
     const auto pool = gpu::readBuffer<float>(phiPool, capacity * bv, "a solver buffer");
-    std::vector<float> phi(static_cast<std::size_t>(dims_.x) * static_cast<std::size_t>(dims_.y) *
-                           static_cast<std::size_t>(dims_.z));
+    std::vector<T> out(static_cast<std::size_t>(dims_.x) * static_cast<std::size_t>(dims_.y) *
+                       static_cast<std::size_t>(dims_.z));
     const int b = brickSize_;
-    for (int k = 0; k < dims_.z; ++k) {
-        for (int j = 0; j < dims_.y; ++j) {
-            for (int i = 0; i < dims_.x; ++i) {
-                const auto brick =
-                    static_cast<std::size_t>(i / b + grid_.x * (j / b + grid_.y * (k / b)));
-                const std::uint32_t slot = page[brick];
-                float value = model::kPhiFar;
-                if (slot == kBrickInside) {
-                    value = -model::kPhiFar;
-                } else if (slot != kBrickOutside) {
-                    value = pool[slot * bv +
-                                 static_cast<std::size_t>(i % b + b * (j % b + b * (k % b)))];
+    for (std::uint32_t n = 0; n < brickCount_; ++n) {
+        // A brick on the far faces reaches past the scan: only its voxels inside are written.
+        const glm::ivec3 o = brickOrigin(n);
+        const glm::ivec3 extent = glm::min(o + b, dims_) - o;
+        const std::uint32_t slot = page[n];
+        for (int k = 0; k < extent.z; ++k) {
+            for (int j = 0; j < extent.y; ++j) {
+                T* row = out.data() + linearIndex(dims_, o.x, o.y + j, o.z + k);
+                if (slot == kBrickInside || slot == kBrickOutside) {
+                    std::fill(row, row + extent.x, slot == kBrickInside ? inside : outside);
+                    continue;
                 }
-                phi[linearIndex(dims_, i, j, k)] = value;
+                const float* from =
+                    pool.data() + slot * bv + static_cast<std::size_t>(b * (j + b * k));
+                std::transform(from, from + extent.x, row, fromPhi);
             }
         }
     }
+    return out;
+}
+
+namespace {
+float asIs(float phi) {
     return phi;
+}
+std::uint8_t isInside(float phi) {
+    return static_cast<std::uint8_t>(phi < 0.0F);
+}
+} // namespace
+
+std::vector<float> GpuBrickPool::download() const {
+    return dense(pageTable_, phi_, capacity_, -model::kPhiFar, model::kPhiFar, asIs);
+}
+
+std::vector<float> GpuBrickPool::download(const PoolCopy& copy) const {
+    return dense(copy.pageTable, copy.phi, copy.capacity, -model::kPhiFar, model::kPhiFar, asIs);
+}
+
+std::vector<std::uint8_t> GpuBrickPool::downloadMask() const {
+    return dense(pageTable_, phi_, capacity_, std::uint8_t{1}, std::uint8_t{0}, isInside);
+}
+
+std::vector<std::uint8_t> GpuBrickPool::downloadMask(const PoolCopy& copy) const {
+    return dense(copy.pageTable, copy.phi, copy.capacity, std::uint8_t{1}, std::uint8_t{0},
+                 isInside);
 }
 
 } // namespace steerseg::solver::detail

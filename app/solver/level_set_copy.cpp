@@ -4,7 +4,6 @@
 #include "gpu/gl_state_guard.hpp"
 #include "solver/gpu_brick_pool.hpp"
 #include "solver/level_set_solver.hpp"
-#include "solver/phi_init.hpp"
 
 #include <stdexcept>
 
@@ -42,7 +41,7 @@ void LevelSetSolver::restoreLevelSet(const LevelSetCopy& copy) {
 std::vector<std::uint8_t> LevelSetSolver::readMask(const LevelSetCopy& copy) const {
     requireCopyOfThis(copy);
     gpu::GlStateGuard guard;
-    return insideMask(pool_->download(*copy.pool_));
+    return pool_->downloadMask(*copy.pool_);
 }
 
 } // namespace steerseg::solver

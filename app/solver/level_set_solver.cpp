@@ -6,7 +6,6 @@
 #include "gpu/gl_state_guard.hpp"
 #include "gpu/gpu_limits.hpp"
 #include "solver/gpu_brick_pool.hpp"
-#include "solver/phi_init.hpp"
 #include "solver/solver_programs.hpp"
 #include "solver/speed_on_demand.hpp"
 
@@ -357,7 +356,8 @@ bool LevelSetSolver::managePool(const ControlBlock& ctrl) {
 }
 
 std::vector<std::uint8_t> LevelSetSolver::readMask() const {
-    return insideMask(readPhi());
+    gpu::GlStateGuard guard;
+    return pool_->downloadMask();
 }
 
 std::uint64_t LevelSetSolver::countInside() const {

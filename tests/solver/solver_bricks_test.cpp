@@ -3,6 +3,7 @@
 // growth past the first allocation, steering mid-run, dense mode, threshold/mask start; and the
 // storage bound of a band that stopped moving.
 #include "solver/level_set_solver.hpp"
+#include "solver/phi_init.hpp"
 #include "solver/reference_solver.hpp"
 #include "support/gpu_fixture.hpp"
 #include "support/solver_test_support.hpp"
@@ -55,6 +56,10 @@ TEST_F(SolverBricksTest, SurfaceAcrossBrickCornersAndVolumeBorderInOddSizedVolum
         const auto mask = gpu.readMask();
         expectAgree(d, mask, cpu.mask());
         EXPECT_EQ(mask[voxelIndex(d, 0, 20, 12)], 1); // the surface reaches the border
+        // The mask read straight from the bricks is the dense phi's sign, at the far faces'
+        // cut bricks too, and whole inside bricks are counted.
+        EXPECT_EQ(mask, insideMask(gpu.readPhi()));
+        EXPECT_EQ(insideCount(mask), gpu.countInside());
     }
 }
 
