@@ -152,6 +152,9 @@ void readDicom(TableReader& t, DicomConfig& d) {
     if (auto v = t.integer("max_associations", {1, 64})) {
         d.maxAssociations = static_cast<int>(*v);
     }
+    if (auto v = t.integer("negotiation_seconds", {1, 60})) {
+        d.negotiationSeconds = static_cast<int>(*v);
+    }
     if (auto v = t.number("retry_first_seconds", {0.0, 3600.0, true})) {
         d.retryFirstSeconds = *v;
     }

@@ -189,6 +189,7 @@ struct DicomConfig {
     int minFreeMb = 256;                // refuse objects that would leave less free in the store
     int keepDays = 7;                   // received series older than this are removed
     int maxAssociations = 4;            // served at once; one more is rejected as busy
+    int negotiationSeconds = 5;         // a connection's time to send its association request
     double retryFirstSeconds = 5.0;     // the outbox's delay after a failed send ...
     double retryLongestSeconds = 300.0; // ... doubled after each further one up to this
     // TLS (docs/dicom-network.md): the node's certificate and unencrypted private key (PEM), the

@@ -13,6 +13,7 @@ net::ScpSettings scpSettings(const config::DicomConfig& dicom) {
     s.minFreeBytes = static_cast<std::uint64_t>(dicom.minFreeMb) << 20;
     s.keepDays = dicom.keepDays;
     s.maxAssociations = dicom.maxAssociations;
+    s.negotiationSeconds = dicom.negotiationSeconds;
     for (const auto& peer : dicom.peers) {
         if (peer.receive) {
             s.allowed.push_back({peer.aet, peer.address});

@@ -3,11 +3,20 @@
 // Accepts DICOM associations on a port and hands each to a thread of its own, at most `max` at
 // once. DCMTK's DcmSCPPool does the same but builds its workers without arguments and keeps
 // them past their association; this one gives each its settings and joins it when it ends.
+// The listening socket is the pool's own (issue 48): DCMTK reads an A-ASSOCIATE-RQ on the
+// thread that accepted its connection, for as long as its ACSE timeout, so one connection that
+// says nothing held up every caller behind it. Here a new connection waits among the others,
+// each with its own short deadline and within caps per address and in all, until its request
+// has arrived whole; only then does DCMTK read it (from the socket handed over, which it then
+// owns), at once.
 #include <atomic>
+#include <chrono>
 #include <functional>
 #include <list>
+#include <map>
 #include <string>
 #include <thread>
+#include <vector>
 
 class DcmTransportLayer;
 struct T_ASC_Association;
@@ -24,16 +33,25 @@ class AssociationPool {
     using Busy = std::function<void(const std::string& callingAet, const std::string& address)>;
     // Once a second while no association is open (retention runs there).
     using Idle = std::function<void()>;
-    // A TLS connection that ended before its association request (its certificate refused, or
-    // no TLS at all), with DCMTK's reason.
+    // A connection that ended before its association request was taken: no request within the
+    // negotiation timeout, pushed out by newer ones past the caps, not an association request,
+    // or a TLS connection refused (its certificate, or no TLS at all); one line why.
     using Refused = std::function<void(const std::string& why)>;
 
-    AssociationPool(int port, int acseTimeoutSeconds, int max);
+    struct Limits {
+        int acseTimeoutSeconds = 30;  // an open association's silences
+        int negotiationSeconds = 5;   // from a connection to its whole association request
+        int maxPending = 64;          // connections still negotiating, in all ...
+        int maxPendingPerAddress = 8; // ... and from one address; past either the oldest goes
+        int maxAssociations = 4;      // served at once
+    };
+
+    AssociationPool(int port, const Limits& limits);
     ~AssociationPool(); // joins the threads left (serve() normally has)
     AssociationPool(const AssociationPool&) = delete;
     AssociationPool& operator=(const AssociationPool&) = delete;
 
-    // Binds the port; throws std::runtime_error with DCMTK's reason when it cannot. With `tls`
+    // Binds the port; throws std::runtime_error with the reason when it cannot. With `tls`
     // (not owned; it must outlive the pool) every connection is TLS.
     void open(DcmTransportLayer* tls = nullptr);
     // Until `stop` becomes true (checked at least once a second); then joins the associations'
@@ -46,13 +64,26 @@ class AssociationPool {
         std::thread thread;
         std::atomic<bool> done{false};
     };
+    // A connection accepted whose association request has not arrived whole.
+    struct Pending {
+        int fd = -1;
+        std::string address;
+        std::chrono::steady_clock::time_point deadline;
+    };
     void reap(bool all);
+    void acceptConnections();
+    void waitForRequests();
+    void take(int fd, const Serve& serve, const Busy& busy, const Refused& refused);
+    void admit(T_ASC_Association* assoc, const Serve& serve, const Busy& busy);
 
     int port_;
-    int acseTimeoutSeconds_;
-    int max_;
+    Limits limits_;
+    int listenFd_ = -1;
     T_ASC_Network* network_ = nullptr;
     bool secure_ = false;
+    std::vector<Pending> pending_;
+    std::vector<int> ready_;            // whose request is there, for take()
+    std::map<std::string, int> closed_; // connections closed before their request, by cause
     std::list<Worker> workers_;
 };
 

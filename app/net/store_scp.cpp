@@ -26,7 +26,10 @@ class StorageScp::Impl {
   public:
     Impl(ScpSettings settings, ScpReport report)
         : settings_(std::move(settings)), shared_(std::move(report)),
-          pool_(settings_.port, settings_.timeoutSeconds, settings_.maxAssociations) {}
+          pool_(settings_.port,
+                {settings_.timeoutSeconds, settings_.negotiationSeconds,
+                 AssociationPool::Limits{}.maxPending,
+                 AssociationPool::Limits{}.maxPendingPerAddress, settings_.maxAssociations}) {}
 
     void open() {
         std::error_code ec;
@@ -66,7 +69,7 @@ class StorageScp::Impl {
                     prune();
                 }
             },
-            [this](const std::string& why) { shared_.report("refused TLS connection: " + why); });
+            [this](const std::string& line) { shared_.report(line); });
     }
 
   private:

@@ -42,6 +42,9 @@ struct ScpSettings {
     // less than this free after the write.
     std::uint64_t minFreeBytes = std::uint64_t{256} << 20;
     int timeoutSeconds = 30; // ACSE and DIMSE: a silent peer is dropped after this
+    // From a connection to its whole A-ASSOCIATE-RQ: a connection that sends nothing (or half a
+    // request) is closed after this, and never holds up the next caller meanwhile.
+    int negotiationSeconds = 5;
     // Associations served at once; one more is rejected at once as busy (A-ASSOCIATE-RJ,
     // transient, local limit exceeded), so the sender can retry.
     int maxAssociations = 4;

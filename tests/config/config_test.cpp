@@ -661,6 +661,7 @@ TEST_F(ConfigTest, DicomNodeAndPeers) {
     const config::LoadedConfig loaded = load({write(
         "dicom.toml", "[dicom]\nenabled = true\naet = \"CONSOLE1\"\nport = 4242\n"
                       "store = \"/srv/in\"\nassociation_quota_mb = 64\nmax_associations = 8\n"
+                      "negotiation_seconds = 3\n"
                       "[[dicom.peers]]\nname = \"pacs\"\naet = \"ORTHANC\"\nhost = \"10.0.0.5\"\n"
                       "send = true\nreceive = true\naddress = \"10.0.0.5\"\n"
                       "[[dicom.peers]]\nname = \"ct\"\naet = \"CT_SCANNER\"\nhost = \"ct\"\n"
@@ -670,6 +671,7 @@ TEST_F(ConfigTest, DicomNodeAndPeers) {
     EXPECT_TRUE(d.enabled);
     EXPECT_EQ(d.aet, "CONSOLE1");
     EXPECT_EQ(d.maxAssociations, 8);
+    EXPECT_EQ(d.negotiationSeconds, 3);
     EXPECT_EQ(d.port, 4242);
     EXPECT_EQ(d.store, fs::path("/srv/in"));
     EXPECT_EQ(d.associationQuotaMb, 64);
@@ -690,6 +692,8 @@ TEST_F(ConfigTest, BadDicomValuesAreRefusedWithTheirPlace) {
     expectRejected("[dicom]\nassociation_quota_mb = 0\n", 2, "dicom.association_quota_mb",
                    "at least 1");
     expectRejected("[dicom]\nmax_associations = 0\n", 2, "dicom.max_associations", "at least 1");
+    expectRejected("[dicom]\nnegotiation_seconds = 61\n", 2, "dicom.negotiation_seconds",
+                   "at most 60");
     expectRejected("[dicom]\ntls = true\n", 2, "dicom.tls", "set per peer");
     expectRejected("[dicom]\nlisten = true\n", 2, "dicom.listen", "");
     expectRejected("[[dicom.peers]]\nname = \"pacs\"\naet = \"PACS\"\nhost = \"pacs host\"\n"

@@ -126,6 +126,41 @@ TEST_F(NetListenConcurrent, ASilentSenderDoesNotHoldUpAnother) {
     fs::remove_all(dir);
 }
 
+// Connections that say nothing, and connections that send half an association request and
+// stop (a port scanner, a health check, a broken client; issue 48): fifty of the first and ten of
+// the second open at once hold up nobody. A scanner's echo is answered within 2 s, and its
+// series arrives whole within storescu's own 10 s timeouts.
+TEST_F(NetListenConcurrent, SilentAndHalfSpokenConnectionsDoNotStallTheNode) {
+    const fs::path dir = tempDir("net-listen-idle");
+    ListenProcess node(dir, {"--allow", "SCANNER"});
+    const std::string rq = associateRequest("SCANNER", "STEERSEG");
+    std::vector<int> idle;
+    for (int n = 0; n < 60; ++n) {
+        const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+        sockaddr_in addr{};
+        addr.sin_family = AF_INET;
+        addr.sin_port = htons(static_cast<std::uint16_t>(node.port));
+        addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        ASSERT_EQ(::connect(fd, reinterpret_cast<const sockaddr*>(&addr), sizeof addr), 0);
+        if (n >= 50) {
+            ::send(fd, rq.data(), rq.size() / 2, MSG_NOSIGNAL);
+        }
+        idle.push_back(fd);
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const Finished echo = node.echo("SCANNER");
+    EXPECT_EQ(echo.status, 0) << echo.output << node.log();
+    EXPECT_LT(std::chrono::steady_clock::now() - start, 2s);
+    const Finished pushed = storescu(node.port, "SCANNER", series, dir);
+    EXPECT_EQ(pushed.status, 0) << pushed.output << node.log();
+    EXPECT_EQ(filesBelow(dir / "store").size(), series.size()) << node.log();
+    for (const int fd : idle) {
+        ::close(fd);
+    }
+    EXPECT_EQ(node.process->stop(), 0);
+    fs::remove_all(dir);
+}
+
 // Each half of the series from its own scanner at the same moment, into the same series
 // folder: every file whole, no temporary left.
 TEST_F(NetListenConcurrent, TwoSendersIntoOneSeriesBothArriveWhole) {
