@@ -140,6 +140,9 @@ void AssociationPool::reap(bool all) {
     for (auto it = workers_.begin(); it != workers_.end();) {
         if (all || it->done) {
             it->thread.join();
+            if (it->socket >= 0) {
+                ::close(it->socket);
+            }
             it = workers_.erase(it);
         } else {
             ++it;
@@ -237,10 +240,11 @@ void AssociationPool::take(int fd, const Serve& serve, const Busy& busy, const R
         ASC_destroyAssociation(&assoc);
         return;
     }
-    admit(assoc, serve, busy);
+    admit(assoc, fd, serve, busy);
 }
 
-void AssociationPool::admit(T_ASC_Association* assoc, const Serve& serve, const Busy& busy) {
+void AssociationPool::admit(T_ASC_Association* assoc, int fd, const Serve& serve,
+                            const Busy& busy) {
     if (workers_.size() >= static_cast<std::size_t>(limits_.maxAssociations)) {
         T_ASC_RejectParameters reject{ASC_RESULT_REJECTEDTRANSIENT,
                                       ASC_SOURCE_SERVICEPROVIDER_PRESENTATION_RELATED,
@@ -253,6 +257,7 @@ void AssociationPool::admit(T_ASC_Association* assoc, const Serve& serve, const 
         return;
     }
     Worker& worker = workers_.emplace_back();
+    worker.socket = ::fcntl(fd, F_DUPFD_CLOEXEC, 0);
     try {
         worker.thread = std::thread([&serve, &worker, assoc] {
             serve(assoc);
@@ -260,6 +265,9 @@ void AssociationPool::admit(T_ASC_Association* assoc, const Serve& serve, const 
         });
     } catch (const std::system_error&) {
         // No thread to be had: as busy as can be.
+        if (worker.socket >= 0) {
+            ::close(worker.socket);
+        }
         workers_.pop_back();
         busy(assoc->params->DULparams.callingAPTitle,
              assoc->params->DULparams.callingPresentationAddress);
@@ -292,6 +300,13 @@ void AssociationPool::serve(const std::atomic<bool>& stop, const Serve& serve, c
         ::close(p.fd);
     }
     pending_.clear();
+    // The associations still open end now: their reads fail at once, and each thread aborts
+    // its association and leaves no object half written (store_association writes whole ones).
+    for (const Worker& w : workers_) {
+        if (!w.done && w.socket >= 0) {
+            ::shutdown(w.socket, SHUT_RDWR);
+        }
+    }
     reap(true);
 }
 

@@ -54,8 +54,9 @@ class AssociationPool {
     // Binds the port; throws std::runtime_error with the reason when it cannot. With `tls`
     // (not owned; it must outlive the pool) every connection is TLS.
     void open(DcmTransportLayer* tls = nullptr);
-    // Until `stop` becomes true (checked at least once a second); then joins the associations'
-    // threads, each ending by itself (its peer's release or abort, or the DIMSE timeout).
+    // Until `stop` becomes true (checked at least once a second); then ends the open
+    // associations (their connections shut down under them: a stop does not wait for a silent
+    // peer's timeout) and joins their threads.
     void serve(const std::atomic<bool>& stop, const Serve& serve, const Busy& busy,
                const Idle& idle, const Refused& refused);
 
@@ -63,6 +64,10 @@ class AssociationPool {
     struct Worker {
         std::thread thread;
         std::atomic<bool> done{false};
+        // A second descriptor of the association's socket, which DCMTK owns and closes: shut
+        // down through it at a stop, and closed after the join, so its number cannot meanwhile
+        // name another socket.
+        int socket = -1;
     };
     // A connection accepted whose association request has not arrived whole.
     struct Pending {
@@ -74,7 +79,7 @@ class AssociationPool {
     void acceptConnections();
     void waitForRequests();
     void take(int fd, const Serve& serve, const Busy& busy, const Refused& refused);
-    void admit(T_ASC_Association* assoc, const Serve& serve, const Busy& busy);
+    void admit(T_ASC_Association* assoc, int fd, const Serve& serve, const Busy& busy);
 
     int port_;
     Limits limits_;

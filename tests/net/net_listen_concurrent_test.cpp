@@ -121,7 +121,6 @@ TEST_F(NetListenConcurrent, ASilentSenderDoesNotHoldUpAnother) {
         EXPECT_LT(std::chrono::steady_clock::now() - start, 20s);
         EXPECT_EQ(filesBelow(dir / "store").size(), series.size()) << node.log();
     }
-    // A stop waits for open associations: the silent one's went with its connection.
     EXPECT_EQ(node.process->stop(), 0);
     fs::remove_all(dir);
 }
@@ -158,6 +157,19 @@ TEST_F(NetListenConcurrent, SilentAndHalfSpokenConnectionsDoNotStallTheNode) {
         ::close(fd);
     }
     EXPECT_EQ(node.process->stop(), 0);
+    fs::remove_all(dir);
+}
+
+// SIGTERM with an association open and silent (issue 48): the node ends it and exits within
+// 2 s, not after the peer's 30 s timeout.
+TEST_F(NetListenConcurrent, AStopEndsTheOpenAssociationsAtOnce) {
+    const fs::path dir = tempDir("net-listen-stop");
+    ListenProcess node(dir, {"--allow", "STALLED"});
+    const SilentSender stalled(node.port, "STALLED");
+    ASSERT_TRUE(stalled.accepted()) << node.log();
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_EQ(node.process->stop(), 0) << node.log();
+    EXPECT_LT(std::chrono::steady_clock::now() - start, 2s);
     fs::remove_all(dir);
 }
 
