@@ -20,6 +20,11 @@ void turnOffFailedSpeeds(workflow::Settings& s, const session::NumericsReport& n
     // None passed: the solver itself is wrong here. The paper's speed stays on, the alarm says
     // what failed, and the operator's eyes judge the masks.
     s.defaultSpeed = passed != model::kSpeedKinds.end() ? *passed : model::SpeedKind::Threshold;
+    for (const workflow::SpeedOff& off : s.speedsOff) {
+        if (off.kind == s.defaultSpeed) {
+            s.defaultSpeedFailed = off.why;
+        }
+    }
     std::erase_if(s.speedsOff,
                   [&](const workflow::SpeedOff& off) { return off.kind == s.defaultSpeed; });
 }

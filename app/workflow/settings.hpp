@@ -75,6 +75,9 @@ struct Settings {
     // names one (a resumed session) runs defaultSpeed instead, which must not be one of them;
     // the screen says why all along (Status::gpuAlarm).
     std::vector<SpeedOff> speedsOff;
+    // Set when the default speed failed the check too (every speed did: the solver itself is
+    // wrong on this GPU), with the check's why: it runs, and the alarm says so.
+    std::string defaultSpeedFailed;
     WallClock clock; // export names' time stamps; empty: the system clock (tests fix it)
 };
 

@@ -59,10 +59,16 @@ Workflow::Workflow(Engine& engine, Settings settings, AuditLog* audit)
                             " speed is off: this GPU computed it wrong at start-up (" + off.why +
                             ").";
     }
+    const std::string fallback(model::speedKindName(settings_.defaultSpeed));
+    if (!settings_.defaultSpeedFailed.empty()) {
+        status_.gpuAlarm += std::string(status_.gpuAlarm.empty() ? "" : " ") + "The " + fallback +
+                            " speed failed too (" + settings_.defaultSpeedFailed +
+                            "): no mask of this GPU can be trusted.";
+    } else if (!status_.gpuAlarm.empty()) {
+        status_.gpuAlarm += " The " + fallback + " speed runs instead.";
+    }
     if (!status_.gpuAlarm.empty()) {
-        status_.gpuAlarm = "GPU CHECK FAILED. " + status_.gpuAlarm + " The " +
-                           std::string(model::speedKindName(settings_.defaultSpeed)) +
-                           " speed runs instead.";
+        status_.gpuAlarm = "GPU CHECK FAILED. " + status_.gpuAlarm;
     }
     status_.radius = settings_.defaultRadius;
     params_.values[indexOf(model::Param::Radius)] = settings_.defaultRadius;

@@ -95,6 +95,18 @@ TEST(WorkflowSpeed, ASpeedOffOnThisGpuIsNeverRun) {
     off.defaultSpeed = SpeedKind::Classify;
     off.speedsOff = {{SpeedKind::Classify, "x"}};
     EXPECT_THROW(Rig{off}, std::invalid_argument) << "the kiosk runs a speed that passed instead";
+
+    // Every speed failed: the threshold speed runs, and the alarm says no mask can be trusted.
+    Settings none = testSettings();
+    none.speedsOff = {{SpeedKind::Edge, "e"}, {SpeedKind::Classify, "c"}};
+    none.defaultSpeedFailed = "12 solver iterations: 40 voxels apart";
+    const Rig broken(none);
+    EXPECT_EQ(
+        broken.status().gpuAlarm,
+        "GPU CHECK FAILED. The edge speed is off: this GPU computed it wrong at start-up (e). "
+        "The classify speed is off: this GPU computed it wrong at start-up (c). The "
+        "threshold speed failed too (12 solver iterations: 40 voxels apart): no mask of "
+        "this GPU can be trusted.");
 }
 
 TEST(WorkflowSpeed, SpeedAndExamplesChangeWhereParametersDo) {
