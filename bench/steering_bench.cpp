@@ -9,6 +9,9 @@
 // click (0: the initial prompt) with its kind, voxel, radius, Dice, normalised surface Dice,
 // seconds from the click to the solver's stop and to its first visible change (and where the
 // latter went: undo snapshots, the edit, the speed's training, the volume count), stop reason.
+// The summary: Dice initially and after 5 and 10, its AUC over 6 steps, and the interactive
+// challenge's own scores after 5 corrections (dsc_auc, nsd_auc, final_dsc, final_nsd,
+// total_seconds; bench::challengeScores).
 #include "config/config_loader.hpp"
 #include "core/mask_overlap.hpp"
 #include "engine/click_session.hpp"
@@ -106,7 +109,8 @@ Json entry(int click, const bench::RobotClick& c, double radius,
     return j;
 }
 
-Json summary(const std::vector<double>& dices) {
+Json summary(const std::vector<double>& dices, const std::vector<double>& nsds,
+             double totalSeconds) {
     Json s;
     const auto after = [&dices](std::size_t k) -> Json {
         return dices.empty() ? Json(nullptr) : Json(dices[std::min(k, dices.size() - 1)]);
@@ -115,6 +119,13 @@ Json summary(const std::vector<double>& dices) {
     s["dice_after_5"] = after(5);
     s["dice_after_10"] = after(10);
     s["dice_auc_6"] = bench::diceAuc(dices);
+    // The interactive challenge's own scores after five corrections (issue 51).
+    const bench::ChallengeScores c = bench::challengeScores(dices, nsds);
+    s["dsc_auc"] = c.dscAuc;
+    s["nsd_auc"] = c.nsdAuc;
+    s["final_dsc"] = c.finalDsc;
+    s["final_nsd"] = c.finalNsd;
+    s["total_seconds"] = totalSeconds; // the initial prompt's and five corrections' runs
     return s;
 }
 
@@ -125,14 +136,20 @@ Json robot(const bench::MaskGrid& grid, const std::vector<std::uint8_t>& label, 
            double maxRadius, Act&& act) {
     Json clicks = Json::array();
     std::vector<double> dices;
+    std::vector<double> nsds;
+    double totalSeconds = 0.0;
     std::optional<bench::RobotClick> c = bench::initialClick(grid, label);
     for (int n = 0; c && n <= o.clicks; ++n) {
         const double radius = bench::brushRadius(grid, *c, maxRadius);
         Json extra = Json::object();
         const std::vector<std::uint8_t> mask = act(n, *c, radius, extra);
         const double d = bench::dice(mask, label);
-        Json j = entry(n, *c, radius, mask, d, bench::surfaceDice(grid, mask, label, o.nsdMm));
+        const double nsd = bench::surfaceDice(grid, mask, label, o.nsdMm);
+        Json j = entry(n, *c, radius, mask, d, nsd);
         j.update(extra);
+        if (n <= 5 && extra.contains("seconds")) {
+            totalSeconds += extra["seconds"].get<double>();
+        }
         std::fprintf(stderr, "  click %2d %-8s (%d, %d, %d) r %.1f: Dice %.3f%s\n", n,
                      kindOf(n, c->positive), c->voxel.x, c->voxel.y, c->voxel.z, radius, d,
                      extra.contains("stop_reason")
@@ -142,11 +159,12 @@ Json robot(const bench::MaskGrid& grid, const std::vector<std::uint8_t>& label, 
                          : "");
         clicks.push_back(std::move(j));
         dices.push_back(d);
+        nsds.push_back(nsd);
         c = bench::correctionClick(grid, mask, label);
     }
     Json out;
     out["clicks"] = std::move(clicks);
-    out["summary"] = summary(dices);
+    out["summary"] = summary(dices, nsds, totalSeconds);
     return out;
 }
 

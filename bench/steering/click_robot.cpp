@@ -304,6 +304,20 @@ void paintSphere(const MaskGrid& grid, std::vector<std::uint8_t>& mask, const gl
     }
 }
 
+ChallengeScores challengeScores(const std::vector<double>& dices, const std::vector<double>& nsds,
+                                std::size_t corrections) {
+    const std::size_t steps = std::min({dices.size(), nsds.size(), corrections + 1});
+    if (steps < 2) {
+        return {};
+    }
+    std::vector<double> dsc(dices.begin() + 1, dices.begin() + static_cast<std::ptrdiff_t>(steps));
+    std::vector<double> nsd(nsds.begin() + 1, nsds.begin() + static_cast<std::ptrdiff_t>(steps));
+    for (std::size_t n = 0; n < nsd.size(); ++n) {
+        nsd[n] = dsc[n] > 0.2 ? nsd[n] : 0.0;
+    }
+    return {diceAuc(dsc, dsc.size()), diceAuc(nsd, nsd.size()), dsc.back(), nsd.back()};
+}
+
 double diceAuc(const std::vector<double>& dices, std::size_t points) {
     const std::size_t n = std::min(points, dices.size());
     double auc = 0.0;

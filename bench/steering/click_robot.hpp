@@ -77,4 +77,17 @@ void paintSphere(const MaskGrid& grid, std::vector<std::uint8_t>& mask, const gl
 // at most points - 1), as the challenge reports it; fewer predictions count what there is.
 double diceAuc(const std::vector<double>& dices, std::size_t points = 6);
 
+// The interactive challenge's scores of one structure (issue 51): step 0 is the initial prompt,
+// steps 1..corrections its corrections. DSC_AUC and NSD_AUC are the trapezoid over the
+// corrections' steps (at most corrections - 1), final DSC and NSD those after the last; an
+// NSD counts 0 where its step's DSC is 0.2 or less. Fewer steps count what there is.
+struct ChallengeScores {
+    double dscAuc = 0.0;
+    double nsdAuc = 0.0;
+    double finalDsc = 0.0;
+    double finalNsd = 0.0;
+};
+ChallengeScores challengeScores(const std::vector<double>& dices, const std::vector<double>& nsds,
+                                std::size_t corrections = 5);
+
 } // namespace steerseg::bench

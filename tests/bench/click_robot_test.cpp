@@ -164,5 +164,23 @@ TEST(ClickRobot, PaintedSpheresAndTheAucOfTheFirstSixPredictions) {
     EXPECT_DOUBLE_EQ(diceAuc({0.7}), 0.0);
 }
 
+// The challenge's scores over the corrections, not the initial prompt; an NSD where the DSC is
+// 0.2 or less counts 0.
+TEST(ClickRobot, ChallengeScoresFollowTheChallengesDefinitions) {
+    const std::vector<double> dsc{0.1, 0.5, 0.15, 0.8, 0.9, 0.9, 0.99};
+    const std::vector<double> nsd{0.2, 0.6, 0.7, 0.85, 0.95, 1.0, 1.0};
+    const ChallengeScores s = challengeScores(dsc, nsd);
+    EXPECT_DOUBLE_EQ(s.dscAuc, 0.5 * (0.5 + 0.15) + 0.5 * (0.15 + 0.8) + 0.5 * (0.8 + 0.9) +
+                                   0.5 * (0.9 + 0.9));
+    EXPECT_DOUBLE_EQ(s.nsdAuc, 0.5 * (0.6 + 0.0) + 0.5 * (0.0 + 0.85) + 0.5 * (0.85 + 0.95) +
+                                   0.5 * (0.95 + 1.0));
+    EXPECT_DOUBLE_EQ(s.finalDsc, 0.9);
+    EXPECT_DOUBLE_EQ(s.finalNsd, 1.0);
+    const ChallengeScores perfect =
+        challengeScores(std::vector<double>(6, 1.0), std::vector<double>(6, 1.0));
+    EXPECT_DOUBLE_EQ(perfect.dscAuc, 4.0) << "at most 4 over five steps";
+    EXPECT_DOUBLE_EQ(challengeScores({0.5}, {0.5}).finalDsc, 0.0) << "no correction yet";
+}
+
 } // namespace
 } // namespace steerseg::bench
