@@ -56,4 +56,31 @@ std::vector<std::uint8_t> referenceVoxels(const Volume& reference, int label) {
     return out;
 }
 
+std::size_t differencesOffSurface(const glm::ivec3& dims, std::span<const std::uint8_t> a,
+                                  std::span<const std::uint8_t> reference) {
+    static constexpr glm::ivec3 kFaces[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                             {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+    std::size_t off = 0;
+    std::size_t n = 0;
+    for (int k = 0; k < dims.z; ++k) {
+        for (int j = 0; j < dims.y; ++j) {
+            for (int i = 0; i < dims.x; ++i, ++n) {
+                if (a[n] == reference[n]) {
+                    continue;
+                }
+                bool surface = false;
+                for (const glm::ivec3 f : kFaces) {
+                    const glm::ivec3 p = glm::ivec3(i, j, k) + f;
+                    surface =
+                        surface || (glm::all(glm::greaterThanEqual(p, glm::ivec3(0))) &&
+                                    glm::all(glm::lessThan(p, dims)) &&
+                                    reference[linearIndex(dims, p.x, p.y, p.z)] != reference[n]);
+                }
+                off += surface ? 0 : 1;
+            }
+        }
+    }
+    return off;
+}
+
 } // namespace steerseg

@@ -31,4 +31,10 @@ MaskOverlap maskOverlap(const Volume& mask, const Volume& reference, int label);
 // The reference's voxels by the same rule: 1 where it counts as inside, else 0.
 std::vector<std::uint8_t> referenceVoxels(const Volume& reference, int label);
 
+// Voxels where two masks of `dims` differ that are not on the reference's surface (a face
+// neighbour with the other label): float rounding may move a surface by a voxel, a wrong speed
+// or solver further. The GPU numerics check's rule and the solver agreement tests'.
+std::size_t differencesOffSurface(const glm::ivec3& dims, std::span<const std::uint8_t> a,
+                                  std::span<const std::uint8_t> reference);
+
 } // namespace steerseg

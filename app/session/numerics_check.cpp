@@ -1,5 +1,6 @@
 #include "session/numerics_check.hpp"
 
+#include "core/mask_overlap.hpp"
 #include "core/volume.hpp"
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_state_guard.hpp"
@@ -133,32 +134,6 @@ struct Verdict {
     }
 };
 
-// The voxels whose label differs where neither has a face neighbour of the other label in the
-// reference: rounding may move the surface by a voxel, a wrong speed moves it further.
-std::size_t differencesOffSurface(std::span<const std::uint8_t> gpu,
-                                  std::span<const std::uint8_t> cpu) {
-    std::size_t off = 0;
-    const glm::ivec3 steps[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
-                                 {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
-    for (const glm::ivec3 v : allVoxels()) {
-        const std::size_t n = linearIndex(kDims, v.x, v.y, v.z);
-        if (gpu[n] == cpu[n]) {
-            continue;
-        }
-        bool surface = false;
-        for (const glm::ivec3 s : steps) {
-            const glm::ivec3 p = v + s;
-            if (glm::all(glm::greaterThanEqual(p, glm::ivec3(0))) &&
-                glm::all(glm::lessThan(p, kDims)) &&
-                cpu[linearIndex(kDims, p.x, p.y, p.z)] != cpu[n]) {
-                surface = true;
-            }
-        }
-        off += surface ? 0 : 1;
-    }
-    return off;
-}
-
 // kIterations of the GPU solver and of the dense reference from the same seed: the same front
 // (the solver agreement tests' rule: no label differs off the surface, the evolved time within
 // 1e-3). The reference reads the intensities and factor the GPU's speed read, read back, so
@@ -180,7 +155,7 @@ void compareSolver(Verdict& v, solver::LevelSetSolver& gpu, const speed::SpeedIn
     cpu.setParams(kParams);
     cpu.addSphere(seed);
     cpu.step(kIterations);
-    const std::size_t off = differencesOffSurface(gpu.readMask(), cpu.mask());
+    const std::size_t off = differencesOffSurface(kDims, gpu.readMask(), cpu.mask());
     const double time = std::abs(static_cast<double>(r.evolvedTime - before - cpu.evolvedTime()));
     std::string line = std::to_string(kIterations) + " solver iterations: " + std::to_string(off) +
                        " voxels apart off the surface, evolved time within " + number(time);

@@ -2,6 +2,7 @@
 
 // Shared helpers of the solver tests: synthetic volumes and mask comparisons.
 
+#include "core/mask_overlap.hpp"
 #include "model/level_set_params.hpp"
 
 #include <cmath>
@@ -62,36 +63,6 @@ inline double dice(std::span<const std::uint8_t> a, std::span<const std::uint8_t
 // Radius of the ball with the mask's volume.
 inline double equivalentRadius(std::span<const std::uint8_t> mask) {
     return std::cbrt(3.0 * static_cast<double>(insideCount(mask)) / (4.0 * std::numbers::pi));
-}
-
-// Voxels where the masks differ that are not next to the surface of `reference` (a face
-// neighbour with the other label): GPU and CPU float rounding may only move the surface by a
-// voxel.
-inline std::size_t differencesOffSurface(const glm::ivec3& d, std::span<const std::uint8_t> a,
-                                         std::span<const std::uint8_t> reference) {
-    std::size_t off = 0;
-    for (int k = 0; k < d.z; ++k) {
-        for (int j = 0; j < d.y; ++j) {
-            for (int i = 0; i < d.x; ++i) {
-                const std::size_t n = voxelIndex(d, i, j, k);
-                if (a[n] == reference[n]) {
-                    continue;
-                }
-                bool surface = false;
-                const int step[6][3] = {{-1, 0, 0}, {1, 0, 0},  {0, -1, 0},
-                                        {0, 1, 0},  {0, 0, -1}, {0, 0, 1}};
-                for (const auto& s : step) {
-                    const int x = i + s[0], y = j + s[1], z = k + s[2];
-                    if (x >= 0 && y >= 0 && z >= 0 && x < d.x && y < d.y && z < d.z &&
-                        reference[voxelIndex(d, x, y, z)] != reference[n]) {
-                        surface = true;
-                    }
-                }
-                off += surface ? 0 : 1;
-            }
-        }
-    }
-    return off;
 }
 
 } // namespace steerseg::test
