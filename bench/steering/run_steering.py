@@ -68,13 +68,14 @@ def median(xs):
 def table(results, cases):
     lines = [
         "| case | Dice 0 | after 5 | after 10 | paint only after 5 | goal after 5 | AUC (6) | "
+        "challenge: final DSC / NSD, DSC_AUC / NSD_AUC, s (paint only) | "
         "median s to stop | median s to first change | stops |",
-        "|---|---|---|---|---|---|---|---|---|---|",
+        "|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for r in results:
         case = cases[r["name"]]
         if "error" in r:
-            lines.append(f"| {r['name']} | {r['error']} |||||||||")
+            lines.append(f"| {r['name']} | {r['error']} ||||||||||")
             continue
         s, b = r["summary"], r["baseline"]["summary"]
         clicks = r["clicks"][1:] or r["clicks"]
@@ -84,10 +85,19 @@ def table(results, cases):
         lines.append(
             f"| {r['name']} | {fmt(s['dice_initial'])} | {fmt(s['dice_after_5'])} | "
             f"{fmt(s['dice_after_10'])} | {fmt(b['dice_after_5'])} | {goal_after_5(case):.2f} | "
-            f"{s['dice_auc_6']:.2f} | {median([c['seconds'] for c in clicks]):.1f} | "
+            f"{s['dice_auc_6']:.2f} | {challenge(s)} ({challenge(b)}) | "
+            f"{median([c['seconds'] for c in clicks]):.1f} | "
             f"{median([c['first_change_seconds'] for c in clicks]):.2f} | "
             + ", ".join(f"{k} {v}" for k, v in sorted(stops.items())) + " |")
     return "\n".join(lines)
+
+
+def challenge(s):
+    """The interactive challenge's scores of a summary (steering_bench: bench::challengeScores)."""
+    if "final_dsc" not in s:
+        return "-"
+    return (f"{s['final_dsc']:.3f} / {s['final_nsd']:.3f}, {s['dsc_auc']:.2f} / {s['nsd_auc']:.2f}, "
+            f"{s['total_seconds']:.0f}")
 
 
 def plot(results, path):
