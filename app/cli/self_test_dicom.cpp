@@ -1,13 +1,10 @@
 #include "cli/self_test_dicom.hpp"
 
 #include "kiosk/dicom_node_config.hpp"
+#include "net/port_socket.hpp"
 #include "net/store_scu.hpp"
 #include "net/tls_context.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <netinet/in.h>
-#include <sys/socket.h>
 #include <unistd.h>
 
 namespace steerseg::cli {
@@ -15,24 +12,16 @@ namespace {
 
 // Binds the port on every address, as the SCP will, and lets it go again.
 CheckResult checkPort(int port) {
-    CheckResult r{"dicom port", CheckLevel::Ok, std::to_string(port) + " can be bound", {}};
-    const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    std::string problem;
+    const int fd = net::bindPort(port, 0, problem);
     if (fd < 0) {
-        return {
-            "dicom port", CheckLevel::Fail, std::string("no socket: ") + std::strerror(errno), {}};
-    }
-    const int on = 1;
-    ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);
-    sockaddr_in addr{};
-    addr.sin_family = AF_INET;
-    addr.sin_port = htons(static_cast<std::uint16_t>(port));
-    addr.sin_addr.s_addr = htonl(INADDR_ANY);
-    if (::bind(fd, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) {
-        r.level = CheckLevel::Fail;
-        r.detail = std::to_string(port) + " cannot be bound: " + std::strerror(errno);
+        return {"dicom port",
+                CheckLevel::Fail,
+                std::to_string(port) + " cannot be bound: " + problem,
+                {}};
     }
     ::close(fd);
-    return r;
+    return {"dicom port", CheckLevel::Ok, std::to_string(port) + " can be bound", {}};
 }
 
 // The files load as the node will load them: certificate and key, matching, and the CAs.

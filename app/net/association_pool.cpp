@@ -1,5 +1,7 @@
 #include "net/association_pool.hpp"
 
+#include "net/port_socket.hpp"
+
 #include <algorithm>
 #include <arpa/inet.h>
 #include <cerrno>
@@ -100,18 +102,12 @@ AssociationPool::~AssociationPool() {
 }
 
 void AssociationPool::open(DcmTransportLayer* tls) {
-    listenFd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);
+    std::string problem;
+    listenFd_ = bindPort(port_, SOCK_NONBLOCK, problem);
     if (listenFd_ < 0) {
-        throw std::runtime_error(std::string("socket: ") + std::strerror(errno));
+        throw std::runtime_error(problem);
     }
-    const int reuse = 1;
-    ::setsockopt(listenFd_, SOL_SOCKET, SO_REUSEADDR, &reuse, sizeof reuse);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<std::uint16_t>(port_));
-    address.sin_addr.s_addr = htonl(INADDR_ANY);
-    if (::bind(listenFd_, reinterpret_cast<const sockaddr*>(&address), sizeof address) != 0 ||
-        ::listen(listenFd_, 128) != 0) {
+    if (::listen(listenFd_, 128) != 0) {
         throw std::runtime_error(std::strerror(errno));
     }
     // An acceptor network without a listening socket of its own (DCMTK creates none while an
