@@ -56,6 +56,10 @@ pid_t spawn(const std::vector<std::string>& argv, const std::filesystem::path& l
 
 } // namespace
 
+int connectLoopback(int port) {
+    return loopbackSocket(port, true);
+}
+
 int freePort() {
     const int fd = loopbackSocket(0, false);
     if (fd < 0) {

@@ -53,6 +53,9 @@ class ChildProcess {
     std::filesystem::path log_;
 };
 
+// A TCP connection to 127.0.0.1:port (close-on-exec), or -1 when it cannot be made.
+int connectLoopback(int port);
+
 // A program run to its end: exit status (-1 when killed) and its output, both streams.
 struct Finished {
     int status = -1;

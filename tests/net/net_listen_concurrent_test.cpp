@@ -6,12 +6,10 @@
 #include "support/test_data.hpp"
 
 #include <algorithm>
-#include <arpa/inet.h>
 #include <dcmtk/config/osconfig.h> // must come first among DCMTK's headers
 #include <dcmtk/dcmdata/dcfilefo.h>
 #include <fstream>
 #include <gtest/gtest.h>
-#include <netinet/in.h>
 #include <sys/socket.h>
 #include <thread>
 #include <unistd.h>
@@ -51,12 +49,8 @@ std::string associateRequest(const std::string& calling, const std::string& call
 // A-ASSOCIATE-AC came back) and waits for its first command.
 class SilentSender {
   public:
-    SilentSender(int port, const std::string& calling) : fd_(::socket(AF_INET, SOCK_STREAM, 0)) {
-        sockaddr_in addr{};
-        addr.sin_family = AF_INET;
-        addr.sin_port = htons(static_cast<std::uint16_t>(port));
-        addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-        if (::connect(fd_, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) {
+    SilentSender(int port, const std::string& calling) : fd_(connectLoopback(port)) {
+        if (fd_ < 0) {
             throw std::runtime_error("cannot connect to the node");
         }
         const std::string rq = associateRequest(calling, "STEERSEG");
@@ -135,12 +129,8 @@ TEST_F(NetListenConcurrent, SilentAndHalfSpokenConnectionsDoNotStallTheNode) {
     const std::string rq = associateRequest("SCANNER", "STEERSEG");
     std::vector<int> idle;
     for (int n = 0; n < 60; ++n) {
-        const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-        sockaddr_in addr{};
-        addr.sin_family = AF_INET;
-        addr.sin_port = htons(static_cast<std::uint16_t>(node.port));
-        addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-        ASSERT_EQ(::connect(fd, reinterpret_cast<const sockaddr*>(&addr), sizeof addr), 0);
+        const int fd = connectLoopback(node.port);
+        ASSERT_GE(fd, 0);
         if (n >= 50) {
             ::send(fd, rq.data(), rq.size() / 2, MSG_NOSIGNAL);
         }

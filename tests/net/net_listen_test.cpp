@@ -5,13 +5,11 @@
 #include "support/test_data.hpp"
 
 #include <algorithm>
-#include <arpa/inet.h>
 #include <dcmtk/config/osconfig.h> // must come first among DCMTK's headers
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
 #include <fstream>
 #include <gtest/gtest.h>
-#include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -118,12 +116,8 @@ TEST_F(NetListen, QuotaAndGarbageAreRefusedAndTheNodeKeepsServing) {
 
     // Bytes that are no PDU at all, then a connection dropped half-way through a PDU header.
     for (const std::string& junk : {std::string(4096, '\x5a'), std::string("\x01\x00\x00", 3)}) {
-        const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-        sockaddr_in addr{};
-        addr.sin_family = AF_INET;
-        addr.sin_port = htons(static_cast<std::uint16_t>(node.port));
-        addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-        ASSERT_EQ(::connect(fd, reinterpret_cast<const sockaddr*>(&addr), sizeof addr), 0);
+        const int fd = connectLoopback(node.port);
+        ASSERT_GE(fd, 0);
         ::send(fd, junk.data(), junk.size(), MSG_NOSIGNAL);
         ::close(fd);
     }
