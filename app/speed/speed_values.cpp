@@ -11,6 +11,9 @@
 
 namespace steerseg::speed {
 
+static_assert(SOLVER_SCAN_UNIT == SPEED_SOURCE_UNIT,
+              "speed_values.comp reads the intensity where runVolumePass binds its source");
+
 gpu::Texture speedValues(const SpeedInputs& inputs, GLuint rawScan, const glm::ivec3& dims,
                          const model::LevelSetParams& params) {
     validateSpeedInputs(inputs);
@@ -23,19 +26,15 @@ gpu::Texture speedValues(const SpeedInputs& inputs, GLuint rawScan, const glm::i
     gpu::Texture out = createVolumeTexture(dims, "speed values");
     const GLuint id = program.id();
     glUseProgram(id);
-    glUniform3i(glGetUniformLocation(id, "volumeDims"), dims.x, dims.y, dims.z);
     glUniform1f(glGetUniformLocation(id, "T"), params.T);
     glUniform1f(glGetUniformLocation(id, "eps"), params.eps);
     glUniform1i(glGetUniformLocation(id, "speedKind"), static_cast<GLint>(inputs.kind));
     glUniform1i(glGetUniformLocation(id, "classifyWithinWindow"), inputs.withinWindow ? 1 : 0);
     // The factor texture and the intensity may have been written by image stores just before.
     gpu::memoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    // The factor on its unit; the intensity on SPEED_SOURCE_UNIT, the one volume pass's source.
     bindSpeedTextures(inputs, rawScan, SOLVER_SCAN_UNIT, SOLVER_FACTOR_UNIT);
-    glBindImageTexture(SPEED_OUT_IMAGE_UNIT, out.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-    gpu::dispatchCompute(static_cast<GLuint>((dims.x + 3) / 4),
-                         static_cast<GLuint>((dims.y + 3) / 4),
-                         static_cast<GLuint>((dims.z + 3) / 4));
-    gpu::memoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    runVolumePass(id, inputs.intensity != 0 ? inputs.intensity : rawScan, out.id(), dims);
     gpu::checkGl("evaluating the speed at every voxel");
     return out;
 }
