@@ -4,11 +4,14 @@
 // the machine (llvmpipe on a shared 2-core box is noisy; run it alone). The per-pass tables run
 // with sleeping off (every brick of the band does its full work); the last table runs a front
 // that has stopped with sleeping on and off (voxels visited per iteration beside iterations/s).
-//   solver_bench [--size N] [--iterations N] [--dense-size N]
+// --readback WxHxD times reading the level set back as a mask (the kiosk's autosave, exports) on
+// a grid of that size, against the dense phi and its sign, in the same run.
+//   solver_bench [--size N] [--iterations N] [--dense-size N] [--readback WxHxD]
 #include "gpu/gl_counts.hpp"
 #include "gpu/gpu_info.hpp"
 #include "platform/egl/offscreen_context.hpp"
 #include "solver/level_set_solver.hpp"
+#include "solver/phi_init.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -97,6 +100,36 @@ int argOr(int argc, char** argv, const std::string& name, int fallback) {
     return fallback;
 }
 
+// The mask read straight from the bricks (LevelSetSolver::readMask) against the dense phi and its
+// sign, on a sphere of a sixth of the grid's smallest side grown a check interval: median of 3.
+void timeReadback(const glm::ivec3& d) {
+    const std::vector<float> volume(static_cast<std::size_t>(d.x) * d.y * d.z, 100.0F);
+    solver::LevelSetSolver s(volume, d);
+    s.addSphere({glm::vec3(d) / 2.0F, static_cast<float>(std::min({d.x, d.y, d.z})) / 6.0F});
+    s.setParams({100.0F, 10.0F, 0.8F});
+    s.step(model::SolverOptions{}.checkInterval);
+    std::vector<double> dense;
+    std::vector<double> bricks;
+    bool same = true;
+    for (int r = 0; r < 3; ++r) {
+        auto t = std::chrono::steady_clock::now();
+        const std::vector<std::uint8_t> a = solver::insideMask(s.readPhi());
+        dense.push_back(
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count());
+        t = std::chrono::steady_clock::now();
+        const std::vector<std::uint8_t> b = s.readMask();
+        bricks.push_back(
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count());
+        same = same && a == b;
+    }
+    std::sort(dense.begin(), dense.end());
+    std::sort(bricks.begin(), bricks.end());
+    std::printf(
+        "\n## The mask read back, %dx%dx%d\n\n| dense phi, then its sign (ms) | from the "
+        "bricks (ms) | ratio | same mask |\n|---|---|---|---|\n| %.1f | %.1f | %.1fx | %s |\n",
+        d.x, d.y, d.z, 1e3 * dense[1], 1e3 * bricks[1], dense[1] / bricks[1], same ? "yes" : "NO");
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -177,6 +210,14 @@ int main(int argc, char** argv) {
         std::printf("\nDense mode at %d^3: %.2f iterations/s, level set %.1f MiB (%u bricks)\n",
                     denseSize, big.iterationsPerSecond, mib(big.stats.levelSetBytes),
                     big.stats.activeBricks);
+    }
+    for (int i = 1; i + 1 < argc; ++i) {
+        glm::ivec3 d(0);
+        if (std::string(argv[i]) == "--readback" &&
+            std::sscanf(argv[i + 1], "%dx%dx%d", &d.x, &d.y, &d.z) == 3 && d.x > 0 && d.y > 0 &&
+            d.z > 0) {
+            timeReadback(d);
+        }
     }
     return 0;
 }
