@@ -42,6 +42,7 @@ struct Options {
     int label = -1;
     int clicks = 10;
     bool paintOnly = false;
+    bool box = false; // the challenge's protocol: the label's bounding box first, then clicks
     int maxIterations = 3000;
     std::string config;
     double nsdMm = 2.0;
@@ -52,8 +53,8 @@ Options parse(int argc, char** argv) {
     Options o;
     for (int a = 1; a < argc; ++a) {
         const std::string name = argv[a];
-        if (name == "--paint-only") {
-            o.paintOnly = true;
+        if (name == "--paint-only" || name == "--box") {
+            (name == "--box" ? o.box : o.paintOnly) = true;
             continue;
         }
         if (a + 1 >= argc) {
@@ -87,6 +88,20 @@ Options parse(int argc, char** argv) {
         throw std::invalid_argument("--clicks 0..100, --max-iterations >= 1");
     }
     return o;
+}
+
+void paintBox(const bench::MaskGrid& grid, std::vector<std::uint8_t>& mask,
+              const bench::VoxelBox& box) {
+    for (int k = box.lo.z; k <= box.hi.z; ++k) {
+        for (int j = box.lo.y; j <= box.hi.y; ++j) {
+            for (int i = box.lo.x; i <= box.hi.x; ++i) {
+                mask[static_cast<std::size_t>(i) +
+                     static_cast<std::size_t>(grid.dims.x) *
+                         (static_cast<std::size_t>(j) +
+                          static_cast<std::size_t>(grid.dims.y) * static_cast<std::size_t>(k))] = 1;
+            }
+        }
+    }
 }
 
 const char* kindOf(int click, bool positive) {
@@ -129,29 +144,49 @@ Json summary(const std::vector<double>& dices, const std::vector<double>& nsds,
     return s;
 }
 
-// The robot's loop; `act` answers a click and returns the mask that follows, `note` adds the
-// product's own figures to the entry.
+Json boxJson(const bench::VoxelBox& b) {
+    return {b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z};
+}
+
+// The robot's loop; `act` answers a prompt (a click, or with a box its step 0: `c` null) and
+// returns the mask that follows, adding the product's own figures to `extra`.
 template <typename Act>
 Json robot(const bench::MaskGrid& grid, const std::vector<std::uint8_t>& label, const Options& o,
-           double maxRadius, Act&& act) {
+           double maxRadius, const std::optional<bench::VoxelBox>& box, Act&& act) {
     Json clicks = Json::array();
     std::vector<double> dices;
     std::vector<double> nsds;
     double totalSeconds = 0.0;
-    std::optional<bench::RobotClick> c = bench::initialClick(grid, label);
-    for (int n = 0; c && n <= o.clicks; ++n) {
-        const double radius = bench::brushRadius(grid, *c, maxRadius);
+    std::optional<bench::RobotClick> c;
+    if (!box) {
+        c = bench::initialClick(grid, label);
+    }
+    for (int n = 0; (c || (box && n == 0)) && n <= o.clicks; ++n) {
+        const bool boxStep = box && n == 0;
+        const double radius = boxStep ? 0.0 : bench::brushRadius(grid, *c, maxRadius);
         Json extra = Json::object();
-        const std::vector<std::uint8_t> mask = act(n, *c, radius, extra);
+        const std::vector<std::uint8_t> mask = act(n, boxStep ? nullptr : &*c, radius, extra);
         const double d = bench::dice(mask, label);
         const double nsd = bench::surfaceDice(grid, mask, label, o.nsdMm);
-        Json j = entry(n, *c, radius, mask, d, nsd);
+        Json j;
+        if (boxStep) {
+            j["click"] = n;
+            j["kind"] = "box";
+            j["box"] = boxJson(*box);
+            j["mask_voxels"] =
+                std::count_if(mask.begin(), mask.end(), [](std::uint8_t v) { return v != 0; });
+            j["dice"] = d;
+            j["nsd"] = nsd;
+        } else {
+            j = entry(n, *c, radius, mask, d, nsd);
+        }
         j.update(extra);
         if (n <= 5 && extra.contains("seconds")) {
             totalSeconds += extra["seconds"].get<double>();
         }
+        const glm::ivec3 at = boxStep ? box->lo : c->voxel;
         std::fprintf(stderr, "  click %2d %-8s (%d, %d, %d) r %.1f: Dice %.3f%s\n", n,
-                     kindOf(n, c->positive), c->voxel.x, c->voxel.y, c->voxel.z, radius, d,
+                     boxStep ? "box" : kindOf(n, c->positive), at.x, at.y, at.z, radius, d,
                      extra.contains("stop_reason")
                          ? (" " + extra["stop_reason"].get<std::string>() + " " +
                             std::to_string(extra["seconds"].get<double>()) + " s")
@@ -177,18 +212,33 @@ int run(const Options& o) {
     const double maxRadius =
         std::max(1.0, std::min({geometry.dims.x, geometry.dims.y, geometry.dims.z}) / 2.0);
 
+    std::optional<bench::VoxelBox> box;
+    if (o.box) {
+        box = bench::labelBox(grid, label);
+        if (!box) {
+            throw std::runtime_error("the reference label is empty: no box to start from");
+        }
+    }
+
     std::fprintf(stderr, "paint only:\n");
     std::vector<std::uint8_t> painted(grid.count(), 0);
-    Json baseline = robot(
-        grid, label, o, maxRadius, [&](int, const bench::RobotClick& c, double radius, Json&) {
-            bench::paintSphere(grid, painted, glm::dvec3(c.voxel), radius, c.positive ? 1 : 0);
-            return painted;
-        });
+    Json baseline = robot(grid, label, o, maxRadius, box,
+                          [&](int, const bench::RobotClick* c, double radius, Json&) {
+                              if (c == nullptr) {
+                                  // Paint only's answer to a box: the box, filled.
+                                  paintBox(grid, painted, *box);
+                              } else {
+                                  bench::paintSphere(grid, painted, glm::dvec3(c->voxel), radius,
+                                                     c->positive ? 1 : 0);
+                              }
+                              return painted;
+                          });
     Json report;
     report["input"] = o.input;
     report["reference"] = o.reference;
     report["reference_label"] = o.label;
     report["nsd_tolerance_mm"] = o.nsdMm;
+    report["box"] = box ? boxJson(*box) : Json(nullptr);
     if (o.paintOnly) {
         report["clicks"] = baseline["clicks"];
         report["summary"] = baseline["summary"];
@@ -211,10 +261,13 @@ int run(const Options& o) {
         }
         std::fprintf(stderr, "level set:\n");
         Json steered = robot(
-            grid, label, o, maxRadius,
-            [&](int, const bench::RobotClick& c, double radius, Json& extra) {
-                model::Correct click{glm::dvec3(c.voxel), c.positive, radius};
-                const engine::ClickOutcome r = session.apply(click, o.maxIterations);
+            grid, label, o, maxRadius, box,
+            [&](int, const bench::RobotClick* c, double radius, Json& extra) {
+                const model::Action prompt =
+                    c == nullptr
+                        ? model::Action(model::SetBox{model::Box{box->lo, box->hi}})
+                        : model::Action(model::Correct{glm::dvec3(c->voxel), c->positive, radius});
+                const engine::ClickOutcome r = session.apply(prompt, o.maxIterations);
                 extra["seconds"] = r.seconds;
                 extra["first_change_seconds"] = r.firstChangeSeconds;
                 extra["taken_back"] = r.takenBack;
@@ -232,6 +285,18 @@ int run(const Options& o) {
                 extra["T"] = r.T;
                 extra["eps"] = r.eps;
                 extra["barriers"] = r.barriers;
+                if (c == nullptr) {
+                    // What the product took from the box as the structure (its seed's probe and
+                    // the places that read its tissue): the peer starts from the same spheres.
+                    const workflow::Status& st = session.workflow().status();
+                    Json inside = Json::array();
+                    for (const auto* list : {&st.insideExamples, &st.paintedInside}) {
+                        for (const model::Sphere& e : *list) {
+                            inside.push_back({e.centre.x, e.centre.y, e.centre.z, e.radius});
+                        }
+                    }
+                    extra["box_inside"] = std::move(inside);
+                }
                 return session.mask();
             });
         report["clicks"] = steered["clicks"];

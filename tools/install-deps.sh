@@ -12,7 +12,7 @@ packages=(
   glslang-tools libglm-dev
   libopenimageio-dev libgdcm-dev libnifti2-dev zlib1g-dev
   libgpiod-dev libhidapi-dev libinput-dev libudev-dev libsystemd-dev
-  libdcmtk-dev dicom3tools python3-pydicom
+  libdcmtk-dev dicom3tools python3-pydicom python3-skimage python3-nibabel
   orthanc dcmtk openssl
   dpkg-dev fakeroot lintian systemd
   libtomlplusplus-dev nlohmann-json3-dev libimgui-dev fonts-dejavu-core libboost-dev

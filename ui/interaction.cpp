@@ -2,7 +2,9 @@
 
 #include "workflow/transition_table.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace steerseg::ui {
 
@@ -37,6 +39,67 @@ std::optional<model::StrokeMode> paintMode(const workflow::Status& status) {
                                                  : std::nullopt;
 }
 
+// Box mode applies where the table lets a box be set (inspect and steering).
+bool boxMode(const workflow::Status& status) {
+    return status.boxMode && workflow::offeredActions(status.state).contains(ActionKind::SetBox);
+}
+
+// The face whose edge on the screen lies within `tolerance` pixels of `p` (the nearest), where
+// the view's slice cuts `box`.
+std::optional<model::BoxFace> faceAt(const SliceView& view, const model::Box& box,
+                                     const glm::dvec2& p, double tolerance) {
+    const std::optional<ScreenBox> r = boxOnScreen(view, box);
+    if (!r) {
+        return std::nullopt;
+    }
+    const render::SliceFrame& f = view.frame;
+    std::optional<model::BoxFace> best;
+    double nearest = tolerance;
+    // Screen axis 0 (x) shows index axis u, screen axis 1 (y) index axis v.
+    for (const int s : {0, 1}) {
+        const int axis = s == 0 ? f.axisU : f.axisV;
+        const int across = 1 - s;
+        if (p[across] < r->min[across] - tolerance || p[across] > r->max[across] + tolerance) {
+            continue; // beside the edge's span
+        }
+        for (const bool high : {false, true}) {
+            glm::dvec3 edge(f.slice);
+            edge[axis] = high ? box.hi[axis] + 0.5 : box.lo[axis] - 0.5;
+            const double d = std::abs(p[s] - screenOfVoxel(view, edge)[s]);
+            if (d <= nearest) {
+                nearest = d;
+                best = model::BoxFace{axis, high};
+            }
+        }
+    }
+    return best;
+}
+
+// The box a drag from `from` to `to` (voxels, within the scan) on `view` draws: its rectangle
+// on the view's two axes; across them the box's extent before, or for a first box the smaller
+// drawn side in mm, centred on the view's slice.
+model::Box drawnBox(const render::SliceFrame& f, const glm::dvec3& from, const glm::dvec3& to,
+                    const std::optional<model::Box>& before, const workflow::ScanInfo& scan) {
+    const glm::ivec3 dims = scan.dims;
+    model::Box b = before.value_or(model::Box{});
+    double sideMm = std::numeric_limits<double>::infinity();
+    for (const int a : {f.axisU, f.axisV}) {
+        b.lo[a] =
+            std::clamp(static_cast<int>(std::lround(std::min(from[a], to[a]))), 0, dims[a] - 1);
+        b.hi[a] = std::clamp(static_cast<int>(std::lround(std::max(from[a], to[a]))), b.lo[a],
+                             dims[a] - 1);
+        sideMm = std::min(sideMm, (b.hi[a] - b.lo[a] + 1) * scan.spacing[a]);
+    }
+    if (!before) {
+        const int w = f.sliceAxis;
+        const double spacing = scan.spacing[w] > 0.0 ? scan.spacing[w] : 1.0;
+        const double half = 0.5 * (std::max(sideMm / spacing, 1.0) - 1.0);
+        b.lo[w] = std::clamp(static_cast<int>(std::lround(f.slice - half)), 0, dims[w] - 1);
+        b.hi[w] = std::clamp(static_cast<int>(std::lround(f.slice + half)), b.lo[w], dims[w] - 1);
+    }
+    return b;
+}
+
 // Successive points closer than this (voxels) add nothing: a finger at rest, or moving within
 // one voxel, sends one point.
 constexpr double kMinPointStep = 0.5;
@@ -49,6 +112,9 @@ InteractionConfig interactionConfig(double dpi, double probeRadiusMm) {
     }
     InteractionConfig c;
     c.pxPerSlice = 1.5 * dpi / 25.4;
+    // Finer than the touch target: an edge must be found within a finger's width, but a drag
+    // begun well inside the box draws a new extent.
+    c.boxEdgePx = 2.0 * dpi / 25.4;
     if (probeRadiusMm > 0.0 && std::isfinite(probeRadiusMm)) {
         c.probeRadiusMm = probeRadiusMm;
     }
@@ -64,8 +130,12 @@ std::vector<Action> Interaction::onGesture(const Gesture& g, const ScreenState& 
         // pinch): the operator meant something else, and nothing is painted.
         stroke_.reset();
     }
+    if (boxDrag_ && g.id != boxDrag_->id) {
+        boxDrag_.reset(); // as a stroke: a second finger means something else
+    }
     if (!scanShown(status.state)) {
         stroke_.reset();
+        boxDrag_.reset();
         return {};
     }
     switch (regionAt(screen.layout, g.start.x, g.start.y)) {
@@ -103,6 +173,9 @@ std::vector<Action> Interaction::onSlice(const Gesture& g, const SliceView& view
     switch (g.kind) {
     case Gesture::Kind::Tap:
     case Gesture::Kind::LongPress: {
+        if (boxMode(status)) {
+            return {}; // box mode: only a drag means something, so a touch changes nothing
+        }
         const std::optional<glm::dvec3> voxel = voxelAtScreen(view, g.position);
         if (!voxel || !insideScan(*voxel, status.scan.dims)) {
             return {};
@@ -134,13 +207,18 @@ std::vector<Action> Interaction::onSlice(const Gesture& g, const SliceView& view
         if (g.id != dragId_) {
             dragId_ = g.id;
             dragSlices_ = 0.0;
-            if (const std::optional<model::StrokeMode> mode = paintMode(status)) {
+            if (boxMode(status)) {
+                beginBox(g, view, status);
+            } else if (const std::optional<model::StrokeMode> mode = paintMode(status)) {
                 stroke_ = Stroke{g.id, *mode, {}, {}};
                 // The stroke begins where the finger went down, not where it left the slop.
                 Gesture down = g;
                 down.position = g.start;
                 paint(down, view, status);
             }
+        }
+        if (boxDrag_) {
+            return dragBox(g, view, status);
         }
         if (stroke_) {
             return paint(g, view, status);
@@ -187,6 +265,60 @@ std::vector<Action> Interaction::paint(const Gesture& g, const SliceView& view,
         }
     }
     return out;
+}
+
+void Interaction::beginBox(const Gesture& g, const SliceView& view,
+                           const workflow::Status& status) {
+    const std::optional<glm::dvec3> at = voxelAtScreen(view, g.start);
+    const glm::ivec3 dims = status.scan.dims;
+    if (!at || dims.x < 1 || dims.y < 1 || dims.z < 1) {
+        return;
+    }
+    BoxDrag d;
+    d.id = g.id;
+    d.from = glm::clamp(*at, glm::dvec3(0.0), glm::dvec3(dims - 1));
+    d.before = status.box;
+    if (status.box) {
+        d.face = faceAt(view, *status.box, g.start, config_.boxEdgePx);
+        d.box = *status.box;
+    } else {
+        d.box = drawnBox(view.frame, d.from, d.from, std::nullopt, status.scan);
+    }
+    boxDrag_ = d;
+}
+
+std::vector<Action> Interaction::dragBox(const Gesture& g, const SliceView& view,
+                                         const workflow::Status& status) {
+    BoxDrag& d = *boxDrag_;
+    // Beside the view the box stays as the finger last drew it.
+    if (const std::optional<glm::dvec3> at = voxelAtScreen(view, g.position)) {
+        const glm::dvec3 to = glm::clamp(*at, glm::dvec3(0.0), glm::dvec3(status.scan.dims - 1));
+        if (d.face && d.before) {
+            // The face moves by the finger's travel, so grabbing it makes no jump.
+            const int a = d.face->axis;
+            const auto voxels = static_cast<int>(std::lround(to[a] - d.from[a]));
+            d.box = model::movedFace(*d.before, *d.face, voxels, status.scan.dims);
+        } else {
+            d.box = drawnBox(view.frame, d.from, to, d.before, status.scan);
+        }
+    }
+    if (!g.lifted) {
+        return {};
+    }
+    std::vector<Action> out;
+    // The face dragged last is the knob's to move (docs/ui.md).
+    if (d.face && status.boxFace != d.face) {
+        out.emplace_back(model::SetBoxMode{true, d.face});
+    }
+    if (!status.box || *status.box != d.box) {
+        out.emplace_back(model::SetBox{d.box});
+    }
+    boxDrag_.reset();
+    return out;
+}
+
+std::optional<model::Box> Interaction::boxDraft() const {
+    return boxDrag_ ? std::optional(boxDrag_->box) : std::nullopt;
 }
 
 const std::vector<glm::dvec2>& Interaction::strokePath() const {

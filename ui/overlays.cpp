@@ -2,7 +2,10 @@
 
 #include "ui/view_caption.hpp"
 
+#include <array>
+#include <cmath>
 #include <imgui.h>
+#include <optional>
 #include <string>
 
 namespace steerseg::ui {
@@ -63,6 +66,92 @@ void drawStrokePath(const ImGuiLayer& layer, const std::vector<glm::dvec2>& path
     list->AddPolyline(points.data(), static_cast<int>(points.size()), colour, ImDrawFlags_None,
                       width);
     list->AddCircleFilled(points.back(), width, colour);
+}
+
+namespace {
+
+// The box's twelve edges over the 3D view, through the camera that drew it: the outer faces of
+// its voxels. Drawn over the picture (not hidden behind the surface): the UI has no depth.
+void wireBox(ImDrawList* list, const ScreenState::VolumeView& view, const model::Box& box,
+             ImU32 colour, float width) {
+    if (view.rect.empty() || view.renderSize.x <= 0 || view.renderSize.y <= 0) {
+        return;
+    }
+    const glm::dvec2 scale = glm::dvec2(view.rect.w, view.rect.h) / glm::dvec2(view.renderSize);
+    std::array<std::optional<ImVec2>, 8> corner;
+    for (int c = 0; c < 8; ++c) {
+        glm::dvec3 index;
+        for (int a = 0; a < 3; ++a) {
+            index[a] = (c & (1 << a)) != 0 ? box.hi[a] + 0.5 : box.lo[a] - 0.5;
+        }
+        const glm::dvec3 p =
+            view.camera.project(view.geometry.indexToWorld(index), view.renderSize);
+        if (p.z > 0.0 && std::isfinite(p.x) && std::isfinite(p.y)) { // not behind the eye
+            corner[static_cast<std::size_t>(c)] =
+                ImVec2(static_cast<float>(view.rect.x + p.x * scale.x),
+                       static_cast<float>(view.rect.y + p.y * scale.y));
+        }
+    }
+    list->PushClipRect(ImVec2(static_cast<float>(view.rect.x), static_cast<float>(view.rect.y)),
+                       ImVec2(static_cast<float>(view.rect.x + view.rect.w),
+                              static_cast<float>(view.rect.y + view.rect.h)),
+                       true);
+    for (int c = 0; c < 8; ++c) {
+        for (const int bit : {1, 2, 4}) {
+            const auto& a = corner[static_cast<std::size_t>(c)];
+            const auto& b = corner[static_cast<std::size_t>(c | bit)];
+            if ((c & bit) == 0 && a && b) {
+                list->AddLine(*a, *b, colour, width);
+            }
+        }
+    }
+    list->PopClipRect();
+}
+
+} // namespace
+
+void drawBoxes(const ImGuiLayer& layer, const ScreenState& screen, const workflow::Status& status,
+               const std::optional<model::Box>& draft) {
+    if (!status.box && !draft) {
+        return;
+    }
+    const auto width = static_cast<float>(0.06 * layer.touchPx());
+    ImDrawList* list = ImGui::GetForegroundDrawList();
+    if (screen.view3d) {
+        if (status.box) {
+            wireBox(list, *screen.view3d, *status.box, IM_COL32(255, 150, 30, 230), width);
+        }
+        if (draft) {
+            wireBox(list, *screen.view3d, *draft, IM_COL32(255, 210, 140, 240), width);
+        }
+    }
+    for (const std::optional<SliceView>* view : {&screen.slice1, &screen.slice2}) {
+        if (!*view) {
+            continue;
+        }
+        const Rect& r = (*view)->rect;
+        // A box beyond the zoomed view's picture stays within it.
+        list->PushClipRect(ImVec2(static_cast<float>(r.x), static_cast<float>(r.y)),
+                           ImVec2(static_cast<float>(r.x + r.w), static_cast<float>(r.y + r.h)),
+                           true);
+        const auto rect = [&](const model::Box& box, ImU32 line, ImU32 fill) {
+            if (const std::optional<ScreenBox> s = boxOnScreen(**view, box)) {
+                const ImVec2 lo(static_cast<float>(s->min.x), static_cast<float>(s->min.y));
+                const ImVec2 hi(static_cast<float>(s->max.x), static_cast<float>(s->max.y));
+                if (fill != 0) {
+                    list->AddRectFilled(lo, hi, fill);
+                }
+                list->AddRect(lo, hi, line, 0.0F, ImDrawFlags_None, width);
+            }
+        };
+        if (status.box) {
+            rect(*status.box, IM_COL32(255, 150, 30, 230), 0);
+        }
+        if (draft) {
+            rect(*draft, IM_COL32(255, 210, 140, 240), IM_COL32(255, 150, 30, 50));
+        }
+        list->PopClipRect();
+    }
 }
 
 } // namespace steerseg::ui

@@ -8,6 +8,7 @@
 #include "workflow/status.hpp"
 
 #include <glm/glm.hpp>
+#include <optional>
 #include <vector>
 
 namespace steerseg::ui {
@@ -19,5 +20,11 @@ void drawViewCaptions(const ImGuiLayer& layer, const ScreenState& screen,
 // so the operator sees the stroke before it lifts and is applied.
 void drawStrokePath(const ImGuiLayer& layer, const std::vector<glm::dvec2>& path,
                     model::StrokeMode mode);
+
+// The operator's box (Status::box) where each slice view's slice cuts it, in amber (the
+// contours are yellow, the strokes green, red and blue), and the box a finger is drawing
+// (Interaction::boxDraft) over it, lighter and filled, until it lifts.
+void drawBoxes(const ImGuiLayer& layer, const ScreenState& screen, const workflow::Status& status,
+               const std::optional<model::Box>& draft);
 
 } // namespace steerseg::ui

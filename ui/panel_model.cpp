@@ -162,8 +162,14 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
     const model::ActionKinds offered = workflow::offeredActions(s);
     // The brush and the erase toggle belong where a tap on a slice places and erases spheres.
     const bool spheres = offered.contains(ActionKind::Erase);
+    // The box (docs/ui.md): drawn by a drag in box mode where the table lets it be set.
+    const bool boxes = offered.contains(ActionKind::SetBox);
     m.banner = stateLabel(s);
     m.hint = hintFor(s);
+    if (boxes && st.boxMode) {
+        m.hint = "Drag on a slice to draw the box; drag its edge to move a face, then turn a "
+                 "knob to move that face.";
+    }
     // The export screen says what Export will write, as the config enables it.
     if ((s == State::Review || s == State::Done) && !st.exportFormats.empty()) {
         std::string formats;
@@ -252,6 +258,14 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
         }
         m.tools.push_back({st.eraseMode ? "Erase: on" : "Erase: off",
                            model::SetEraseMode{!st.eraseMode}, st.eraseMode});
+    }
+    if (boxes) {
+        m.tools.push_back({st.boxMode ? "Box: on" : "Box: off",
+                           model::SetBoxMode{!st.boxMode, std::nullopt}, st.boxMode});
+        if (st.box) {
+            m.tools.push_back(
+                {"Clear box", model::ClearBox{}, false, st.allowed.contains(ActionKind::ClearBox)});
+        }
     }
     if (offered.contains(ActionKind::Undo)) {
         m.tools.push_back({"Undo", model::Undo{}, false, st.allowed.contains(ActionKind::Undo)});

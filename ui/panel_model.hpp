@@ -70,7 +70,8 @@ struct PanelModel {
     std::vector<PanelButton> exampleTools;
     std::string examples; // "2 inside, 1 outside" ("" unless classify is chosen)
     std::string speedNote;
-    std::vector<PanelButton> tools; // Run/Pause, erase mode, Undo, Redo, Restart, Export ...
+    // Run/Pause, erase mode, box mode and Clear box, Undo, Redo, Restart, Export ...
+    std::vector<PanelButton> tools;
     std::vector<PanelButton> views; // ShowSlices
     std::vector<PanelButton> nav;   // Back, Proceed (labelled for the state), Dismiss
     std::vector<Readout> devices;   // the controllers: name, "connected" or "disconnected"

@@ -2,6 +2,8 @@
 
 // The screen as the kiosk drew it this frame: where each part went and, for the slice views,
 // which frame each image shows (what a tap maps through and what the captions name).
+#include "core/volume.hpp"
+#include "render/camera.hpp"
 #include "ui/layout.hpp"
 #include "ui/slice_mapping.hpp"
 
@@ -13,6 +15,15 @@ struct ScreenState {
     Layout layout;
     std::optional<SliceView> slice1; // absent: not drawn (no scan)
     std::optional<SliceView> slice2;
+    // The 3D view's picture: its camera and the scan's geometry, so that what the UI draws over
+    // it (the box's wire frame) lines up with what the ray caster drew; absent: not drawn.
+    struct VolumeView {
+        render::Camera camera;
+        Geometry geometry;
+        glm::ivec2 renderSize{0}; // the picture the camera drew
+        Rect rect;                // where it is shown
+    };
+    std::optional<VolumeView> view3d;
 };
 
 } // namespace steerseg::ui

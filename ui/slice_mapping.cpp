@@ -38,6 +38,23 @@ glm::dvec2 screenOfVoxel(const SliceView& view, const glm::dvec3& voxel) {
     return glm::dvec2(view.rect.x, view.rect.y) + (glm::dvec2(x, y) + 0.5) * scale;
 }
 
+std::optional<ScreenBox> boxOnScreen(const SliceView& view, const model::Box& box) {
+    const render::SliceFrame& f = view.frame;
+    if (!usable(view) || f.slice < box.lo[f.sliceAxis] || f.slice > box.hi[f.sliceAxis]) {
+        return std::nullopt;
+    }
+    glm::dvec3 lo(f.slice);
+    glm::dvec3 hi(f.slice);
+    for (const int a : {f.axisU, f.axisV}) {
+        lo[a] = box.lo[a] - 0.5;
+        hi[a] = box.hi[a] + 0.5;
+    }
+    // A flipped axis (stepRight or stepDown negative) puts lo right of or below hi.
+    const glm::dvec2 p = screenOfVoxel(view, lo);
+    const glm::dvec2 q = screenOfVoxel(view, hi);
+    return ScreenBox{glm::min(p, q), glm::max(p, q)};
+}
+
 bool insideScan(const glm::dvec3& voxel, const glm::ivec3& dims) {
     for (int a = 0; a < 3; ++a) {
         if (!std::isfinite(voxel[a]) || voxel[a] < -0.5 || voxel[a] > dims[a] - 0.5) {

@@ -4,6 +4,7 @@
 // slice image by a render::SliceFrame (voxel position = origin + x * stepRight + y * stepDown
 // for pixel (x, y) of an image of `renderSize`); the kiosk may render at a lower resolution
 // than the rect it shows the image in, so screen pixels scale to image pixels first.
+#include "model/box.hpp"
 #include "render/slice_frame.hpp"
 #include "ui/layout.hpp"
 
@@ -26,6 +27,15 @@ std::optional<glm::dvec3> voxelAtScreen(const SliceView& view, const glm::dvec2&
 // Where a voxel-index position projects on the screen (its in-plane part; the inverse of
 // voxelAtScreen for points on the slice).
 glm::dvec2 screenOfVoxel(const SliceView& view, const glm::dvec3& voxel);
+
+// Where the view's slice cuts `box`, on the screen: the rectangle's corners (min, max in screen
+// pixels), its edges on the voxels' outer boundaries (half a voxel beyond lo and hi); nullopt
+// where the slice misses the box.
+struct ScreenBox {
+    glm::dvec2 min{0.0};
+    glm::dvec2 max{0.0};
+};
+std::optional<ScreenBox> boxOnScreen(const SliceView& view, const model::Box& box);
 
 // Whether a continuous voxel position lies within the scan (voxel centres are integers, so the
 // scan spans -0.5 .. dims - 0.5 on each axis).

@@ -47,6 +47,7 @@ std::vector<model::Action> TouchUi::drawFrame(const glm::ivec2& screenSize, doub
         out.push_back(std::move(a));
     }
     drawViewCaptions(layer_, screen, status);
+    drawBoxes(layer_, screen, status, interaction_.boxDraft());
     if (const std::optional<model::StrokeMode> mode = interaction_.strokeMode()) {
         drawStrokePath(layer_, interaction_.strokePath(), *mode);
     }

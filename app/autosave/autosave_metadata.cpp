@@ -4,12 +4,14 @@
 #include "autosave/autosave_metadata.hpp"
 
 #include "model/speed_kind.hpp"
+#include "workflow/audit_log.hpp"
 #include "workflow/param_ranges.hpp"
 #include "workflow/utc_time.hpp"
 
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -62,6 +64,26 @@ std::vector<model::Sphere> readSpheres(const nlohmann::json& params, const char*
         throw AutosaveFormatError(std::string("more ") + key + " examples than a session keeps");
     }
     return out;
+}
+
+// {"lo": [i, j, k], "hi": [i, j, k]} (workflow::boxValues) or absent: no box. Checked against
+// the saved dims here, so a garbled box is the autosave's error, not the resumed session's.
+std::optional<model::Box> readBox(const nlohmann::json& params, const glm::ivec3& dims) {
+    if (!params.contains("box") || params.at("box").is_null()) {
+        return std::nullopt;
+    }
+    const nlohmann::json& j = params.at("box");
+    model::Box box;
+    for (int a = 0; a < 3; ++a) {
+        box.lo[a] = j.at("lo").at(a).get<int>();
+        box.hi[a] = j.at("hi").at(a).get<int>();
+    }
+    try {
+        model::validateBox(box, dims);
+    } catch (const std::invalid_argument& e) {
+        throw AutosaveFormatError(e.what());
+    }
+    return box;
 }
 
 nlohmann::json barrierList(const std::vector<model::Barrier>& list) {
@@ -140,13 +162,15 @@ double readEvolvedTime(const nlohmann::json& j) {
 } // namespace
 
 nlohmann::json metadata(const AutosaveSnapshot& s) {
-    nlohmann::json params{{"preset", s.params.preset},
-                          {"speed", model::speedKindName(s.params.speed.kind)},
-                          {"speed_fallback", model::speedKindName(s.params.fallback)},
-                          {"inside", spheres(s.params.speed.inside)},
-                          {"outside", spheres(s.params.speed.outside)},
-                          {"painted_inside", spheres(s.params.speed.paintedInside)},
-                          {"painted_outside", spheres(s.params.speed.paintedOutside)}};
+    nlohmann::json params{
+        {"preset", s.params.preset},
+        {"speed", model::speedKindName(s.params.speed.kind)},
+        {"speed_fallback", model::speedKindName(s.params.fallback)},
+        {"inside", spheres(s.params.speed.inside)},
+        {"outside", spheres(s.params.speed.outside)},
+        {"painted_inside", spheres(s.params.speed.paintedInside)},
+        {"painted_outside", spheres(s.params.speed.paintedOutside)},
+        {"box", s.params.speed.box ? workflow::boxValues(*s.params.speed.box) : nlohmann::json()}};
     for (int i = 0; i < model::kParamCount; ++i) {
         const auto p = static_cast<model::Param>(i);
         params[std::string(model::paramName(p))] = s.params.values[workflow::indexOf(p)];
@@ -194,6 +218,7 @@ void readMetadata(const nlohmann::json& j, AutosaveSnapshot& s) {
         readSpheres(params, "painted_inside", workflow::kMaxPaintedExamples);
     s.params.speed.paintedOutside =
         readSpheres(params, "painted_outside", workflow::kMaxPaintedExamples);
+    s.params.speed.box = readBox(params, s.dims); // snapshots from before the box have none
     for (int i = 0; i < model::kParamCount; ++i) {
         const auto p = static_cast<model::Param>(i);
         s.params.values[workflow::indexOf(p)] =

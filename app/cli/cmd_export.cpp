@@ -111,25 +111,45 @@ std::optional<SendTarget> sendTargetFor(const Args& args, model::ExportFormat fo
     return target;
 }
 
+// The SEG and its measurement report go together: both queued, then one attempt each.
 void sendExported(const SendTarget& target, const std::string& output,
+                  const std::vector<std::filesystem::path>& companions,
                   nlohmann::ordered_json& report) {
     const config::DicomConfig& dicom = target.config.dicom;
     workflow::AuditLog audit(target.config.audit.path);
     net::Outbox outbox = configuredOutbox(dicom, audit);
     const std::string id = outbox.enqueue(output, target.peer);
+    std::vector<std::string> companionIds;
+    for (const std::filesystem::path& companion : companions) {
+        companionIds.push_back(outbox.enqueue(companion, target.peer));
+    }
     const net::SendOptions options = kiosk::sendOptions(dicom);
     std::optional<net::SendOutcome> outcome;
+    std::optional<std::string> companionProblem;
+    std::size_t companionsDelivered = 0;
     outbox.deliverDue([&](const std::string& name) { return sendPeer(dicom, name); }, options,
                       [&](const net::OutboxEntry& e, const net::SendOutcome& o) {
                           if (e.id == id) {
                               outcome = o;
+                          } else if (std::find(companionIds.begin(), companionIds.end(), e.id) !=
+                                     companionIds.end()) {
+                              companionsDelivered += o.accepted ? 1 : 0;
+                              if (!o.accepted && !companionProblem) {
+                                  companionProblem = o.problem;
+                              }
                           }
                       });
     report["sent_to"] = target.peer;
     report["outbox_id"] = id;
-    report["delivered"] = outcome && outcome->accepted;
-    if (!outcome || !outcome->accepted) {
-        report["waiting_because"] = outcome ? outcome->problem : "not due yet";
+    if (!companionIds.empty()) {
+        report["measurement_report_outbox_id"] = companionIds.front();
+    }
+    const bool all = outcome && outcome->accepted && companionsDelivered == companionIds.size();
+    report["delivered"] = all;
+    if (!all) {
+        report["waiting_because"] = outcome && !outcome->accepted ? outcome->problem
+                                    : companionProblem            ? *companionProblem
+                                                                  : "not due yet";
     }
 }
 
@@ -162,8 +182,8 @@ int runExport(std::span<const std::string> words) {
     report["output"] = output;
     report["format"] = model::exportFormatName(format);
     report["mask_volume_mm3"] = static_cast<double>(insideVoxels) * voxelVolume;
-    const exports::ExportSummary written =
-        exports::writeExport(output, format, {geometry, mask, {}, segment, scan.dicom.get()});
+    const exports::ExportSummary written = exports::writeExport(
+        output, format, {geometry, mask, {}, segment, scan.dicom.get(), &scan.volume});
     if (model::isSurfaceFormat(format)) {
         report["triangles"] = written.triangles;
         report["vertices"] = written.vertices;
@@ -173,8 +193,11 @@ int runExport(std::span<const std::string> words) {
         report["note"] = written.note;
     }
     report["world"] = format == model::ExportFormat::Tiff ? "none (voxel order)" : "LPS";
+    if (!written.companions.empty()) {
+        report["measurement_report"] = written.companions.front().string();
+    }
     if (sendTo) {
-        sendExported(*sendTo, output, report);
+        sendExported(*sendTo, output, written.companions, report);
     }
     std::printf("%s\n", report.dump(2).c_str());
     return 0;

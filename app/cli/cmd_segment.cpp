@@ -22,16 +22,17 @@ namespace steerseg::cli {
 int runSegment(std::span<const std::string> words) {
     std::vector<std::string> valueOptions = segmentationValueOptions();
     valueOptions.insert(valueOptions.end(), {"input", "output", "report", "format", "reference",
-                                             "reference-label", "click", "config"});
+                                             "reference-label", "click", "box", "config"});
     const Args args(words, valueOptions, segmentationFlagOptions());
-    if (!args.values("click").empty()) {
+    if (!args.values("click").empty() || args.value("box")) {
         if (!args.positional().empty()) {
             throw UsageError("unexpected argument '" + args.positional().front() + "'");
         }
         return runSegmentClicks(args);
     }
     if (args.value("config")) {
-        throw UsageError("--config goes with --click (the kiosk's settings for the clicks)");
+        throw UsageError(
+            "--config goes with --click or --box (the kiosk's settings for the prompts)");
     }
     if (!args.positional().empty()) {
         throw UsageError("unexpected argument '" + args.positional().front() + "'");

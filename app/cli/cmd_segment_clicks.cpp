@@ -1,4 +1,4 @@
-// steerseg segment --click: an operator's corrections replayed through the kiosk's workflow
+// steerseg segment --click and --box: an operator's prompts replayed through the kiosk's workflow
 // (engine::ClickSession), so that a case of the steering benchmark is reproducible from the
 // command line (docs/steering.md).
 #include "cli/args.hpp"
@@ -16,8 +16,11 @@
 #include <cstddef>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <stdexcept>
+#include <variant>
 
 namespace steerseg::cli {
 
@@ -33,11 +36,9 @@ void writeReport(const std::string& path, const std::string& text) {
     files::writeFileAtomically(path, {std::as_bytes(std::span(whole.data(), whole.size()))});
 }
 
-model::Correct parseClick(const std::string& text) {
-    const auto fail = [&text](const std::string& why) {
-        return UsageError("--click '" + text + "': " + why +
-                          " (give i,j,k,+ or i,j,k,- [,radius])");
-    };
+namespace {
+
+std::vector<std::string> commaFields(const std::string& text) {
     std::vector<std::string> parts;
     std::size_t from = 0;
     for (std::size_t at = text.find(',');; at = text.find(',', from)) {
@@ -47,6 +48,40 @@ model::Correct parseClick(const std::string& text) {
         }
         from = at + 1;
     }
+    return parts;
+}
+
+} // namespace
+
+model::Box parseBox(const std::string& text) {
+    const std::vector<std::string> parts = commaFields(text);
+    if (parts.size() != 6) {
+        throw UsageError("--box '" + text + "': expected 6 fields, got " +
+                         std::to_string(parts.size()) + " (give i0,j0,k0,i1,j1,k1)");
+    }
+    model::Box box;
+    for (int n = 0; n < 6; ++n) {
+        const long long v = parseInteger(parts[static_cast<std::size_t>(n)], "--box's voxel index");
+        if (v < 0 || v > std::numeric_limits<int>::max()) {
+            throw UsageError("--box '" + text + "': voxel indices start at 0");
+        }
+        (n < 3 ? box.lo : box.hi)[n % 3] = static_cast<int>(v);
+    }
+    for (int a = 0; a < 3; ++a) {
+        if (box.lo[a] > box.hi[a]) {
+            throw UsageError("--box '" + text + "': inverted on axis " + "ijk"[a] +
+                             " (give i0 <= i1, j0 <= j1, k0 <= k1)");
+        }
+    }
+    return box;
+}
+
+model::Correct parseClick(const std::string& text) {
+    const auto fail = [&text](const std::string& why) {
+        return UsageError("--click '" + text + "': " + why +
+                          " (give i,j,k,+ or i,j,k,- [,radius])");
+    };
+    const std::vector<std::string> parts = commaFields(text);
     if (parts.size() != 4 && parts.size() != 5) {
         throw fail("expected 4 or 5 fields, got " + std::to_string(parts.size()));
     }
@@ -74,22 +109,26 @@ int runSegmentClicks(const Args& args) {
     for (const std::string& name : kExcluded) {
         if (args.value(name)) {
             throw UsageError("--" + name +
-                             " does not go with --click: the clicks set the seeds, "
+                             " does not go with --click or --box: the prompts set the seeds, "
                              "and T, eps and the speed come as the kiosk's (--config)");
         }
     }
     for (const char* flag : {"converge", "dense", "stop-on-leak"}) {
         if (args.flag(flag)) {
             throw UsageError(std::string("--") + flag +
-                             " does not go with --click: each click runs to the solver's own "
-                             "stop, leaks included, as in the kiosk");
+                             " does not go with --click or --box: each prompt runs to the "
+                             "solver's own stop, leaks included, as in the kiosk");
         }
+    }
+    std::optional<model::Box> box;
+    if (const auto text = args.value("box")) {
+        box = parseBox(*text);
     }
     std::vector<model::Correct> clicks;
     for (const std::string& text : args.values("click")) {
         clicks.push_back(parseClick(text));
     }
-    if (!clicks.front().positive) {
+    if (!box && !clicks.front().positive) {
         throw UsageError("the first --click must be positive (+): it probes and seeds");
     }
     int cap = kClickIterations;
@@ -128,18 +167,36 @@ int runSegmentClicks(const Args& args) {
             throw UsageError("--click: " + problem);
         }
     }
+    if (box) {
+        try {
+            model::validateBox(*box, session.scan().dims());
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(std::string("--box: ") + e.what());
+        }
+    }
     if (reference && reference->dims() != session.scan().dims()) {
         throw UsageError("--reference is not on the scan's grid (" + dimsText(reference->dims()) +
                          " voxels, the scan " + dimsText(session.scan().dims()) + ")");
     }
+    // The box is step 0 when given (the challenge's protocol: docs/steering.md), the clicks
+    // corrections after it; without one the first click is step 0.
+    std::vector<model::Action> prompts;
+    if (box) {
+        prompts.emplace_back(model::SetBox{*box});
+    }
+    prompts.insert(prompts.end(), clicks.begin(), clicks.end());
     nlohmann::ordered_json steps = nlohmann::ordered_json::array();
-    for (std::size_t n = 0; n < clicks.size(); ++n) {
-        const model::Correct& c = clicks[n];
-        const engine::ClickOutcome r = session.apply(c, cap);
+    for (std::size_t n = 0; n < prompts.size(); ++n) {
+        const engine::ClickOutcome r = session.apply(prompts[n], cap);
         nlohmann::ordered_json j;
         j["click"] = n;
-        j["kind"] = n == 0 ? "initial" : (c.positive ? "positive" : "negative");
-        j["voxel"] = {c.voxel.x, c.voxel.y, c.voxel.z};
+        if (const auto* c = std::get_if<model::Correct>(&prompts[n])) {
+            j["kind"] = n == 0 ? "initial" : (c->positive ? "positive" : "negative");
+            j["voxel"] = {c->voxel.x, c->voxel.y, c->voxel.z};
+        } else {
+            j["kind"] = "box";
+            j["box"] = {box->lo.x, box->lo.y, box->lo.z, box->hi.x, box->hi.y, box->hi.z};
+        }
         j["stop_reason"] = r.stopReason;
         j["iterations"] = r.iterations;
         j["seconds"] = r.seconds;

@@ -1,6 +1,6 @@
-// The light build's commands that need DCMTK (listen, send, and export, whose --send and
-// DICOM SEG go through it): refused by name, status 1. `steerseg --help` still lists them, so
-// the full build's usage reads the same.
+// The light build's commands that need DCMTK (listen, send, query, retrieve, and export, whose
+// --send and DICOM SEG go through it): refused by name, status 1. `steerseg --help` still lists
+// them, so the full build's usage reads the same.
 #include "cli/commands.hpp"
 #include "model/light_build.hpp"
 
@@ -27,6 +27,14 @@ int runListen(std::span<const std::string> /*args*/) {
 
 int runSend(std::span<const std::string> /*args*/) {
     leftOut("send");
+}
+
+int runQuery(std::span<const std::string> /*args*/) {
+    leftOut("query");
+}
+
+int runRetrieve(std::span<const std::string> /*args*/) {
+    leftOut("retrieve");
 }
 
 } // namespace steerseg::cli

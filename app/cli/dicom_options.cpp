@@ -5,6 +5,8 @@
 #include "model/action.hpp"
 #include "model/ae_title.hpp"
 
+#include <algorithm>
+
 namespace steerseg::cli {
 namespace {
 
@@ -116,6 +118,29 @@ net::ScpSettings listenSettings(const Args& args, const config::DicomConfig& dic
         s.tls = requiredTls(dicom);
     }
     return s;
+}
+
+kiosk::QueryPeer requireQueryPeer(const Args& args, const config::DicomConfig& dicom) {
+    const auto name = args.value("to");
+    if (!name) {
+        throw UsageError("give --to PEER, a [[dicom.peers]] name with query = true");
+    }
+    if (auto peer = kiosk::queryPeer(dicom, *name)) {
+        return *peer;
+    }
+    const bool known = std::any_of(dicom.peers.begin(), dicom.peers.end(),
+                                   [&](const auto& p) { return p.name == *name; });
+    throw UsageError(known ? "--to: the peer '" + *name +
+                                 "' may not be queried: give it query = true in [[dicom.peers]]"
+                           : "--to: no [[dicom.peers]] named '" + *name + "'");
+}
+
+int scuTimeoutSeconds(const Args& args) {
+    const long long seconds = args.integer("timeout").value_or(30);
+    if (seconds < 1 || seconds > 600) {
+        throw UsageError("--timeout: 1..600 seconds, got " + std::to_string(seconds));
+    }
+    return static_cast<int>(seconds);
 }
 
 net::Outbox configuredOutbox(const config::DicomConfig& dicom, workflow::AuditLog& audit) {

@@ -1,7 +1,7 @@
 #pragma once
 
-// The options `send` and `listen` share: the [dicom] section (system file, then --config FILE)
-// as the defaults, and the command line's words over it.
+// The options `send`, `listen`, `query` and `retrieve` share: the [dicom] section (system file,
+// then --config FILE) as the defaults, and the command line's words over it.
 #include "cli/args.hpp"
 #include "config/kiosk_config.hpp"
 #include "kiosk/dicom_node_config.hpp"
@@ -33,6 +33,14 @@ net::ScpSettings listenSettings(const Args& args, const config::DicomConfig& dic
 using kiosk::sendPeer;
 // The same, or a UsageError for --to naming it.
 net::DicomPeer requireSendPeer(const config::DicomConfig& dicom, const std::string& name);
+
+// --to PEER for query and retrieve: the [[dicom.peers]] entry with query = true, or a
+// UsageError saying whether no peer has the name or the peer may not be queried.
+kiosk::QueryPeer requireQueryPeer(const Args& args, const config::DicomConfig& dicom);
+
+// --timeout S (1..600, default 30): how long query and retrieve wait for the connection, the
+// association and each response.
+int scuTimeoutSeconds(const Args& args);
 
 // The outbox of [dicom] (its folder and retry delays), each attempt recorded in `audit`.
 net::Outbox configuredOutbox(const config::DicomConfig& dicom, workflow::AuditLog& audit);

@@ -45,9 +45,10 @@ constexpr Command kCommands[] = {
      "[--format F] [--report REPORT.json] [--reference LABELS [--reference-label N]]: level-set "
      "segmentation on the GPU; OUT as for export (surfaces from the level set itself); the "
      "report gives the Dice against LABELS' voxels equal to N (or non-zero). Or: segment --input "
-     "PATH --click i,j,k,+|-[,r] [--click ...] [--max-iterations N] [--config FILE] --output OUT "
-     "[--report R.json] [--reference LABELS [--reference-label N]]: an operator's corrections "
-     "through the kiosk's workflow, the solver run to its stop after each (docs/steering.md)",
+     "PATH [--box i0,j0,k0,i1,j1,k1] --click i,j,k,+|-[,r] [--click ...] [--max-iterations N] "
+     "[--config FILE] --output OUT [--report R.json] [--reference LABELS [--reference-label N]]: "
+     "an operator's box and corrections through the kiosk's workflow, the solver run to its "
+     "stop after each (docs/steering.md; --box alone: the box's run)",
      steerseg::cli::runSegment},
     {"export",
      "export --input SCAN --mask MASK --output OUT.nii.gz|.nii|.nrrd|.seg.nrrd|.dcm|.stl|.ply|.tif "
@@ -57,6 +58,12 @@ constexpr Command kCommands[] = {
      "millimetres or a TIFF stack (no GPU); --send puts a DICOM SEG into the outbox for a "
      "configured DICOM peer and sends it",
      steerseg::cli::runExport},
+    {"measure",
+     "measure --input SCAN --mask MASK [--label N] [--json]: a structure's volume, surface area "
+     "(of the exported mesh), RECIST axial diameters, longest 3D diameter and intensity over "
+     "the mask (non-zero, or the voxels equal to N) on the scan's grid (no GPU; "
+     "docs/measurements.md)",
+     steerseg::cli::runMeasure},
     {"kiosk",
      "kiosk [--platform auto|kms|window|offscreen] [--config FILE] [--scan PATH] [--script "
      "SESSION] [--frames DIR] [--size WxH] [--stats FILE] [--max-seconds S] [--resume | "
@@ -88,6 +95,18 @@ constexpr Command kCommands[] = {
      "allowed callers send into DIR/<study>/<series>/; with no --allow, the [[dicom.peers]] "
      "with receive = true; --tls: TLS only, with [dicom]'s certificate",
      steerseg::cli::runListen},
+    {"query",
+     "query --to PEER [--patient-id ID] [--patient-name PATTERN] [--study-date "
+     "YYYYMMDD[-YYYYMMDD]] [--modality M] [--accession N] [--study UID] [--json] [--timeout S] "
+     "[--config FILE]: ask a PACS peer with query = true which studies match (C-FIND, * and ? "
+     "in names), or with --study which series that study has; one line each, or JSON",
+     steerseg::cli::runQuery},
+    {"retrieve",
+     "retrieve --to PEER --study UID [--series UID] [--store DIR] [--timeout S] [--config "
+     "FILE]: bring a study or one series from a PACS peer into the incoming store (the peer's "
+     "retrieve: C-GET, or C-MOVE to [dicom] aet, listening on [dicom] port meanwhile), "
+     "progress on stderr; SIGINT cancels",
+     steerseg::cli::runRetrieve},
 };
 
 void printUsage(std::FILE* out) {

@@ -81,10 +81,21 @@ bool readPeer(TableReader& t, DicomPeerConfig& peer) {
     if (auto v = t.boolean("tls")) {
         peer.tls = *v;
     }
-    if (good && !peer.receive && !peer.send) {
+    if (auto v = t.boolean("query")) {
+        peer.query = *v;
+    }
+    if (auto v = t.text("retrieve", [](std::string_view word) {
+            return word == "get" || word == "move" ? "" : "must be \"get\" or \"move\"";
+        })) {
+        peer.retrieve =
+            *v == "move" ? DicomPeerConfig::Retrieve::Move : DicomPeerConfig::Retrieve::Get;
+    } else if (t.has("retrieve")) {
+        good = false;
+    }
+    if (good && !peer.receive && !peer.send && !peer.query) {
         t.sink().add(t.source().source(), t.path("receive"),
                      "a peer must be allowed to send to the console (receive = true), be a "
-                     "target of exports (send = true), or both");
+                     "target of exports (send = true), be queried (query = true), or more");
         good = false;
     }
     return good;

@@ -120,16 +120,20 @@ void checkDicomTls(const DicomConfig& d, const toml::table& root, ProblemSink& s
         const DicomPeerConfig& p = d.peers[i];
         const std::string key = "dicom.peers[" + std::to_string(i + 1) + "].tls";
         const toml::node& at = place(root, "tls", static_cast<int>(i));
+        // A C-MOVE's images come on an association the peer opens to the node's port.
+        const bool callsIn =
+            p.receive || (p.query && p.retrieve == DicomPeerConfig::Retrieve::Move);
+        const std::string calling = p.receive ? "receive = true" : "retrieve = \"move\"";
         if (p.tls && !complete) {
             add(at, key, needs);
-        } else if (p.receive && p.tls && !d.tlsReceive) {
+        } else if (callsIn && p.tls && !d.tlsReceive) {
             add(at, key,
-                "receive = true over TLS, but the node's port speaks plain DICOM: set "
-                "tls_receive = true in [dicom]");
-        } else if (p.receive && !p.tls && d.tlsReceive) {
+                calling + " over TLS, but the node's port speaks plain DICOM: set "
+                          "tls_receive = true in [dicom]");
+        } else if (callsIn && !p.tls && d.tlsReceive) {
             add(at, key,
-                "receive = true without TLS, but the node's port speaks TLS only "
-                "(tls_receive = true): this peer could not call; set tls = true");
+                calling + " without TLS, but the node's port speaks TLS only "
+                          "(tls_receive = true): this peer could not call; set tls = true");
         }
     }
 }

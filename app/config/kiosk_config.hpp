@@ -166,7 +166,8 @@ struct InputConfig {
 };
 
 // [dicom] (docs/dicom-network.md): the DICOM node, off unless `enabled`. A peer may send to the
-// console (`receive`), be a target of exports (`send`), or both.
+// console (`receive`), be a target of exports (`send`), be queried and retrieved from (`query`),
+// or any of them.
 struct DicomPeerConfig {
     std::string name; // how --to and the panel name it
     std::string aet;
@@ -175,7 +176,12 @@ struct DicomPeerConfig {
     std::string address; // receive: the caller's IP address to insist on, "" = any
     bool receive = false;
     bool send = false;
-    bool tls = false; // sent to, and calling in, over TLS only
+    bool tls = false;   // sent to, and calling in, over TLS only
+    bool query = false; // `steerseg query` / `retrieve` may ask it (C-FIND, C-GET or C-MOVE)
+    // How a retrieve asks for images: C-GET on the query's own association (no inbound port),
+    // or C-MOVE to the node's own AE title (the PACS calls the node's port).
+    enum class Retrieve { Get, Move };
+    Retrieve retrieve = Retrieve::Get;
     bool operator==(const DicomPeerConfig&) const = default;
 };
 

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <stdexcept>
 #include <thread>
+#include <variant>
 
 namespace steerseg::engine {
 
@@ -39,14 +40,22 @@ ClickSession::ClickSession(const std::string& scanPath, const workflow::Settings
     }
 }
 
-ClickOutcome ClickSession::apply(const model::Correct& click, int maxIterations) {
+ClickOutcome ClickSession::apply(const model::Action& prompt, int maxIterations) {
     const auto start = Clock::now();
     const WorkSeconds workBefore = engine_.workSeconds();
     const int takenBackBefore = flow_.status().eraseRunsTakenBack;
     const int withdrawOnlyBefore = flow_.status().erasesWithdrawOnly;
-    const workflow::Workflow::Outcome out = flow_.handle(click);
+    const workflow::Workflow::Outcome out = flow_.handle(prompt);
+    const std::string what = std::holds_alternative<model::SetBox>(prompt) ? "box" : "click";
     if (!out.accepted) {
-        throw std::runtime_error("the click was refused: " + out.reason);
+        throw std::runtime_error("the " + what + " was refused: " + out.reason);
+    }
+    // A box leaves its seed for the operator to run (the kiosk's run button); a robot runs it.
+    if (flow_.status().hasLevelSet &&
+        (flow_.state() == model::State::Seeding || flow_.state() == model::State::Paused)) {
+        if (const auto run = flow_.handle(model::Run{}); !run.accepted) {
+            throw std::runtime_error("the " + what + "'s run was refused: " + run.reason);
+        }
     }
     ClickOutcome r;
     engine_.session()->finishGpuWork();

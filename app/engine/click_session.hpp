@@ -3,7 +3,8 @@
 // An operator's corrections replayed through the kiosk's own workflow and engine, without a
 // screen: the clicks protocol's product side (docs/steering.md). `segment --click` and the
 // steering benchmark both run it, so a case on the command line is the benchmark's case. Each
-// click is one model::Correct, as a tap in add or remove mode is; the solver then runs from
+// click is one model::Correct, as a tap in add or remove mode is, and a box one model::SetBox,
+// as a drawn one is; the solver then runs from
 // the current surface to its own stop (converged or a leak) or the click's iteration cap.
 #include "engine/session_engine.hpp"
 #include "model/action.hpp"
@@ -42,9 +43,11 @@ class ClickSession {
     ClickSession(const ClickSession&) = delete;
     ClickSession& operator=(const ClickSession&) = delete;
 
-    // One click and the run that follows, at most maxIterations. std::runtime_error with the
-    // workflow's reason when it refuses the click (a negative first click, outside the scan).
-    ClickOutcome apply(const model::Correct& click, int maxIterations);
+    // One prompt and the run that follows, at most maxIterations: a click (model::Correct) or
+    // a box (model::SetBox: on a scan without a level set its probe and seed, then the run).
+    // std::runtime_error with the workflow's reason when it refuses the prompt (a negative
+    // first click, outside the scan, an inverted box).
+    ClickOutcome apply(const model::Action& prompt, int maxIterations);
 
     // 1 inside, i fastest, on the scan's grid.
     [[nodiscard]] std::vector<std::uint8_t> mask();

@@ -10,6 +10,7 @@
 #include "workflow/probe_sphere.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace steerseg::engine {
@@ -198,6 +199,26 @@ workflow::ProbeResult SessionEngine::measure(const glm::dvec3& voxel, double rad
     return {s.mean, s.stddev, s.count};
 }
 
+std::vector<double> SessionEngine::values(const model::Box& box, std::size_t most) const {
+    const Volume& scan = requireSession().scan();
+    model::validateBox(box, scan.dims());
+    const glm::ivec3 size = model::sizeOf(box);
+    const double count = static_cast<double>(size.x) * size.y * size.z;
+    // The same stride along every axis: the sample stays spread through the whole box.
+    const int stride =
+        std::max(1, static_cast<int>(std::ceil(
+                        std::cbrt(count / static_cast<double>(std::max<std::size_t>(most, 1))))));
+    std::vector<double> out;
+    for (int k = box.lo.z; k <= box.hi.z; k += stride) {
+        for (int j = box.lo.y; j <= box.hi.y; j += stride) {
+            for (int i = box.lo.x; i <= box.hi.x && out.size() < most; i += stride) {
+                out.push_back(scan.valueAt(i, j, k));
+            }
+        }
+    }
+    return out;
+}
+
 model::SolverOptions consoleSolverOptions() {
     model::SolverOptions options;
     options.stopOnLeak = true;
@@ -307,6 +328,7 @@ void SessionEngine::setSpeed(const workflow::SpeedChoice& choice) {
                             choice.paintedOutside.end());
     settings.withinWindow = choice.withinWindow;
     settings.placeReach = choice.placeReach;
+    settings.box = choice.box;
     // Preprocessing and training run here, on the frame loop (a blocking step: docs/speed.md).
     s.setSpeed(settings);
     changed();
@@ -372,8 +394,8 @@ double SessionEngine::millilitres(std::int64_t voxels) const {
     return static_cast<double>(std::max<std::int64_t>(voxels, 0)) * s.x * s.y * s.z / 1000.0;
 }
 
-void SessionEngine::exportMask(const std::filesystem::path& path) {
-    requireSession().exportMask(path);
+std::vector<std::filesystem::path> SessionEngine::exportMask(const std::filesystem::path& path) {
+    return requireSession().exportMask(path);
 }
 
 } // namespace steerseg::engine

@@ -53,6 +53,8 @@ class SessionEngine final : public workflow::Engine {
                                               double radiusMm) const override;
     [[nodiscard]] workflow::ProbeResult measure(const glm::dvec3& voxel,
                                                 double radiusMm) const override;
+    [[nodiscard]] std::vector<double> values(const model::Box& box,
+                                             std::size_t most) const override;
     void addSeed(const model::Sphere& sphere) override;
     void erase(const model::Sphere& sphere) override;
     bool addBarrier(const model::Barrier& barrier) override;
@@ -70,7 +72,7 @@ class SessionEngine final : public workflow::Engine {
     workflow::SnapshotId snapshot() override;
     void restore(workflow::SnapshotId id) override;
     void drop(workflow::SnapshotId id) override;
-    void exportMask(const std::filesystem::path& path) override;
+    std::vector<std::filesystem::path> exportMask(const std::filesystem::path& path) override;
 
     // Resume: the level set from an autosave's mask (no runs: none). std::invalid_argument for
     // a mask of another size.

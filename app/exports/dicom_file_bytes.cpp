@@ -1,5 +1,7 @@
 #include "exports/dicom_file_bytes.hpp"
 
+#include "files/file_error.hpp"
+
 #include <dcmtk/dcmdata/dcostrmb.h>
 
 namespace steerseg::exports {
@@ -20,6 +22,19 @@ std::vector<std::byte> dicomFileBytes(DcmFileFormat& file, E_TransferSyntax xfer
         out.insert(out.end(), bytes, bytes + length);
     } while (status == EC_StreamNotifyClient);
     file.transferEnd();
+    return out;
+}
+
+std::vector<std::byte> encodeExportFile(const std::filesystem::path& path, DcmFileFormat& file,
+                                        const char* what) {
+    const E_TransferSyntax xfer = EXS_LittleEndianExplicit;
+    const std::size_t estimate =
+        file.getDataset()->calcElementLength(xfer, EET_ExplicitLength) + 64 * 1024;
+    OFCondition c;
+    std::vector<std::byte> out = dicomFileBytes(file, xfer, estimate, c);
+    if (c.bad()) {
+        throw files::WriteError(path, std::string(what) + ": encoding failed: " + c.text());
+    }
     return out;
 }
 

@@ -157,8 +157,8 @@ void addSharedGroups(const std::filesystem::path& path, DcmSegmentation& seg, co
     check(path, seg.addForAllFrames(*orientation), "plane orientation");
 }
 
-void addSegment(const std::filesystem::path& path, DcmSegmentation& seg,
-                const DicomSegOptions& options) {
+Uint16 addSegment(const std::filesystem::path& path, DcmSegmentation& seg,
+                  const DicomSegOptions& options) {
     DcmSegment* segment = nullptr;
     check(path,
           DcmSegment::create(segment, options.label.c_str(), code(options.category),
@@ -174,6 +174,7 @@ void addSegment(const std::filesystem::path& path, DcmSegmentation& seg,
     Uint16 number = 0;
     check(path, seg.addSegment(owned.get(), number), "segment");
     owned.release(); // the segmentation owns it now
+    return number;
 }
 
 // Every instance of the source series, once, in the Referenced Series Sequence.
@@ -235,7 +236,8 @@ std::vector<Uint8> packFrames(const Geometry& g, std::span<const std::uint8_t> m
 std::unique_ptr<DcmSegmentation>
 buildSegmentation(const std::filesystem::path& path, const Geometry& g,
                   std::span<const std::uint8_t> mask, const std::vector<int>& slices,
-                  const scan::DicomSource& source, const DicomSegOptions& options) {
+                  const scan::DicomSource& source, const DicomSegOptions& options,
+                  SegInstance& instance) {
     const IODGeneralEquipmentModule::EquipmentInfo equipment("steerseg", "steerseg", "none",
                                                              STEERSEG_VERSION);
     // Content Creator's Name (type 2) names a person, whom steerseg does not know.
@@ -250,9 +252,12 @@ buildSegmentation(const std::filesystem::path& path, const Geometry& g,
     std::unique_ptr<DcmSegmentation> seg(raw);
     DcmDataset inherited = inheritedDataSet(source);
     check(path, seg->importFromSourceImage(inherited), "copying patient and study");
-    check(path, seg->getSeries().setSeriesInstanceUID(newUid(SITE_SERIES_UID_ROOT).c_str()),
+    instance.sopClassUid = UID_SegmentationStorage;
+    instance.seriesInstanceUid = newUid(SITE_SERIES_UID_ROOT);
+    instance.sopInstanceUid = newUid(SITE_INSTANCE_UID_ROOT);
+    check(path, seg->getSeries().setSeriesInstanceUID(instance.seriesInstanceUid.c_str()),
           "series UID");
-    check(path, seg->getSOPCommon().setSOPInstanceUID(newUid(SITE_INSTANCE_UID_ROOT).c_str()),
+    check(path, seg->getSOPCommon().setSOPInstanceUID(instance.sopInstanceUid.c_str()),
           "instance UID");
     check(path, seg->getSegmentationSeriesModule().setSeriesNumber(options.seriesNumber.c_str()),
           "series number");
@@ -275,7 +280,7 @@ buildSegmentation(const std::filesystem::path& path, const Geometry& g,
                                  DCM_PlanePositionSequence, "ImagePositionPatient"),
           "dimension (position)");
     addSharedGroups(path, *seg, g, source);
-    addSegment(path, *seg, options);
+    instance.segmentNumber = addSegment(path, *seg, options);
     addReferences(path, *seg, source);
 
     const std::size_t plane =
@@ -327,23 +332,11 @@ void addReferencedFrameNumbers(const std::filesystem::path& path, DcmDataset& da
     }
 }
 
-std::vector<std::byte> encode(const std::filesystem::path& path, DcmFileFormat& file) {
-    const E_TransferSyntax xfer = EXS_LittleEndianExplicit;
-    // Room for the whole object in one pass (plus preamble and meta header), so that the
-    // meta header is built once; the loop only matters if the estimate falls short.
-    const std::size_t estimate =
-        file.getDataset()->calcElementLength(xfer, EET_ExplicitLength) + 64 * 1024;
-    OFCondition c;
-    std::vector<std::byte> out = dicomFileBytes(file, xfer, estimate, c);
-    check(path, c, "encoding");
-    return out;
-}
-
 } // namespace
 
-void writeDicomSeg(const std::filesystem::path& path, const Geometry& geometry,
-                   std::span<const std::uint8_t> mask, const scan::DicomSource* source,
-                   const DicomSegOptions& options) {
+SegInstance writeDicomSeg(const std::filesystem::path& path, const Geometry& geometry,
+                          std::span<const std::uint8_t> mask, const scan::DicomSource* source,
+                          const DicomSegOptions& options) {
     checkInputs(path, geometry, mask, source);
     const std::vector<int> slices = segmentedSlices(geometry, mask);
     if (slices.empty()) {
@@ -355,9 +348,10 @@ void writeDicomSeg(const std::filesystem::path& path, const Geometry& geometry,
     // cannot; dcmseg's own check runs afterwards. Real problems still fail the write.
     OFLog::getLogger("dcmtk.dcmiod").setLogLevel(OFLogger::ERROR_LOG_LEVEL);
     std::vector<std::byte> bytes;
+    SegInstance instance;
     try {
         const std::unique_ptr<DcmSegmentation> seg =
-            buildSegmentation(path, geometry, mask, slices, *source, options);
+            buildSegmentation(path, geometry, mask, slices, *source, options, instance);
         DcmFileFormat file;
         DcmDataset& dataset = *file.getDataset();
         check(path, seg->writeDataset(dataset), "building the data set");
@@ -367,13 +361,14 @@ void writeDicomSeg(const std::filesystem::path& path, const Geometry& geometry,
               dataset.putAndInsertUint8Array(DCM_PixelData, pixels.data(),
                                              static_cast<unsigned long>(pixels.size())),
               "packing the frames");
-        bytes = encode(path, file);
+        bytes = encodeExportFile(path, file, "DICOM SEG");
     } catch (const files::WriteError&) {
         throw;
     } catch (const std::exception& e) {
         throw files::WriteError(path, std::string("DICOM SEG: ") + e.what());
     }
     files::writeFileAtomically(path, {std::span<const std::byte>(bytes)});
+    return instance;
 }
 
 } // namespace steerseg::exports

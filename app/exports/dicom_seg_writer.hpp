@@ -33,14 +33,22 @@ struct DicomSegOptions {
     std::string seriesNumber = "300";
 };
 
+// The SEG as written, for the objects that reference it (the measurement report).
+struct SegInstance {
+    std::string sopClassUid;
+    std::string sopInstanceUid;
+    std::string seriesInstanceUid;
+    std::uint16_t segmentNumber = 1; // the one segment's Segment Number
+};
+
 // Writes `mask` (one uint8 per voxel on `geometry`'s grid, i fastest, nonzero inside) as a binary
 // DICOM SEG to `path`, atomically (files::writeFileAtomically). `geometry` and `source` are those
 // of the scan the mask was drawn on (scan::LoadedScan::dicom); only slices holding segmented voxels
 // become frames (docs/dicom.md). Throws WriteError with one line: no DICOM source ("DICOM SEG
 // needs a scan read from a DICOM series"), a mask or source that does not match the grid, an
 // empty mask, a source without a Frame of Reference or instance UIDs, or a failed write.
-void writeDicomSeg(const std::filesystem::path& path, const Geometry& geometry,
-                   std::span<const std::uint8_t> mask, const scan::DicomSource* source,
-                   const DicomSegOptions& options = {});
+SegInstance writeDicomSeg(const std::filesystem::path& path, const Geometry& geometry,
+                          std::span<const std::uint8_t> mask, const scan::DicomSource* source,
+                          const DicomSegOptions& options = {});
 
 } // namespace steerseg::exports

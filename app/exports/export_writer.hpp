@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace steerseg::exports {
 
@@ -25,6 +26,10 @@ struct ExportData {
     // The DICOM series the scan was read from (LoadedScan::dicom): DICOM SEG refers to it and
     // refuses without it.
     const scan::DicomSource* dicom = nullptr;
+    // The scan itself (its real values: HU on CT), on `geometry`. With it a DICOM SEG is written
+    // with its measurement report beside it (exports/measurement_report); the product's exports
+    // always give it, a test of the SEG alone may not.
+    const Volume* scan = nullptr;
 };
 
 // What a caller reports after the write.
@@ -33,6 +38,8 @@ struct ExportSummary {
     std::size_t vertices = 0;
     double surfaceVolumeMm3 = 0.0;
     std::string note; // a caveat to show the user (TIFF's missing geometry), or empty
+    // Files written beside the one asked for: a DICOM SEG's measurement report (X.sr.dcm).
+    std::vector<std::filesystem::path> companions;
 };
 
 // Writes `data` to `path` as `format` says, durably (files::writeFileAtomically). Throws

@@ -1,7 +1,7 @@
 #pragma once
 
 // Surface meshes out: binary STL and binary PLY, in patient coordinates (LPS millimetres).
-#include "exports/surface_mesh.hpp"
+#include "core/surface_mesh.hpp"
 
 #include <filesystem>
 #include <optional>

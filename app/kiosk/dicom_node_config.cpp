@@ -45,6 +45,19 @@ std::optional<net::DicomPeer> sendPeer(const config::DicomConfig& dicom, const s
     return std::nullopt;
 }
 
+std::optional<QueryPeer> queryPeer(const config::DicomConfig& dicom, const std::string& name) {
+    for (const auto& p : dicom.peers) {
+        if (p.name == name && p.query) {
+            return QueryPeer{net::DicomPeer{p.aet, p.host, p.port, p.tls},
+                             p.retrieve == config::DicomPeerConfig::Retrieve::Move
+                                 ? net::RetrieveMethod::Move
+                                 : net::RetrieveMethod::Get,
+                             p.address};
+        }
+    }
+    return std::nullopt;
+}
+
 std::vector<std::string> sendPeerNames(const config::DicomConfig& dicom) {
     std::vector<std::string> names;
     for (const auto& p : dicom.peers) {

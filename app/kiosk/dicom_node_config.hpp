@@ -6,6 +6,7 @@
 #include "config/kiosk_config.hpp"
 #include "net/dicom_peer.hpp"
 #include "net/outbox.hpp"
+#include "net/retrieve_scu.hpp"
 #include "net/store_scp.hpp"
 #include "net/store_scu.hpp"
 #include "net/tls_context.hpp"
@@ -22,6 +23,16 @@ net::ScpSettings scpSettings(const config::DicomConfig& dicom);
 
 // The [[dicom.peers]] entry named `name` with send = true, as an address; nullopt if none.
 std::optional<net::DicomPeer> sendPeer(const config::DicomConfig& dicom, const std::string& name);
+
+// A [[dicom.peers]] entry with query = true: where it is, how it retrieves, and the address
+// its C-MOVE's images come from ("" = any).
+struct QueryPeer {
+    net::DicomPeer peer;
+    net::RetrieveMethod retrieve = net::RetrieveMethod::Get;
+    std::string address;
+};
+// The peer named `name` with query = true; nullopt if none.
+std::optional<QueryPeer> queryPeer(const config::DicomConfig& dicom, const std::string& name);
 
 // The names of the peers with send = true, in the config's order: where exports go.
 std::vector<std::string> sendPeerNames(const config::DicomConfig& dicom);

@@ -33,7 +33,7 @@ void Kiosk::drawScreen(bool hadInput) {
     }
     composedState_ = flow_.state();
     screen_.begin({0.08F, 0.08F, 0.09F});
-    screenState_ = {layout(), {}, {}};
+    screenState_ = {layout(), {}, {}, {}};
     if (session::Session* session = engine_.session()) {
         screenState_ = painter_.compose(*session, screenState_.layout, screen_);
     }

@@ -13,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <unistd.h>
 
 namespace steerseg::kiosk {
@@ -71,6 +72,25 @@ std::unique_ptr<platform::Display> openDisplay(const std::string& platform,
                                  "' (kms, window, offscreen)");
 }
 
+namespace {
+
+// $OUT as one absolute folder name, whatever form --frames took: the player puts every relative
+// output path under $OUT, so a relative $OUT ("out") would put `export $OUT/mask.nii.gz` under
+// it a second time (out/out/mask.nii.gz, issue 49), and a trailing slash would double the
+// separator in every path the script names.
+std::string outFolder(const std::optional<std::filesystem::path>& frames) {
+    if (!frames) {
+        return std::filesystem::current_path().string();
+    }
+    std::filesystem::path dir = std::filesystem::absolute(*frames).lexically_normal();
+    if (!dir.has_filename() && dir != dir.root_path()) {
+        dir = dir.parent_path();
+    }
+    return dir.string();
+}
+
+} // namespace
+
 std::unique_ptr<script::ScriptPlayer> makePlayer(const KioskOptions& options) {
     if (!options.script) {
         return nullptr;
@@ -82,8 +102,7 @@ std::unique_ptr<script::ScriptPlayer> makePlayer(const KioskOptions& options) {
     if (const char* data = std::getenv("STEERSEG_DATA_DIR"); data != nullptr && *data != '\0') {
         vars["DATA"] = data;
     }
-    vars["OUT"] =
-        options.frames ? options.frames->string() : std::filesystem::current_path().string();
+    vars["OUT"] = outFolder(options.frames);
     return std::make_unique<script::ScriptPlayer>(script::loadScript(*options.script),
                                                   std::move(vars));
 }

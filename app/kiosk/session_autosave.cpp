@@ -179,7 +179,7 @@ bool SessionAutosave::due(const workflow::Status& status,
     const model::LevelSetParams& p = status.params;
     return engine.levelSetVersion() != savedVersion_ || p.T != savedParams_.T ||
            p.eps != savedParams_.eps || p.alpha != savedParams_.alpha ||
-           status.radius != savedRadius_;
+           status.radius != savedRadius_ || status.box != savedBox_;
 }
 
 void SessionAutosave::save(const workflow::Status& status, engine::SessionEngine& engine) {
@@ -204,6 +204,7 @@ void SessionAutosave::save(const workflow::Status& status, engine::SessionEngine
     s.params.preset = status.preset;
     s.params.speed = {status.speed, status.insideExamples, status.outsideExamples,
                       status.paintedInside, status.paintedOutside};
+    s.params.speed.box = status.box;
     // While classify waits, the speed that runs is the one it falls back to; once it runs, what
     // it fell back to is not shown and the threshold speed stands in.
     s.params.fallback = status.speedInForce != model::SpeedKind::Classify
@@ -223,6 +224,7 @@ void SessionAutosave::save(const workflow::Status& status, engine::SessionEngine
     savedState_ = status.state;
     savedVersion_ = engine.levelSetVersion();
     savedParams_ = status.params;
+    savedBox_ = status.box;
     savedRadius_ = status.radius;
     savedAt_ = start;
     const double seconds = std::chrono::duration<double>(SteadyClock::now() - start).count();

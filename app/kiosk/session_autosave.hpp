@@ -79,6 +79,7 @@ class SessionAutosave {
     std::optional<model::State> savedState_;
     std::uint64_t savedVersion_ = 0;
     model::LevelSetParams savedParams_;
+    std::optional<model::Box> savedBox_;
     double savedRadius_ = 0.0;
     std::chrono::steady_clock::time_point savedAt_{};
     // The frame thread's share: reading the mask back and encoding its runs.

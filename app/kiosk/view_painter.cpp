@@ -110,6 +110,9 @@ bool ViewPainter::paintView(View& view, session::Session& session, render::ViewP
     if (plan.kind == ViewRefiner::Plan::Preview || view.refiner.fullReady()) {
         view.shownTarget = params.target;
         view.shownFrame = frame;
+        if (params.kind == render::ViewKind::Volume3d) {
+            view.shownCamera = params.camera;
+        }
         return true;
     }
     return false;
@@ -173,6 +176,10 @@ ui::ScreenState ViewPainter::compose(session::Session& session, const ui::Layout
         }
         const glm::ivec2 size = session.pictureSize(v.shownTarget);
         screen.drawPicture(session.pictureTexture(v.shownTarget), size, rects[n]);
+        if (n == kVolume && v.shownCamera) {
+            state.view3d = ui::ScreenState::VolumeView{*v.shownCamera, session.scan().geometry(),
+                                                       size, rects[n]};
+        }
         if (n != kVolume && v.shownFrame) {
             (n == kFirst ? state.slice1 : state.slice2) =
                 ui::SliceView{*v.shownFrame, size, rects[n]};

@@ -50,6 +50,7 @@ class ViewPainter {
         int fullTarget = 0;
         int shownTarget = -1; // -1: nothing drawn since the last reset
         std::optional<render::SliceFrame> shownFrame;
+        std::optional<render::Camera> shownCamera; // the 3D view's, for the UI's overlays
     };
     // Draws what is due for one view; true when its picture on screen changed.
     bool paintView(View& view, session::Session& session, render::ViewParams params, double seconds,

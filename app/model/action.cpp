@@ -102,6 +102,12 @@ template <class T> constexpr std::string_view nameOf() {
         return "show_slices";
     } else if constexpr (std::is_same_v<T, Correct>) {
         return "correct";
+    } else if constexpr (std::is_same_v<T, SetBox>) {
+        return "set_box";
+    } else if constexpr (std::is_same_v<T, ClearBox>) {
+        return "clear_box";
+    } else if constexpr (std::is_same_v<T, SetBoxMode>) {
+        return "set_box_mode";
     } else {
         static_assert(std::is_same_v<T, Quit>, "every action needs a name");
         return "quit";
@@ -299,6 +305,9 @@ static_assert(std::is_same_v<TypeOf<ActionKind::PageSlice>, PageSlice>);
 static_assert(std::is_same_v<TypeOf<ActionKind::SetSlice>, SetSlice>);
 static_assert(std::is_same_v<TypeOf<ActionKind::ShowSlices>, ShowSlices>);
 static_assert(std::is_same_v<TypeOf<ActionKind::Correct>, Correct>);
+static_assert(std::is_same_v<TypeOf<ActionKind::SetBox>, SetBox>);
+static_assert(std::is_same_v<TypeOf<ActionKind::ClearBox>, ClearBox>);
+static_assert(std::is_same_v<TypeOf<ActionKind::SetBoxMode>, SetBoxMode>);
 static_assert(std::is_same_v<TypeOf<ActionKind::Quit>, Quit>);
 static_assert(static_cast<std::size_t>(ActionKind::Quit) + 1 == kActionKindCount);
 

@@ -3,6 +3,7 @@
 // The workflow's vocabulary: the states of the fixed operator workflow and the actions that
 // move it. Devices, gestures, bindings and scripts all end here; nothing here knows where an
 // action came from. No GL, no OS: the workflow runs in unit tests without a GPU.
+#include "model/box.hpp"
 #include "model/speed_kind.hpp"
 
 #include <cstddef>
@@ -165,14 +166,29 @@ struct Correct {
     bool positive = true;
     double radius = 0.0; // voxels; <= 0: the brush radius
 };
+// The operator's box (model::Box, docs/steering.md "The box"): the surface stays in it. On a
+// scan without a level set it also probes and seeds at its centre; a later one moves it, and
+// the surface follows. One undo step either way; ClearBox lets the surface go anywhere again.
+struct SetBox {
+    Box box;
+};
+struct ClearBox {};
+// Box mode (docs/ui.md): a drag on a slice draws or moves the box; a tap places nothing. It
+// excludes erase and outside modes (one meaning per tap). `face`: the face a knob detent then
+// moves (NudgeSelected, one voxel a detent), the one the operator last dragged; none: the
+// knob drives the selected parameter.
+struct SetBoxMode {
+    bool on = false;
+    std::optional<BoxFace> face;
+};
 struct Quit {};
 
-using Action =
-    std::variant<LoadScan, Probe, ApplyPreset, SetParam, NudgeParam, NudgeSelected, SelectParam,
-                 CycleParam, SetWindow, AddSeed, Erase, SetEraseMode, SetSpeed, MarkOutside,
-                 ClearExamples, SetOutsideMode, PaintStroke, Run, Pause, ToggleRun, Finish, Resume,
-                 Export, Undo, Redo, Restart, Proceed, Back, Dismiss, AcknowledgeAudit, RotateView,
-                 ZoomView, PageSlice, SetSlice, ShowSlices, Correct, Quit>;
+using Action = std::variant<LoadScan, Probe, ApplyPreset, SetParam, NudgeParam, NudgeSelected,
+                            SelectParam, CycleParam, SetWindow, AddSeed, Erase, SetEraseMode,
+                            SetSpeed, MarkOutside, ClearExamples, SetOutsideMode, PaintStroke, Run,
+                            Pause, ToggleRun, Finish, Resume, Export, Undo, Redo, Restart, Proceed,
+                            Back, Dismiss, AcknowledgeAudit, RotateView, ZoomView, PageSlice,
+                            SetSlice, ShowSlices, Correct, SetBox, ClearBox, SetBoxMode, Quit>;
 
 // "load_scan", "probe", ... (snake_case of the type): the audit log's and scripts' names.
 std::string_view actionName(const Action& action);
@@ -216,6 +232,9 @@ enum class ActionKind {
     SetSlice,
     ShowSlices,
     Correct,
+    SetBox,
+    ClearBox,
+    SetBoxMode,
     Quit,
 };
 inline constexpr std::size_t kActionKindCount = std::variant_size_v<Action>;

@@ -1,48 +1,15 @@
-// A DcmThreadSCP per association that files each C-STORE through the durable write path and
-// keeps the node's rules: who may call, how much one association may bring, how much disk must
-// stay free.
+// A DcmThreadSCP per association that files each C-STORE (store_filing) and keeps the node's
+// rules: who may call, how much one association may bring, how much disk must stay free.
 #include "net/store_association.hpp"
-
-#include "exports/dicom_file_bytes.hpp"
-#include "files/file_write.hpp"
 
 #include <algorithm>
 #include <dcmtk/config/osconfig.h> // must come first among DCMTK's headers
-#include <dcmtk/dcmdata/dcdeftag.h>
-#include <dcmtk/dcmdata/dcfilefo.h>
 #include <dcmtk/dcmdata/dcuid.h>
-#include <dcmtk/dcmdata/dcxfer.h>
 #include <dcmtk/dcmnet/scpthrd.h>
 #include <memory>
-#include <system_error>
-#include <vector>
 
 namespace steerseg::net {
 namespace {
-
-// What GDCM (scan/) reads: the uncompressed syntaxes, deflate, JPEG baseline, extended and
-// lossless, JPEG-LS, JPEG 2000 and RLE. Uncompressed first, the SCP's preference.
-const char* const kTransferSyntaxes[] = {
-    UID_LittleEndianExplicitTransferSyntax, UID_LittleEndianImplicitTransferSyntax,
-    UID_BigEndianExplicitTransferSyntax,    UID_DeflatedExplicitVRLittleEndianTransferSyntax,
-    UID_JPEGProcess1TransferSyntax,         UID_JPEGProcess2_4TransferSyntax,
-    UID_JPEGProcess14TransferSyntax,        UID_JPEGProcess14SV1TransferSyntax,
-    UID_JPEGLSLosslessTransferSyntax,       UID_JPEGLSLossyTransferSyntax,
-    UID_JPEG2000LosslessOnlyTransferSyntax, UID_JPEG2000TransferSyntax,
-    UID_RLELosslessTransferSyntax,
-};
-
-// PS3.4 B.2.3 status codes the SCP answers with.
-constexpr Uint16 kSuccess = 0x0000;
-constexpr Uint16 kOutOfResources = 0xA700;
-constexpr Uint16 kCannotUnderstand = 0xC000;
-constexpr Uint16 kDataSetMismatch = 0xA900;
-
-std::string text(const DcmDataset& dataset, const DcmTagKey& tag) {
-    OFString value;
-    const_cast<DcmDataset&>(dataset).findAndGetOFString(tag, value);
-    return value.c_str();
-}
 
 class StoreAssociation : public DcmThreadSCP {
   public:
@@ -56,11 +23,11 @@ class StoreAssociation : public DcmThreadSCP {
         setHostLookupEnabled(OFFalse);
         setVerbosePCMode(OFFalse);
         OFList<OFString> xfers;
-        for (const char* uid : kTransferSyntaxes) {
+        for (const char* uid : acceptedTransferSyntaxes()) {
             xfers.push_back(uid);
         }
-        for (int n = 0; n < numberOfDcmImageSOPClassUIDs; ++n) {
-            addPresentationContext(dcmImageSOPClassUIDs[n], xfers);
+        for (const char* sopClass : acceptedImageSopClasses()) {
+            addPresentationContext(sopClass, xfers);
         }
         OFList<OFString> echoXfers;
         echoXfers.push_back(UID_LittleEndianExplicitTransferSyntax);
@@ -148,70 +115,12 @@ class StoreAssociation : public DcmThreadSCP {
             return c;
         }
         associationBytes_ += objectBytes_;
-        const Uint16 status = file(request, dataset, info);
+        const Uint16 status =
+            fileObject(std::move(dataset), request.AffectedSOPClassUID,
+                       request.AffectedSOPInstanceUID, info.acceptedTransferSyntax.c_str(),
+                       {settings_.store, settings_.minFreeBytes, " from " + callingAet_}, shared_);
+        stored_ += status == 0 ? 1 : 0;
         return sendSTOREResponse(info.presentationContextID, request, status);
-    }
-
-    Uint16 file(const T_DIMSE_C_StoreRQ& request, std::unique_ptr<DcmDataset>& dataset,
-                const DcmPresentationContextInfo& info) {
-        const std::string study = text(*dataset, DCM_StudyInstanceUID);
-        const std::string series = text(*dataset, DCM_SeriesInstanceUID);
-        const std::string sop = text(*dataset, DCM_SOPInstanceUID);
-        const std::string from = " from " + callingAet_;
-        if (sop != request.AffectedSOPInstanceUID ||
-            text(*dataset, DCM_SOPClassUID) != request.AffectedSOPClassUID) {
-            shared_.report("refused object" + from +
-                           ": its SOP class or instance differs from the request's");
-            return kDataSetMismatch;
-        }
-        if (!isSafeUid(study) || !isSafeUid(series) || !isSafeUid(sop)) {
-            shared_.report("refused object" + from +
-                           ": Study, Series or SOP Instance UID missing or not a UID");
-            return kCannotUnderstand;
-        }
-        OFCondition c;
-        DcmFileFormat fileFormat(dataset.release(), OFFalse);
-        const E_TransferSyntax xfer = DcmXfer(info.acceptedTransferSyntax.c_str()).getXfer();
-        // In 1 MiB passes: the object is in memory once already, its encoding once more.
-        const std::vector<std::byte> bytes =
-            exports::dicomFileBytes(fileFormat, xfer, std::size_t{1} << 20, c);
-        if (c.bad()) {
-            shared_.report("refused object" + from + ": cannot be encoded: " + c.text());
-            return kCannotUnderstand;
-        }
-        // Before any folder is made: a refused object leaves no empty series behind.
-        std::uint64_t available = 0;
-        if (!shared_.reserve(settings_.store, bytes.size(), settings_.minFreeBytes, available)) {
-            shared_.report("refused object" + from + ": the store has " +
-                           std::to_string(available >> 20) +
-                           " MiB free, less than the object and " +
-                           std::to_string(settings_.minFreeBytes >> 20) + " MiB to keep");
-            return kOutOfResources;
-        }
-        const Uint16 status = write(study, series, sop, bytes, from);
-        shared_.release(bytes.size());
-        return status;
-    }
-
-    // Another association may write into the same series at the same moment: the folders'
-    // creation tolerates that, and each file has its own temporary name until its rename.
-    Uint16 write(const std::string& study, const std::string& series, const std::string& sop,
-                 const std::vector<std::byte>& bytes, const std::string& from) {
-        const std::filesystem::path folder = settings_.store / study / series;
-        std::error_code ec;
-        std::filesystem::create_directories(folder, ec);
-        try {
-            files::writeFileAtomically(folder / (sop + ".dcm"),
-                                       {std::span<const std::byte>(bytes)});
-        } catch (const std::exception& e) {
-            shared_.report("refused object" + from + ": " + e.what());
-            return kOutOfResources;
-        }
-        ++stored_;
-        shared_.report("stored " +
-                       (std::filesystem::path(study) / series / (sop + ".dcm")).string() + from +
-                       " (" + std::to_string(bytes.size()) + " bytes)");
-        return kSuccess;
     }
 
     const ScpSettings& settings_;
@@ -225,34 +134,6 @@ class StoreAssociation : public DcmThreadSCP {
 };
 
 } // namespace
-
-void StoreShared::report(const std::string& line) {
-    const std::lock_guard lock(reportMutex_);
-    report_(line);
-}
-
-bool StoreShared::reserve(const std::filesystem::path& store, std::uint64_t bytes,
-                          std::uint64_t minFree, std::uint64_t& available) {
-    const std::lock_guard lock(spaceMutex_);
-    std::error_code ec;
-    const auto space = std::filesystem::space(store, ec);
-    if (ec) {
-        // Cannot tell: the write itself says whether the disk holds it.
-        reserved_ += bytes;
-        return true;
-    }
-    available = space.available > reserved_ ? space.available - reserved_ : 0;
-    if (available < bytes + minFree) {
-        return false;
-    }
-    reserved_ += bytes;
-    return true;
-}
-
-void StoreShared::release(std::uint64_t bytes) {
-    const std::lock_guard lock(spaceMutex_);
-    reserved_ -= bytes;
-}
 
 void serveStoreAssociation(T_ASC_Association* assoc, const ScpSettings& settings,
                            StoreShared& shared) {

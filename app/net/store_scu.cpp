@@ -1,8 +1,9 @@
-// dcmnet's DcmSCU does the association; this file chooses the presentation contexts from the
-// files' own SOP classes and transfer syntaxes and turns every condition into one line.
+// dcmnet's DcmSCU does the association (net/scu_association); this file chooses the presentation
+// contexts from the files' own SOP classes and transfer syntaxes and turns every condition into one
+// line.
 #include "net/store_scu.hpp"
 
-#include "net/dcmtk_quiet.hpp"
+#include "net/scu_association.hpp"
 
 #include <cstdio>
 #include <dcmtk/config/osconfig.h> // must come first among DCMTK's headers
@@ -10,8 +11,6 @@
 #include <dcmtk/dcmdata/dcfilefo.h>
 #include <dcmtk/dcmdata/dcmetinf.h>
 #include <dcmtk/dcmdata/dcuid.h>
-#include <dcmtk/dcmnet/scu.h>
-#include <memory>
 #include <optional>
 #include <set>
 #include <utility>
@@ -53,80 +52,6 @@ bool acceptedStatus(Uint16 status) {
     return status == 0x0000 || status == 0xB000 || status == 0xB006 || status == 0xB007;
 }
 
-std::string hex(Uint16 status) {
-    char text[8];
-    std::snprintf(text, sizeof text, "0x%04X", static_cast<unsigned>(status));
-    return text;
-}
-
-std::string statusMeaning(Uint16 status) {
-    if ((status & 0xFF00) == 0xA700) {
-        return "out of resources";
-    }
-    if ((status & 0xFF00) == 0xA900) {
-        return "data set does not match SOP class";
-    }
-    if ((status & 0xF000) == 0xC000) {
-        return "cannot understand";
-    }
-    if (status == 0x0122) {
-        return "SOP class not supported";
-    }
-    if (status == 0x0124) {
-        return "refused: not authorized";
-    }
-    return "failure";
-}
-
-std::string associationProblem(const DicomPeer& peer, const OFCondition& c) {
-    std::string what = c.text();
-    if (c == DUL_ASSOCIATIONREJECTED) {
-        return "association rejected by " + describe(peer) + " (" + what + ")";
-    }
-    if (what.find("refused") != std::string::npos) {
-        return "connection refused by " + describe(peer);
-    }
-    return "no association with " + describe(peer) + (peer.tls ? " over TLS: " : ": ") + what;
-}
-
-// DcmSCU keeps its TLS switch protected (for DcmTLSSCU, which would bring its own options).
-class Scu : public DcmSCU {
-  public:
-    using DcmSCU::useSecureConnection;
-};
-
-// The network, TLS where the peer has it, the negotiation: "" or why not in one line. `tls`
-// keeps the transport layer, which DCMTK does not own, alive beside `scu`.
-std::string associate(Scu& scu, const DicomPeer& peer, const SendOptions& options,
-                      std::unique_ptr<TlsContext>& tls) {
-    OFCondition c = scu.initNetwork();
-    if (c.good() && peer.tls) {
-        try {
-            tls = std::make_unique<TlsContext>(options.tls, TlsRole::Requestor, peer.host);
-        } catch (const TlsError& e) {
-            return "no TLS to " + describe(peer) + ": " + e.what();
-        }
-        c = scu.useSecureConnection(&tls->layer());
-    }
-    if (c.good()) {
-        c = scu.negotiateAssociation();
-    }
-    return c.bad() ? associationProblem(peer, c) : "";
-}
-
-void configure(DcmSCU& scu, const DicomPeer& peer, const SendOptions& options) {
-    scu.setAETitle(options.callingAet.c_str());
-    scu.setPeerHostName(peer.host.c_str());
-    scu.setPeerPort(static_cast<Uint16>(peer.port));
-    scu.setPeerAETitle(peer.aet.c_str());
-    scu.setConnectionTimeout(options.timeoutSeconds);
-    scu.setACSETimeout(static_cast<Uint32>(options.timeoutSeconds));
-    scu.setDIMSETimeout(static_cast<Uint32>(options.timeoutSeconds));
-    scu.setDIMSEBlockingMode(DIMSE_NONBLOCKING);
-    scu.setVerbosePCMode(OFFalse);
-    scu.setProgressNotificationMode(OFFalse);
-}
-
 OFList<OFString> transferSyntaxes(const std::string& own) {
     OFList<OFString> list;
     list.push_back(own.c_str());
@@ -144,7 +69,6 @@ OFList<OFString> transferSyntaxes(const std::string& own) {
 std::vector<SendOutcome> sendFiles(const DicomPeer& peer,
                                    std::span<const std::filesystem::path> files,
                                    const SendOptions& options) {
-    quietDcmtk();
     std::vector<SendOutcome> outcomes;
     std::vector<std::optional<FileInfo>> infos;
     std::set<std::pair<std::string, std::string>> contexts; // SOP class, transfer syntax
@@ -172,15 +96,13 @@ std::vector<SendOutcome> sendFiles(const DicomPeer& peer,
         }
         return outcomes;
     }
-    std::unique_ptr<TlsContext> tls; // outlives scu, whose network uses it
-    Scu scu;
-    configure(scu, peer, options);
+    PeerScu scu(peer, options);
     // A peer that does not take a compressed syntax gets the object decompressed instead.
     scu.setDatasetConversionMode(OFTrue);
     for (const auto& [sopClass, xfer] : contexts) {
         scu.addPresentationContext(sopClass.c_str(), transferSyntaxes(xfer));
     }
-    if (const std::string problem = associate(scu, peer, options, tls); !problem.empty()) {
+    if (const std::string problem = scu.associate(); !problem.empty()) {
         for (std::size_t n = 0; n < outcomes.size(); ++n) {
             if (infos[n]) {
                 outcomes[n].problem = problem;
@@ -188,6 +110,7 @@ std::vector<SendOutcome> sendFiles(const DicomPeer& peer,
         }
         return outcomes;
     }
+    bool answering = true; // a peer gone silent is aborted, not waited for to release
     for (std::size_t n = 0; n < outcomes.size(); ++n) {
         if (!infos[n]) {
             continue;
@@ -208,34 +131,29 @@ std::vector<SendOutcome> sendFiles(const DicomPeer& peer,
         const OFCondition c = scu.sendSTORERequest(id, o.file.c_str(), nullptr, status);
         if (c.bad()) {
             o.problem = std::string("C-STORE to ") + describe(peer) + " failed: " + c.text();
+            answering = false;
             continue;
         }
         o.status = status;
         o.accepted = acceptedStatus(status);
         if (!o.accepted) {
-            o.problem =
-                describe(peer) + " answered " + hex(status) + " (" + statusMeaning(status) + ")";
+            o.problem = statusProblem(peer, status);
         }
     }
-    if (scu.isConnected()) {
-        scu.releaseAssociation();
-    }
+    scu.finish(answering);
     return outcomes;
 }
 
 std::string echo(const DicomPeer& peer, const SendOptions& options) {
-    quietDcmtk();
-    std::unique_ptr<TlsContext> tls; // outlives scu, whose network uses it
-    Scu scu;
-    configure(scu, peer, options);
+    PeerScu scu(peer, options);
     OFList<OFString> xfers;
     xfers.push_back(UID_LittleEndianImplicitTransferSyntax);
     scu.addPresentationContext(UID_VerificationSOPClass, xfers);
-    if (std::string problem = associate(scu, peer, options, tls); !problem.empty()) {
+    if (std::string problem = scu.associate(); !problem.empty()) {
         return problem;
     }
     const OFCondition c = scu.sendECHORequest(0);
-    scu.releaseAssociation();
+    scu.finish(c.good());
     if (c.bad()) {
         return std::string("C-ECHO to ") + describe(peer) + " failed: " + c.text();
     }

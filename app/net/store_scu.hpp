@@ -3,7 +3,7 @@
 // The sending side: DICOM files to a peer over one association (C-STORE SCU, DCMTK's dcmnet),
 // and C-ECHO to ask whether a peer answers.
 #include "net/dicom_peer.hpp"
-#include "net/tls_context.hpp"
+#include "net/scu_options.hpp"
 
 #include <filesystem>
 #include <span>
@@ -24,11 +24,8 @@ struct SendOutcome {
     std::string problem;
 };
 
-struct SendOptions {
-    std::string callingAet = "STEERSEG";
-    int timeoutSeconds = 30; // TCP connect, ACSE and DIMSE each
-    TlsSettings tls;         // the node's credentials, for a peer with `tls`
-};
+// The calling AE title, the timeouts and the TLS credentials, as for every call the node makes.
+using SendOptions = ScuOptions;
 
 // Sends each file once, in order, over one association; never throws for the network or the
 // files (each outcome says what happened), so a caller can retry only the ones that failed.

@@ -31,6 +31,8 @@ struct DicomSource {
     std::string seriesInstanceUid;
     std::string frameOfReferenceUid;
     std::string patientId;
+    std::string
+        modality; // Modality (0008,0060) of the first file: what the values measure (HU on CT)
     std::optional<double> sliceThickness;
     // LossyImageCompression "01" on any slice: derived objects must say so too.
     bool lossyCompressed = false;

@@ -35,6 +35,8 @@ const std::vector<std::pair<std::string_view, Getter>>& fieldTable() {
         {"can_redo", [](const S& s) { return flag(s.canRedo); }},
         {"erase_mode", [](const S& s) { return flag(s.eraseMode); }},
         {"outside_mode", [](const S& s) { return flag(s.outsideMode); }},
+        {"box_mode", [](const S& s) { return flag(s.boxMode); }},
+        {"has_box", [](const S& s) { return flag(s.box.has_value()); }},
         {"inside_examples",
          [](const S& s) { return static_cast<double>(s.insideExamples.size()); }},
         {"outside_examples",

@@ -2,6 +2,7 @@
 #include "script/script_verbs.hpp"
 #include "script/script_words.hpp"
 
+#include <array>
 #include <optional>
 #include <string>
 
@@ -125,6 +126,28 @@ StepKind outside(Words& w) {
     return actionStep(m);
 }
 
+// The box's two corners (voxel indices, model::Box), or `box clear`. Whether it fits the scan
+// is the workflow's to say, as for a sphere.
+StepKind box(Words& w) {
+    static constexpr const char* kUsage = "box I0 J0 K0 I1 J1 K1 | box clear";
+    if (w.accept("clear")) {
+        w.finish(kUsage);
+        return actionStep(model::ClearBox{});
+    }
+    model::SetBox b;
+    static constexpr std::array<const char*, 6> kNames{"the box's i0", "the box's j0",
+                                                       "the box's k0", "the box's i1",
+                                                       "the box's j1", "the box's k1"};
+    for (int n = 0; n < 6; ++n) {
+        const auto v = static_cast<int>(w.integer(kNames[static_cast<std::size_t>(n)],
+                                                  static_cast<long long>(-kMaxCoordinate),
+                                                  static_cast<long long>(kMaxCoordinate)));
+        (n < 3 ? b.box.lo : b.box.hi)[n % 3] = v;
+    }
+    w.finish(kUsage);
+    return actionStep(b);
+}
+
 StepKind outsideMode(Words& w) {
     const std::string on = w.text("on or off");
     w.finish("outside_mode on|off");
@@ -132,6 +155,16 @@ StepKind outsideMode(Words& w) {
         throw LineError("outside_mode '" + on + "': give on or off");
     }
     return actionStep(model::SetOutsideMode{on == "on"});
+}
+
+// Box mode (docs/ui.md): a drag on a slice draws the box; the script's `touch` events draw it.
+StepKind boxMode(Words& w) {
+    const std::string on = w.text("on or off");
+    w.finish("box_mode on|off");
+    if (on != "on" && on != "off") {
+        throw LineError("box_mode '" + on + "': give on or off");
+    }
+    return actionStep(model::SetBoxMode{on == "on", std::nullopt});
 }
 
 StepKind autosave(Words& w) {
@@ -259,6 +292,8 @@ void addOperatorVerbs(VerbTable& table) {
         {"speed", speedVerb},
         {"outside", outside},
         {"outside_mode", outsideMode},
+        {"box", box},
+        {"box_mode", boxMode},
         {"clear_examples", plain<model::ClearExamples>("clear_examples")},
         {"set", set},
         {"nudge", nudge},

@@ -218,6 +218,7 @@ void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progr
         {settings.kind, g.smoothed.id(), factor,
          g.classifier ? g.classifier->onDemandForest() : speed::OnDemandForest{},
          settings.withinWindow});
+    g.solver.setBox(settings.box);
     g.speed = settings;
 }
 
@@ -302,16 +303,20 @@ exports::ExportSummary Session::exportAs(const std::filesystem::path& path,
         field = phi();
     }
     return exports::writeExport(path, format,
-                                {scan_.geometry(), inside, field, segment, dicom_.get()});
+                                {scan_.geometry(), inside, field, segment, dicom_.get(), &scan_});
 }
 
-void Session::exportMask(const std::filesystem::path& path) const {
+std::vector<std::filesystem::path> Session::exportMask(const std::filesystem::path& path) const {
     const auto format = model::exportFormatOfFile(path);
     if (!format) {
         throw files::WriteError(path, "cannot tell the export format from the name (" +
                                           model::exportFormatNames() + ")");
     }
-    exportAs(path, *format);
+    std::vector<std::filesystem::path> written{path};
+    for (const std::filesystem::path& companion : exportAs(path, *format).companions) {
+        written.push_back(companion);
+    }
+    return written;
 }
 
 render::ViewParams Session::defaultView(render::ViewKind kind, const glm::ivec2& size) const {

@@ -136,8 +136,9 @@ class Session {
     // files::WriteError.
     exports::ExportSummary exportAs(const std::filesystem::path& path, model::ExportFormat format,
                                     const exports::SegmentInfo& segment = {}) const;
-    // exportAs in the format the file's extension names (model::exportFormatFor).
-    void exportMask(const std::filesystem::path& path) const;
+    // exportAs in the format the file's extension names (model::exportFormatFor); the files
+    // written, `path` first (a DICOM SEG's measurement report after it).
+    std::vector<std::filesystem::path> exportMask(const std::filesystem::path& path) const;
 
     // Presets for this scan (MR-style transfer function, anterior camera, middle slice).
     [[nodiscard]] render::ViewParams defaultView(render::ViewKind kind,

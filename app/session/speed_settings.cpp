@@ -39,6 +39,9 @@ void validateSpeedSettings(const SpeedSettings& settings, const glm::ivec3& dims
     if (!std::isfinite(settings.placeReach) || settings.placeReach < 0.0) {
         throw std::invalid_argument("the classify speed's place reach must be finite and >= 0");
     }
+    if (settings.box) {
+        model::validateBox(*settings.box, dims);
+    }
     checkExamples(settings.inside, dims, "inside example");
     checkExamples(settings.outside, dims, "outside example");
 }

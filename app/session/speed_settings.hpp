@@ -2,12 +2,14 @@
 
 // Which speed drives the surface and what it needs, as plain data (docs/speed.md): the command
 // line and the kiosk fill it, Session::setSpeed turns it into textures on the GPU.
+#include "model/box.hpp"
 #include "model/level_set_params.hpp"
 #include "model/speed_kind.hpp"
 #include "speed/smoothing_params.hpp"
 
 #include <functional>
 #include <glm/glm.hpp>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -25,12 +27,14 @@ struct SpeedSettings {
     // classify: how far, in its radii, an example decides where appearance is unsure
     // (speed::ClassifierParams::placeReach, the kiosk's [speed] classify_place_reach); 0: never.
     double placeReach = 3.0;
+    // Every kind: the operator's box, which the surface does not leave (model::Box).
+    std::optional<model::Box> box;
 };
 
 // Throws std::invalid_argument (one line) for settings no speed can run with: smoothing out of
 // range, edge without kappa > 0, classify without an inside and an outside example, an example
 // that does not fit the scan (dims), a window bound on another speed than classify, a place
-// reach that is not finite or is negative.
+// reach that is not finite or is negative, a box validateBox refuses.
 void validateSpeedSettings(const SpeedSettings& settings, const glm::ivec3& dims);
 
 // Seconds spent making the speed's textures (GPU work finished).

@@ -160,6 +160,18 @@ void LevelSetSolver::clearBarriers() {
     noteChange();
 }
 
+void LevelSetSolver::setBox(const std::optional<model::Box>& box) {
+    if (box) {
+        model::validateBox(*box, dims_);
+    }
+    if (box == box_) {
+        return;
+    }
+    box_ = box;
+    uploadBarriers();
+    noteChange(); // a box that shrank: the surface outside it recedes from every brick
+}
+
 void LevelSetSolver::setReach(const std::optional<model::Reach>& reach) {
     if (reach) {
         model::validateSphere(reach->sphere, dims_);
@@ -211,6 +223,10 @@ void LevelSetSolver::uploadBarriers() {
                             static_cast<GLsizei>(barriers_.size()), levels.data());
     }
     glProgramUniform1f(p, glGetUniformLocation(p, "barrierHold"), hold);
+    // No box: one that holds every voxel index.
+    const model::Box box = box_.value_or(model::Box{glm::ivec3(0), dims_ - 1});
+    glProgramUniform3i(p, glGetUniformLocation(p, "boxLo"), box.lo.x, box.lo.y, box.lo.z);
+    glProgramUniform3i(p, glGetUniformLocation(p, "boxHi"), box.hi.x, box.hi.y, box.hi.z);
     gpu::GlStateGuard guard;
     pool_->forgetSpeed();
 }

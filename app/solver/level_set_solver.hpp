@@ -3,6 +3,7 @@
 #include "core/volume.hpp"
 #include "gpu/gl_handle.hpp"
 #include "gpu/scan_texture.hpp"
+#include "model/box.hpp"
 #include "model/level_set_params.hpp"
 #include "model/solver_types.hpp"
 #include "solver/brick_pool_view.hpp"
@@ -87,6 +88,11 @@ class LevelSetSolver {
     void holdBarrier(const model::Barrier& barrier);
     void clearBarriers();
     [[nodiscard]] const std::vector<model::Barrier>& barriers() const { return barriers_; }
+    // The operator's box (model::Box): outside it the speed blocks as a barrier's does, so the
+    // surface never leaves it and recedes into a box that shrank. nullopt: no box.
+    // std::invalid_argument for a box validateBox refuses.
+    void setBox(const std::optional<model::Box>& box);
+    [[nodiscard]] const std::optional<model::Box>& box() const { return box_; }
     // Where the surface may move (shaders/solver/update_phi.comp): a sphere, for a correction's
     // run, which should change the surface around the correction and leave the rest as the
     // operator accepted it (or only withdraw there: model::Reach); nullopt: everywhere.
@@ -181,6 +187,7 @@ class LevelSetSolver {
     bool settled_ = false; // SettleWatch at the last check
     bool wakePending_ = true;
     std::vector<model::Barrier> barriers_;
+    std::optional<model::Box> box_;
     std::optional<model::Reach> reach_;
     LeakWatch leakWatch_;
     SettleWatch settleWatch_;

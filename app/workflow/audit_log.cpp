@@ -105,11 +105,25 @@ nlohmann::json values(const model::SetSlice& a) {
 nlohmann::json values(const model::ShowSlices& a) {
     return {{"first", model::sliceAxisName(a.first)}, {"second", model::sliceAxisName(a.second)}};
 }
+nlohmann::json values(const model::SetBox& a) {
+    return boxValues(a.box);
+}
+nlohmann::json values(const model::SetBoxMode& a) {
+    nlohmann::json v{{"on", a.on}};
+    if (a.face) {
+        v["face"] = {{"axis", a.face->axis}, {"high", a.face->high}};
+    }
+    return v;
+}
 template <class T> nlohmann::json values(const T&) {
     return nlohmann::json::object();
 }
 
 } // namespace
+
+nlohmann::json boxValues(const model::Box& box) {
+    return {{"lo", {box.lo.x, box.lo.y, box.lo.z}}, {"hi", {box.hi.x, box.hi.y, box.hi.z}}};
+}
 
 nlohmann::json actionValues(const model::Action& action) {
     return std::visit([](const auto& a) { return values(a); }, action);

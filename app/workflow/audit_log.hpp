@@ -110,5 +110,7 @@ AuditLogContents readAuditLog(const std::filesystem::path& path);
 // The action's arguments as a JSON object ({} for actions without any): the audit log's
 // "values" and a script's round trip.
 nlohmann::json actionValues(const model::Action& action);
+// A box as the audit log and the autosave write it: {"lo": [i, j, k], "hi": [i, j, k]}.
+nlohmann::json boxValues(const model::Box& box);
 
 } // namespace steerseg::workflow

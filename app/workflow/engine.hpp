@@ -3,6 +3,7 @@
 // What the workflow needs from the scan, the solver and the writers, and nothing more. The
 // kiosk implements it over session::Session (GL, on the frame loop's thread); tests implement
 // it in memory. Errors are exceptions with one line for the operator (std::exception::what()).
+#include "model/box.hpp"
 #include "model/level_set_params.hpp" // plain structs only: the workflow links no solver code
 #include "model/solver_types.hpp"
 #include "model/speed_kind.hpp" // the enum only: the workflow links no speed code
@@ -61,6 +62,8 @@ struct SpeedChoice {
     // Classify only: how far, in its radii, an example decides where appearance is unsure
     // (Settings::classifyPlaceReach).
     double placeReach = 0.0;
+    // Every kind: the operator's box, which the surface does not leave (model::Box).
+    std::optional<model::Box> box = std::nullopt;
     bool operator==(const SpeedChoice&) const = default;
     [[nodiscard]] bool hasInside() const { return !inside.empty() || !paintedInside.empty(); }
     [[nodiscard]] bool hasOutside() const { return !outside.empty() || !paintedOutside.empty(); }
@@ -88,6 +91,10 @@ class Engine {
     [[nodiscard]] virtual ProbeResult probe(const glm::dvec3& voxel, double radiusMm) const = 0;
     // The same measure, leaving the probe where it was.
     [[nodiscard]] virtual ProbeResult measure(const glm::dvec3& voxel, double radiusMm) const = 0;
+    // The scan's values (real units) in a box that fits the scan, at most `most` of them on an
+    // even stride through it: what a box says about the tissue in it (workflow/box_tissue).
+    [[nodiscard]] virtual std::vector<double> values(const model::Box& box,
+                                                     std::size_t most) const = 0;
 
     // Sphere edits; std::invalid_argument for a sphere outside the scan.
     virtual void addSeed(const model::Sphere& sphere) = 0;
@@ -124,8 +131,10 @@ class Engine {
     virtual void restore(SnapshotId id) = 0;
     virtual void drop(SnapshotId id) = 0;
 
-    // Writes the mask on the scan's grid; std::runtime_error naming the path on failure.
-    virtual void exportMask(const std::filesystem::path& path) = 0;
+    // Writes the mask on the scan's grid; std::runtime_error naming the path on failure. Returns
+    // the files written, `path` first, then any written beside it (a DICOM SEG's measurement
+    // report), so that the export's record and the DICOM node see them all.
+    virtual std::vector<std::filesystem::path> exportMask(const std::filesystem::path& path) = 0;
 };
 
 } // namespace steerseg::workflow

@@ -73,6 +73,11 @@ struct Status {
     // The dabs of painted strokes (model::PaintStroke), oldest first: every one trains classify.
     std::vector<model::Sphere> paintedInside;
     std::vector<model::Sphere> paintedOutside;
+    std::optional<model::Box> box; // the operator's box (model::SetBox), drawn in every view
+    // Box mode (model::SetBoxMode): a drag on a slice draws the box; and the face a knob
+    // detent moves there (none: the knob drives `selected`).
+    bool boxMode = false;
+    std::optional<model::BoxFace> boxFace;
     bool hasLevelSet = false;
     bool unexported = false; // the level set changed since its last export (a load must wait)
     // What the workflow would accept now, by the transition table (transition_table.hpp) and

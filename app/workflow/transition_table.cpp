@@ -62,6 +62,8 @@ std::string_view guardName(Guard guard) {
         return "something to redo";
     case Guard::Examples:
         return "examples";
+    case Guard::Box:
+        return "a box";
     case Guard::AuditKept:
         return "the audit log written or its loss acknowledged";
     case Guard::AuditLost:

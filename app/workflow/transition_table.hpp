@@ -48,6 +48,7 @@ struct Facts {
     bool examples = false;          // classify has an inside or an outside example
     bool auditLost = false;         // the audit log cannot be written now
     bool auditAcknowledged = false; // ... and the operator said to export anyway
+    bool box = false;               // the operator's box is set (model::SetBox)
 };
 // The same facts as a status shows them (a status built by hand, a test's).
 inline Facts factsOf(const Status& status) {
@@ -58,7 +59,8 @@ inline Facts factsOf(const Status& status) {
             !status.insideExamples.empty() || !status.outsideExamples.empty() ||
                 !status.paintedInside.empty() || !status.paintedOutside.empty(),
             !status.auditProblem.empty(),
-            status.auditAcknowledged};
+            status.auditAcknowledged,
+            status.box.has_value()};
 }
 
 enum class Guard {
@@ -69,6 +71,7 @@ enum class Guard {
     CanUndo,
     CanRedo,
     Examples,
+    Box,
     AuditKept, // the audit log is written, or the operator acknowledged that it cannot be
     AuditLost, // the audit log cannot be written and that is not acknowledged yet
 };
@@ -89,6 +92,8 @@ constexpr bool holds(Guard guard, const Facts& facts) {
         return facts.canRedo;
     case Guard::Examples:
         return facts.examples;
+    case Guard::Box:
+        return facts.box;
     case Guard::AuditKept:
         return !facts.auditLost || facts.auditAcknowledged;
     case Guard::AuditLost:
@@ -132,8 +137,8 @@ inline constexpr StateSet kSteering{S::Inspect, S::Seeding, S::Evolving, S::Paus
 // Looking around: the view, the knob's selection and the tap's meaning. Also in error, where
 // they leave the error's message on screen.
 inline constexpr model::ActionKinds kLooking{
-    K::RotateView, K::ZoomView,    K::PageSlice,  K::SetSlice,     K::ShowSlices,
-    K::SetWindow,  K::SelectParam, K::CycleParam, K::SetEraseMode, K::SetOutsideMode};
+    K::RotateView,  K::ZoomView,   K::PageSlice,    K::SetSlice,       K::ShowSlices, K::SetWindow,
+    K::SelectParam, K::CycleParam, K::SetEraseMode, K::SetOutsideMode, K::SetBoxMode};
 // Parameters and the speed: live in every steering state, evolving included.
 inline constexpr model::ActionKinds kSteer{K::Probe,      K::ApplyPreset,   K::SetParam,
                                            K::NudgeParam, K::NudgeSelected, K::SetSpeed,
@@ -146,7 +151,7 @@ constexpr model::ActionKinds with(model::ActionKinds kinds, model::ActionKinds m
 // review and done refuse.
 inline constexpr model::ActionKinds kSteerAll = with(kSteer, {K::ClearExamples});
 inline constexpr model::ActionKinds kExportedRefused =
-    with(kSteerAll, {K::AddSeed, K::Erase, K::PaintStroke, K::Correct});
+    with(kSteerAll, {K::AddSeed, K::Erase, K::PaintStroke, K::Correct, K::SetBox, K::ClearBox});
 
 inline constexpr std::string_view kNoLevelSetToRun = "no level set to evolve: add a seed first";
 inline constexpr std::string_view kNothingToExport = "nothing to export: add a seed first";
@@ -172,11 +177,16 @@ inline constexpr std::array kRules{
     Rule{{S::Seeding, S::Evolving, S::Paused}, {K::AddSeed, K::Erase}, Guard::Always, std::nullopt,
          {}, "evolving: an erase that empties the level set pauses"},
     Rule{{S::Inspect}, {K::Erase}, Guard::Never, std::nullopt, "place a seed before erasing"},
-    Rule{{S::Review}, {K::AddSeed, K::Erase, K::PaintStroke, K::Correct}, Guard::Never, std::nullopt,
-         "go back to steering to edit the surface"},
+    Rule{{S::Review}, {K::AddSeed, K::Erase, K::PaintStroke, K::Correct, K::SetBox, K::ClearBox},
+         Guard::Never, std::nullopt, "go back to steering to edit the surface"},
     Rule{{S::Inspect, S::Seeding, S::Paused}, {K::Correct}, Guard::Always, S::Evolving, {},
          "the first probes and seeds; an erase that leaves nothing stays"},
     Rule{{S::Evolving}, {K::Correct}, Guard::Always, std::nullopt, {}, "from the current surface"},
+    // The box: the first one probes and seeds at its centre, a later one moves it.
+    Rule{{S::Inspect}, {K::SetBox}, Guard::Always, S::Seeding, {}, "its probe and seed are placed"},
+    Rule{{S::Seeding, S::Evolving, S::Paused}, {K::SetBox}, Guard::Always, std::nullopt, {},
+         "the surface follows the box"},
+    Rule{kSteering, {K::ClearBox}, Guard::Box, std::nullopt, "no box to clear"},
     // A stroke is the brush along a path in the mode it names; its own code refuses what that
     // mode's sphere would (an erase with nothing to erase).
     Rule{kSteering, {K::PaintStroke}, Guard::Always, std::nullopt, {},

@@ -33,6 +33,7 @@ bool keepsNotice(const model::Action& action) {
            std::holds_alternative<model::CycleParam>(action) ||
            std::holds_alternative<model::SetEraseMode>(action) ||
            std::holds_alternative<model::SetOutsideMode>(action) ||
+           std::holds_alternative<model::SetBoxMode>(action) ||
            std::holds_alternative<model::SetWindow>(action) ||
            std::holds_alternative<model::Quit>(action);
 }
@@ -191,7 +192,8 @@ Facts Workflow::facts() const {
             undo_.redoTop() != nullptr,
             params_.speed.hasInside() || params_.speed.hasOutside(),
             !status_.auditProblem.empty(),
-            status_.auditAcknowledged};
+            status_.auditAcknowledged,
+            params_.speed.box.has_value()};
 }
 
 void Workflow::refreshAllowed() {
@@ -252,10 +254,13 @@ void Workflow::forgetScan() {
     status_.exportedFiles.clear();
     status_.eraseMode = false;
     status_.outsideMode = false;
+    status_.boxMode = false;
+    status_.boxFace.reset();
     status_.insideExamples.clear(); // the next scan's examples start with its first probe
     status_.outsideExamples.clear();
     status_.paintedInside.clear();
     status_.paintedOutside.clear();
+    status_.box.reset();
     status_.view = ViewState{};
 }
 

@@ -26,6 +26,8 @@
 
 namespace steerseg::workflow {
 
+struct TissuePeak; // workflow/box_tissue.hpp
+
 // What a resumed session brings back besides the level set (which the caller has already put
 // into the engine): the parameters, the sphere counts the panel shows and the state it was in.
 struct RestoredSession {
@@ -120,6 +122,18 @@ class Workflow {
     Outcome on(const model::ShowSlices& a);
     Outcome on(const model::Correct& a); // workflow_correct.cpp
     Outcome first(const model::Correct& a);
+    Outcome on(const model::SetBox& a); // workflow_box.cpp
+    Outcome on(const model::ClearBox& a);
+    Outcome on(const model::SetBoxMode& a);
+    // In box mode with a face chosen and a box: the box a knob's `steps` detents make of it
+    // (one voxel a detent), else nothing and the knob drives the selected parameter.
+    [[nodiscard]] std::optional<model::Box> knobBox(double steps) const;
+    // Where the tissue that fills a first box lies, nearest its centre first: its probe, seed
+    // and inside examples (workflow_box.cpp).
+    [[nodiscard]] std::vector<glm::dvec3>
+    boxTissueAt(const model::Box& box, const TissuePeak& tissue, double probeMm) const;
+    // A seed beyond the box moves the box to hold it: the operator's seed outranks the box.
+    void holdInBox(ParamValues& values, const model::Sphere& seed) const;
     // A correction's run moves the surface only near it (Settings::correctionReach); the
     // reach ends with the run, or when the speed or its parameters change.
     // recedeOutside: beyond the reach the surface only withdraws (model::Reach).

@@ -72,9 +72,15 @@ nlohmann::json Workflow::resultOf(const model::Action& action) const {
                 r["window_width"] = v.windowWidth;
                 r["transfer"] = v.transfer;
                 return r;
-            } else if constexpr (isOneOf<A, model::SetParam, model::NudgeParam,
-                                         model::NudgeSelected>) {
+            } else if constexpr (isOneOf<A, model::SetParam, model::NudgeParam>) {
                 return params();
+            } else if constexpr (std::is_same_v<A, model::NudgeSelected>) {
+                // In box mode the knob may have moved a face of the box (Workflow::knobBox).
+                nlohmann::json r = params();
+                if (status_.box) {
+                    r["box"] = boxValues(*status_.box);
+                }
+                return r;
             } else if constexpr (isOneOf<A, model::AddSeed, model::Erase, model::Restart>) {
                 return levelSet();
             } else if constexpr (std::is_same_v<A, model::Correct>) {
@@ -82,6 +88,14 @@ nlohmann::json Workflow::resultOf(const model::Action& action) const {
                 r.update(levelSet());
                 r["barriers"] = engine_.barriers();
                 r["reach"] = reach_ ? nlohmann::json(reach_->sphere.radius) : nlohmann::json();
+                return r;
+            } else if constexpr (isOneOf<A, model::SetBox, model::ClearBox>) {
+                // The box in force after it: a seed beyond a box moves it, so the record of
+                // the action alone would not say where it is.
+                nlohmann::json r = params();
+                r.update(levelSet());
+                r.update(speed());
+                r["box"] = status_.box ? boxValues(*status_.box) : nlohmann::json();
                 return r;
             } else if constexpr (std::is_same_v<A, model::PaintStroke>) {
                 nlohmann::json r = levelSet();
@@ -100,11 +114,16 @@ nlohmann::json Workflow::resultOf(const model::Action& action) const {
                 return speed();
             } else if constexpr (std::is_same_v<A, model::SetOutsideMode>) {
                 return {{"outside_mode", status_.outsideMode}, {"erase_mode", status_.eraseMode}};
+            } else if constexpr (std::is_same_v<A, model::SetBoxMode>) {
+                return {{"box_mode", status_.boxMode},
+                        {"outside_mode", status_.outsideMode},
+                        {"erase_mode", status_.eraseMode}};
             } else if constexpr (isOneOf<A, model::SelectParam, model::CycleParam>) {
                 return {{"selected", model::paramName(status_.selected)}};
             } else if constexpr (isOneOf<A, model::Export, model::Proceed>) {
                 if (status_.state == model::State::Done && !status_.exportedPath.empty()) {
-                    return {{"exported", status_.exportedPath}};
+                    // Every file, not only the first: a DICOM SEG's measurement report too.
+                    return {{"exported", status_.exportedPath}, {"files", status_.exportedFiles}};
                 }
                 return nullptr;
             } else if constexpr (std::is_same_v<A, model::SetWindow>) {

@@ -142,6 +142,7 @@ Workflow::Outcome Workflow::first(const model::Correct& a) {
     const model::Sphere sphere = brushSphere(a.voxel, a.radius);
     // One undo step: the probe's T and eps and both inside examples come with the seed.
     ParamValues next = params_;
+    holdInBox(next, sphere);
     takeProbe(next, p);
     if (auto example = exampleAt(a.voxel, settings_.probeRadiusMm)) {
         addExample(next.speed.inside, *example);

@@ -199,6 +199,9 @@ Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, b
     const bool correcting =
         status_.state == model::State::Evolving || status_.state == model::State::Paused;
     ParamValues next = params_;
+    if (seed) {
+        holdInBox(next, sphere);
+    }
     if (correcting) {
         // A correction is an example of its class for as long as it stands, as a stroke's dabs
         // are: among the newest taps it would drop out after six, and a sarcoma's leak came
@@ -248,6 +251,8 @@ Workflow::Outcome Workflow::on(const model::SetEraseMode& a) {
     status_.eraseMode = a.erase;
     if (a.erase) {
         status_.outsideMode = false; // one meaning per tap
+        status_.boxMode = false;
+        status_.boxFace.reset();
     }
     return ok();
 }

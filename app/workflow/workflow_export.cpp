@@ -83,8 +83,10 @@ Workflow::Outcome Workflow::exportTo(const std::string& requested) {
             const std::filesystem::path base = defaultExportBase();
             for (const std::string& format : settings_.exportFormats) {
                 try {
-                    engine_.exportMask(withFormat(base, format));
-                    files.push_back(withFormat(base, format).string());
+                    const std::filesystem::path target = withFormat(base, format);
+                    for (const std::filesystem::path& f : engine_.exportMask(target)) {
+                        files.push_back(f.string());
+                    }
                     if (written++ == 0) {
                         path = withFormat(base, format);
                     }
@@ -94,8 +96,9 @@ Workflow::Outcome Workflow::exportTo(const std::string& requested) {
             }
         } else {
             path = requested;
-            engine_.exportMask(path);
-            files.push_back(path.string());
+            for (const std::filesystem::path& f : engine_.exportMask(path)) {
+                files.push_back(f.string());
+            }
             written = 1;
         }
     } catch (const std::exception& e) {

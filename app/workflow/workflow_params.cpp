@@ -136,6 +136,10 @@ Workflow::Outcome Workflow::on(const model::NudgeParam& a) {
 }
 
 Workflow::Outcome Workflow::on(const model::NudgeSelected& a) {
+    if (const std::optional<model::Box> box = knobBox(a.steps)) {
+        // At the scan's border or the opposite face the face stays, and so does undo's stack.
+        return *box == status_.box ? ok() : on(model::SetBox{*box});
+    }
     return on(model::NudgeParam{status_.selected, a.steps});
 }
 
@@ -144,6 +148,7 @@ Workflow::Outcome Workflow::on(const model::SelectParam& a) {
         return no("unknown parameter");
     }
     status_.selected = a.param;
+    status_.boxFace.reset(); // the knob drives the parameter, not the box's face
     return ok();
 }
 
@@ -151,6 +156,7 @@ Workflow::Outcome Workflow::on(const model::CycleParam& a) {
     const long long n = model::kParamCount;
     const long long next = ((static_cast<long long>(status_.selected) + a.delta) % n + n) % n;
     status_.selected = static_cast<model::Param>(next);
+    status_.boxFace.reset();
     return ok();
 }
 

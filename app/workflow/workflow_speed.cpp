@@ -25,27 +25,25 @@ const SpeedOff* Workflow::speedOff(model::SpeedKind kind) const {
 
 SpeedChoice Workflow::speedFor(const ParamValues& values) const {
     const SpeedChoice& chosen = values.speed;
+    SpeedChoice out;
+    out.box = chosen.box; // whatever runs stays in the box
     // A resumed session or an old undo entry may name a speed this GPU computes wrong.
     if (speedOff(chosen.kind) != nullptr) {
-        SpeedChoice instead;
-        instead.kind = settings_.defaultSpeed;
-        return instead;
+        out.kind = settings_.defaultSpeed;
+        return out;
     }
     if (chosen.kind == model::SpeedKind::Classify) {
         if (chosen.hasInside() && chosen.hasOutside()) {
-            SpeedChoice bounded = chosen;
-            bounded.withinWindow = settings_.classifyWithinWindow;
-            bounded.placeReach = settings_.classifyPlaceReach;
-            return bounded;
+            out = chosen;
+            out.withinWindow = settings_.classifyWithinWindow;
+            out.placeReach = settings_.classifyPlaceReach;
+            return out;
         }
-        SpeedChoice waiting;
-        waiting.kind =
-            speedOff(values.fallback) != nullptr ? settings_.defaultSpeed : values.fallback;
-        return waiting;
+        out.kind = speedOff(values.fallback) != nullptr ? settings_.defaultSpeed : values.fallback;
+        return out;
     }
-    SpeedChoice plain;
-    plain.kind = chosen.kind;
-    return plain;
+    out.kind = chosen.kind;
+    return out;
 }
 
 std::optional<model::Sphere> Workflow::exampleAt(const glm::dvec3& voxel, double radiusMm) const {
@@ -88,6 +86,7 @@ void Workflow::showSpeed(const ParamValues& values, model::SpeedKind inForce) {
     status_.outsideExamples = values.speed.outside;
     status_.paintedInside = values.speed.paintedInside;
     status_.paintedOutside = values.speed.paintedOutside;
+    status_.box = values.speed.box;
 }
 
 Workflow::Outcome Workflow::on(const model::SetSpeed& a) {
@@ -152,6 +151,8 @@ Workflow::Outcome Workflow::on(const model::SetOutsideMode& a) {
     status_.outsideMode = a.outside;
     if (a.outside) {
         status_.eraseMode = false; // one meaning per tap
+        status_.boxMode = false;
+        status_.boxFace.reset();
     }
     return ok();
 }

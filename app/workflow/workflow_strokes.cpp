@@ -79,6 +79,9 @@ Workflow::Outcome Workflow::on(const model::PaintStroke& a) {
     switch (a.mode) {
     case model::StrokeMode::Add:
         addPainted(next.speed.paintedInside, dabs);
+        for (const model::Sphere& s : dabs) {
+            holdInBox(next, s);
+        }
         editLevelSet(
             "paint_stroke",
             [&] {

@@ -206,6 +206,27 @@ std::optional<RobotClick> deepestClick(const MaskGrid& grid,
     return c;
 }
 
+std::optional<VoxelBox> labelBox(const MaskGrid& grid, const std::vector<std::uint8_t>& label) {
+    std::optional<VoxelBox> box;
+    std::size_t v = 0;
+    for (int k = 0; k < grid.dims.z; ++k) {
+        for (int j = 0; j < grid.dims.y; ++j) {
+            for (int i = 0; i < grid.dims.x; ++i, ++v) {
+                if (label[v] == 0) {
+                    continue;
+                }
+                const glm::ivec3 p(i, j, k);
+                if (!box) {
+                    box = VoxelBox{p, p};
+                }
+                box->lo = glm::min(box->lo, p);
+                box->hi = glm::max(box->hi, p);
+            }
+        }
+    }
+    return box;
+}
+
 std::optional<RobotClick> initialClick(const MaskGrid& grid,
                                        const std::vector<std::uint8_t>& label) {
     return deepestClick(grid, label, label);

@@ -47,7 +47,15 @@ struct RobotClick {
 std::optional<RobotClick> deepestClick(const MaskGrid& grid,
                                        const std::vector<std::uint8_t>& region,
                                        const std::vector<std::uint8_t>& label);
-// The first prompt: the deepest voxel of the label's largest component.
+// The challenge's first prompt (issue 51): the label's bounding box, both corners inclusive
+// voxel indices, over all its voxels (every component, as the challenge takes the label's
+// extent). nullopt for an empty label.
+struct VoxelBox {
+    glm::ivec3 lo{0};
+    glm::ivec3 hi{0};
+};
+std::optional<VoxelBox> labelBox(const MaskGrid& grid, const std::vector<std::uint8_t>& label);
+// The first prompt without a box: the deepest voxel of the label's largest component.
 std::optional<RobotClick> initialClick(const MaskGrid& grid,
                                        const std::vector<std::uint8_t>& label);
 // A correction: the deepest voxel of the largest component of mask != label; nullopt when the

@@ -9,7 +9,9 @@
 // eps beyond each (speed/data_speed.glsl windowSpeed): the structure the operator extended and
 // the partial volume between it and the added tissue. The classify speed learns the sphere
 // instead; bounded by the window (classifyWithinWindow), its bound widens there as the
-// threshold's does. The host side: LevelSetSolver::uploadBarriers (app/solver/level_set_edits.cpp).
+// threshold's does. Outside the operator's box (model::Box; without one it holds the whole scan)
+// every voxel blocks as a blocking sphere does: the surface never leaves the box.
+// The host side: LevelSetSolver::uploadBarriers (app/solver/level_set_edits.cpp).
 // Include after speed/data_speed.glsl and solver/sphere_metric.glsl.
 #ifndef MAX_BARRIERS
 #define MAX_BARRIERS 16
@@ -18,8 +20,13 @@ uniform int barrierCount;
 uniform vec4 barriers[MAX_BARRIERS]; // centre (voxel indices), signed radius (sphere_metric.glsl)
 uniform vec2 barrierLevels[MAX_BARRIERS]; // tissue level (real units), reach (as a radius; 0: none)
 uniform float barrierHold;
+uniform ivec3 boxLo;
+uniform ivec3 boxHi;
 
 float barrierSpeed(ivec3 voxel, float dataSpeed) {
+    if (any(lessThan(voxel, boxLo)) || any(greaterThan(voxel, boxHi))) {
+        return -max(abs(dataSpeed), barrierHold);
+    }
     vec3 p = vec3(voxel);
     float speed = dataSpeed;
     for (int n = barrierCount - 1; n >= 0; --n) {

@@ -39,6 +39,7 @@ AutosaveSnapshot sampleSnapshot(std::int64_t savedAtMs = 1'700'000'000'123) {
     s.params.speed = {model::SpeedKind::Classify,
                       {{{1.0F, 2.0F, 3.0F}, 1.5F}},
                       {{{4.0F, 5.0F, 6.0F}, 2.0F}, {{7.0F, 8.0F, 9.0F}, 0.5F}}};
+    s.params.speed.box = model::Box{{2, 3, 1}, {17, 13, 10}};
     s.params.fallback = model::SpeedKind::Edge;
     s.seeds = 2;
     s.erasures = 1;
@@ -134,6 +135,21 @@ TEST(AutosaveFormat, NumbersNoFloatHoldsAreOneClearError) {
 TEST(AutosaveFormat, RoundTripKeepsEverything) {
     const AutosaveSnapshot s = sampleSnapshot();
     expectSame(decodeSnapshot(encodeSnapshot(s)), s);
+}
+
+// A box that no longer fits the saved grid is the autosave's error, named, not the resumed
+// session's; a snapshot from before the box has none.
+TEST(AutosaveFormat, TheBoxComesBackOrIsOneClearError) {
+    const std::vector<std::byte> good = encodeSnapshot(sampleSnapshot());
+    EXPECT_NE(decodeError(withMetadata(good, "\"hi\":[17,13,10]", "\"hi\":[17,13,12]"))
+                  .find("reaches outside the scan"),
+              std::string::npos);
+    EXPECT_NE(decodeError(withMetadata(good, "\"hi\":[17,13,10]", "\"hi\":[1,13,10]"))
+                  .find("inverted on i"),
+              std::string::npos);
+    AutosaveSnapshot none = sampleSnapshot();
+    none.params.speed.box.reset();
+    expectSame(decodeSnapshot(encodeSnapshot(none)), none);
 }
 
 TEST(AutosaveFormat, RoundTripWithoutALevelSet) {

@@ -74,6 +74,22 @@ TEST(ClickRobot, OfEqualComponentsTheFirstInStorageOrderWins) {
     EXPECT_EQ(c[at(g, 0, 3, 3)], 0);
 }
 
+// The challenge's box: the extent of every component of the label, corners inclusive.
+TEST(ClickRobot, TheLabelsBoxHoldsEveryComponent) {
+    const MaskGrid grid{{9, 7, 5}, {0.7, 0.9, 2.5}};
+    std::vector<std::uint8_t> label(grid.count(), 0);
+    EXPECT_FALSE(labelBox(grid, label).has_value());
+    const auto at = [&](int i, int j, int k) -> std::uint8_t& {
+        return label[static_cast<std::size_t>((k * grid.dims.y + j) * grid.dims.x + i)];
+    };
+    at(2, 3, 1) = 1;
+    at(6, 1, 4) = 1; // a second component
+    const std::optional<VoxelBox> box = labelBox(grid, label);
+    ASSERT_TRUE(box.has_value());
+    EXPECT_EQ(box->lo, glm::ivec3(2, 1, 1));
+    EXPECT_EQ(box->hi, glm::ivec3(6, 3, 4));
+}
+
 TEST(ClickRobot, TheInitialClickIsTheDeepestVoxelInMillimetres) {
     // A box 11 voxels on each side, the slices twice as thin: the middle slice is deepest, 6
     // voxels (3 mm) from the nearest outside voxel along k; in it every voxel 3 mm or more from

@@ -680,7 +680,34 @@ TEST_F(ConfigTest, DicomNodeAndPeers) {
                                                    true, true}));
     EXPECT_EQ(d.peers[1].port, 11112);
     EXPECT_FALSE(d.peers[1].send);
+    EXPECT_FALSE(d.peers[0].query); // asked only where a site says so
+    EXPECT_EQ(d.peers[0].retrieve, config::DicomPeerConfig::Retrieve::Get);
     EXPECT_FALSE(config::defaultConfig().dicom.enabled); // off unless a site turns it on
+}
+
+TEST_F(ConfigTest, DicomQueryPeers) {
+    const config::LoadedConfig loaded = load({write(
+        "query.toml", "[[dicom.peers]]\nname = \"pacs\"\naet = \"ORTHANC\"\nhost = \"pacs\"\n"
+                      "query = true\nretrieve = \"move\"\n"
+                      "[[dicom.peers]]\nname = \"vna\"\naet = \"VNA\"\nhost = \"vna\"\n"
+                      "query = true\nretrieve = \"get\"\n")});
+    ASSERT_TRUE(loaded.problems.empty()) << describeAll(loaded.problems);
+    const auto& peers = loaded.config.dicom.peers;
+    ASSERT_EQ(peers.size(), 2U);
+    // A peer that is only queried is a peer: neither receive nor send needed.
+    EXPECT_TRUE(peers[0].query);
+    EXPECT_FALSE(peers[0].receive || peers[0].send);
+    EXPECT_EQ(peers[0].retrieve, config::DicomPeerConfig::Retrieve::Move);
+    EXPECT_EQ(peers[1].retrieve, config::DicomPeerConfig::Retrieve::Get);
+
+    const std::string peer = "[[dicom.peers]]\nname = \"pacs\"\naet = \"PACS\"\nhost = \"h\"\n";
+    expectRejected(peer + "query = true\nretrieve = \"fetch\"\n", 6, "dicom.peers[1].retrieve",
+                   "must be \"get\" or \"move\"");
+    expectRejected(peer + "query = true\nretrieve = 1\n", 6, "dicom.peers[1].retrieve",
+                   "expected a string");
+    expectRejected(peer + "query = \"yes\"\nsend = true\n", 5, "dicom.peers[1].query",
+                   "expected true or false");
+    expectRejected(peer + "query = false\n", 1, "dicom.peers[1].receive", "query = true");
 }
 
 TEST_F(ConfigTest, BadDicomValuesAreRefusedWithTheirPlace) {
@@ -748,6 +775,12 @@ TEST_F(ConfigTest, DicomTlsFilesAndRelations) {
                    "dicom.peers[1].tls", "could not call");
     expectRejected(files(node, key, ca) + peer + "receive = true\ntls = true\n", 10,
                    "dicom.peers[1].tls", "tls_receive = true");
+    // A C-MOVE's images come on an association the peer opens to the node's port.
+    expectRejected(files(node, key, ca) + peer + "query = true\nretrieve = \"move\"\ntls = true\n",
+                   11, "dicom.peers[1].tls", "retrieve = \"move\" over TLS");
+    EXPECT_TRUE(load({write("get.toml", files(node, key, ca) + peer +
+                                            "query = true\nretrieve = \"get\"\ntls = true\n")})
+                    .problems.empty());
 }
 
 TEST(ConfigNames, InputDeviceKindsRoundTrip) {

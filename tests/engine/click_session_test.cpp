@@ -59,14 +59,15 @@ TEST_F(ClickSessionTest, ANegativeClickOnALeaksNeckKeepsItClosed) {
     for (const bool sticky : {true, false}) {
         SCOPED_TRACE(sticky ? "a correction" : "a bare erase, for comparison");
         engine::ClickSession s(scan.string(), settings());
-        const engine::ClickOutcome first = s.apply({{12.0, 16.0, 16.0}, true, 3.0}, 3000);
+        const engine::ClickOutcome first =
+            s.apply(model::Correct{{12.0, 16.0, 16.0}, true, 3.0}, 3000);
         EXPECT_NE(first.stopReason, "iteration_limit") << "the front should stop by itself";
         ASSERT_TRUE(inside(s, far)) << "the front leaked through the neck into the second ball";
         ASSERT_TRUE(inside(s, neck));
         const model::Sphere cut{glm::vec3(neck), 4.0F};
         if (sticky) {
             // The first click's keeping sphere and this blocking one.
-            EXPECT_EQ(s.apply({glm::dvec3(neck), false, 4.0}, 100).barriers, 2);
+            EXPECT_EQ(s.apply(model::Correct{glm::dvec3(neck), false, 4.0}, 100).barriers, 2);
         } else {
             s.engine().session()->erase(cut);
         }
@@ -76,11 +77,27 @@ TEST_F(ClickSessionTest, ANegativeClickOnALeaksNeckKeepsItClosed) {
     std::filesystem::remove(scan);
 }
 
+// The challenge's first prompt: a box around the first ball. Its centre is probed and seeded,
+// and the run stops by itself at the box's face, short of the neck it leaked through above.
+TEST_F(ClickSessionTest, ABoxRunsFromItsCentreAndHoldsTheLeak) {
+    const auto scan = dumbbell();
+    engine::ClickSession s(scan.string(), settings());
+    const engine::ClickOutcome r =
+        s.apply(model::SetBox{model::Box{{4, 8, 8}, {21, 24, 24}}}, 3000);
+    EXPECT_EQ(r.stopReason, "converged");
+    EXPECT_TRUE(inside(s, {12, 16, 16}));
+    EXPECT_FALSE(inside(s, {24, 16, 16})) << "the neck lies beyond the box";
+    EXPECT_FALSE(inside(s, {38, 16, 16}));
+    EXPECT_THROW(s.apply(model::SetBox{model::Box{{4, 8, 8}, {21, 24, 99}}}, 10),
+                 std::runtime_error);
+    std::filesystem::remove(scan);
+}
+
 TEST_F(ClickSessionTest, AFirstNegativeClickIsRefusedWithTheWorkflowsReason) {
     const auto scan = dumbbell();
     engine::ClickSession s(scan.string(), settings());
     try {
-        s.apply({{12.0, 16.0, 16.0}, false, 3.0}, 10);
+        s.apply(model::Correct{{12.0, 16.0, 16.0}, false, 3.0}, 10);
         FAIL() << "a negative first click was accepted";
     } catch (const std::runtime_error& e) {
         EXPECT_NE(std::string(e.what()).find("first correction adds"), std::string::npos)

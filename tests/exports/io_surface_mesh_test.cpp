@@ -1,5 +1,5 @@
+#include "core/surface_mesh.hpp"
 #include "exports/mesh_writer.hpp"
-#include "exports/surface_mesh.hpp"
 #include "scan/scan_reader.hpp"
 #include "support/test_data.hpp"
 
@@ -66,7 +66,7 @@ double maskVolume(const Geometry& g, const std::vector<float>& phi) {
 // Closed and consistently oriented: every directed edge occurs once and its reverse once, so
 // each edge joins exactly two triangles that wind it opposite ways. Returns the Euler
 // characteristic V - E + F (2 for each sphere-like piece).
-long checkWatertight(const exports::SurfaceMesh& mesh) {
+long checkWatertight(const SurfaceMesh& mesh) {
     std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
     std::set<std::uint32_t> used;
     for (const auto& t : mesh.triangles) {
@@ -105,11 +105,11 @@ TEST_P(SphereSurface, IsClosedOutwardAndOnTheSphere) {
     const glm::dvec3 centre = g.indexToWorld({31.3, 32.6, 30.8});
     const double r = GetParam().radiusMm;
     const auto phi = sphereField(g, centre, r);
-    const exports::SurfaceMesh mesh = exports::extractSurface(g, phi);
+    const SurfaceMesh mesh = extractSurface(g, phi);
     ASSERT_FALSE(mesh.empty());
     EXPECT_EQ(checkWatertight(mesh), 2);
 
-    const double volume = exports::enclosedVolume(mesh);
+    const double volume = enclosedVolume(mesh);
     const double analytic = sphereVolume(r);
     const double voxels = maskVolume(g, phi);
     const double errAnalytic = (volume - analytic) / analytic;
@@ -156,9 +156,9 @@ INSTANTIATE_TEST_SUITE_P(Spacings, SphereSurface,
 TEST(SurfaceMesh, RegionTouchingTheBorderIsClosed) {
     const Geometry g = grid({40, 36, 30});
     const auto phi = sphereField(g, {0.0, 17.5, 29.0}, 12.0); // through three faces
-    const exports::SurfaceMesh mesh = exports::extractSurface(g, phi);
+    const SurfaceMesh mesh = extractSurface(g, phi);
     EXPECT_EQ(checkWatertight(mesh), 2);
-    EXPECT_GT(exports::enclosedVolume(mesh), 0.0);
+    EXPECT_GT(enclosedVolume(mesh), 0.0);
     double minX = 1e9;
     for (const auto& v : mesh.vertices) {
         minX = std::min(minX, v.x);
@@ -167,11 +167,10 @@ TEST(SurfaceMesh, RegionTouchingTheBorderIsClosed) {
 
     // Everything inside: a closed box around the whole grid.
     const Geometry small = grid({5, 4, 3});
-    const exports::SurfaceMesh full =
-        exports::extractSurface(small, std::vector<float>(small.voxelCount(), -1.0f));
+    const SurfaceMesh full = extractSurface(small, std::vector<float>(small.voxelCount(), -1.0f));
     EXPECT_EQ(checkWatertight(full), 2);
-    EXPECT_GT(exports::enclosedVolume(full), 0.0);
-    EXPECT_LE(exports::enclosedVolume(full), 5.0 * 4.0 * 3.0);
+    EXPECT_GT(enclosedVolume(full), 0.0);
+    EXPECT_LE(enclosedVolume(full), 5.0 * 4.0 * 3.0);
 }
 
 TEST(SurfaceMesh, MaskFieldFollowsTheMask) {
@@ -180,9 +179,9 @@ TEST(SurfaceMesh, MaskFieldFollowsTheMask) {
     const auto phi = sphereField(g, centre, 20.0);
     std::vector<std::uint8_t> mask(phi.size());
     std::transform(phi.begin(), phi.end(), mask.begin(), [](float v) { return v < 0.0f ? 1 : 0; });
-    const exports::SurfaceMesh mesh = exports::extractSurface(g, exports::maskToField(mask));
+    const SurfaceMesh mesh = extractSurface(g, maskToField(g, mask));
     EXPECT_EQ(checkWatertight(mesh), 2);
-    const double volume = exports::enclosedVolume(mesh);
+    const double volume = enclosedVolume(mesh);
     const double voxels = maskVolume(g, phi);
     std::cout << "mask field: volume vs voxel mask " << 100.0 * (volume - voxels) / voxels << "%\n";
     EXPECT_LT(std::abs(volume - voxels) / voxels, 0.02);
@@ -190,11 +189,10 @@ TEST(SurfaceMesh, MaskFieldFollowsTheMask) {
 
 TEST(SurfaceMesh, EmptyFieldGivesNoMeshAndNoFile) {
     const Geometry g = grid({8, 8, 8});
-    const exports::SurfaceMesh mesh =
-        exports::extractSurface(g, std::vector<float>(g.voxelCount(), 1.0f));
+    const SurfaceMesh mesh = extractSurface(g, std::vector<float>(g.voxelCount(), 1.0f));
     EXPECT_TRUE(mesh.empty());
     EXPECT_TRUE(mesh.vertices.empty());
-    EXPECT_EQ(exports::enclosedVolume(mesh), 0.0);
+    EXPECT_EQ(enclosedVolume(mesh), 0.0);
     const auto dir = tempDir("mesh-empty");
     for (const char* name : {"empty.stl", "empty.ply"}) {
         EXPECT_THROW(exports::writeMesh(dir / name, mesh, *exports::meshFormatFor(name)),
@@ -205,7 +203,7 @@ TEST(SurfaceMesh, EmptyFieldGivesNoMeshAndNoFile) {
 }
 
 TEST(SurfaceMesh, RejectsAFieldOfTheWrongSize) {
-    EXPECT_THROW(exports::extractSurface(grid({4, 4, 4}), std::vector<float>(63, -1.0f)),
+    EXPECT_THROW(extractSurface(grid({4, 4, 4}), std::vector<float>(63, -1.0f)),
                  std::invalid_argument);
 }
 
@@ -218,8 +216,8 @@ TEST(SurfaceMesh, VerticesAreInTheScansPatientCoordinates) {
     const Geometry plain = grid(dims);
     // The same field on both grids: a sphere in index space.
     const auto phi = sphereField(plain, {14.2, 12.7, 10.4}, 8.0);
-    const exports::SurfaceMesh inIndex = exports::extractSurface(plain, phi);
-    const exports::SurfaceMesh inWorld = exports::extractSurface(oblique, phi);
+    const SurfaceMesh inIndex = extractSurface(plain, phi);
+    const SurfaceMesh inWorld = extractSurface(oblique, phi);
     ASSERT_EQ(inIndex.vertices.size(), inWorld.vertices.size());
     ASSERT_EQ(inIndex.triangles.size(), inWorld.triangles.size());
     for (std::size_t n = 0; n < inIndex.vertices.size(); ++n) {
@@ -228,9 +226,9 @@ TEST(SurfaceMesh, VerticesAreInTheScansPatientCoordinates) {
     }
     EXPECT_EQ(checkWatertight(inWorld), 2);
     const double scale = oblique.spacing.x * oblique.spacing.y * oblique.spacing.z;
-    EXPECT_NEAR(exports::enclosedVolume(inWorld), exports::enclosedVolume(inIndex) * scale,
-                1e-6 * exports::enclosedVolume(inWorld));
-    EXPECT_GT(exports::enclosedVolume(inWorld), 0.0);
+    EXPECT_NEAR(enclosedVolume(inWorld), enclosedVolume(inIndex) * scale,
+                1e-6 * enclosedVolume(inWorld));
+    EXPECT_GT(enclosedVolume(inWorld), 0.0);
 }
 
 // Independent little readers for the two formats.
@@ -259,7 +257,7 @@ TEST(MeshWriter, StlAndPlyReadBack) {
     static_assert(std::endian::native == std::endian::little);
     const Geometry g = obliqueGrid({30, 26, 22});
     const glm::dvec3 centre = g.indexToWorld({14.2, 12.7, 10.4});
-    const exports::SurfaceMesh mesh = exports::extractSurface(g, sphereField(g, centre, 9.0));
+    const SurfaceMesh mesh = extractSurface(g, sphereField(g, centre, 9.0));
     ASSERT_FALSE(mesh.empty());
     const auto dir = tempDir("mesh-roundtrip");
     const double tolerance = 1e-4; // float32 of coordinates a few hundred mm from the origin
@@ -330,8 +328,7 @@ TEST(MeshWriter, FormatByExtensionAndClearFailures) {
     EXPECT_FALSE(exports::meshFormatFor("stl").has_value());
 
     const Geometry g = grid({8, 8, 8});
-    const exports::SurfaceMesh mesh =
-        exports::extractSurface(g, sphereField(g, {3.5, 3.5, 3.5}, 2.5));
+    const SurfaceMesh mesh = extractSurface(g, sphereField(g, {3.5, 3.5, 3.5}, 2.5));
     const auto missing = tempDir("mesh-fail") / "no-such-folder" / "s.stl";
     try {
         exports::writeStl(missing, mesh);

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <gtest/gtest.h>
 #include <unistd.h>
+#include <utility>
 
 namespace steerseg::test {
 namespace {
@@ -243,6 +244,30 @@ TEST_F(KioskCli, ExportToAReadOnlyFolderStaysInReview) {
               std::string::npos)
         << r.err;
     EXPECT_TRUE(std::filesystem::exists(dir / "out/mask.nii.gz"));
+}
+
+// Issue 49: a new user's relative --frames. $OUT names the folder once, so `export
+// $OUT/mask.nii.gz` lands in it (not in out/out/, refused as a missing folder, the session
+// waiting in review), whether --frames was relative or had a trailing slash.
+TEST_F(KioskCli, OutNamesARelativeFramesFolderOnce) {
+    const std::array<std::pair<std::string, std::string>, 2> cases{
+        {{"out", "out"}, {"out2/", "out2"}}}; // --frames, the folder it names
+    for (const auto& [frames, folder] : cases) {
+        const CliRun r = session("load builtin:sample\n"
+                                 "wait loaded timeout 30\n"
+                                 "seed 80 56 52 4\n"
+                                 "finish\n"
+                                 "wait state review timeout 10\n"
+                                 "export $OUT/mask.nii.gz\n"
+                                 "wait state done timeout 30\n"
+                                 "frame $OUT/done.png\n",
+                                 "--frames " + frames);
+        EXPECT_EQ(r.exitCode, 0) << frames << ": " << r.err;
+        const std::filesystem::path out = dir / folder;
+        EXPECT_TRUE(std::filesystem::exists(out / "mask.nii.gz")) << frames << ": " << r.err;
+        EXPECT_TRUE(std::filesystem::exists(out / "done.png")) << frames;
+        EXPECT_FALSE(std::filesystem::exists(out / folder)) << frames;
+    }
 }
 
 } // namespace

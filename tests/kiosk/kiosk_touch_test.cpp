@@ -2,15 +2,18 @@
 // display's physical pixels, the panel's rotation, the layout, the slice picture actually on
 // screen and its frame, the gesture, the workflow, the audit log. For each orientation in the
 // first slice view and a display mounted upright and a quarter turn. And a drag paints a stroke
-// along the finger's path.
+// along the finger's path; in box mode two drags draw the box, which holds the run's mask.
 #include "core/sample_phantom.hpp"
 #include "engine/view_setup.hpp"
 #include "kiosk/kiosk_app.hpp"
+#include "model/box.hpp"
 #include "render/slice_frame.hpp"
+#include "scan/scan_reader.hpp"
 #include "ui/layout.hpp"
 #include "ui/screen_rotation.hpp"
 #include "ui/slice_mapping.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -168,6 +171,109 @@ TEST(KioskStroke, ADragPaintsAStrokeAlongTheFinger) {
         EXPECT_NEAR(first[a], from[a], a == sliceAxis ? 1e-9 : 0.5) << "axis " << a;
         EXPECT_NEAR(last[a], to[a], a == sliceAxis ? 1e-9 : 0.5) << "axis " << a;
     }
+    std::filesystem::remove_all(dir);
+}
+
+// The `touch` steps of a one-finger drag from `from` to `to` (voxels) on `view`.
+std::string dragSteps(const ui::SliceView& view, const glm::dvec3& from, const glm::dvec3& to) {
+    std::ostringstream s;
+    const glm::dvec2 down = ui::screenOfVoxel(view, from);
+    s << "touch down 0 " << down.x << " " << down.y << "\n";
+    for (int m = 1; m <= 4; ++m) {
+        const glm::dvec2 p = ui::screenOfVoxel(view, from + (to - from) * (m / 4.0));
+        s << "touch move 0 " << p.x << " " << p.y << "\n";
+    }
+    const glm::dvec2 up = ui::screenOfVoxel(view, to);
+    s << "touch up 0 " << up.x << " " << up.y << "\n";
+    return s.str();
+}
+
+model::Box boxInAuditLog(const nlohmann::json& values) {
+    model::Box b;
+    for (int a = 0; a < 3; ++a) {
+        b.lo[a] = values["lo"][static_cast<std::size_t>(a)].get<int>();
+        b.hi[a] = values["hi"][static_cast<std::size_t>(a)].get<int>();
+    }
+    return b;
+}
+
+// Box mode through the whole kiosk: a drag on the axial view draws the box across the lesion
+// (i and j; k as deep as its smaller side, 21 mm, centred on the slice), which probes and
+// seeds; a drag on the coronal view, begun beside the box's rectangle (not on an edge: that
+// would move a face), sets i and k. The run's exported mask lies in the box (the box cuts the
+// lesion, so without it the mask would not), and undo takes the boxes back.
+TEST(KioskBox, TwoDragsDrawTheBoxAndTheRunStaysInIt) {
+    const glm::ivec2 physical(640, 400);
+    const double dpi = 96.0;
+    const auto dir = std::filesystem::temp_directory_path() / "steerseg_kiosk_box";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const ui::Layout layout = ui::computeLayout(physical.x, physical.y, dpi);
+    const Geometry geometry = makeSamplePhantom().geometry();
+    const auto viewOf = [&](render::ViewKind kind, int slice, const ui::Rect& rect) {
+        render::ViewParams params;
+        params.kind = kind;
+        params.size = {rect.w, rect.h};
+        params.slice = slice;
+        return ui::SliceView{render::sliceFrame(geometry, params), params.size, rect};
+    };
+    const ui::SliceView axial = viewOf(render::ViewKind::Axial, 52, layout.slice1);
+    const ui::SliceView coronal = viewOf(render::ViewKind::Coronal, 56, layout.slice2);
+    ASSERT_EQ(axial.frame.sliceAxis, 2);
+    ASSERT_EQ(coronal.frame.sliceAxis, 1);
+    const model::Box drawn{{72, 46, 46}, {92, 66, 59}};  // the lesion spans 68..92, 44..68
+    const model::Box second{{62, 46, 38}, {84, 66, 56}}; // ... and k 44..60
+    const auto mask = dir / "mask.nii.gz";
+    std::ostringstream script;
+    script << "load builtin:sample\nwait loaded\nshow axial coronal\nslice axial 52\n"
+           << "slice coronal 56\nspeed threshold\nbox_mode on\nexpect box_mode == 1\n"
+           << "frame " << (dir / "before-box.png").string() << "\n"
+           << dragSteps(axial, {72.0, 46.0, 52.0}, {92.0, 66.0, 52.0})
+           << "wait state seeding\nexpect has_box == 1\nexpect seeds == 1\n"
+           << "frame " << (dir / "first-box.png").string() << "\n"
+           << dragSteps(coronal, {62.0, 56.0, 38.0}, {84.0, 56.0, 56.0})
+           << "wait seconds 0.5\nrun\nwait state evolving\nwait seconds 3\npause\n"
+           << "expect has_level_set == 1\nexport " << mask.string() << "\nwait state done\n"
+           << "back\nresume\nwait state paused\nundo\nexpect has_box == 1\nundo\n"
+           << "expect has_box == 0\n";
+    std::string err;
+    runKioskSession(dir, 0, dpi, physical, script.str(), err);
+
+    // One set_box a drag, each with the box the finger drew.
+    std::vector<model::Box> boxes;
+    std::ifstream in(dir / "audit.jsonl");
+    std::string line;
+    while (std::getline(in, line)) {
+        const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+        if (j.is_object() && j.value("action", "") == "set_box") {
+            EXPECT_TRUE(j.value("accepted", false)) << line;
+            boxes.push_back(boxInAuditLog(j["values"]));
+        }
+    }
+    ASSERT_EQ(boxes.size(), 2U) << "stderr: " << err;
+    EXPECT_EQ(boxes[0], drawn) << model::describe(boxes[0]);
+    EXPECT_EQ(boxes[1], second) << model::describe(boxes[1]);
+
+    ASSERT_TRUE(std::filesystem::exists(mask)) << "stderr: " << err;
+    const Volume m = scan::readScan(mask).volume;
+    ASSERT_EQ(m.geometry().dims, geometry.dims);
+    std::size_t inside = 0;
+    std::size_t outsideTheBox = 0;
+    int reach = 0; // the mask's largest i
+    for (int k = 0; k < geometry.dims.z; ++k) {
+        for (int j = 0; j < geometry.dims.y; ++j) {
+            for (int i = 0; i < geometry.dims.x; ++i) {
+                if (m.valueAt(i, j, k) != 0.0) {
+                    ++inside;
+                    outsideTheBox += model::contains(second, {i, j, k}) ? 0 : 1;
+                    reach = std::max(reach, i);
+                }
+            }
+        }
+    }
+    EXPECT_GT(inside, 1000U) << "the run grew the lesion";
+    EXPECT_EQ(outsideTheBox, 0U);
+    EXPECT_GE(reach, second.hi.x - 1) << "the run reached the box's face: the box held it";
     std::filesystem::remove_all(dir);
 }
 

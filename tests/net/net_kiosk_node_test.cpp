@@ -7,6 +7,8 @@
 
 #include <fstream>
 #include <gtest/gtest.h>
+#include <map>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -100,28 +102,35 @@ void runScenario(const fs::path& series, const std::string& name, bool pacsDown)
     EXPECT_EQ(log.find("refused object"), std::string::npos) << log; // the SCP took every image
     EXPECT_EQ(log.find("node.session:"), std::string::npos) << log;  // no step failed
 
-    // Orthanc holds the SEG, in the source's study (storescu sent the source to the kiosk only).
+    // Orthanc holds the SEG and its measurement report (docs/exports.md), in the source's study
+    // (storescu sent the source to the kiosk only).
     const nlohmann::json instances = pacs.get("/instances?expand");
-    ASSERT_EQ(instances.size(), 1U) << instances.dump();
-    const nlohmann::json tags =
-        pacs.get("/instances/" + instances[0].at("ID").get<std::string>() + "/simplified-tags");
-    EXPECT_EQ(tags.at("Modality"), "SEG");
+    ASSERT_EQ(instances.size(), 2U) << instances.dump();
     std::string sourceStudy;
     for (const auto& study : fs::directory_iterator(dir / "store")) {
         sourceStudy = study.path().filename().string();
     }
-    EXPECT_EQ(tags.at("StudyInstanceUID"), sourceStudy);
-    EXPECT_FALSE(tags.at("PerFrameFunctionalGroupsSequence").empty());
+    std::set<std::string> modalities;
+    for (const auto& instance : instances) {
+        const nlohmann::json tags =
+            pacs.get("/instances/" + instance.at("ID").get<std::string>() + "/simplified-tags");
+        modalities.insert(tags.at("Modality").get<std::string>());
+        EXPECT_EQ(tags.at("StudyInstanceUID"), sourceStudy);
+        if (tags.at("Modality") == "SEG") {
+            EXPECT_FALSE(tags.at("PerFrameFunctionalGroupsSequence").empty());
+        }
+    }
+    EXPECT_EQ(modalities, (std::set<std::string>{"SEG", "SR"}));
 
-    // The audit log has each attempt: the failed ones while the PACS was down, then the one
-    // it accepted, once.
+    // The audit log has each attempt of each object: the failed ones while the PACS was down,
+    // then the one it accepted, once.
     const std::string audit = readText(dir / "audit.jsonl");
     const std::size_t sends = countOf(audit, "\"event\":\"send\"");
-    EXPECT_EQ(countOf(audit, "\"accepted\":true,\"attempt\""), 1U) << audit;
+    EXPECT_EQ(countOf(audit, "\"accepted\":true,\"attempt\""), 2U) << audit;
     if (pacsDown) {
-        EXPECT_GE(sends, 2U) << audit;
+        EXPECT_GE(sends, 4U) << audit;
     } else {
-        EXPECT_EQ(sends, 1U) << audit;
+        EXPECT_EQ(sends, 2U) << audit;
     }
     EXPECT_TRUE(fs::is_empty(dir / "outbox"));
     fs::remove_all(dir);
@@ -187,17 +196,21 @@ TEST(NetKioskNode, ASegPendingWhenTheKioskIsKilledIsDeliveredOnceAfterTheRestart
                                         "--script",
                                         (dir / script).string()};
     };
-    // The moment the outbox has counted a failed attempt on disk: the attempt's audit record
-    // must be written by then.
+    // The moment the outbox has counted a failed attempt of every object (the SEG and its
+    // report) on disk: each attempt's audit record is written by then (it comes first).
     const auto attempted = [&] {
         std::error_code ec;
+        int records = 0;
         for (const auto& f : fs::directory_iterator(dir / "outbox", ec)) {
-            if (f.path().extension() == ".json" &&
-                readText(f.path()).find("\"attempts\": 0") == std::string::npos) {
-                return true;
+            if (f.path().extension() != ".json") {
+                continue;
+            }
+            ++records;
+            if (readText(f.path()).find("\"attempts\": 0") != std::string::npos) {
+                return false;
             }
         }
-        return false;
+        return records == 2;
     };
     {
         ChildProcess kiosk(kioskArgs("export.session"), dir / "kiosk.log");
@@ -216,19 +229,28 @@ TEST(NetKioskNode, ASegPendingWhenTheKioskIsKilledIsDeliveredOnceAfterTheRestart
     EXPECT_EQ(kiosk.log().find("drain.session:"), std::string::npos) << kiosk.log();
 
     const nlohmann::json instances = pacs.get("/instances?expand");
-    ASSERT_EQ(instances.size(), 1U) << instances.dump() << kiosk.log();
-    EXPECT_EQ(
-        pacs.get("/instances/" + instances[0].at("ID").get<std::string>() + "/simplified-tags")
-            .at("Modality"),
-        "SEG");
+    ASSERT_EQ(instances.size(), 2U) << instances.dump() << kiosk.log(); // the SEG and its report
+    std::set<std::string> modalities;
+    for (const auto& instance : instances) {
+        modalities.insert(
+            pacs.get("/instances/" + instance.at("ID").get<std::string>() + "/simplified-tags")
+                .at("Modality")
+                .get<std::string>());
+    }
+    EXPECT_EQ(modalities, (std::set<std::string>{"SEG", "SR"}));
     EXPECT_TRUE(fs::is_empty(dir / "outbox"));
-    // Attempts 1, 2, ... N without a gap, only the last one accepted.
-    const std::vector<nlohmann::json> sends = sendRecords(dir / "audit.jsonl");
-    ASSERT_FALSE(sends.empty()) << kiosk.log();
-    for (std::size_t n = 0; n < sends.size(); ++n) {
-        EXPECT_EQ(sends[n].at("attempt"), n + 1) << readText(dir / "audit.jsonl");
-        EXPECT_EQ(sends[n].at("accepted").get<bool>(), n + 1 == sends.size())
-            << readText(dir / "audit.jsonl");
+    // Per object, attempts 1, 2, ... N without a gap, only the last one accepted.
+    std::map<std::string, std::vector<nlohmann::json>> byFile;
+    for (const nlohmann::json& send : sendRecords(dir / "audit.jsonl")) {
+        byFile[send.at("file").get<std::string>()].push_back(send);
+    }
+    ASSERT_EQ(byFile.size(), 2U) << kiosk.log() << readText(dir / "audit.jsonl");
+    for (const auto& [file, sends] : byFile) {
+        for (std::size_t n = 0; n < sends.size(); ++n) {
+            EXPECT_EQ(sends[n].at("attempt"), n + 1) << file << readText(dir / "audit.jsonl");
+            EXPECT_EQ(sends[n].at("accepted").get<bool>(), n + 1 == sends.size())
+                << file << readText(dir / "audit.jsonl");
+        }
     }
     fs::remove_all(dir);
 }

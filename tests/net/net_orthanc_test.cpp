@@ -166,7 +166,9 @@ TEST(NetOrthanc, ExportSendsItsSegThroughTheOutbox) {
     ASSERT_EQ(delivered.exitCode, 0) << delivered.err;
     const auto report = nlohmann::json::parse(delivered.out);
     EXPECT_TRUE(report.at("delivered").get<bool>()) << delivered.out;
-    EXPECT_EQ(pacs.get("/instances").size(), 1u);
+    EXPECT_TRUE(report.contains("measurement_report_outbox_id")) << delivered.out;
+    // The SEG and its measurement report (docs/exports.md) go together.
+    EXPECT_EQ(pacs.get("/instances").size(), 2u);
 
     pacs.stop();
     const CliRun waiting = exportSeg(dir, series, scan, send);
@@ -179,8 +181,8 @@ TEST(NetOrthanc, ExportSendsItsSegThroughTheOutbox) {
     pacs.start();
     const CliRun drained = runSteerseg("send --outbox --wait 10 --config " + config.string());
     EXPECT_EQ(drained.exitCode, 0) << drained.out << drained.err;
-    // The second export is a new SEG (new UIDs): two instances, each once.
-    EXPECT_EQ(pacs.get("/instances").size(), 2u);
+    // The second export is a new SEG and report (new UIDs): four instances, each once.
+    EXPECT_EQ(pacs.get("/instances").size(), 4u);
 
     const CliRun notSeg = runSteerseg("export --input " + series.string() + " --mask " +
                                       (dir / "mask.nii.gz").string() + " --output " +

@@ -191,6 +191,28 @@ TEST(ScriptParse, WaitsChecksFramesDice) {
     EXPECT_DOUBLE_EQ(dice.value, 0.8);
 }
 
+TEST(ScriptParse, TheBoxVerb) {
+    const auto box = action<model::SetBox>("box 1 2 3 40 50 60");
+    EXPECT_EQ(box.box.lo, glm::ivec3(1, 2, 3));
+    EXPECT_EQ(box.box.hi, glm::ivec3(40, 50, 60));
+    // Whether it fits the scan, or is inverted, is the workflow's to say (WorkflowBox).
+    EXPECT_EQ(action<model::SetBox>("box 9 2 3 4 5 6").box.lo.x, 9);
+    action<model::ClearBox>("box clear");
+    const std::string errors = parseError("box 1 2 3 4 5\n"
+                                          "box 1 2 3 4 5 6 7\n"
+                                          "box 1.5 2 3 4 5 6\n"
+                                          "box clear now\n");
+    const std::vector<std::string> expected = {
+        "s.session:1: missing the box's k1",
+        "s.session:2: unexpected '7' (usage: box I0 J0 K0 I1 J1 K1 | box clear)",
+        "s.session:3: the box's i0 must be a whole number, not '1.5'",
+        "s.session:4: unexpected 'now' (usage: box I0 J0 K0 I1 J1 K1 | box clear)",
+    };
+    for (const std::string& line : expected) {
+        EXPECT_NE(errors.find(line), std::string::npos) << line << "\nin:\n" << errors;
+    }
+}
+
 TEST(ScriptParse, SpeedVerbsAndChecks) {
     EXPECT_EQ(action<model::SetSpeed>("speed threshold").kind, model::SpeedKind::Threshold);
     EXPECT_EQ(action<model::SetSpeed>("speed edge").kind, model::SpeedKind::Edge);

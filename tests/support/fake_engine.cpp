@@ -123,6 +123,26 @@ workflow::ProbeResult FakeEngine::measure(const glm::dvec3& voxel, double radius
     return r;
 }
 
+std::vector<double> FakeEngine::values(const model::Box& box, std::size_t most) const {
+    requireScan("values");
+    try {
+        model::validateBox(box, scan_.dims);
+    } catch (const std::invalid_argument& e) {
+        misused(std::string("values of a box that does not fit: ") + e.what());
+    }
+    std::vector<double> out;
+    for (int k = box.lo.z; k <= box.hi.z; ++k) {
+        for (int j = box.lo.y; j <= box.hi.y; ++j) {
+            for (int i = box.lo.x; i <= box.hi.x && out.size() < most; ++i) {
+                out.push_back(scan_.minValue + (scan_.maxValue - scan_.minValue) *
+                                                   static_cast<double>(i) /
+                                                   std::max(1, scan_.dims.x - 1));
+            }
+        }
+    }
+    return out;
+}
+
 void FakeEngine::paint(const model::Sphere& s, std::uint8_t value) {
     requireScan(value != 0 ? "addSeed" : "erase");
     const glm::ivec3 d = scan_.dims;
@@ -306,7 +326,7 @@ void FakeEngine::drop(workflow::SnapshotId id) {
     }
 }
 
-void FakeEngine::exportMask(const std::filesystem::path& path) {
+std::vector<std::filesystem::path> FakeEngine::exportMask(const std::filesystem::path& path) {
     requireScan("exportMask");
     if (inside_ == 0) {
         misused("exportMask without a level set");
@@ -328,6 +348,7 @@ void FakeEngine::exportMask(const std::filesystem::path& path) {
         }
     }
     exports.push_back(path);
+    return {path};
 }
 
 } // namespace steerseg::test

@@ -62,6 +62,9 @@ class FakeEngine : public workflow::Engine {
                                               double radiusMm) const override;
     [[nodiscard]] workflow::ProbeResult measure(const glm::dvec3& voxel,
                                                 double radiusMm) const override;
+    // The fake's values along i (as measure's), the box's voxels in storage order.
+    [[nodiscard]] std::vector<double> values(const model::Box& box,
+                                             std::size_t most) const override;
     void addSeed(const model::Sphere& sphere) override;
     void erase(const model::Sphere& sphere) override;
     bool addBarrier(const model::Barrier& barrier) override;
@@ -79,7 +82,7 @@ class FakeEngine : public workflow::Engine {
     workflow::SnapshotId snapshot() override;
     void restore(workflow::SnapshotId id) override;
     void drop(workflow::SnapshotId id) override;
-    void exportMask(const std::filesystem::path& path) override;
+    std::vector<std::filesystem::path> exportMask(const std::filesystem::path& path) override;
 
   private:
     struct LevelSet {

@@ -76,8 +76,9 @@ TEST(UiPanelModel, EveryMeaningfulActionIsReachableByTouch) {
     const std::size_t dismiss = indexOf<model::Dismiss>();
     const std::size_t show = indexOf<model::ShowSlices>();
     const std::size_t speed = indexOf<model::SetSpeed>();
-    const std::set<std::size_t> steering{preset, set,  nudge,   select, eraseMode,
-                                         undo,   redo, restart, show,   speed};
+    const std::size_t boxMode = indexOf<model::SetBoxMode>();
+    const std::set<std::size_t> steering{preset, set,     nudge, select, eraseMode, undo,
+                                         redo,   restart, show,  speed,  boxMode};
     const auto with = [](std::set<std::size_t> s, std::initializer_list<std::size_t> more) {
         s.insert(more);
         return s;
@@ -86,7 +87,7 @@ TEST(UiPanelModel, EveryMeaningfulActionIsReachableByTouch) {
         {State::NoScan, {load}},
         {State::Loading, {}},
         {State::Inspect,
-         {load, preset, set, nudge, select, window, undo, redo, show, proceed, speed}},
+         {load, preset, set, nudge, select, window, undo, redo, show, proceed, speed, boxMode}},
         {State::Seeding, with(steering, {run, back})},
         {State::Evolving, with(steering, {pause, proceed})},
         {State::Paused, with(steering, {run, proceed})},
@@ -229,6 +230,50 @@ TEST(UiPanelModel, ASpeedOffOnThisGpuIsLeftOutAndTheAlarmStands) {
         }
     }
     EXPECT_TRUE(modelOf(status(State::Inspect)).gpuAlarm.empty());
+}
+
+const ui::PanelButton* buttonLabelled(const ui::PanelModel& m, const std::string& label) {
+    for (const ui::PanelButton& b : m.tools) {
+        if (b.label == label) {
+            return &b;
+        }
+    }
+    return nullptr;
+}
+
+// The box (docs/ui.md): a toggle where the table lets a box be set, and Clear box once there
+// is one, enabled as the table allows it.
+TEST(UiPanelModel, TheBoxToggleAndClearBoxFollowTheTable) {
+    workflow::Status st = status(State::Inspect);
+    st.hasLevelSet = false;
+    ui::PanelModel m = modelOf(st);
+    const ui::PanelButton* toggle = buttonLabelled(m, "Box: off");
+    ASSERT_NE(toggle, nullptr);
+    EXPECT_FALSE(toggle->active);
+    EXPECT_TRUE(std::get<model::SetBoxMode>(toggle->action).on);
+    EXPECT_EQ(buttonLabelled(m, "Clear box"), nullptr) << "no box to clear";
+
+    st = status(State::Paused);
+    st.boxMode = true;
+    st.box = model::Box{{2, 3, 4}, {20, 30, 40}};
+    m = modelOf(st);
+    toggle = buttonLabelled(m, "Box: on");
+    ASSERT_NE(toggle, nullptr);
+    EXPECT_TRUE(toggle->active);
+    EXPECT_FALSE(std::get<model::SetBoxMode>(toggle->action).on);
+    EXPECT_NE(m.hint.find("Drag on a slice to draw the box"), std::string::npos) << m.hint;
+    const ui::PanelButton* clear = buttonLabelled(m, "Clear box");
+    ASSERT_NE(clear, nullptr);
+    EXPECT_TRUE(clear->enabled);
+    EXPECT_TRUE(std::holds_alternative<model::ClearBox>(clear->action));
+    EXPECT_TRUE(kinds(ui::reachableActions(m)).count(indexOf<model::ClearBox>()));
+
+    // Where the table refuses a box (review), neither is there.
+    st.state = State::Review;
+    m = modelOf(st);
+    EXPECT_EQ(buttonLabelled(m, "Box: on"), nullptr);
+    EXPECT_EQ(buttonLabelled(m, "Clear box"), nullptr);
+    EXPECT_FALSE(kinds(ui::reachableActions(m)).count(indexOf<model::ClearBox>()));
 }
 
 TEST(UiPanelModel, ClassifyShowsItsExamplesAndTools) {

@@ -62,7 +62,7 @@ class Generator {
 
     Action action() {
         // Weighted towards what an operator does most: steering, seeding, looking.
-        switch (integer(0, 47)) {
+        switch (integer(0, 50)) {
         case 0:
             return LoadScan{chance(0.05) ? "" : "scan.nii.gz"};
         case 1:
@@ -155,6 +155,20 @@ class Generator {
         }
         case 47:
             return Correct{voxel(), chance(0.7), number(-1.0, 5.0)};
+        case 48: {
+            // Corners mostly in the fake's 16 x 12 x 8, sometimes inverted or beyond it.
+            const glm::ivec3 a(integer(-1, 16), integer(-1, 12), integer(-1, 8));
+            const glm::ivec3 b(integer(-1, 16), integer(-1, 12), integer(-1, 8));
+            return SetBox{chance(0.9) ? model::Box{glm::min(a, b), glm::max(a, b)}
+                                      : model::Box{a, b}};
+        }
+        case 49:
+            return ClearBox{};
+        case 50:
+            return SetBoxMode{chance(0.5), chance(0.5)
+                                               ? std::optional<model::BoxFace>(
+                                                     model::BoxFace{integer(0, 2), chance(0.5)})
+                                               : std::nullopt};
         default:
             return Run{};
         }
@@ -198,6 +212,16 @@ std::string broken(const Workflow& wf, const FakeEngine& engine, std::size_t max
         if (engine.speedKind() != s.speedInForce ||
             (s.speed != model::SpeedKind::Classify && s.speedInForce != s.speed)) {
             return "the speed differs from the engine's or the choice";
+        }
+        if (s.box) {
+            try {
+                model::validateBox(*s.box, s.scan.dims);
+            } catch (const std::invalid_argument& why) {
+                return std::string("a box that does not fit the scan: ") + why.what();
+            }
+        }
+        if (!engine.speeds.empty() && engine.speeds.back().box != s.box) {
+            return "the box differs from the engine's";
         }
         if (s.insideExamples.size() > kMaxExamples || s.outsideExamples.size() > kMaxExamples) {
             return "more examples than kept";

@@ -63,7 +63,7 @@ TEST(WorkflowTable, RulesSayWhyExactlyWhenTheyCanRefuse) {
     }
     // Everything is accepted somewhere (else a kind would be dead vocabulary).
     Facts all;
-    all.levelSet = all.canUndo = all.canRedo = all.examples = true;
+    all.levelSet = all.canUndo = all.canRedo = all.examples = all.box = true;
     Facts auditLost = all; // acknowledge_audit has a use only then
     auditLost.auditLost = true;
     for (std::size_t k = 0; k < kActionKindCount; ++k) {

@@ -112,6 +112,7 @@ DicomSource describeSource(const std::vector<DicomHeader>& files, const Layout& 
     src.studyInstanceUid = first.studyUid;
     src.seriesInstanceUid = first.seriesUid;
     src.frameOfReferenceUid = first.frameOfReferenceUid;
+    src.modality = first.modality;
     src.sliceThickness = first.sliceThickness;
     src.inherited = first.inherited;
     for (const auto& a : first.inherited) {
