@@ -141,7 +141,8 @@ def main():
     grow = os.path.join(work, "grow.session")
     with open(grow, "w") as f:
         f.write("load %s\nwait loaded timeout 30\nset T 200\nset eps %d\nset alpha 0.7\n"
-                "seed 48 48 48 3\nrun\nwait converged timeout 120\n" % (scan, EPS))
+                "seed 48 48 48 3\nbox 4 5 6 91 90 89\nrun\nwait converged timeout 120\n"
+                % (scan, EPS))
 
     # 1. Seed, run, and kill -9 once it has autosaved a few times while evolving.
     log1 = open(os.path.join(work, "crash.log"), "w")
@@ -175,6 +176,8 @@ def main():
     if lost > INTERVAL + SLACK:
         fail("%.2f s of work lost, more than the interval %.1f s (+%.1f s)" % (lost, INTERVAL, SLACK))
     saved_meta, saved_mask = read_autosave(os.path.join(folder, newest["file"]))
+    if saved_meta["params"].get("box") != {"lo": [4, 5, 6], "hi": [91, 90, 89]}:
+        fail("the autosave holds the box %s" % saved_meta["params"].get("box"))
     previous = m["files"][-2]
     prev_meta, prev_mask = read_autosave(os.path.join(folder, previous["file"]))
     # The corrupted-newest run below works on a copy taken now, before the resume rotates.
@@ -190,7 +193,7 @@ def main():
     resume = os.path.join(work, "resume.session")
     with open(resume, "w") as f:
         f.write("wait state paused timeout 30\nexpect T == 200\nexpect eps == %d\n"
-                "expect alpha > 0.69\nexpect alpha < 0.71\nexpect seeds == 1\n"
+                "expect alpha > 0.69\nexpect alpha < 0.71\nexpect seeds == 1\nexpect has_box == 1\n"
                 "export resumed.nii\nwait state done timeout 30\n" % EPS)
     status, log, out = run_kiosk(steerseg, work, "resumed", config, resume, ["--resume"])
     if status != 0:
