@@ -147,6 +147,15 @@ void Session::setParams(const model::LevelSetParams& params) {
 void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progress) {
     validateSpeedSettings(settings, scan_.dims());
     Gpu& g = *gpu_;
+    // A box that moved alone changes only where the speed blocks: the textures and the
+    // classifier stand (each knob detent on a box's face would retrain the forest).
+    SpeedSettings sameBox = settings;
+    sameBox.box = g.speed.box;
+    if (sameBox == g.speed) {
+        g.solver.setBox(settings.box);
+        g.speed.box = settings.box;
+        return;
+    }
     const glm::ivec3 dims = scan_.dims();
     // Back to the raw scan first: the solver must not hold textures freed below, and a failure
     // half way leaves a consistent (default) speed.

@@ -108,7 +108,8 @@ class Session {
     // the classifier. Restarts the convergence clock like setParams. std::invalid_argument for
     // settings validateSpeedSettings refuses; std::runtime_error when the GPU cannot hold the
     // textures, and for classify until the voxel classifier is built in. T and eps stay in
-    // setParams. Default: the threshold speed on the raw scan.
+    // setParams. Settings equal to those in force but for the box only move the box
+    // (LevelSetSolver::setBox). Default: the threshold speed on the raw scan.
     void setSpeed(const SpeedSettings& settings, const SpeedProgress& progress = {});
     [[nodiscard]] const SpeedSettings& speed() const;
     [[nodiscard]] const SpeedTiming& speedTiming() const;

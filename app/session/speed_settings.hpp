@@ -29,6 +29,7 @@ struct SpeedSettings {
     double placeReach = 3.0;
     // Every kind: the operator's box, which the surface does not leave (model::Box).
     std::optional<model::Box> box;
+    bool operator==(const SpeedSettings&) const = default;
 };
 
 // Throws std::invalid_argument (one line) for settings no speed can run with: smoothing out of

@@ -136,6 +136,31 @@ TEST_F(SessionSpeedTest, TheClassifiedFrontStopsAtTheTextureBorder) {
     EXPECT_LT(static_cast<double>(beyond) / calmVoxels, 0.02);
 }
 
+// A box that moves alone keeps the trained classifier and the speed it evaluated where the front
+// went (each knob detent on a box's face retrained it); any other change retrains.
+TEST_F(SessionSpeedTest, ABoxAloneMovesTheBoxAndKeepsTheClassifier) {
+    session::Session s(twoTextures(), "test");
+    session::SpeedSettings classify;
+    classify.kind = model::SpeedKind::Classify;
+    classify.inside = {{{10.0F, 16.0F, 16.0F}, 6.0F}};
+    classify.outside = {{{37.0F, 16.0F, 16.0F}, 6.0F}};
+    s.setSpeed(classify);
+    s.setParams({100.0F, 30.0F, 0.7F});
+    s.addSeed({{10.0F, 16.0F, 16.0F}, 3.0F});
+    s.run({session::RunMode::Iterations, 40, 0.0F});
+    const std::uint32_t evaluated = s.speedBricksEvaluated();
+    ASSERT_GT(evaluated, 0U);
+    classify.box = model::Box{{2, 2, 2}, {20, 29, 29}};
+    int stages = 0;
+    s.setSpeed(classify, [&](std::string_view, int, int) { ++stages; });
+    EXPECT_EQ(stages, 0) << "no training for a box";
+    EXPECT_EQ(s.speedBricksEvaluated(), evaluated);
+    EXPECT_EQ(s.speed().box, classify.box);
+    classify.outside.push_back({{30.0F, 16.0F, 16.0F}, 3.0F});
+    s.setSpeed(classify, [&](std::string_view, int, int) { ++stages; });
+    EXPECT_GT(stages, 0) << "a new example trains";
+}
+
 // The slice views' speed view shows the data term the solver runs, not the threshold speed of
 // the parameters: on the two textures, the threshold (T 100, eps 60) is positive on both sides,
 // the classifier's P(inside) - P(outside) only on the calm one.
