@@ -4,6 +4,7 @@
 // (tests/tools/read_dicom_seg.py, pydicom).
 #include "exports/dicom_seg_writer.hpp"
 #include "scan/scan_reader.hpp"
+#include "support/cli_run.hpp"
 #include "support/test_data.hpp"
 
 #include <array>
@@ -137,58 +138,14 @@ std::vector<std::uint8_t> makeMask(const glm::ivec3& dims) {
     return mask;
 }
 
-struct Run {
-    int status = -1;
-    std::string output;
-};
-
-Run run(const std::string& command) {
-    Run r;
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (pipe == nullptr) {
-        return r;
-    }
-    char buffer[4096];
-    while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) {
-        r.output += buffer;
-    }
-    const int status = pclose(pipe);
-    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
-std::string quoted(const fs::path& p) {
-    return "'" + p.string() + "'";
-}
-
-// dciodvfy's report: no line may be an error; warnings are shown in the test output.
-void expectValid(const fs::path& seg) {
-    const Run r = run("/usr/bin/dciodvfy " + quoted(seg));
-    // It names the IOD it checked against on a line of its own: proof that it ran and knew the
-    // object.
-    EXPECT_NE(("\n" + r.output).find("\nSegmentation\n"), std::string::npos) << r.output;
-    std::istringstream lines(r.output);
-    std::string line;
-    int errors = 0;
-    while (std::getline(lines, line)) {
-        if (line.rfind("Error", 0) == 0) {
-            ADD_FAILURE() << "dciodvfy: " << line;
-            ++errors;
-        } else if (line.rfind("Warning", 0) == 0) {
-            std::cout << "  dciodvfy " << line << "\n";
-        }
-    }
-    EXPECT_EQ(errors, 0) << r.output;
-}
-
 // Per source SOP Instance UID, the segmented pixel indices (row * columns + column), as the
 // independent reader finds them.
 std::map<std::string, std::vector<std::size_t>> readBack(const fs::path& seg,
                                                          const fs::path& sourceDir) {
-    const Run r =
-        run("/usr/bin/python3 " +
-            quoted(fs::path(STEERSEG_SOURCE_DIR) / "tests" / "tools" / "read_dicom_seg.py") + " " +
-            quoted(seg) + " " + quoted(sourceDir));
+    const ShellRun r = runShell(
+        "/usr/bin/python3 " +
+        shellQuoted(fs::path(STEERSEG_SOURCE_DIR) / "tests" / "tools" / "read_dicom_seg.py") + " " +
+        shellQuoted(seg) + " " + shellQuoted(sourceDir));
     EXPECT_EQ(r.status, 0) << r.output;
     std::map<std::string, std::vector<std::size_t>> out;
     std::istringstream lines(r.output);
@@ -254,7 +211,7 @@ void roundTrip(const std::string& name, const SeriesSpec& spec) {
     options.category = exports::kCodeMorphologicallyAbnormalStructure;
     options.type = exports::kCodeMass;
     exports::writeDicomSeg(seg, g, mask, scan.dicom.get(), options);
-    expectValid(seg);
+    expectDciodvfyValid(seg, "Segmentation");
     const auto found = readBack(seg, source);
     const auto want = expected(g, mask, slices);
     EXPECT_EQ(found.size(), want.size());
@@ -353,7 +310,7 @@ TEST(DicomSeg, EnhancedMultiFrameSource) {
     const std::vector<std::uint8_t> mask = makeMask(g.dims);
     const fs::path seg = dir / "seg.dcm";
     exports::writeDicomSeg(seg, g, mask, scan.dicom.get());
-    expectValid(seg);
+    expectDciodvfyValid(seg, "Segmentation");
     std::vector<SourceSlice> slices;
     for (std::size_t f = 0; f < z.size(); ++f) {
         slices.push_back({instance + ":" + std::to_string(f + 1), {-3.0, 5.0, z[f]}});
@@ -422,7 +379,7 @@ void realRoundTrip(const fs::path& source, const std::string& name) {
     const fs::path dir = tempDir("seg-real-" + name);
     const fs::path seg = dir / "seg.dcm";
     exports::writeDicomSeg(seg, g, mask, scan.dicom.get());
-    expectValid(seg);
+    expectDciodvfyValid(seg, "Segmentation");
     const auto found = readBack(seg, source);
     std::size_t frames = 0;
     for (int k = 0; k < g.dims.z; ++k) {

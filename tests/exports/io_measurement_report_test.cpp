@@ -114,51 +114,12 @@ std::vector<std::uint8_t> ellipsoid(const Geometry& g, const glm::dvec3& centreI
     return mask;
 }
 
-struct Shell {
-    int status = -1;
-    std::string output;
-};
-
-Shell run(const std::string& command) {
-    Shell r;
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (pipe == nullptr) {
-        return r;
-    }
-    char buffer[4096];
-    while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) {
-        r.output += buffer;
-    }
-    const int status = pclose(pipe);
-    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
-std::string quoted(const fs::path& p) {
-    return "'" + p.string() + "'";
-}
-
-// dciodvfy knows the object as an Enhanced SR and reports no error.
-void expectValid(const fs::path& report) {
-    const Shell r = run("/usr/bin/dciodvfy " + quoted(report));
-    EXPECT_NE(("\n" + r.output).find("\nEnhancedSR\n"), std::string::npos) << r.output;
-    std::istringstream lines(r.output);
-    std::string line;
-    while (std::getline(lines, line)) {
-        if (line.rfind("Error", 0) == 0) {
-            ADD_FAILURE() << "dciodvfy: " << line;
-        } else if (line.rfind("Warning", 0) == 0) {
-            std::cout << "  dciodvfy " << line << "\n";
-        }
-    }
-}
-
 // What the independent reader found: tab-separated words per line, by their first word.
 std::multimap<std::string, std::vector<std::string>> readReport(const fs::path& report) {
-    const Shell r = run(
-        "/usr/bin/python3 " +
-        quoted(fs::path(STEERSEG_SOURCE_DIR) / "tests" / "tools" / "read_measurement_report.py") +
-        " " + quoted(report));
+    const ShellRun r = runShell("/usr/bin/python3 " +
+                                shellQuoted(fs::path(STEERSEG_SOURCE_DIR) / "tests" / "tools" /
+                                            "read_measurement_report.py") +
+                                " " + shellQuoted(report));
     EXPECT_EQ(r.status, 0) << r.output;
     std::multimap<std::string, std::vector<std::string>> out;
     std::istringstream lines(r.output);
@@ -268,7 +229,7 @@ TEST(MeasurementReport, ExportWritesItBesideTheSegWithMeasuresFigures) {
     EXPECT_EQ(nlohmann::json::parse(exported.out)["measurement_report"], report.string());
     ASSERT_TRUE(fs::exists(report));
 
-    expectValid(report);
+    expectDciodvfyValid(report, "EnhancedSR");
     const auto r = readReport(report);
     const auto header = r.find("header");
     ASSERT_NE(header, r.end());
@@ -295,7 +256,7 @@ TEST(MeasurementReport, ExportWritesItBesideTheSegWithMeasuresFigures) {
     expectFiguresOf(m, numsOf(r, "1"));
 
     // dsrdump (DCMTK) reads the same document and shows the same figures.
-    const Shell dump = run("/usr/bin/dsrdump " + quoted(report));
+    const ShellRun dump = runShell("/usr/bin/dsrdump " + shellQuoted(report));
     EXPECT_EQ(dump.status, 0) << dump.output;
     EXPECT_NEAR(dsrdumpValue(dump.output, "Volume"), m["volume_ml"].get<double>(),
                 1e-6 * m["volume_ml"].get<double>());
@@ -333,7 +294,7 @@ TEST(MeasurementReport, OneGroupPerSegment) {
     segments[1].measurements = measureMask(scan.volume, b);
     const fs::path report = dir / "seg.sr.dcm";
     exports::writeMeasurementReport(report, *scan.dicom, seg, segments);
-    expectValid(report);
+    expectDciodvfyValid(report, "EnhancedSR");
     const auto r = readReport(report);
     ASSERT_EQ(r.count("group"), 2U);
     auto it = r.find("group");
@@ -403,7 +364,7 @@ TEST(MeasurementReport, RealLungCtGtv) {
                                         mask.string() + " --output " + seg.string());
     ASSERT_EQ(exported.exitCode, 0) << exported.err;
     const fs::path report = dir / "gtv.sr.dcm";
-    expectValid(report);
+    expectDciodvfyValid(report, "EnhancedSR");
     const auto r = readReport(report);
     ASSERT_EQ(r.count("group"), 1U);
     EXPECT_EQ(r.find("group")->second[3], sopInstanceOf(seg));

@@ -3,7 +3,10 @@
 #include "support/test_data.hpp"
 
 #include <atomic>
+#include <cstdio>
 #include <fstream>
+#include <gtest/gtest.h>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 #include <sys/wait.h>
@@ -38,6 +41,39 @@ CliRun runSteerseg(const std::string& arguments) {
     r.err = slurp(dir / "err");
     std::filesystem::remove_all(dir);
     return r;
+}
+
+ShellRun runShell(const std::string& command) {
+    ShellRun r;
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    if (pipe == nullptr) {
+        return r;
+    }
+    char buffer[4096];
+    while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) {
+        r.output += buffer;
+    }
+    const int status = pclose(pipe);
+    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+std::string shellQuoted(const std::filesystem::path& path) {
+    return "'" + path.string() + "'";
+}
+
+void expectDciodvfyValid(const std::filesystem::path& file, const std::string& iod) {
+    const ShellRun r = runShell("/usr/bin/dciodvfy " + shellQuoted(file));
+    EXPECT_NE(("\n" + r.output).find("\n" + iod + "\n"), std::string::npos) << r.output;
+    std::istringstream lines(r.output);
+    std::string line;
+    while (std::getline(lines, line)) {
+        if (line.rfind("Error", 0) == 0) {
+            ADD_FAILURE() << "dciodvfy: " << line;
+        } else if (line.rfind("Warning", 0) == 0) {
+            std::cout << "  dciodvfy " << line << "\n";
+        }
+    }
 }
 
 } // namespace steerseg::test
