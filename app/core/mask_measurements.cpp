@@ -3,6 +3,7 @@
 // voxel centres need only the slices' hulls, never all pairs of voxels.
 #include "core/mask_measurements.hpp"
 
+#include "core/mask_field.hpp"
 #include "core/surface_mesh.hpp"
 
 #include <algorithm>

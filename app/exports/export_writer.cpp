@@ -1,5 +1,6 @@
 #include "exports/export_writer.hpp"
 
+#include "core/mask_field.hpp"
 #include "core/mask_measurements.hpp"
 #include "core/surface_mesh.hpp"
 #include "exports/dicom_seg_writer.hpp"

@@ -1,6 +1,7 @@
 // Known answers for core/mask_measurements on anisotropic grids: digitised spheres, ellipsoids
 // and boxes against their analytic sizes, the diameters against all pairs of voxel centres,
 // the intensity figures exactly, and the axial slices of a sagittal-acquired scan.
+#include "core/mask_field.hpp"
 #include "core/mask_measurements.hpp"
 #include "core/surface_mesh.hpp"
 #include "render/slice_frame.hpp"

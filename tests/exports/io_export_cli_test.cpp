@@ -80,7 +80,7 @@ TEST(CliExport, SurfaceMeshesSitOnTheMaskInPatientCoordinates) {
         EXPECT_EQ(j.at("world"), "LPS");
         const double surface = j.at("surface_volume_mm3");
         const double voxels = j.at("mask_volume_mm3");
-        // The mask's smooth surface (core/surface_mesh maskToField) rounds off inside the
+        // The mask's smooth surface (core/mask_field maskToField) rounds off inside the
         // boundary voxels: a few % under the voxel count for this 9 mm sphere, less for larger.
         EXPECT_LT(std::abs(surface - voxels) / voxels, 0.06) << surface << " vs " << voxels;
         EXPECT_GT(j.at("triangles").get<std::size_t>(), 100u);

@@ -1,3 +1,4 @@
+#include "core/mask_field.hpp"
 #include "core/surface_mesh.hpp"
 #include "exports/mesh_writer.hpp"
 #include "scan/scan_reader.hpp"
