@@ -6,7 +6,10 @@
 // that has stopped with sleeping on and off (voxels visited per iteration beside iterations/s).
 // --readback WxHxD times reading the level set back as a mask (the kiosk's autosave, exports) on
 // a grid of that size, against the dense phi and its sign, in the same run.
+// --small-front-only 1 prints the GL-calls table alone (issue 50's small front), for timing it
+// against another build in alternation within the same minutes.
 //   solver_bench [--size N] [--iterations N] [--dense-size N] [--readback WxHxD]
+//                [--small-front-only 1]
 #include "gpu/gl_counts.hpp"
 #include "gpu/gpu_info.hpp"
 #include "platform/egl/offscreen_context.hpp"
@@ -136,6 +139,7 @@ int main(int argc, char** argv) {
     const int size = argOr(argc, argv, "--size", 128);
     const int iterations = argOr(argc, argv, "--iterations", 32);
     const int denseSize = argOr(argc, argv, "--dense-size", 256);
+    const bool smallFrontOnly = argOr(argc, argv, "--small-front-only", 0) != 0;
     auto context = platform::createOffscreenContext();
     std::printf("renderer: %s, volume %d^3, %d timed iterations each\n\n",
                 gpu::queryGpuInfo().renderer.c_str(), size, iterations);
@@ -144,6 +148,9 @@ int main(int argc, char** argv) {
     std::printf("| brick | active bricks | active voxels | iterations/s | voxel-updates/s (M) |\n");
     std::printf("|---|---|---|---|---|\n");
     for (const int b : {4, 8, 16}) {
+        if (smallFrontOnly) {
+            break;
+        }
         model::SolverOptions o;
         o.brickSize = b;
         o.sleep = false;
@@ -166,6 +173,9 @@ int main(int argc, char** argv) {
         std::printf("| %u | %.1f | %.2f | %.2f | %.3f |\n", m.stats.activeBricks,
                     m.iterationsPerSecond, per(m.calls.dispatches), per(m.calls.barriers),
                     per(m.calls.hostSyncs()));
+    }
+    if (smallFrontOnly) {
+        return 0;
     }
 
     std::printf("\n## Sparse vs dense (brick %d)\n\n", model::defaultBrickSize());

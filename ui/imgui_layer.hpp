@@ -46,6 +46,8 @@ class ImGuiLayer {
     // Whether ImGui has the pointer (over the panel, or holding one of its widgets): gestures
     // that start then are the panel's, not the views'.
     [[nodiscard]] bool wantsPointer() const;
+    // Presses or releases fed that ImGui has yet to see (it takes one a frame).
+    [[nodiscard]] bool eventsPending() const { return !pending_.empty(); }
 
     [[nodiscard]] double touchPx() const { return touchPx_; }
     [[nodiscard]] double fontPx() const { return fontPx_; }

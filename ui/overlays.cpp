@@ -2,8 +2,10 @@
 
 #include "ui/view_caption.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <imgui.h>
 #include <optional>
 #include <string>
@@ -109,6 +111,49 @@ void wireBox(ImDrawList* list, const ScreenState::VolumeView& view, const model:
 }
 
 } // namespace
+
+void drawMeasuredDiameters(const ImGuiLayer& layer, const ScreenState& screen,
+                           const workflow::Status& status) {
+    if (status.measurements.empty()) {
+        return;
+    }
+    const auto width = static_cast<float>(0.05 * layer.touchPx());
+    ImDrawList* list = ImGui::GetForegroundDrawList();
+    for (const std::optional<SliceView>* view : {&screen.slice1, &screen.slice2}) {
+        if (!*view) {
+            continue;
+        }
+        const SliceView& v = **view;
+        const Rect& r = v.rect;
+        list->PushClipRect(ImVec2(static_cast<float>(r.x), static_cast<float>(r.y)),
+                           ImVec2(static_cast<float>(r.x + r.w), static_cast<float>(r.y + r.h)),
+                           true);
+        for (const workflow::StructureMeasured& m : status.measurements) {
+            const AxialDiameters& a = m.measured.axial;
+            if (!m.visible || v.frame.sliceAxis != a.sliceAxis || v.frame.slice != a.slice) {
+                continue;
+            }
+            const auto byte = [](double c) {
+                return static_cast<int>(std::clamp(c, 0.0, 1.0) * 255);
+            };
+            const ImU32 colour =
+                IM_COL32(byte(m.colour.r), byte(m.colour.g), byte(m.colour.b), 255);
+            int n = 0;
+            for (const MeasuredLine* line : {&a.longest, &a.perpendicular}) {
+                const glm::dvec2 p = screenOfVoxel(v, line->index[0]);
+                const glm::dvec2 q = screenOfVoxel(v, line->index[1]);
+                const ImVec2 from(static_cast<float>(p.x), static_cast<float>(p.y));
+                const ImVec2 to(static_cast<float>(q.x), static_cast<float>(q.y));
+                list->AddLine(from, to, colour, n == 0 ? width : 0.6F * width);
+                char text[32];
+                std::snprintf(text, sizeof text, "%.1f mm", line->lengthMm);
+                list->AddText(ImVec2(0.5F * (from.x + to.x), 0.5F * (from.y + to.y)), colour, text);
+                ++n;
+            }
+        }
+        list->PopClipRect();
+    }
+}
 
 void drawBoxes(const ImGuiLayer& layer, const ScreenState& screen, const workflow::Status& status,
                const std::optional<model::Box>& draft) {

@@ -27,4 +27,10 @@ void drawStrokePath(const ImGuiLayer& layer, const std::vector<glm::dvec2>& path
 void drawBoxes(const ImGuiLayer& layer, const ScreenState& screen, const workflow::Status& status,
                const std::optional<model::Box>& draft);
 
+// Review: each visible structure's RECIST pair (Status::measurements) on a slice view that shows
+// the axial slice it lies on, in the structure's colour, with its lengths: the long axis solid,
+// the perpendicular one thinner.
+void drawMeasuredDiameters(const ImGuiLayer& layer, const ScreenState& screen,
+                           const workflow::Status& status);
+
 } // namespace steerseg::ui

@@ -19,11 +19,17 @@ const ImVec4 kBannerError(0.70F, 0.14F, 0.12F, 1.0F);
 const ImVec4 kErrorText(1.0F, 0.45F, 0.40F, 1.0F);
 const ImVec4 kNav(0.18F, 0.45F, 0.26F, 1.0F); // the workflow's next and previous step
 
+// A swatch's text: dark on a light colour, white on a dark one.
+ImVec4 textOn(const glm::dvec3& c) {
+    const double luma = 0.299 * c.r + 0.587 * c.g + 0.114 * c.b;
+    return luma > 0.55 ? ImVec4(0.05F, 0.05F, 0.05F, 1.0F) : ImVec4(1.0F, 1.0F, 1.0F, 1.0F);
+}
+
 class Drawer {
   public:
     Drawer(const ImGuiLayer& layer, std::map<std::string, Rect, std::less<>>& rects,
-           std::vector<Action>& actions)
-        : layer_(layer), rects_(rects), actions_(actions),
+           std::vector<Action>& actions, std::vector<PanelButton>& completions)
+        : layer_(layer), rects_(rects), actions_(actions), completions_(completions),
           touch_(static_cast<float>(layer.touchPx())) {}
 
     void banner(const PanelModel& m, model::State state) {
@@ -114,6 +120,21 @@ class Drawer {
         ImGui::EndTable();
     }
 
+    // One row a structure: its name, then its figures.
+    void measurements(const std::vector<PanelModel::MeasurementRow>& rows) {
+        if (!ImGui::BeginTable("##measurements", 5, ImGuiTableFlags_RowBg)) {
+            return;
+        }
+        for (const PanelModel::MeasurementRow& r : rows) {
+            ImGui::TableNextRow();
+            for (const std::string* cell : {&r.name, &r.volume, &r.axes, &r.longest, &r.values}) {
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(cell->c_str());
+            }
+        }
+        ImGui::EndTable();
+    }
+
     // [name] [-] [slider] [+]: the name selects the parameter for the knob.
     void param(const ParamRow& row) {
         const std::string id = paramId(row.param);
@@ -168,14 +189,16 @@ class Drawer {
         }
     }
 
-    // Buttons in rows of up to `perRow`, each at least a touch target wide.
-    void grid(const std::vector<PanelButton>& buttons, int perRow, const ImVec4* colour = nullptr) {
+    // Buttons in rows of up to `perRow`, each at least a touch target wide. Whether one was
+    // pressed.
+    bool grid(const std::vector<PanelButton>& buttons, int perRow, const ImVec4* colour = nullptr) {
         const float sp = ImGui::GetStyle().ItemSpacing.x;
         const float avail = ImGui::GetContentRegionAvail().x;
         const int fit = std::max(1, static_cast<int>((avail + sp) / (touch_ + sp)));
         const int n = std::max(1, std::min(perRow, fit));
         const float w =
             std::max(touch_, (avail - sp * static_cast<float>(n - 1)) / static_cast<float>(n));
+        bool pressed = false;
         for (std::size_t i = 0; i < buttons.size(); ++i) {
             if (i % static_cast<std::size_t>(n) != 0) {
                 ImGui::SameLine();
@@ -183,11 +206,12 @@ class Drawer {
             if (colour != nullptr) {
                 ImGui::PushStyleColor(ImGuiCol_Button, *colour);
             }
-            button(buttons[i], ImVec2(w, touch_));
+            pressed = button(buttons[i], ImVec2(w, touch_)) || pressed;
             if (colour != nullptr) {
                 ImGui::PopStyleColor();
             }
         }
+        return pressed;
     }
 
     void heading(const char* text) {
@@ -223,25 +247,52 @@ class Drawer {
 
     bool button(const PanelButton& b, const ImVec2& size, const std::string& key = {}) {
         ImGui::BeginDisabled(!b.enabled);
-        if (b.active) {
+        int colours = 0;
+        int vars = 0;
+        if (b.swatch) {
+            // A colour: the button is that colour; the highlighted one (the structure's own,
+            // an open palette) is framed.
+            const ImVec4 c(static_cast<float>(b.swatch->r), static_cast<float>(b.swatch->g),
+                           static_cast<float>(b.swatch->b), 1.0F);
+            ImGui::PushStyleColor(ImGuiCol_Button, c);
+            ImGui::PushStyleColor(ImGuiCol_ButtonHovered, c);
+            ImGui::PushStyleColor(ImGuiCol_ButtonActive, c);
+            ImGui::PushStyleColor(ImGuiCol_Text, textOn(*b.swatch));
+            colours = 4;
+            if (b.active) {
+                ImGui::PushStyleColor(ImGuiCol_Border, ImVec4(1.0F, 1.0F, 1.0F, 1.0F));
+                ImGui::PushStyleVar(ImGuiStyleVar_FrameBorderSize, 0.1F * touch_);
+                ++colours;
+                ++vars;
+            }
+        } else if (b.active) {
             ImGui::PushStyleColor(ImGuiCol_Button, kActive);
             ImGui::PushStyleColor(ImGuiCol_ButtonHovered, kActive);
+            colours = 2;
         }
         const bool pressed = ImGui::Button(b.label.c_str(), size);
-        if (b.active) {
-            ImGui::PopStyleColor(2);
+        if (vars > 0) {
+            ImGui::PopStyleVar(vars);
+        }
+        if (colours > 0) {
+            ImGui::PopStyleColor(colours);
         }
         ImGui::EndDisabled();
         record(key.empty() ? b.label : key);
         if (pressed && b.enabled) {
-            actions_.push_back(b.action);
+            if (b.completion == Completion::None) {
+                actions_.push_back(b.action);
+            } else {
+                completions_.push_back(b); // the panel opens what completes it
+            }
         }
-        return pressed;
+        return pressed && b.enabled;
     }
 
     const ImGuiLayer& layer_;
     std::map<std::string, Rect, std::less<>>& rects_;
     std::vector<Action>& actions_;
+    std::vector<PanelButton>& completions_;
     float touch_;
 };
 
@@ -251,10 +302,13 @@ std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status&
                                 const Rect& rect, const std::vector<std::string>& scans) {
     std::vector<Action> actions;
     rects_.clear();
+    editing_.follow(status);
     if (rect.empty()) {
         return actions;
     }
-    const PanelModel model = buildPanelModel(status, scans);
+    const PanelModel model =
+        buildPanelModel(status, scans, PanelEditors{editing_.renameOpen(), editing_.coloursOpen()});
+    std::vector<PanelButton> completions;
     ImGui::SetNextWindowPos(ImVec2(static_cast<float>(rect.x), static_cast<float>(rect.y)));
     ImGui::SetNextWindowSize(ImVec2(static_cast<float>(rect.w), static_cast<float>(rect.h)));
     constexpr ImGuiWindowFlags flags =
@@ -269,7 +323,7 @@ std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status&
             ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
             ImGui::SetScrollY(ImGui::GetScrollY() - ImGui::GetIO().MouseDelta.y);
         }
-        Drawer d(layer, rects_, actions);
+        Drawer d(layer, rects_, actions, completions);
         // A wide panel (below the views on a portrait screen) puts the state and readouts
         // beside the controls instead of scrolling them away.
         const bool twoColumns =
@@ -322,6 +376,19 @@ std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status&
             d.heading("Window");
             d.window(*model.window);
         }
+        if (!model.measurements.empty()) {
+            d.heading("Measurements (axial long x short axis, longest 3D)");
+            d.measurements(model.measurements);
+        }
+        if (!model.structures.empty()) {
+            d.heading("Structures (tap one to steer it)");
+            d.grid(model.structures, 3);
+            d.grid(model.structureTools, 2);
+            if (d.grid(model.colours, 4)) {
+                editing_.closeColours(); // one tap picks
+            }
+            d.grid(model.newStructures, 2);
+        }
         if (!model.views.empty()) {
             d.heading("Contour view / speed view");
             d.grid(model.views, 3);
@@ -349,6 +416,34 @@ std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status&
         }
     }
     ImGui::End();
+    for (const PanelButton& b : completions) {
+        const auto* edit = std::get_if<model::EditStructure>(&b.action);
+        if (edit == nullptr) {
+            continue;
+        }
+        if (b.completion == Completion::Name) {
+            editing_.openRename(edit->name);
+        } else if (b.completion == Completion::Colour) {
+            editing_.toggleColours(edit->name);
+        }
+    }
+    return actions;
+}
+
+std::vector<Action> Panel::drawKeyboard(const ImGuiLayer& layer, const Rect& area) {
+    std::vector<Action> actions;
+    keyboard_ = {};
+    const OnscreenKeyboard* keyboard = editing_.keyboard();
+    if (keyboard == nullptr) {
+        return actions;
+    }
+    keyboard_ = ui::drawKeyboard(
+        layer, *keyboard, {"Rename '" + editing_.renaming() + "'", editing_.problem()}, area);
+    if (keyboard_.pressed) {
+        if (std::optional<Action> rename = editing_.press(*keyboard_.pressed)) {
+            actions.push_back(std::move(*rename));
+        }
+    }
     return actions;
 }
 

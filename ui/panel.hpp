@@ -6,7 +6,9 @@
 // touches emitted this frame; the caller hands them to the workflow.
 #include "ui/imgui_layer.hpp"
 #include "ui/layout.hpp"
+#include "ui/onscreen_keyboard_view.hpp"
 #include "ui/panel_model.hpp"
+#include "ui/structure_editing.hpp"
 
 #include <map>
 #include <optional>
@@ -20,6 +22,15 @@ class Panel {
   public:
     std::vector<model::Action> draw(const ImGuiLayer& layer, const workflow::Status& status,
                                     const Rect& rect, const std::vector<std::string>& scans);
+    // The on-screen keyboard while a structure is being renamed, across the bottom of `area`
+    // and over it (after draw, in the same frame); returns the rename its OK gives. Empty
+    // and nothing drawn while no keyboard is open.
+    std::vector<model::Action> drawKeyboard(const ImGuiLayer& layer, const Rect& area);
+    [[nodiscard]] bool keyboardOpen() const { return editing_.renameOpen(); }
+    // Where the keyboard was drawn last frame, and each of its keys by keyName (empty while
+    // it is closed).
+    [[nodiscard]] const KeyboardFrame& keyboardFrame() const { return keyboard_; }
+    [[nodiscard]] const StructureEditing& editing() const { return editing_; }
 
     // Where a widget was drawn last frame, by its label as the model names it ("Run",
     // "Seed##proceed", "+##T" for a parameter's plus button): for tests and scripted taps.
@@ -30,6 +41,8 @@ class Panel {
 
   private:
     std::map<std::string, Rect, std::less<>> rects_;
+    StructureEditing editing_;
+    KeyboardFrame keyboard_;
 };
 
 } // namespace steerseg::ui

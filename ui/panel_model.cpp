@@ -1,6 +1,7 @@
 #include "ui/panel_model.hpp"
 
 #include "model/speed_kind.hpp"
+#include "model/structure.hpp"
 #include "workflow/transition_table.hpp"
 
 #include <algorithm>
@@ -149,9 +150,86 @@ void addSpeed(const workflow::Status& st, PanelModel& m) {
     }
 }
 
+// The active structure's Rename and Colour, and the palette's swatches while they are open.
+// The buttons only open the panel's editors; what they complete goes to the workflow, which
+// decides (a name it refuses keeps the keyboard open with the reason).
+void addStructureTools(const workflow::StructureRow& active, bool can, const PanelEditors& open,
+                       PanelModel& m) {
+    const std::string& name = active.info.name;
+    m.structureTools.push_back(
+        {"Rename##structure",
+         model::EditStructure{model::StructureOp::Rename, name, name, glm::dvec3(0.0)}, open.rename,
+         can, Completion::Name});
+    m.structureTools.push_back(
+        {"Colour##structure",
+         model::EditStructure{model::StructureOp::Recolour, name, {}, active.info.colour},
+         open.colours, can, Completion::Colour, active.info.colour});
+    if (!open.colours) {
+        return;
+    }
+    // The swatches are the palette's whole cycle (paletteColour starts again after it).
+    std::size_t swatches = 1;
+    while (swatches < model::kMaxStructures &&
+           model::paletteColour(swatches) != model::paletteColour(0)) {
+        ++swatches;
+    }
+    for (std::size_t i = 0; i < swatches; ++i) {
+        const glm::dvec3 colour = model::paletteColour(i);
+        m.colours.push_back({"##colour" + std::to_string(i),
+                             model::EditStructure{model::StructureOp::Recolour, name, {}, colour},
+                             colour == active.info.colour, can, Completion::None, colour});
+    }
+}
+
+// The structures' list (docs/structures.md): touch alone adds, selects, hides, deletes, renames
+// (the on-screen keyboard) and recolours (the palette).
+void addStructures(const workflow::Status& st, const PanelEditors& open, PanelModel& m) {
+    const bool can = st.allowed.contains(ActionKind::EditStructure);
+    const auto edit = [](model::StructureOp op, const std::string& name) {
+        return model::EditStructure{op, name, {}, glm::dvec3(0.0)};
+    };
+    for (std::size_t i = 0; i < st.structures.size(); ++i) {
+        const workflow::StructureRow& r = st.structures[i];
+        const std::string id = "##structure" + std::to_string(i);
+        char volume[32];
+        std::snprintf(volume, sizeof volume, "%.1f ml", r.volumeMl);
+        m.structures.push_back(
+            {r.info.name + (r.empty ? "  (empty)" : "  " + std::string(volume)) + id,
+             edit(model::StructureOp::Select, r.info.name), r.active, can && !r.active});
+        m.structures.push_back(
+            {(r.info.visible ? "Hide" : "Show") + id,
+             edit(r.info.visible ? model::StructureOp::Hide : model::StructureOp::Show,
+                  r.info.name),
+             !r.info.visible, can});
+        m.structures.push_back({"Delete" + id, edit(model::StructureOp::Delete, r.info.name), false,
+                                can && st.structures.size() > 1});
+        if (r.active) {
+            addStructureTools(r, can, open, m);
+        }
+    }
+    const auto taken = [&](const std::string& name) {
+        return std::any_of(st.structures.begin(), st.structures.end(),
+                           [&](const workflow::StructureRow& r) { return r.info.name == name; });
+    };
+    for (const std::string& kind : st.structureKinds) {
+        if (!taken(kind)) {
+            m.newStructures.push_back(
+                {"+ " + kind + "##new", edit(model::StructureOp::Add, kind), false, can});
+        }
+    }
+    std::size_t n = st.structures.size() + 1;
+    while (taken("Structure " + std::to_string(n))) {
+        ++n;
+    }
+    const std::string free = "Structure " + std::to_string(n);
+    m.newStructures.push_back(
+        {"+ " + free + "##new", edit(model::StructureOp::Add, free), false, can});
+}
+
 } // namespace
 
-PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::string>& scans) {
+PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::string>& scans,
+                           const PanelEditors& editors) {
     PanelModel m;
     for (const workflow::DeviceLink& d : st.devices) {
         m.devices.push_back({d.name, d.connected ? "connected" : "disconnected"});
@@ -279,6 +357,24 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
         m.tools.push_back({"Export again", model::Export{}});
     }
 
+    if (offered.contains(ActionKind::EditStructure)) {
+        addStructures(st, editors, m);
+    }
+    for (const workflow::StructureMeasured& measured : st.measurements) {
+        const MaskMeasurements& f = measured.measured;
+        char volume[32];
+        char axes[48];
+        char longest[32];
+        char values[64];
+        std::snprintf(volume, sizeof volume, "%.1f ml", f.volumeMl);
+        std::snprintf(axes, sizeof axes, "%.1f x %.1f mm", f.axial.longest.lengthMm,
+                      f.axial.perpendicular.lengthMm);
+        std::snprintf(longest, sizeof longest, "%.1f mm", f.longest3d.lengthMm);
+        std::snprintf(values, sizeof values, "%.0f +- %.0f %s", f.intensity.mean, f.intensity.sd,
+                      st.scan.units.c_str());
+        m.measurements.push_back({measured.name, volume, axes, longest, values});
+    }
+
     // The error and export screens keep to their message.
     if (offered.contains(ActionKind::ShowSlices) && s != State::Exporting && s != State::Error) {
         for (int view = 0; view < 2; ++view) {
@@ -314,10 +410,11 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
 
 std::vector<Action> reachableActions(const PanelModel& m) {
     std::vector<Action> out;
-    for (const auto* list : {&m.scans, &m.received, &m.presets, &m.speeds, &m.exampleTools,
-                             &m.tools, &m.views, &m.nav}) {
+    for (const auto* list :
+         {&m.scans, &m.received, &m.presets, &m.speeds, &m.exampleTools, &m.tools, &m.views,
+          &m.structures, &m.newStructures, &m.structureTools, &m.colours, &m.nav}) {
         for (const PanelButton& b : *list) {
-            if (b.enabled) {
+            if (b.enabled && b.completion == Completion::None) {
                 out.push_back(b.action);
             }
         }

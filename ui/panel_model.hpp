@@ -7,17 +7,31 @@
 #include "model/action.hpp"
 #include "workflow/status.hpp"
 
+#include <glm/vec3.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace steerseg::ui {
 
+// What a button asks of the operator before its action can go: nothing (a tap sends it), a
+// name typed on the on-screen keyboard, or a colour tapped among the swatches. The action is
+// then only the pattern (the structure it names) the panel completes and sends from there.
+enum class Completion { None, Name, Colour };
+
 struct PanelButton {
     std::string label; // unique within the panel (it is the widget's id)
     model::Action action;
     bool active = false; // drawn highlighted (a toggle that is on, the selected preset)
     bool enabled = true; // drawn greyed out and inert (Undo with nothing to undo)
+    Completion completion = Completion::None;
+    std::optional<glm::dvec3> swatch = std::nullopt; // drawn in this colour (r g b within 0..1)
+};
+
+// The panel's own editors that change what it offers (ui/structure_editing).
+struct PanelEditors {
+    bool rename = false;  // the keyboard is open for the active structure's name
+    bool colours = false; // the palette's swatches are shown for the active structure
 };
 
 // A steerable parameter: tapping its name selects it for the knob (SelectParam), -/+ nudge it
@@ -73,15 +87,35 @@ struct PanelModel {
     // Run/Pause, erase mode, box mode and Clear box, Undo, Redo, Restart, Export ...
     std::vector<PanelButton> tools;
     std::vector<PanelButton> views; // ShowSlices
-    std::vector<PanelButton> nav;   // Back, Proceed (labelled for the state), Dismiss
-    std::vector<Readout> devices;   // the controllers: name, "connected" or "disconnected"
+    // The session's structures, three buttons each: select it (its name and volume; the active
+    // one highlighted), hide or show it, delete it. Then one button per site structure not in
+    // the session yet, and a free "Structure N": add it.
+    std::vector<PanelButton> structures;
+    std::vector<PanelButton> newStructures;
+    // The active structure's Rename (Completion::Name) and Colour (Completion::Colour, drawn in
+    // its colour); while the swatches are open, one Recolour a palette colour.
+    std::vector<PanelButton> structureTools;
+    std::vector<PanelButton> colours;
+    // Review: each structure's figures (docs/measurements.md), formatted for the table.
+    struct MeasurementRow {
+        std::string name;
+        std::string volume;  // "1530.2 ml"
+        std::string axes;    // RECIST long x short axis on the axial slice: "112.4 x 80.1 mm"
+        std::string longest; // the longest 3D diameter: "140.3 mm"
+        std::string values;  // mean +- sd in the scan's units: "54 +- 12 HU"
+    };
+    std::vector<MeasurementRow> measurements;
+    std::vector<PanelButton> nav; // Back, Proceed (labelled for the state), Dismiss
+    std::vector<Readout> devices; // the controllers: name, "connected" or "disconnected"
 };
 
 // `scans`: what the Load list offers ("builtin:sample" and the paths the kiosk passes in).
-PanelModel buildPanelModel(const workflow::Status& status, const std::vector<std::string>& scans);
+PanelModel buildPanelModel(const workflow::Status& status, const std::vector<std::string>& scans,
+                           const PanelEditors& editors = {});
 
-// Every action a touch on the panel can emit (enabled buttons, and for each parameter row
-// SelectParam, NudgeParam -1/+1 and SetParam at its ends; SetWindow for the window row).
+// Every action a touch on the panel can emit (enabled buttons that need no completion, and for
+// each parameter row SelectParam, NudgeParam -1/+1 and SetParam at its ends; SetWindow for the
+// window row).
 std::vector<model::Action> reachableActions(const PanelModel& model);
 
 // The operator's words for a state ("Seeding") and a parameter ("T", "brush"), and the label of the

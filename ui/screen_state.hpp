@@ -6,7 +6,9 @@
 #include "render/camera.hpp"
 #include "ui/layout.hpp"
 #include "ui/slice_mapping.hpp"
+#include "workflow/structures.hpp"
 
+#include <cstdint>
 #include <optional>
 
 namespace steerseg::ui {
@@ -24,6 +26,10 @@ struct ScreenState {
         Rect rect;                // where it is shown
     };
     std::optional<VolumeView> view3d;
+    // The session's structures (Workflow::structureList), the ones not steered drawn as
+    // contours; null: none. Their version tells when what was drawn of them is stale.
+    const workflow::StructureList* structures = nullptr;
+    std::uint64_t structuresVersion = 0;
 };
 
 } // namespace steerseg::ui

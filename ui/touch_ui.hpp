@@ -6,12 +6,15 @@
 //   for (event : events) ui.feed(rotation.toLogical(event), screen, status, actions);
 //   <render the views into screen's rects>
 //   append(actions, ui.drawFrame(logicalSize, now, screen, status));
+// While the panel's on-screen keyboard is open (renaming a structure) it lies across the bottom
+// of the screen and the views take no gestures.
 #include "ui/gestures.hpp"
 #include "ui/imgui_layer.hpp"
 #include "ui/interaction.hpp"
 #include "ui/panel.hpp"
 #include "ui/prompt.hpp"
 #include "ui/screen_state.hpp"
+#include "ui/structure_contours.hpp"
 
 #include <cstddef>
 #include <optional>
@@ -52,14 +55,21 @@ class TouchUi {
     [[nodiscard]] const std::vector<Rect>& promptButtons() const { return promptButtons_; }
     [[nodiscard]] const ImGuiLayer& layer() const { return layer_; }
     [[nodiscard]] const Panel& panel() const { return panel_; }
-    // A finger or button is down: a long press may come due without a new event.
-    [[nodiscard]] bool pressing() const { return gestures_.pointersDown() > 0; }
+    // A finger or button is down (a long press may come due without a new event), or the
+    // panel has a press or release still to take (one a frame: a tap's down and up that came
+    // in one frame, a run of taps on the keyboard): the next frame must be drawn.
+    [[nodiscard]] bool pressing() const {
+        return gestures_.pointersDown() > 0 || layer_.eventsPending();
+    }
 
   private:
+    [[nodiscard]] bool viewsTakeGestures() const;
+
     ImGuiLayer layer_;
     GestureRecognizer gestures_;
     Interaction interaction_;
     Panel panel_;
+    StructureContours contours_;
     std::vector<std::string> scans_;
     std::optional<Prompt> prompt_;
     std::optional<std::size_t> promptChoice_;

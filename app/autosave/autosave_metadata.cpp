@@ -159,24 +159,134 @@ double readEvolvedTime(const nlohmann::json& j) {
     return value;
 }
 
+nlohmann::json paramsJson(const workflow::ParamValues& p) {
+    nlohmann::json params{
+        {"preset", p.preset},
+        {"speed", model::speedKindName(p.speed.kind)},
+        {"speed_fallback", model::speedKindName(p.fallback)},
+        {"inside", spheres(p.speed.inside)},
+        {"outside", spheres(p.speed.outside)},
+        {"painted_inside", spheres(p.speed.paintedInside)},
+        {"painted_outside", spheres(p.speed.paintedOutside)},
+        {"box", p.speed.box ? workflow::boxValues(*p.speed.box) : nlohmann::json()}};
+    for (int i = 0; i < model::kParamCount; ++i) {
+        const auto q = static_cast<model::Param>(i);
+        params[std::string(model::paramName(q))] = p.values[workflow::indexOf(q)];
+    }
+    return params;
+}
+
+workflow::ParamValues readParams(const nlohmann::json& params, const glm::ivec3& dims) {
+    workflow::ParamValues p;
+    p.preset = params.at("preset").get<std::string>();
+    p.speed.kind = readSpeed(params, "speed");
+    p.fallback = readSpeed(params, "speed_fallback");
+    p.speed.inside = readSpheres(params, "inside");
+    p.speed.outside = readSpheres(params, "outside");
+    // Snapshots from before painted strokes have none.
+    p.speed.paintedInside = readSpheres(params, "painted_inside", workflow::kMaxPaintedExamples);
+    p.speed.paintedOutside = readSpheres(params, "painted_outside", workflow::kMaxPaintedExamples);
+    p.speed.box = readBox(params, dims); // snapshots from before the box have none
+    for (int i = 0; i < model::kParamCount; ++i) {
+        const auto q = static_cast<model::Param>(i);
+        p.values[workflow::indexOf(q)] = params.at(std::string(model::paramName(q))).get<double>();
+    }
+    return p;
+}
+
+nlohmann::json codeJson(const model::StructureCode& c) {
+    return {c.value, c.scheme, c.meaning};
+}
+
+model::StructureCode readCode(const nlohmann::json& j) {
+    model::StructureCode c{j.at(0).get<std::string>(), j.at(1).get<std::string>(),
+                           j.at(2).get<std::string>()};
+    if (std::string problem = model::structureCodeProblem(c); !problem.empty()) {
+        throw AutosaveFormatError("a structure's code: " + problem);
+    }
+    return c;
+}
+
+// Each structure's description, parameters and counts, and how many runs its mask has in the
+// file (the active one's mask is the snapshot's own).
+nlohmann::json structuresJson(const workflow::StructureList& list) {
+    nlohmann::json items = nlohmann::json::array();
+    for (std::size_t i = 0; i < list.items.size(); ++i) {
+        const workflow::Structure& s = list.items[i];
+        const glm::dvec3& c = s.info.colour;
+        nlohmann::json item{{"name", s.info.name},
+                            {"category", codeJson(s.info.category)},
+                            {"type", codeJson(s.info.type)},
+                            {"colour", {c.r, c.g, c.b}},
+                            {"visible", s.info.visible},
+                            {"seeds", s.seeds},
+                            {"erasures", s.erasures},
+                            {"volume_ml", s.volumeMl},
+                            {"runs", i == list.active ? 0 : s.mask.runs.size()}};
+        if (i != list.active) {
+            item["params"] = paramsJson(s.params); // the active one's are the snapshot's
+        }
+        items.push_back(std::move(item));
+    }
+    return {{"active", list.active}, {"items", std::move(items)}};
+}
+
+// The structures without their masks' runs (structureRunCounts says how many each has).
+workflow::StructureList readStructures(const nlohmann::json& j, const glm::ivec3& dims) {
+    workflow::StructureList list;
+    const nlohmann::json& items = j.at("items");
+    if (items.empty() || items.size() > model::kMaxStructures) {
+        throw AutosaveFormatError("a session holds 1 to " + std::to_string(model::kMaxStructures) +
+                                  " structures, not " + std::to_string(items.size()));
+    }
+    list.active = j.at("active").get<std::size_t>();
+    if (list.active >= items.size()) {
+        throw AutosaveFormatError("the active structure is not among them");
+    }
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        const nlohmann::json& e = items[i];
+        workflow::Structure s;
+        s.info.name = e.at("name").get<std::string>();
+        if (std::string problem = model::structureNameProblem(s.info.name); !problem.empty()) {
+            throw AutosaveFormatError(problem);
+        }
+        s.info.category = readCode(e.at("category"));
+        s.info.type = readCode(e.at("type"));
+        for (int c = 0; c < 3; ++c) {
+            const double v = e.at("colour").at(c).get<double>();
+            if (!(v >= 0.0 && v <= 1.0)) {
+                throw AutosaveFormatError("a structure's colour lies outside 0..1");
+            }
+            s.info.colour[c] = v;
+        }
+        s.info.visible = e.at("visible").get<bool>();
+        s.seeds = readCount(e, "seeds", kMaxSpheres);
+        s.erasures = readCount(e, "erasures", kMaxSpheres);
+        s.volumeMl = e.at("volume_ml").get<double>();
+        if (!(s.volumeMl >= 0.0) || !std::isfinite(s.volumeMl)) {
+            throw AutosaveFormatError("a structure's volume is not a volume");
+        }
+        if (i != list.active) {
+            s.params = readParams(e.at("params"), dims);
+        }
+        list.items.push_back(std::move(s));
+    }
+    return list;
+}
+
 } // namespace
 
 nlohmann::json metadata(const AutosaveSnapshot& s) {
-    nlohmann::json params{
-        {"preset", s.params.preset},
-        {"speed", model::speedKindName(s.params.speed.kind)},
-        {"speed_fallback", model::speedKindName(s.params.fallback)},
-        {"inside", spheres(s.params.speed.inside)},
-        {"outside", spheres(s.params.speed.outside)},
-        {"painted_inside", spheres(s.params.speed.paintedInside)},
-        {"painted_outside", spheres(s.params.speed.paintedOutside)},
-        {"box", s.params.speed.box ? workflow::boxValues(*s.params.speed.box) : nlohmann::json()}};
-    for (int i = 0; i < model::kParamCount; ++i) {
-        const auto p = static_cast<model::Param>(i);
-        params[std::string(model::paramName(p))] = s.params.values[workflow::indexOf(p)];
-    }
+    const nlohmann::json params = paramsJson(s.params);
     const auto saved =
         std::chrono::system_clock::time_point(std::chrono::milliseconds(s.savedAtMs));
+    std::size_t structureRuns = 0;
+    if (s.structures) {
+        for (std::size_t i = 0; i < s.structures->items.size(); ++i) {
+            structureRuns +=
+                i == s.structures->active ? 0 : s.structures->items[i].mask.runs.size();
+        }
+    }
     return {
         {"scan", {{"path", s.scan.path}, {"bytes", s.scan.bytes}, {"mtime_ns", s.scan.mtimeNs}}},
         {"dims", {s.dims.x, s.dims.y, s.dims.z}},
@@ -189,7 +299,20 @@ nlohmann::json metadata(const AutosaveSnapshot& s) {
         {"erasures", s.erasures},
         {"iterations", s.iterations},
         {"evolved_time", s.evolvedTime},
-        {"barriers", barrierList(s.barriers)}};
+        {"barriers", barrierList(s.barriers)},
+        {"structures", s.structures ? structuresJson(*s.structures) : nlohmann::json()},
+        {"structure_runs", structureRuns}};
+}
+
+std::vector<std::uint64_t> structureRunCounts(const nlohmann::json& j) {
+    std::vector<std::uint64_t> out;
+    if (!j.contains("structures") || j.at("structures").is_null()) {
+        return out;
+    }
+    for (const nlohmann::json& e : j.at("structures").at("items")) {
+        out.push_back(e.at("runs").get<std::uint64_t>());
+    }
+    return out;
 }
 
 void readMetadata(const nlohmann::json& j, AutosaveSnapshot& s) {
@@ -207,28 +330,15 @@ void readMetadata(const nlohmann::json& j, AutosaveSnapshot& s) {
                                   "'");
     }
     s.state = *state;
-    const nlohmann::json& params = j.at("params");
-    s.params.preset = params.at("preset").get<std::string>();
-    s.params.speed.kind = readSpeed(params, "speed");
-    s.params.fallback = readSpeed(params, "speed_fallback");
-    s.params.speed.inside = readSpheres(params, "inside");
-    s.params.speed.outside = readSpheres(params, "outside");
-    // Snapshots from before painted strokes have none.
-    s.params.speed.paintedInside =
-        readSpheres(params, "painted_inside", workflow::kMaxPaintedExamples);
-    s.params.speed.paintedOutside =
-        readSpheres(params, "painted_outside", workflow::kMaxPaintedExamples);
-    s.params.speed.box = readBox(params, s.dims); // snapshots from before the box have none
-    for (int i = 0; i < model::kParamCount; ++i) {
-        const auto p = static_cast<model::Param>(i);
-        s.params.values[workflow::indexOf(p)] =
-            params.at(std::string(model::paramName(p))).get<double>();
-    }
+    s.params = readParams(j.at("params"), s.dims);
     s.seeds = readCount(j, "seeds", kMaxSpheres);
     s.erasures = readCount(j, "erasures", kMaxSpheres);
     s.iterations = readCount(j, "iterations", std::numeric_limits<int>::max());
     s.evolvedTime = readEvolvedTime(j);
     s.barriers = readBarriers(j);
+    if (j.contains("structures") && !j.at("structures").is_null()) {
+        s.structures = readStructures(j.at("structures"), s.dims);
+    }
 }
 
 } // namespace steerseg::autosave

@@ -13,5 +13,8 @@ nlohmann::json metadata(const AutosaveSnapshot& snapshot);
 // Fills everything of `snapshot` but its mask; AutosaveFormatError (or nlohmann's exceptions)
 // for metadata no session could have written.
 void readMetadata(const nlohmann::json& j, AutosaveSnapshot& snapshot);
+// How many runs each structure's mask has in the file after the active one's (0 for the active
+// one), in order; none for a snapshot without structures.
+std::vector<std::uint64_t> structureRunCounts(const nlohmann::json& j);
 
 } // namespace steerseg::autosave

@@ -99,13 +99,31 @@ std::string differenceBetween(const ScanReference& saved, const ScanReference& n
 
 std::vector<std::byte> encodeSnapshot(const AutosaveSnapshot& snapshot) {
     const std::string meta = metadata(snapshot).dump();
+    // The active structure's runs, then each other structure's in the list's order.
+    std::vector<const MaskRuns*> masks{&snapshot.mask};
+    std::uint64_t voxels = snapshot.mask.voxels;
+    if (snapshot.structures) {
+        for (std::size_t i = 0; i < snapshot.structures->items.size(); ++i) {
+            const MaskRuns& m = snapshot.structures->items[i].mask;
+            if (i != snapshot.structures->active && !m.runs.empty()) {
+                masks.push_back(&m);
+                voxels = std::max<std::uint64_t>(voxels, m.voxels);
+            }
+        }
+    }
+    std::uint64_t runCount = 0;
+    for (const MaskRuns* m : masks) {
+        runCount += m->runs.size();
+    }
     std::vector<std::byte> payload;
-    payload.reserve(meta.size() + snapshot.mask.runs.size() * 4);
+    payload.reserve(meta.size() + runCount * 4);
     for (const char c : meta) {
         payload.push_back(static_cast<std::byte>(c));
     }
-    for (const std::uint32_t run : snapshot.mask.runs) {
-        putLe(payload, run, 4);
+    for (const MaskRuns* m : masks) {
+        for (const std::uint32_t run : m->runs) {
+            putLe(payload, run, 4);
+        }
     }
     std::vector<std::byte> out;
     out.reserve(kHeaderBytes + payload.size());
@@ -114,8 +132,8 @@ std::vector<std::byte> encodeSnapshot(const AutosaveSnapshot& snapshot) {
     }
     putLe(out, kAutosaveVersion, 4);
     putLe(out, meta.size(), 4);
-    putLe(out, snapshot.mask.runs.size(), 8);
-    putLe(out, snapshot.mask.voxels, 8);
+    putLe(out, runCount, 8);
+    putLe(out, voxels, 8);
     putLe(out, crcOf(payload), 4);
     out.insert(out.end(), payload.begin(), payload.end());
     return out;
@@ -147,7 +165,8 @@ AutosaveSnapshot decodeSnapshot(std::span<const std::byte> bytes) {
     const std::uint64_t runCount = getLe(bytes, 16, 8);
     const std::uint64_t voxels = getLe(bytes, 24, 8);
     const auto crc = static_cast<std::uint32_t>(getLe(bytes, 32, 4));
-    if (metaBytes > kMaxMetaBytes || voxels > kMaxVoxels || runCount > voxels + 1) {
+    if (metaBytes > kMaxMetaBytes || voxels > kMaxVoxels ||
+        runCount > (voxels + 1) * model::kMaxStructures) {
         throw AutosaveFormatError("implausible sizes in the header");
     }
     const std::uint64_t expected = kHeaderBytes + metaBytes + runCount * 4;
@@ -164,24 +183,49 @@ AutosaveSnapshot decodeSnapshot(std::span<const std::byte> bytes) {
         throw AutosaveFormatError("CRC mismatch: the file is damaged");
     }
     AutosaveSnapshot s;
+    std::vector<std::uint64_t> structureRuns;
     try {
         const auto* text = reinterpret_cast<const char*>(payload.data());
-        readMetadata(nlohmann::json::parse(text, text + metaBytes), s);
+        const nlohmann::json meta = nlohmann::json::parse(text, text + metaBytes);
+        readMetadata(meta, s);
+        structureRuns = structureRunCounts(meta);
     } catch (const AutosaveFormatError&) {
         throw;
     } catch (const std::exception& e) {
         throw AutosaveFormatError(std::string("bad metadata: ") + e.what());
     }
-    s.mask.voxels = voxels;
-    s.mask.runs.resize(runCount);
-    std::uint64_t sum = 0;
-    for (std::uint64_t i = 0; i < runCount; ++i) {
-        s.mask.runs[i] = static_cast<std::uint32_t>(getLe(payload, metaBytes + i * 4, 4));
-        sum += s.mask.runs[i];
+    std::uint64_t others = 0;
+    for (const std::uint64_t n : structureRuns) {
+        others += n;
     }
-    if (runCount > 0 && sum != voxels) {
-        throw AutosaveFormatError("the mask's runs add up to " + std::to_string(sum) +
-                                  " voxels, not " + std::to_string(voxels));
+    if (others > runCount || (s.structures && structureRuns.size() != s.structures->items.size())) {
+        throw AutosaveFormatError("the structures' runs do not fit the file's");
+    }
+    std::uint64_t at = metaBytes;
+    // Reads `count` runs into `mask`, which must cover the grid's voxels.
+    const auto readRuns = [&](MaskRuns& mask, std::uint64_t count, const std::string& what) {
+        mask.voxels = voxels;
+        mask.runs.resize(count);
+        std::uint64_t sum = 0;
+        for (std::uint64_t i = 0; i < count; ++i, at += 4) {
+            mask.runs[i] = static_cast<std::uint32_t>(getLe(payload, at, 4));
+            sum += mask.runs[i];
+        }
+        if (count > 0 && sum != voxels) {
+            throw AutosaveFormatError(what + "'s runs add up to " + std::to_string(sum) +
+                                      " voxels, not " + std::to_string(voxels));
+        }
+    };
+    readRuns(s.mask, runCount - others, "the mask");
+    for (std::size_t i = 0; s.structures && i < s.structures->items.size(); ++i) {
+        workflow::Structure& item = s.structures->items[i];
+        if (i == s.structures->active && structureRuns[i] != 0) {
+            throw AutosaveFormatError("the active structure's mask is the snapshot's own");
+        }
+        readRuns(item.mask, structureRuns[i], "structure '" + item.info.name + "'");
+        if (item.mask.runs.empty()) {
+            item.mask.voxels = 0;
+        }
     }
     const std::uint64_t gridVoxels = static_cast<std::uint64_t>(std::max(s.dims.x, 0)) *
                                      static_cast<std::uint64_t>(std::max(s.dims.y, 0)) *

@@ -7,12 +7,14 @@
 #include "core/mask_runs.hpp"
 #include "model/action.hpp"
 #include "model/level_set_params.hpp"
+#include "workflow/structures.hpp"
 #include "workflow/undo_stack.hpp"
 
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -49,6 +51,10 @@ struct AutosaveSnapshot {
     // The corrections that stick (kept and blocked spheres), in the order placed: without them a
     // resumed run would undo the operator's erases and let the kept spheres recede.
     std::vector<model::Barrier> barriers;
+    // The session's structures (docs/structures.md): the active one's surface is `mask` and its
+    // parameters `params`; the others' masks follow the active one's runs in the file. nullopt:
+    // a session of one structure as a scan starts it (and every autosave from before them).
+    std::optional<workflow::StructureList> structures;
 };
 
 class AutosaveFormatError : public std::runtime_error {

@@ -3,9 +3,11 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "cli/dicom_options.hpp"
+#include "net/received_series.hpp"
 #include "net/store_scp.hpp"
 
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 
@@ -39,6 +41,14 @@ int runListen(std::span<const std::string> words) {
     sigaction(SIGINT, &action, nullptr);
     printLine("listening as " + settings.aet + " on port " + std::to_string(settings.port) +
               (settings.tls ? " (TLS)" : "") + ", storing into " + settings.store.string());
+    // What an earlier run (or a kill) left unfinished, so that nobody takes it for whole.
+    for (const net::ReceivedSeries& s :
+         net::listReceivedSeries(settings.store, std::chrono::seconds(0))) {
+        if (s.incomplete) {
+            printLine("incomplete series " + s.folder.lexically_relative(settings.store).string() +
+                      ": " + net::describe(s));
+        }
+    }
     scp.serve(stopRequested);
     printLine("stopped");
     return kExitOk;

@@ -5,12 +5,16 @@
 #include "core/mask_inside.hpp"
 #include "core/mask_measurements.hpp"
 #include "core/volume.hpp"
+#include "exports/label_description.hpp"
 #include "scan/scan_reader.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -60,6 +64,69 @@ std::vector<std::uint8_t> selectVoxels(const std::string& path, const Volume& ma
     return picked;
 }
 
+// The label values a label map holds (0 left out); stops past `most`, so that a scan given as a
+// mask does not gather millions.
+std::set<long long> labelValues(const Volume& mask, std::size_t most) {
+    std::set<long long> values;
+    for (std::size_t n = 0; n < mask.geometry().voxelCount() && values.size() <= most; ++n) {
+        const double v = mask.realAt(n);
+        if (v != 0.0) {
+            values.insert(std::llround(v));
+        }
+    }
+    return values;
+}
+
+std::string namedText(const std::vector<exports::DescribedLabel>& names) {
+    std::string text;
+    for (const exports::DescribedLabel& l : names) {
+        text += (text.empty() ? "" : ", ") + std::to_string(l.value) + " " + l.name;
+    }
+    return text.empty() ? "none" : text;
+}
+
+// With a label description beside the label map (ITK-SNAP's, as the exports write it), a label
+// it does not name means the map and its names no longer belong together: refused before
+// anything is measured, so a figure is never reported under the wrong structure's name.
+// Returns the measured label's name ("" without a description or without --label).
+std::string checkDescribedLabels(const std::string& path, const Volume& mask,
+                                 std::optional<long long> label) {
+    const std::filesystem::path sidecar = exports::labelDescriptionPathFor(path);
+    std::error_code ec;
+    if (!std::filesystem::exists(sidecar, ec)) {
+        return {};
+    }
+    std::vector<exports::DescribedLabel> names;
+    try {
+        names = exports::readLabelDescription(sidecar);
+    } catch (const std::runtime_error& e) {
+        throw UsageError(std::string(e.what()) + " (the names of " + path + "'s labels)");
+    }
+    const auto nameOf = [&](long long value) -> const exports::DescribedLabel* {
+        const auto it =
+            std::find_if(names.begin(), names.end(),
+                         [&](const exports::DescribedLabel& l) { return l.value == value; });
+        return it == names.end() ? nullptr : &*it;
+    };
+    constexpr std::size_t kMostLabels = 256;
+    for (const long long value : labelValues(mask, kMostLabels)) {
+        if (nameOf(value) == nullptr) {
+            throw UsageError("--mask " + path + " holds label " + std::to_string(value) +
+                             ", which " + sidecar.filename().string() +
+                             " beside it does not name (it names " + namedText(names) + ")");
+        }
+    }
+    if (!label) {
+        return {};
+    }
+    const exports::DescribedLabel* named = nameOf(*label);
+    if (named == nullptr) {
+        throw UsageError("--label " + std::to_string(*label) + ": " + sidecar.filename().string() +
+                         " does not name it (it names " + namedText(names) + ")");
+    }
+    return named->name;
+}
+
 nlohmann::ordered_json lineJson(const MeasuredLine& line) {
     const auto point = [](const glm::dvec3& p) { return std::vector<double>{p.x, p.y, p.z}; };
     return {{"length_mm", line.lengthMm},
@@ -73,8 +140,11 @@ std::string indexText(const glm::dvec3& p) {
     return text;
 }
 
-void printTable(const MaskMeasurements& m) {
+void printTable(const MaskMeasurements& m, const std::string& structure) {
     const char* axes = "ijk";
+    if (!structure.empty()) {
+        std::printf("structure             %s\n", structure.c_str());
+    }
     std::printf("voxels                %llu\n", static_cast<unsigned long long>(m.voxels));
     std::printf("volume                %.3f ml\n", m.volumeMl);
     std::printf("surface area          %.1f mm^2\n", m.surfaceAreaMm2);
@@ -104,6 +174,7 @@ int runMeasure(std::span<const std::string> words) {
     const scan::LoadedScan scan = scan::readScan(input);
     const scan::LoadedScan mask = scan::readScan(maskPath);
     requireScanGrid(maskPath, mask.volume.geometry(), scan.volume.geometry());
+    const std::string name = checkDescribedLabels(maskPath, mask.volume, label);
     const std::vector<std::uint8_t> inside = selectVoxels(maskPath, mask.volume, label);
     if (std::find(inside.begin(), inside.end(), std::uint8_t{1}) == inside.end()) {
         throw UsageError("--mask " + maskPath + ": no voxel is inside (all zero)");
@@ -111,13 +182,14 @@ int runMeasure(std::span<const std::string> words) {
     const MaskMeasurements m = measureMask(scan.volume, inside);
 
     if (!args.flag("json")) {
-        printTable(m);
+        printTable(m, name);
         return 0;
     }
     nlohmann::ordered_json j;
     j["input"] = input;
     j["mask"] = maskPath;
     j["label"] = label ? nlohmann::ordered_json(*label) : nlohmann::ordered_json(nullptr);
+    j["name"] = name.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(name);
     j["voxels"] = m.voxels;
     j["volume_ml"] = m.volumeMl;
     j["surface_area_mm2"] = m.surfaceAreaMm2;

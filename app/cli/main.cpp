@@ -61,8 +61,8 @@ constexpr Command kCommands[] = {
     {"measure",
      "measure --input SCAN --mask MASK [--label N] [--json]: a structure's volume, surface area "
      "(of the exported mesh), RECIST axial diameters, longest 3D diameter and intensity over "
-     "the mask (non-zero, or the voxels equal to N) on the scan's grid (no GPU; "
-     "docs/measurements.md)",
+     "the mask (non-zero, or the voxels equal to N) on the scan's grid, named by the ITK-SNAP "
+     "label description beside a label map, if any (no GPU; docs/measurements.md)",
      steerseg::cli::runMeasure},
     {"kiosk",
      "kiosk [--platform auto|kms|window|offscreen] [--config FILE] [--scan PATH] [--script "

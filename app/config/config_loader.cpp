@@ -137,6 +137,7 @@ std::vector<ConfigProblem> applyConfigText(KioskConfig& config, std::string_view
     section("audit", detail::readAudit, next.audit);
     section("autosave", detail::readAutosave, next.autosave);
     section("dicom", detail::readDicom, next.dicom);
+    section("segmentation", detail::readSegmentation, next.segmentation);
     if (const toml::table* bindings = top.table("bindings")) {
         detail::TableReader reader(*bindings, "bindings", sink);
         detail::readBindings(reader, next.bindings, check);
@@ -150,6 +151,9 @@ std::vector<ConfigProblem> applyConfigText(KioskConfig& config, std::string_view
     }
     if (const toml::array* presets = top.array("preset")) {
         detail::readPresets(*presets, next.presets, sink);
+    }
+    if (const toml::array* structures = top.array("structures")) {
+        detail::readStructures(*structures, next.structures, sink);
     }
     top.reportUnknownKeys();
     if (sink.empty()) {

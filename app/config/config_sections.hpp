@@ -26,6 +26,12 @@ void checkDicomTls(const DicomConfig& dicom, const toml::table& root, ProblemSin
 // appends a preset and must give every field.
 void readPresets(const toml::array& entries, std::vector<Preset>& presets, ProblemSink& sink);
 
+// [[structures]]: a file that has the array replaces the site's list whole; each entry a name,
+// category and type codes ([value, scheme, meaning]) and an optional colour.
+void readStructures(const toml::array& entries, std::vector<model::StructureInfo>& kinds,
+                    ProblemSink& sink);
+void readSegmentation(TableReader& table, SegmentationConfig& segmentation);
+
 // [[input.devices]]: a file that has the array replaces the whole list (an empty array
 // configures no device); each entry gives a name and a kind, and the fields its kind uses.
 void readInputDevices(const toml::array& entries, std::vector<InputDeviceConfig>& devices,

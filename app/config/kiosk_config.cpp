@@ -47,6 +47,16 @@ KioskConfig defaultConfig() {
         {"CT bone", 900.0, 600.0, 0.5, 400.0, 1800.0, "bone"},
         {"MR tumour", 180.0, 50.0, 0.3, 128.0, 256.0, "mr"},
     };
+    const model::StructureCode anatomy{"123037004", "SCT", "Anatomical Structure"};
+    const model::StructureCode abnormal{"49755003", "SCT", "Morphologically Abnormal Structure"};
+    c.structures = {
+        {"Tumour", abnormal, {"108369006", "SCT", "Neoplasm"}, {0.847, 0.396, 0.310}, true},
+        {"Liver", anatomy, {"10200004", "SCT", "Liver"}, {0.867, 0.510, 0.396}, true},
+        {"Spleen", anatomy, {"78961009", "SCT", "Spleen"}, {0.616, 0.424, 0.635}, true},
+        {"Right kidney", anatomy, {"9846003", "SCT", "Right kidney"}, {0.725, 0.400, 0.341}, true},
+        {"Left kidney", anatomy, {"18639004", "SCT", "Left kidney"}, {0.725, 0.400, 0.341}, true},
+        {"Lung", anatomy, {"39607008", "SCT", "Lung"}, {0.769, 0.475, 0.376}, true},
+    };
     c.bindings.keys = {
         {"space", {"toggle_run", 1.0, ""}},
         {"enter", {"proceed", 1.0, ""}},

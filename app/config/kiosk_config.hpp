@@ -3,6 +3,7 @@
 // The kiosk's settings as one plain value. The defaults here are the shipped file
 // config/steerseg.toml, which documents every key; a unit test keeps the two equal.
 #include "model/speed_kind.hpp" // the enum only: config links no speed code
+#include "model/structure.hpp"
 
 #include <filesystem>
 #include <functional>
@@ -208,6 +209,12 @@ struct DicomConfig {
     bool operator==(const DicomConfig&) const = default;
 };
 
+// How the session's structures relate (docs/structures.md).
+struct SegmentationConfig {
+    bool structuresOverlap = false; // false: the other structures are barriers to the active one
+    bool operator==(const SegmentationConfig&) const = default;
+};
+
 struct KioskConfig {
     DisplayConfig display;
     FrameConfig frame;
@@ -219,6 +226,9 @@ struct KioskConfig {
     AuditConfig audit;
     AutosaveConfig autosave;
     std::vector<Preset> presets; // in the order the panel shows them
+    // The site's structures ([[structures]]): names the panel offers, with their codes.
+    std::vector<model::StructureInfo> structures;
+    SegmentationConfig segmentation;
     BindingsConfig bindings;
     InputConfig input;
     DicomConfig dicom;

@@ -73,10 +73,17 @@ class SessionEngine final : public workflow::Engine {
     void restore(workflow::SnapshotId id) override;
     void drop(workflow::SnapshotId id) override;
     std::vector<std::filesystem::path> exportMask(const std::filesystem::path& path) override;
+    // session_engine_structures.cpp
+    [[nodiscard]] MaskRuns levelSetMask() const override;
+    [[nodiscard]] MaskMeasurements measureStructure(const MaskRuns* mask) const override;
+    void setClaimed(const MaskRuns& claimed) override;
+    std::vector<std::filesystem::path>
+    exportStructures(const std::filesystem::path& path,
+                     const std::vector<workflow::ExportedStructure>& structures) override;
 
-    // Resume: the level set from an autosave's mask (no runs: none). std::invalid_argument for
-    // a mask of another size.
-    void setMask(const MaskRuns& mask);
+    // Resume, and a structure the operator comes back to: the level set from a mask (no runs:
+    // none), without barriers. std::invalid_argument for a mask of another size.
+    void setMask(const MaskRuns& mask) override;
     // The path the attached scan was loaded from ("" before one is).
     [[nodiscard]] const std::string& scanPath() const { return scanPath_; }
 

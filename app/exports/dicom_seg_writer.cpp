@@ -1,9 +1,10 @@
-// Binary DICOM SEG through DCMTK's dcmseg, as dcmqi writes them: one segment, the frames that
-// hold segmented voxels, each frame referencing its source slice. docs/dicom.md says what is
-// written and how it was validated.
+// Binary DICOM SEG through DCMTK's dcmseg, as dcmqi writes them: one segment per structure, the
+// frames that hold each segment's voxels, each frame referencing its source slice. docs/dicom.md
+// says what is written and how it was validated.
 #include "exports/dicom_seg_writer.hpp"
 
 #include "exports/dicom_file_bytes.hpp"
+#include "exports/display_color.hpp"
 #include "files/file_write.hpp"
 #include "scan/scan_reader.hpp"
 
@@ -59,14 +60,29 @@ CodeSequenceMacro code(const SegmentCode& c) {
     return CodeSequenceMacro(c.value.c_str(), c.scheme.c_str(), c.meaning.c_str());
 }
 
+// Names a segment in a message where there are several.
+std::string ofSegment(std::span<const DicomSegment> segments, const DicomSegment& s) {
+    return segments.size() > 1 ? " (segment '" + s.label + "')" : "";
+}
+
 void checkInputs(const std::filesystem::path& path, const Geometry& g,
-                 std::span<const std::uint8_t> mask, const scan::DicomSource* source) {
+                 std::span<const DicomSegment> segments, const scan::DicomSource* source) {
     if (source == nullptr) {
         throw files::WriteError(path, "DICOM SEG needs a scan read from a DICOM series");
     }
-    if (mask.size() != g.voxelCount()) {
-        throw files::WriteError(path, "DICOM SEG: the mask has " + std::to_string(mask.size()) +
-                                          " voxels, the scan " + std::to_string(g.voxelCount()));
+    if (segments.empty()) {
+        throw files::WriteError(path, "DICOM SEG: no segment to write");
+    }
+    if (segments.size() > 65535) {
+        throw files::WriteError(path, "DICOM SEG: more than 65535 segments");
+    }
+    for (const DicomSegment& s : segments) {
+        if (s.mask.size() != g.voxelCount()) {
+            throw files::WriteError(path, "DICOM SEG: the mask has " +
+                                              std::to_string(s.mask.size()) + " voxels, the scan " +
+                                              std::to_string(g.voxelCount()) +
+                                              ofSegment(segments, s));
+        }
     }
     if (source->slices.size() != static_cast<std::size_t>(g.dims.z)) {
         throw files::WriteError(path, "DICOM SEG: the scan has " + std::to_string(g.dims.z) +
@@ -113,13 +129,13 @@ struct FrameGroups {
 };
 
 FrameGroups frameGroups(const std::filesystem::path& path, const Geometry& g,
-                        const scan::DicomSourceSlice& slice, int k) {
+                        const scan::DicomSourceSlice& slice, int k, Uint16 segmentNumber) {
     FrameGroups fg;
     const glm::dvec3 p = slice.position.value_or(g.indexToWorld({0.0, 0.0, k}));
     fg.position.reset(
         FGPlanePosPatient::createMinimal(ds(p.x).c_str(), ds(p.y).c_str(), ds(p.z).c_str()));
     fg.content = std::make_unique<FGFrameContent>();
-    check(path, fg.content->setDimensionIndexValues(1, 0), "dimension index (segment)");
+    check(path, fg.content->setDimensionIndexValues(segmentNumber, 0), "dimension index (segment)");
     check(path, fg.content->setDimensionIndexValues(static_cast<Uint32>(k) + 1, 1),
           "dimension index (position)");
     fg.derivation = std::make_unique<FGDerivationImage>();
@@ -158,13 +174,18 @@ void addSharedGroups(const std::filesystem::path& path, DcmSegmentation& seg, co
 }
 
 Uint16 addSegment(const std::filesystem::path& path, DcmSegmentation& seg,
-                  const DicomSegOptions& options) {
+                  const DicomSegment& options) {
     DcmSegment* segment = nullptr;
     check(path,
           DcmSegment::create(segment, options.label.c_str(), code(options.category),
                              code(options.type), DcmSegTypes::SAT_SEMIAUTOMATIC, "steerseg"),
           "segment");
     std::unique_ptr<DcmSegment> owned(segment);
+    if (options.color) {
+        const std::array<std::uint16_t, 3> lab = dicomLabFromRgb(*options.color);
+        check(path, owned->setRecommendedDisplayCIELabValue(lab[0], lab[1], lab[2]),
+              "recommended display colour");
+    }
     AlgorithmIdentificationMacro algorithm;
     // A level set is a deformable model (CID 7162).
     algorithm.getAlgorithmFamilyCode().set("123111", "DCM", "Deformable Models");
@@ -196,7 +217,13 @@ void addReferences(const std::filesystem::path& path, DcmSegmentation& seg,
     }
 }
 
-// The slices that hold segmented voxels: the frames, in this order.
+// One frame: a segment (its index in the list) on a slice.
+struct Frame {
+    std::size_t segment = 0;
+    int k = 0;
+};
+
+// The slices that hold segmented voxels of one segment, ascending.
 std::vector<int> segmentedSlices(const Geometry& g, std::span<const std::uint8_t> mask) {
     const std::size_t plane =
         static_cast<std::size_t>(g.dims.x) * static_cast<std::size_t>(g.dims.y);
@@ -214,15 +241,16 @@ std::vector<int> segmentedSlices(const Geometry& g, std::span<const std::uint8_t
 // frames (PS3.5 8.1.1), the whole padded to an even length. DCMTK 3.6.7's dcmseg packs frames
 // whose pixel count is not a multiple of 8 wrongly (the independent reader in the tests caught
 // it), so the Pixel Data it wrote is replaced by this.
-std::vector<Uint8> packFrames(const Geometry& g, std::span<const std::uint8_t> mask,
-                              const std::vector<int>& slices) {
+std::vector<Uint8> packFrames(const Geometry& g, std::span<const DicomSegment> segments,
+                              const std::vector<Frame>& frames) {
     const std::size_t plane =
         static_cast<std::size_t>(g.dims.x) * static_cast<std::size_t>(g.dims.y);
-    const std::size_t bits = plane * slices.size();
+    const std::size_t bits = plane * frames.size();
     std::vector<Uint8> packed((bits + 15) / 16 * 2, 0);
     std::size_t bit = 0;
-    for (const int k : slices) {
-        const auto slab = mask.subspan(static_cast<std::size_t>(k) * plane, plane);
+    for (const Frame& f : frames) {
+        const auto slab =
+            segments[f.segment].mask.subspan(static_cast<std::size_t>(f.k) * plane, plane);
         for (const std::uint8_t v : slab) {
             if (v != 0) {
                 packed[bit / 8] = static_cast<Uint8>(packed[bit / 8] | (1U << (bit % 8)));
@@ -235,8 +263,8 @@ std::vector<Uint8> packFrames(const Geometry& g, std::span<const std::uint8_t> m
 
 std::unique_ptr<DcmSegmentation>
 buildSegmentation(const std::filesystem::path& path, const Geometry& g,
-                  std::span<const std::uint8_t> mask, const std::vector<int>& slices,
-                  const scan::DicomSource& source, const DicomSegOptions& options,
+                  std::span<const DicomSegment> segments, const std::vector<Frame>& frames,
+                  const scan::DicomSource& source, const DicomSegSeries& series,
                   SegInstance& instance) {
     const IODGeneralEquipmentModule::EquipmentInfo equipment("steerseg", "steerseg", "none",
                                                              STEERSEG_VERSION);
@@ -259,9 +287,9 @@ buildSegmentation(const std::filesystem::path& path, const Geometry& g,
           "series UID");
     check(path, seg->getSOPCommon().setSOPInstanceUID(instance.sopInstanceUid.c_str()),
           "instance UID");
-    check(path, seg->getSegmentationSeriesModule().setSeriesNumber(options.seriesNumber.c_str()),
+    check(path, seg->getSegmentationSeriesModule().setSeriesNumber(series.number.c_str()),
           "series number");
-    check(path, seg->getSeries().setSeriesDescription(options.seriesDescription.c_str()),
+    check(path, seg->getSeries().setSeriesDescription(series.description.c_str()),
           "series description");
     if (source.lossyCompressed) {
         check(path,
@@ -280,23 +308,29 @@ buildSegmentation(const std::filesystem::path& path, const Geometry& g,
                                  DCM_PlanePositionSequence, "ImagePositionPatient"),
           "dimension (position)");
     addSharedGroups(path, *seg, g, source);
-    instance.segmentNumber = addSegment(path, *seg, options);
+    for (const DicomSegment& s : segments) {
+        instance.segmentNumbers.push_back(addSegment(path, *seg, s));
+    }
+    instance.segmentNumber = instance.segmentNumbers.front();
     addReferences(path, *seg, source);
 
     const std::size_t plane =
         static_cast<std::size_t>(g.dims.x) * static_cast<std::size_t>(g.dims.y);
     std::vector<Uint8> frame(plane);
-    for (const int k : slices) {
-        const auto slab = mask.subspan(static_cast<std::size_t>(k) * plane, plane);
+    for (const Frame& f : frames) {
+        const auto slab =
+            segments[f.segment].mask.subspan(static_cast<std::size_t>(f.k) * plane, plane);
         for (std::size_t v = 0; v < plane; ++v) {
             frame[v] = slab[v] != 0 ? 1 : 0;
         }
-        const FrameGroups fg = frameGroups(path, g, source.slices[static_cast<std::size_t>(k)], k);
+        const Uint16 number = instance.segmentNumbers[f.segment];
+        const FrameGroups fg =
+            frameGroups(path, g, source.slices[static_cast<std::size_t>(f.k)], f.k, number);
         OFVector<FGBase*> groups;
         groups.push_back(fg.position.get());
         groups.push_back(fg.content.get());
         groups.push_back(fg.derivation.get());
-        check(path, seg->addFrame(frame.data(), 1, groups), "adding a frame");
+        check(path, seg->addFrame(frame.data(), number, groups), "adding a frame");
     }
     return seg;
 }
@@ -305,15 +339,15 @@ buildSegmentation(const std::filesystem::path& path, const Geometry& g,
 // setReferencedFrameNumber puts binary values on this text attribute and always fails, so the
 // numbers go into the written data set: frame n's first Source Image item.
 void addReferencedFrameNumbers(const std::filesystem::path& path, DcmDataset& dataset,
-                               const std::vector<int>& slices, const scan::DicomSource& source) {
+                               const std::vector<Frame>& frames, const scan::DicomSource& source) {
     DcmSequenceOfItems* perFrame = nullptr;
     check(path, dataset.findAndGetSequence(DCM_PerFrameFunctionalGroupsSequence, perFrame),
           "finding the per-frame groups");
-    if (perFrame == nullptr || perFrame->card() != slices.size()) {
+    if (perFrame == nullptr || perFrame->card() != frames.size()) {
         throw files::WriteError(path, "DICOM SEG: the per-frame groups do not match the frames");
     }
-    for (std::size_t n = 0; n < slices.size(); ++n) {
-        const int frame = source.slices[static_cast<std::size_t>(slices[n])].frameNumber;
+    for (std::size_t n = 0; n < frames.size(); ++n) {
+        const int frame = source.slices[static_cast<std::size_t>(frames[n].k)].frameNumber;
         if (frame == 0) {
             continue;
         }
@@ -335,14 +369,21 @@ void addReferencedFrameNumbers(const std::filesystem::path& path, DcmDataset& da
 } // namespace
 
 SegInstance writeDicomSeg(const std::filesystem::path& path, const Geometry& geometry,
-                          std::span<const std::uint8_t> mask, const scan::DicomSource* source,
-                          const DicomSegOptions& options) {
-    checkInputs(path, geometry, mask, source);
-    const std::vector<int> slices = segmentedSlices(geometry, mask);
-    if (slices.empty()) {
-        throw files::WriteError(path,
-                                "DICOM SEG: the mask is empty, and a segmentation needs at least "
-                                "one segmented frame");
+                          std::span<const DicomSegment> segments, const scan::DicomSource* source,
+                          const DicomSegSeries& series) {
+    checkInputs(path, geometry, segments, source);
+    std::vector<Frame> frames;
+    for (std::size_t n = 0; n < segments.size(); ++n) {
+        const std::vector<int> slices = segmentedSlices(geometry, segments[n].mask);
+        if (slices.empty()) {
+            throw files::WriteError(path, "DICOM SEG: the mask is empty for segment '" +
+                                              segments[n].label +
+                                              "', and each segment needs at least one segmented "
+                                              "frame");
+        }
+        for (const int k : slices) {
+            frames.push_back({n, k});
+        }
     }
     // dcmiod checks dimensions before the per-frame groups are written and warns that it
     // cannot; dcmseg's own check runs afterwards. Real problems still fail the write.
@@ -351,12 +392,12 @@ SegInstance writeDicomSeg(const std::filesystem::path& path, const Geometry& geo
     SegInstance instance;
     try {
         const std::unique_ptr<DcmSegmentation> seg =
-            buildSegmentation(path, geometry, mask, slices, *source, options, instance);
+            buildSegmentation(path, geometry, segments, frames, *source, series, instance);
         DcmFileFormat file;
         DcmDataset& dataset = *file.getDataset();
         check(path, seg->writeDataset(dataset), "building the data set");
-        addReferencedFrameNumbers(path, dataset, slices, *source);
-        const std::vector<Uint8> pixels = packFrames(geometry, mask, slices);
+        addReferencedFrameNumbers(path, dataset, frames, *source);
+        const std::vector<Uint8> pixels = packFrames(geometry, segments, frames);
         check(path,
               dataset.putAndInsertUint8Array(DCM_PixelData, pixels.data(),
                                              static_cast<unsigned long>(pixels.size())),
@@ -369,6 +410,14 @@ SegInstance writeDicomSeg(const std::filesystem::path& path, const Geometry& geo
     }
     files::writeFileAtomically(path, {std::span<const std::byte>(bytes)});
     return instance;
+}
+
+SegInstance writeDicomSeg(const std::filesystem::path& path, const Geometry& geometry,
+                          std::span<const std::uint8_t> mask, const scan::DicomSource* source,
+                          const DicomSegOptions& options) {
+    const DicomSegment segment{options.label, options.category, options.type, options.color, mask};
+    return writeDicomSeg(path, geometry, std::span(&segment, 1), source,
+                         {options.seriesDescription, options.seriesNumber});
 }
 
 } // namespace steerseg::exports

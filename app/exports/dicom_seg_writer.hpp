@@ -1,14 +1,17 @@
 #pragma once
 
-// A mask written as a DICOM Segmentation (binary SEG, one segment) that references the DICOM
-// series the scan was read from, so the result goes back to the PACS with its study.
+// Masks written as a DICOM Segmentation (binary SEG, one segment per structure) that references
+// the DICOM series the scan was read from, so the result goes back to the PACS with its study.
 #include "core/volume.hpp"
 #include "scan/dicom_source.hpp"
 
 #include <cstdint>
 #include <filesystem>
+#include <glm/glm.hpp>
+#include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace steerseg::exports {
 
@@ -25,10 +28,27 @@ inline const SegmentCode kCodeMorphologicallyAbnormalStructure{
     "49755003", "SCT", "Morphologically Abnormal Structure"};
 inline const SegmentCode kCodeMass{"4147007", "SCT", "Mass"};
 
+// One segment of a SEG.
+struct DicomSegment {
+    std::string label = "Segment 1";    // Segment Label (LO: at most 64 characters)
+    SegmentCode category = kCodeTissue; // Segmented Property Category
+    SegmentCode type = kCodeTissue;     // Segmented Property Type
+    // sRGB, components 0..1: the Recommended Display CIELab Value; none written without it.
+    std::optional<glm::dvec3> color{};
+    std::span<const std::uint8_t> mask{}; // nonzero inside, i fastest, on the scan's grid
+};
+
+struct DicomSegSeries {
+    std::string description = "steerseg segmentation";
+    std::string number = "300";
+};
+
+// The one-segment call's segment and series.
 struct DicomSegOptions {
     std::string label = "Segment 1";    // Segment Label (LO: at most 64 characters)
     SegmentCode category = kCodeTissue; // Segmented Property Category
     SegmentCode type = kCodeTissue;     // Segmented Property Type
+    std::optional<glm::dvec3> color{};  // as DicomSegment::color
     std::string seriesDescription = "steerseg segmentation";
     std::string seriesNumber = "300";
 };
@@ -38,7 +58,8 @@ struct SegInstance {
     std::string sopClassUid;
     std::string sopInstanceUid;
     std::string seriesInstanceUid;
-    std::uint16_t segmentNumber = 1; // the one segment's Segment Number
+    std::uint16_t segmentNumber = 1;             // the first segment's Segment Number
+    std::vector<std::uint16_t> segmentNumbers{}; // each segment's, in the order given: 1..N
 };
 
 // Writes `mask` (one uint8 per voxel on `geometry`'s grid, i fastest, nonzero inside) as a binary
@@ -50,5 +71,13 @@ struct SegInstance {
 SegInstance writeDicomSeg(const std::filesystem::path& path, const Geometry& geometry,
                           std::span<const std::uint8_t> mask, const scan::DicomSource* source,
                           const DicomSegOptions& options = {});
+
+// Several segments in one SEG: Segment Numbers 1..N in the order given, the frames of segment 1
+// (its slices holding voxels, ascending), then those of segment 2, and so on, each frame's
+// Segment Identification naming its segment. Refused as the one-segment call, and for no
+// segment or a segment whose mask is empty (named by its label).
+SegInstance writeDicomSeg(const std::filesystem::path& path, const Geometry& geometry,
+                          std::span<const DicomSegment> segments, const scan::DicomSource* source,
+                          const DicomSegSeries& series = {});
 
 } // namespace steerseg::exports

@@ -17,6 +17,11 @@ namespace steerseg::exports {
 void writeMask(const std::filesystem::path& path, const Geometry& geometry,
                std::span<const std::uint8_t> mask);
 
+// A label map: each voxel's value as it is (0 outside, a structure's label value inside), in the
+// formats and on the grid of writeMask. Throws files::WriteError.
+void writeLabelMap(const std::filesystem::path& path, const Geometry& geometry,
+                   std::span<const std::uint8_t> labels);
+
 // Every mask writer's first check: a valid grid (checkGeometry) and one byte per voxel of it;
 // files::WriteError naming `path` otherwise.
 void checkMaskSize(const std::filesystem::path& path, const Geometry& geometry,
@@ -31,7 +36,8 @@ struct SegmentInfo {
     std::string tags = "Segmentation.Status:completed|";
 };
 
-// 3D Slicer's segmentation file (.seg.nrrd): a gzip NRRD on `geometry`'s grid exactly as
+// 3D Slicer's segmentation file (.seg.nrrd) of one segment (slicer_segmentation.hpp writes
+// several): a gzip NRRD on `geometry`'s grid exactly as
 // writeMask's .nrrd (LPS space, space directions, space origin), the voxels the segment's label
 // inside and 0 outside, and the Segment0_* and Segmentation_* keys Slicer reads (name, colour,
 // label value, layer, extent, tags; binary labelmap master representation). Throws

@@ -21,6 +21,12 @@ SegInstance writeDicomSeg(const std::filesystem::path& path, const Geometry& /*g
     throw files::WriteError(path, model::leftOutOfLightBuild("The DICOM SEG export", "DCMTK"));
 }
 
+SegInstance writeDicomSeg(const std::filesystem::path& path, const Geometry& /*geometry*/,
+                          std::span<const DicomSegment> /*segments*/,
+                          const scan::DicomSource* /*source*/, const DicomSegSeries& /*series*/) {
+    throw files::WriteError(path, model::leftOutOfLightBuild("The DICOM SEG export", "DCMTK"));
+}
+
 void writeMeasurementReport(const std::filesystem::path& path, const scan::DicomSource& /*source*/,
                             const SegInstance& /*seg*/,
                             std::span<const ReportedSegment> /*segments*/,

@@ -16,7 +16,7 @@ namespace steerseg::gpu {
 // unit 0, the program, framebuffers, pixel pack/unpack buffers and alignments.
 class GlStateGuard {
   public:
-    static constexpr int kTextureUnits = 7;
+    static constexpr int kTextureUnits = 8;
     static constexpr int kStorageBindings = 16;
 
     GlStateGuard();

@@ -169,9 +169,22 @@ void DicomNode::listStore(std::vector<fs::path>& complete, bool first) {
     std::vector<workflow::ReceivedScan> scans;
     std::string note;
     for (const net::ReceivedSeries& s : net::listReceivedSeries(dicom_.store, kSettle)) {
-        scans.push_back({s.folder.string(), net::describe(s), s.arriving});
-        if (!s.arriving &&
-            std::find(complete.begin(), complete.end(), s.folder) == complete.end()) {
+        // An incomplete series is listed, marked, but not offered as if whole (the load screen
+        // and a script's $RECEIVED pass over what is not ready); a complete send clears it.
+        scans.push_back({s.folder.string(), net::describe(s), s.arriving || s.incomplete});
+        const bool seen = std::find(complete.begin(), complete.end(), s.folder) != complete.end();
+        if (s.incomplete && !s.arriving && seen) {
+            complete.erase(std::find(complete.begin(), complete.end(), s.folder));
+        }
+        if (s.incomplete && !s.arriving &&
+            std::find(incomplete_.begin(), incomplete_.end(), s.folder) == incomplete_.end()) {
+            incomplete_.push_back(s.folder);
+            say("incomplete " + s.folder.string() + ": " + scans.back().label);
+        }
+        if (!s.incomplete) {
+            std::erase(incomplete_, s.folder);
+        }
+        if (!s.arriving && !s.incomplete && !seen) {
             complete.push_back(s.folder);
             if (!first) {
                 note = "New series: " + scans.back().label;

@@ -91,7 +91,8 @@ class DicomNode {
     std::condition_variable wake_;
     Shared shared_;
     int exportsSeen_ = 0;
-    std::vector<std::string> peers_; // where exports go: the send peers' names
+    std::vector<std::filesystem::path> incomplete_; // the worker's: said once each
+    std::vector<std::string> peers_;                // where exports go: the send peers' names
     // The frame thread's copy of the lists, and the note the operator has moved past.
     std::vector<workflow::ReceivedScan> received_;
     std::vector<std::string> outbox_;

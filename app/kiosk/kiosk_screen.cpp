@@ -3,11 +3,39 @@
 #include "exports/image_file.hpp"
 #include "gpu/gl_counts.hpp"
 #include "kiosk/kiosk.hpp"
+#include "render/structure_surface.hpp"
 
 #include <algorithm>
 #include <utility>
+#include <vector>
 
 namespace steerseg::kiosk {
+
+namespace {
+
+// The structures but the active one (the level set) to the session's 3D view, when `version`
+// is not the one it holds (a new session holds none).
+void handStructures(session::Session& session, const workflow::StructureList& list,
+                    std::uint64_t version) {
+    if (session.structuresVersion() == version) {
+        return;
+    }
+    const std::size_t voxels = session.scan().geometry().voxelCount();
+    std::vector<render::StructureSurface> others;
+    for (std::size_t n = 0; n < list.items.size(); ++n) {
+        const workflow::Structure& s = list.items[n];
+        if (n == list.active) {
+            continue;
+        }
+        if (!s.mask.runs.empty() && s.mask.voxels != voxels) {
+            return; // the previous scan's list, until the workflow starts this scan's
+        }
+        others.push_back({&s.mask, glm::vec3(s.info.colour), s.info.visible});
+    }
+    session.setStructures(others, version);
+}
+
+} // namespace
 
 void Kiosk::drawScreen(bool hadInput) {
     bool changed = hadInput || evolving_ || touch_.pressing() || !pendingFrames_.empty() ||
@@ -17,6 +45,7 @@ void Kiosk::drawScreen(bool hadInput) {
             painter_.reset();
             shownScan_ = engine_.scansAttached();
         }
+        handStructures(*session, flow_.structureList(), flow_.structuresVersion());
         // The views get what the solver and the panel leave of the frame.
         const double left =
             std::max(frameBudget_ - solverSeconds_ - panelSeconds_, frameBudget_ * 0.25);
@@ -33,10 +62,13 @@ void Kiosk::drawScreen(bool hadInput) {
     }
     composedState_ = flow_.state();
     screen_.begin({0.08F, 0.08F, 0.09F});
-    screenState_ = {layout(), {}, {}, {}};
+    screenState_ = {};
+    screenState_.layout = layout();
     if (session::Session* session = engine_.session()) {
         screenState_ = painter_.compose(*session, screenState_.layout, screen_);
     }
+    screenState_.structures = &flow_.structureList();
+    screenState_.structuresVersion = flow_.structuresVersion();
     panelStart_ = Clock::now();
     glBindFramebuffer(GL_FRAMEBUFFER, screen_.framebuffer());
     // The panel lists the controllers and the DICOM node beside what the workflow publishes.

@@ -2,6 +2,7 @@
 
 #include "engine/session_engine.hpp"
 #include "workflow/param_ranges.hpp"
+#include "workflow/transition_table.hpp"
 #include "workflow/utc_time.hpp"
 
 #include <algorithm>
@@ -115,8 +116,8 @@ void SessionAutosave::frame(workflow::Workflow& flow, engine::SessionEngine& eng
         // The operator went on with new work without answering: that is a discard.
         answer(false);
     }
-    if (!offering() && due(status, engine)) {
-        save(status, engine);
+    if (!offering() && due(flow, engine)) {
+        save(flow, engine);
     }
 }
 
@@ -138,7 +139,8 @@ void SessionAutosave::finishResume(workflow::Workflow& flow, engine::SessionEngi
                                                s.erasures,
                                                s.state,
                                                "resumed the session saved " + utcOf(s.savedAtMs),
-                                               s.barriers};
+                                               s.barriers,
+                                               s.structures};
             const workflow::Workflow::Outcome o = flow.restoreSession(restored);
             if (!o.accepted) {
                 failure = o.reason;
@@ -158,13 +160,14 @@ void SessionAutosave::finishResume(workflow::Workflow& flow, engine::SessionEngi
     resuming_ = false;
     offer_.reset();
     if (failure.empty()) {
-        save(flow.status(), engine); // the restored point is this session's first autosave
+        save(flow, engine); // the restored point is this session's first autosave
     }
 }
 
-bool SessionAutosave::due(const workflow::Status& status,
+bool SessionAutosave::due(const workflow::Workflow& flow,
                           const engine::SessionEngine& engine) const {
     using model::State;
+    const workflow::Status& status = flow.status();
     const State state = status.state;
     if (state == State::NoScan || state == State::Loading || state == State::Exporting) {
         return false;
@@ -179,10 +182,12 @@ bool SessionAutosave::due(const workflow::Status& status,
     const model::LevelSetParams& p = status.params;
     return engine.levelSetVersion() != savedVersion_ || p.T != savedParams_.T ||
            p.eps != savedParams_.eps || p.alpha != savedParams_.alpha ||
-           status.radius != savedRadius_ || status.box != savedBox_;
+           status.radius != savedRadius_ || status.box != savedBox_ ||
+           flow.structuresVersion() != savedStructures_;
 }
 
-void SessionAutosave::save(const workflow::Status& status, engine::SessionEngine& engine) {
+void SessionAutosave::save(const workflow::Workflow& flow, engine::SessionEngine& engine) {
+    const workflow::Status& status = flow.status();
     const SteadyClock::time_point start = SteadyClock::now();
     if (engine.scansAttached() != referenceScans_) {
         // A stat (a DICOM folder's listing) once per scan, not once per snapshot.
@@ -220,7 +225,15 @@ void SessionAutosave::save(const workflow::Status& status, engine::SessionEngine
         readBackSeconds_ += std::chrono::duration<double>(SteadyClock::now() - start).count();
         s.mask = encodeRuns(mask);
     }
+    // A session of one structure as the scan started it saves as before structures; with more,
+    // every other structure's mask (already runs in host memory) rides along.
+    if (status.structures.size() > 1 ||
+        (!status.structures.empty() &&
+         status.structures.front().info.name != model::kFirstStructureName)) {
+        s.structures = flow.structures();
+    }
     writer_->submit(std::move(s));
+    savedStructures_ = flow.structuresVersion();
     savedState_ = status.state;
     savedVersion_ = engine.levelSetVersion();
     savedParams_ = status.params;
@@ -260,10 +273,11 @@ void SessionAutosave::reportWriteError() {
 void SessionAutosave::finish(const workflow::Workflow& flow, engine::SessionEngine& engine) {
     if (!offering() && !resuming_) {
         const workflow::Status& status = flow.status();
-        if (due(status, engine)) {
-            save(status, engine);
+        if (due(flow, engine)) {
+            save(flow, engine);
         }
-        const bool unexported = status.hasLevelSet && status.state != model::State::Done;
+        const bool unexported =
+            workflow::factsOf(status).result && status.state != model::State::Done;
         if (!unexported) {
             writer_->markClean();
         }

@@ -56,9 +56,9 @@ class SessionAutosave {
 
   private:
     void finishResume(workflow::Workflow& flow, engine::SessionEngine& engine);
-    [[nodiscard]] bool due(const workflow::Status& status,
+    [[nodiscard]] bool due(const workflow::Workflow& flow,
                            const engine::SessionEngine& engine) const;
-    void save(const workflow::Status& status, engine::SessionEngine& engine);
+    void save(const workflow::Workflow& flow, engine::SessionEngine& engine);
     void reportWriteError();
     void readAuditLogBeforeItOpens();
 
@@ -80,6 +80,7 @@ class SessionAutosave {
     std::uint64_t savedVersion_ = 0;
     model::LevelSetParams savedParams_;
     std::optional<model::Box> savedBox_;
+    std::uint64_t savedStructures_ = 0; // Workflow::structuresVersion
     double savedRadius_ = 0.0;
     std::chrono::steady_clock::time_point savedAt_{};
     // The frame thread's share: reading the mask back and encoding its runs.

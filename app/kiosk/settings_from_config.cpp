@@ -49,6 +49,8 @@ workflow::Settings workflowSettings(const config::KioskConfig& config,
     s.classifyPlaceReach = config.speed.classifyPlaceReach;
     s.exportFolder = config.exports.folder;
     s.exportFormats = config.exports.formats;
+    s.structureKinds = config.structures;
+    s.structuresOverlap = config.segmentation.structuresOverlap;
     if (numerics != nullptr) {
         turnOffFailedSpeeds(s, *numerics);
     }

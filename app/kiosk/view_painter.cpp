@@ -5,6 +5,7 @@
 #include <chrono>
 #include <optional>
 #include <sstream>
+#include <string>
 
 namespace steerseg::kiosk {
 
@@ -134,7 +135,9 @@ bool ViewPainter::draw(session::Session& session, const workflow::Status& status
         std::string signature;
         if (n == kVolume) {
             params[n] = engine::volumeViewParams(session, status, size);
-            signature = volumeSignature(status, levelSetVersion, size);
+            // The other structures it draws too.
+            signature = volumeSignature(status, levelSetVersion, size) + ' ' +
+                        std::to_string(session.structuresVersion().value_or(0));
         } else {
             const bool speed = n == kSecond;
             const model::SliceAxis axis = axes[n - 1];

@@ -13,6 +13,9 @@ namespace {
 constexpr std::array<std::string_view, kParamCount> kParamNames{"T", "eps", "alpha", "radius"};
 // In StrokeMode's order.
 constexpr std::array<std::string_view, 3> kStrokeModeNames{"add", "erase", "outside"};
+// In StructureOp's order.
+constexpr std::array<std::string_view, 7> kStructureOpNames{"add",  "select", "rename", "recolour",
+                                                            "show", "hide",   "delete"};
 
 // Knobs and keys deliver detents; these turn one detent into the view's own units.
 constexpr double kRotateDegreesPerStep = 5.0;
@@ -108,6 +111,8 @@ template <class T> constexpr std::string_view nameOf() {
         return "clear_box";
     } else if constexpr (std::is_same_v<T, SetBoxMode>) {
         return "set_box_mode";
+    } else if constexpr (std::is_same_v<T, EditStructure>) {
+        return "edit_structure";
     } else {
         static_assert(std::is_same_v<T, Quit>, "every action needs a name");
         return "quit";
@@ -308,6 +313,7 @@ static_assert(std::is_same_v<TypeOf<ActionKind::Correct>, Correct>);
 static_assert(std::is_same_v<TypeOf<ActionKind::SetBox>, SetBox>);
 static_assert(std::is_same_v<TypeOf<ActionKind::ClearBox>, ClearBox>);
 static_assert(std::is_same_v<TypeOf<ActionKind::SetBoxMode>, SetBoxMode>);
+static_assert(std::is_same_v<TypeOf<ActionKind::EditStructure>, EditStructure>);
 static_assert(std::is_same_v<TypeOf<ActionKind::Quit>, Quit>);
 static_assert(static_cast<std::size_t>(ActionKind::Quit) + 1 == kActionKindCount);
 
@@ -319,6 +325,19 @@ constexpr std::array<std::string_view, kActionKindCount> kindNames(std::index_se
 constexpr auto kKindNames = kindNames(std::make_index_sequence<kActionKindCount>{});
 
 } // namespace
+
+std::string_view structureOpName(StructureOp op) {
+    return kStructureOpNames.at(static_cast<std::size_t>(op));
+}
+
+std::optional<StructureOp> structureOpFromName(std::string_view name) {
+    for (std::size_t i = 0; i < kStructureOpNames.size(); ++i) {
+        if (kStructureOpNames[i] == name) {
+            return static_cast<StructureOp>(i);
+        }
+    }
+    return std::nullopt;
+}
 
 ActionKind kindOf(const Action& action) {
     return static_cast<ActionKind>(action.index());

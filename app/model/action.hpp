@@ -5,6 +5,7 @@
 // action came from. No GL, no OS: the workflow runs in unit tests without a GPU.
 #include "model/box.hpp"
 #include "model/speed_kind.hpp"
+#include "model/structure.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -181,14 +182,29 @@ struct SetBoxMode {
     bool on = false;
     std::optional<BoxFace> face;
 };
+// The session's structures (model::StructureInfo, docs/structures.md). Add: the active one is
+// kept as it stands, as a mask, and a new empty one becomes active; select: the named one
+// becomes active again, its surface and parameters back; rename, recolour, show and hide change
+// how the views and the exports name and draw it; delete drops it (deleting the active one
+// makes the one before it active). One undo step each.
+enum class StructureOp { Add, Select, Rename, Recolour, Show, Hide, Delete };
+std::string_view structureOpName(StructureOp op); // "add", "select", "rename", ...
+std::optional<StructureOp> structureOpFromName(std::string_view name);
+struct EditStructure {
+    StructureOp op = StructureOp::Add;
+    std::string name;       // the structure it names (add: the new one's name)
+    std::string to;         // rename: the new name
+    glm::dvec3 colour{0.0}; // recolour: r g b within 0..1
+};
 struct Quit {};
 
-using Action = std::variant<LoadScan, Probe, ApplyPreset, SetParam, NudgeParam, NudgeSelected,
-                            SelectParam, CycleParam, SetWindow, AddSeed, Erase, SetEraseMode,
-                            SetSpeed, MarkOutside, ClearExamples, SetOutsideMode, PaintStroke, Run,
-                            Pause, ToggleRun, Finish, Resume, Export, Undo, Redo, Restart, Proceed,
-                            Back, Dismiss, AcknowledgeAudit, RotateView, ZoomView, PageSlice,
-                            SetSlice, ShowSlices, Correct, SetBox, ClearBox, SetBoxMode, Quit>;
+using Action =
+    std::variant<LoadScan, Probe, ApplyPreset, SetParam, NudgeParam, NudgeSelected, SelectParam,
+                 CycleParam, SetWindow, AddSeed, Erase, SetEraseMode, SetSpeed, MarkOutside,
+                 ClearExamples, SetOutsideMode, PaintStroke, Run, Pause, ToggleRun, Finish, Resume,
+                 Export, Undo, Redo, Restart, Proceed, Back, Dismiss, AcknowledgeAudit, RotateView,
+                 ZoomView, PageSlice, SetSlice, ShowSlices, Correct, SetBox, ClearBox, SetBoxMode,
+                 EditStructure, Quit>;
 
 // "load_scan", "probe", ... (snake_case of the type): the audit log's and scripts' names.
 std::string_view actionName(const Action& action);
@@ -235,6 +251,7 @@ enum class ActionKind {
     SetBox,
     ClearBox,
     SetBoxMode,
+    EditStructure,
     Quit,
 };
 inline constexpr std::size_t kActionKindCount = std::variant_size_v<Action>;

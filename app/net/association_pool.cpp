@@ -8,17 +8,21 @@
 #include <cstring>
 #include <dcmtk/config/osconfig.h> // must come first among DCMTK's headers
 #include <dcmtk/dcmnet/assoc.h>
+#include <dcmtk/dcmnet/dcmlayer.h>
 #include <dcmtk/dcmnet/dntypes.h>
 #include <dcmtk/dcmnet/dul.h>
+#include <dcmtk/dcmtls/tlstrans.h>
 #include <fcntl.h>
 #include <mutex>
 #include <netinet/in.h>
-#include <poll.h>
+#include <openssl/err.h>
+#include <openssl/ssl.h>
 #include <stdexcept>
 #include <sys/ioctl.h>
 #include <sys/socket.h>
 #include <system_error>
 #include <unistd.h>
+#include <utility>
 
 namespace steerseg::net {
 
@@ -48,12 +52,70 @@ std::string peerAddress(int fd) {
     return text;
 }
 
-enum class Request { Waiting, Whole, Gone, NotOne };
+constexpr std::size_t kPduHead = 6; // type, reserved, 32-bit length
+
+std::uint32_t pduLength(const unsigned char* head) {
+    return (std::uint32_t{head[2]} << 24U) | (std::uint32_t{head[3]} << 16U) |
+           (std::uint32_t{head[4]} << 8U) | std::uint32_t{head[5]};
+}
+
+// OpenSSL's reason for the failure just seen, in one line.
+std::string tlsReason(int sslError) {
+    const unsigned long e = ERR_get_error();
+    ERR_clear_error();
+    if (e != 0) {
+        const char* reason = ERR_reason_error_string(e);
+        return reason != nullptr ? reason : "error " + std::to_string(e);
+    }
+    return sslError == SSL_ERROR_SYSCALL || sslError == SSL_ERROR_ZERO_RETURN
+               ? "the connection ended during the handshake"
+               : "handshake failed (OpenSSL error " + std::to_string(sslError) + ")";
+}
+
+// The connection DCMTK is handed: the pool has run its handshake and read the association
+// request through it (DCMTK must still read that request, so it is given back first).
+class ReadyTlsConnection : public DcmTLSConnection {
+  public:
+    ReadyTlsConnection(int fd, SSL* ssl, std::vector<unsigned char> request)
+        : DcmTLSConnection(fd, ssl), request_(std::move(request)) {}
+
+    OFCondition serverSideHandshake() override { return EC_Normal; }
+
+    ssize_t read(void* buf, size_t nbyte) override {
+        if (given_ < request_.size()) {
+            const std::size_t n = std::min(nbyte, request_.size() - given_);
+            std::memcpy(buf, request_.data() + given_, n);
+            given_ += n;
+            return static_cast<ssize_t>(n);
+        }
+        return DcmTLSConnection::read(buf, nbyte);
+    }
+
+    OFBool networkDataAvailable(int timeout) override {
+        return given_ < request_.size() ? OFTrue : DcmTLSConnection::networkDataAvailable(timeout);
+    }
+
+  private:
+    std::vector<unsigned char> request_;
+    std::size_t given_ = 0;
+};
+
+} // namespace
+
+// DCMTK asks its network's transport layer for each connection's object; while the pool hands
+// over a TLS connection (under externalSocketLock) that is the one it made ready.
+class AssociationPool::HandOver : public DcmTransportLayer {
+  public:
+    DcmTransportConnection* createConnection(DcmNativeSocketType /*openSocket*/,
+                                             OFBool /*useSecureLayer*/) override {
+        return std::exchange(next, nullptr);
+    }
+    DcmTransportConnection* next = nullptr;
+};
 
 // Whether the connection's association request has arrived whole, read without taking it.
-// Over TLS the first bytes are the handshake's: their arrival is all that can be told here.
-Request requestOf(int fd, bool secure) {
-    unsigned char head[6];
+AssociationPool::Request AssociationPool::requestOf(int fd) {
+    unsigned char head[kPduHead];
     const ssize_t n = ::recv(fd, head, sizeof head, MSG_PEEK | MSG_DONTWAIT);
     if (n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)) {
         return Request::Gone;
@@ -61,17 +123,13 @@ Request requestOf(int fd, bool secure) {
     if (n <= 0) {
         return Request::Waiting;
     }
-    if (secure) {
-        return Request::Whole;
-    }
     if (head[0] != kAssociateRequest) {
         return Request::NotOne;
     }
     if (n < static_cast<ssize_t>(sizeof head)) {
         return Request::Waiting;
     }
-    const std::uint32_t length = (std::uint32_t{head[2]} << 24U) | (std::uint32_t{head[3]} << 16U) |
-                                 (std::uint32_t{head[4]} << 8U) | std::uint32_t{head[5]};
+    const std::uint32_t length = pduLength(head);
     if (length > kMaxRequestBytes) {
         return Request::NotOne;
     }
@@ -84,14 +142,19 @@ Request requestOf(int fd, bool secure) {
                : Request::Waiting;
 }
 
-} // namespace
+void AssociationPool::discard(const Pending& p) {
+    if (p.ssl != nullptr) {
+        SSL_free(p.ssl);
+    }
+    ::close(p.fd);
+}
 
 AssociationPool::AssociationPool(int port, const Limits& limits) : port_(port), limits_(limits) {}
 
 AssociationPool::~AssociationPool() {
     reap(true);
     for (const Pending& p : pending_) {
-        ::close(p.fd);
+        discard(p);
     }
     if (network_ != nullptr) {
         ASC_dropNetwork(&network_);
@@ -101,7 +164,7 @@ AssociationPool::~AssociationPool() {
     }
 }
 
-void AssociationPool::open(DcmTransportLayer* tls) {
+void AssociationPool::open(ssl_ctx_st* tls) {
     std::string problem;
     listenFd_ = bindPort(port_, SOCK_NONBLOCK, problem);
     if (listenFd_ < 0) {
@@ -124,11 +187,67 @@ void AssociationPool::open(DcmTransportLayer* tls) {
         throw std::runtime_error(c.text());
     }
     if (tls != nullptr) {
-        c = ASC_setTransportLayer(network_, tls, 0);
+        handOver_ = std::make_unique<HandOver>();
+        c = ASC_setTransportLayer(network_, handOver_.get(), 0);
         if (c.bad()) {
             throw std::runtime_error(std::string("TLS: ") + c.text());
         }
-        secure_ = true;
+        tls_ = tls;
+    }
+}
+
+// The handshake as far as the peer's bytes take it (the socket does not block), then the
+// association request read through it. A handshake that stops half way is one more pending
+// connection that waits for its deadline, beside the others.
+AssociationPool::Request AssociationPool::tlsRequest(Pending& p, std::string& why) const {
+    if (p.ssl == nullptr) {
+        p.ssl = SSL_new(tls_);
+        if (p.ssl == nullptr || SSL_set_fd(p.ssl, p.fd) != 1) {
+            why = tlsReason(SSL_ERROR_SSL);
+            return Request::Refused;
+        }
+    }
+    const auto wants = [&p](int error) {
+        if (error == SSL_ERROR_WANT_READ || error == SSL_ERROR_WANT_WRITE) {
+            p.events = error == SSL_ERROR_WANT_READ ? POLLIN : POLLOUT;
+            return true;
+        }
+        return false;
+    };
+    if (!p.handshaken) {
+        ERR_clear_error();
+        const int r = SSL_accept(p.ssl);
+        if (r != 1) {
+            const int error = SSL_get_error(p.ssl, r);
+            if (wants(error)) {
+                return Request::Waiting;
+            }
+            why = tlsReason(error);
+            return Request::Refused;
+        }
+        p.handshaken = true;
+    }
+    // Exactly the request's bytes: what follows it is DCMTK's to read.
+    std::size_t needed = kPduHead;
+    for (;;) {
+        if (p.request.size() >= kPduHead) {
+            if (p.request[0] != kAssociateRequest ||
+                pduLength(p.request.data()) > kMaxRequestBytes) {
+                return Request::NotOne;
+            }
+            needed = kPduHead + pduLength(p.request.data());
+        }
+        if (p.request.size() >= needed) {
+            return Request::Whole;
+        }
+        const std::size_t have = p.request.size();
+        p.request.resize(needed);
+        ERR_clear_error();
+        const int n = SSL_read(p.ssl, p.request.data() + have, static_cast<int>(needed - have));
+        p.request.resize(have + static_cast<std::size_t>(std::max(n, 0)));
+        if (n <= 0) {
+            return wants(SSL_get_error(p.ssl, n)) ? Request::Waiting : Request::Gone;
+        }
     }
 }
 
@@ -147,26 +266,38 @@ void AssociationPool::reap(bool all) {
 }
 
 void AssociationPool::acceptConnections() {
-    for (;;) {
+    // At most a full house a call: a peer that reconnects as fast as it is pushed out must not
+    // keep this loop from the requests.
+    for (int n = 0; n < limits_.maxPending; ++n) {
         const int fd = ::accept4(listenFd_, nullptr, nullptr, SOCK_CLOEXEC | SOCK_NONBLOCK);
         if (fd < 0) {
             return; // none waiting (or the kernel's reason, tried again on the next wake)
         }
-        Pending p{fd, peerAddress(fd),
-                  Clock::now() + std::chrono::seconds(limits_.negotiationSeconds)};
-        // Past a cap the oldest goes: a connection that has said nothing for longest is the
-        // likeliest to be a silent one, and the newest may be the scanner.
+        Pending p;
+        p.fd = fd;
+        p.address = peerAddress(fd);
+        p.deadline = Clock::now() + std::chrono::seconds(limits_.negotiationSeconds);
         const auto sameAddress = [&p](const Pending& q) { return q.address == p.address; };
-        const auto fromThere = std::count_if(pending_.begin(), pending_.end(), sameAddress);
-        const auto oldest =
-            fromThere >= limits_.maxPendingPerAddress
-                ? std::find_if(pending_.begin(), pending_.end(), sameAddress)
-                : (static_cast<int>(pending_.size()) >= limits_.maxPending ? pending_.begin()
-                                                                           : pending_.end());
-        if (oldest != pending_.end()) {
+        const auto full = [&] {
+            return std::count_if(pending_.begin(), pending_.end(), sameAddress) >=
+                       limits_.maxPendingPerAddress ||
+                   static_cast<int>(pending_.size()) >= limits_.maxPending;
+        };
+        // A request that has arrived whole is taken, never pushed out: a flood from the
+        // scanner's own address must not push the scanner's connection out.
+        if (full()) {
+            sweep();
+        }
+        if (full()) {
+            // Past a cap the oldest goes: a connection that has said nothing for longest is the
+            // likeliest to be a silent one, and the newest may be the scanner.
+            const auto oldest = std::count_if(pending_.begin(), pending_.end(), sameAddress) >=
+                                        limits_.maxPendingPerAddress
+                                    ? std::find_if(pending_.begin(), pending_.end(), sameAddress)
+                                    : pending_.begin();
             ++closed_[oldest->address + ": pushed out by newer ones before its association "
                                         "request"];
-            ::close(oldest->fd);
+            discard(*oldest);
             pending_.erase(oldest);
         }
         pending_.push_back(std::move(p));
@@ -177,61 +308,90 @@ void AssociationPool::waitForRequests() {
     std::vector<pollfd> fds{{listenFd_, POLLIN, 0}};
     auto wake = Clock::now() + std::chrono::seconds(1);
     for (const Pending& p : pending_) {
-        fds.push_back({p.fd, POLLIN, 0});
+        fds.push_back({p.fd, p.events, 0});
         wake = std::min(wake, p.deadline);
     }
-    const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(wake - Clock::now());
+    // Requests already whole (taken by a sweep at a cap) are not kept waiting.
+    const auto wait =
+        ready_.empty() ? std::chrono::duration_cast<std::chrono::milliseconds>(wake - Clock::now())
+                       : std::chrono::milliseconds(0);
     ::poll(fds.data(), fds.size(), static_cast<int>(std::max<std::int64_t>(wait.count(), 0)));
+    sweep();
+}
+
+void AssociationPool::sweep() {
     const Clock::time_point now = Clock::now();
     std::vector<Pending> still;
-    for (const Pending& p : pending_) {
-        switch (requestOf(p.fd, secure_)) {
+    for (Pending& p : pending_) {
+        std::string why;
+        switch (tls_ != nullptr ? tlsRequest(p, why) : requestOf(p.fd)) {
         case Request::Whole:
-            ready_.push_back(p.fd);
+            ready_.push_back(std::move(p));
             continue;
         case Request::Gone:
-            ::close(p.fd);
+            discard(p);
             continue;
         case Request::NotOne:
             ++closed_[p.address + ": what it sent is no association request"];
-            ::close(p.fd);
+            discard(p);
+            continue;
+        case Request::Refused:
+            ++refusedTls_[p.address + ": TLS error: " + why];
+            discard(p);
             continue;
         case Request::Waiting:
             break;
         }
         if (now >= p.deadline) {
-            ++closed_[p.address + ": no association request within " +
+            ++closed_[p.address +
+                      (tls_ != nullptr && !p.handshaken ? ": no TLS handshake within "
+                                                        : ": no association request within ") +
                       std::to_string(limits_.negotiationSeconds) + " s"];
-            ::close(p.fd);
+            discard(p);
             continue;
         }
-        still.push_back(p);
+        still.push_back(std::move(p));
     }
     pending_ = std::move(still);
 }
 
-void AssociationPool::take(int fd, const Serve& serve, const Busy& busy, const Refused& refused) {
+void AssociationPool::take(Pending& p, const Serve& serve, const Busy& busy,
+                           const Refused& refused) {
+    const int fd = p.fd;
     // DCMTK reads the socket blocking from here on: whole requests read at once.
     ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL, 0) & ~O_NONBLOCK);
+    std::unique_ptr<ReadyTlsConnection> ready;
+    if (p.ssl != nullptr) {
+        ready = std::make_unique<ReadyTlsConnection>(fd, std::exchange(p.ssl, nullptr),
+                                                     std::move(p.request));
+    }
     T_ASC_Association* assoc = nullptr;
     OFCondition c;
     {
         const std::lock_guard lock(externalSocketLock);
         dcmExternalSocketHandle.set(fd);
+        if (handOver_) {
+            handOver_->next = ready.get();
+        }
         c = ASC_receiveAssociation(network_, &assoc, ASC_DEFAULTMAXPDU, nullptr, nullptr,
-                                   secure_ ? OFTrue : OFFalse, DUL_NOBLOCK,
+                                   ready ? OFTrue : OFFalse, DUL_NOBLOCK,
                                    limits_.negotiationSeconds);
         dcmExternalSocketHandle.set(DCMNET_INVALID_SOCKET);
+        if (handOver_ && handOver_->next == nullptr) {
+            (void)ready.release(); // DCMTK's association owns it (and the socket) now
+        } else if (handOver_) {
+            handOver_->next = nullptr;
+        }
     }
     if (c.bad()) {
-        // A failed TLS handshake, or a request DCMTK cannot parse: that connection ends, the
-        // node goes on. Whoever holds the socket closes it.
+        // A request DCMTK cannot parse: that connection ends, the node goes on. Whoever holds
+        // the socket closes it (the connection object, while the pool still has it).
         if (assoc != nullptr && assoc->DULassociation != nullptr) {
             ASC_dropAssociation(assoc);
-        } else {
+        } else if (!ready) {
             ::close(fd);
         }
-        refused(std::string(secure_ ? "refused TLS connection: " : "refused connection: ") +
+        refused(std::string(tls_ != nullptr ? "refused TLS connection: " : "refused connection: ") +
                 c.text());
         ASC_destroyAssociation(&assoc);
         return;
@@ -282,8 +442,8 @@ void AssociationPool::serve(const std::atomic<bool>& stop, const Serve& serve, c
         acceptConnections();
         waitForRequests();
         acceptConnections();
-        for (const int fd : ready_) {
-            take(fd, serve, busy, refused);
+        for (Pending& p : ready_) {
+            take(p, serve, busy, refused);
         }
         ready_.clear();
         // One line a cause, not one a connection: a port scanner's fifty are one event.
@@ -291,9 +451,14 @@ void AssociationPool::serve(const std::atomic<bool>& stop, const Serve& serve, c
             refused("closed " + std::to_string(count) + " connection(s) from " + why);
         }
         closed_.clear();
+        for (const auto& [why, count] : refusedTls_) {
+            refused("refused TLS connection from " + why +
+                    (count > 1 ? " (" + std::to_string(count) + " times)" : ""));
+        }
+        refusedTls_.clear();
     }
     for (const Pending& p : pending_) {
-        ::close(p.fd);
+        discard(p);
     }
     pending_.clear();
     // The associations still open end now: their reads fail at once, and each thread aborts

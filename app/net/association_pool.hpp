@@ -8,19 +8,24 @@
 // says nothing held up every caller behind it. Here a new connection waits among the others,
 // each with its own short deadline and within caps per address and in all, until its request
 // has arrived whole; only then does DCMTK read it (from the socket handed over, which it then
-// owns), at once.
+// owns), at once. Over TLS the pool also runs each handshake itself, without blocking, beside
+// the others and within the same deadline, and reads the request through it; DCMTK then gets
+// the connection ready, the request's bytes first.
 #include <atomic>
 #include <chrono>
 #include <functional>
 #include <list>
 #include <map>
+#include <memory>
+#include <poll.h>
 #include <string>
 #include <thread>
 #include <vector>
 
-class DcmTransportLayer;
 struct T_ASC_Association;
 struct T_ASC_Network;
+struct ssl_ctx_st;
+struct ssl_st;
 
 namespace steerseg::net {
 
@@ -52,8 +57,9 @@ class AssociationPool {
     AssociationPool& operator=(const AssociationPool&) = delete;
 
     // Binds the port; throws std::runtime_error with the reason when it cannot. With `tls`
-    // (not owned; it must outlive the pool) every connection is TLS.
-    void open(DcmTransportLayer* tls = nullptr);
+    // (OpenSSL's context, with the node's certificate and the trusted CAs; not owned, it must
+    // outlive the pool) every connection is TLS.
+    void open(ssl_ctx_st* tls = nullptr);
     // Until `stop` becomes true (checked at least once a second); then ends the open
     // associations (their connections shut down under them: a stop does not wait for a silent
     // peer's timeout) and joins their threads.
@@ -74,21 +80,39 @@ class AssociationPool {
         int fd = -1;
         std::string address;
         std::chrono::steady_clock::time_point deadline;
+        // TLS only: the handshake's state (then the connection's), whether it is done, the
+        // request's bytes read through it so far, and what the handshake waits for (POLLIN or
+        // POLLOUT).
+        ssl_st* ssl = nullptr;
+        bool handshaken = false;
+        std::vector<unsigned char> request;
+        short events = POLLIN;
     };
+    enum class Request { Waiting, Whole, Gone, NotOne, Refused };
+    static Request requestOf(int fd);
+    Request tlsRequest(Pending& p, std::string& why) const;
+    static void discard(const Pending& p);
     void reap(bool all);
     void acceptConnections();
     void waitForRequests();
-    void take(int fd, const Serve& serve, const Busy& busy, const Refused& refused);
+    // Each pending connection's progress: whole requests to ready_, the failed and the
+    // overdue closed.
+    void sweep();
+    void take(Pending& p, const Serve& serve, const Busy& busy, const Refused& refused);
     void admit(T_ASC_Association* assoc, int fd, const Serve& serve, const Busy& busy);
 
     int port_;
     Limits limits_;
     int listenFd_ = -1;
     T_ASC_Network* network_ = nullptr;
-    bool secure_ = false;
+    ssl_ctx_st* tls_ = nullptr;
+    // DCMTK's network takes its TLS connections from this: the one the pool made ready.
+    class HandOver;
+    std::unique_ptr<HandOver> handOver_;
     std::vector<Pending> pending_;
-    std::vector<int> ready_;            // whose request is there, for take()
-    std::map<std::string, int> closed_; // connections closed before their request, by cause
+    std::vector<Pending> ready_;            // whose request is there, for take()
+    std::map<std::string, int> closed_;     // connections closed before their request, by cause
+    std::map<std::string, int> refusedTls_; // TLS handshakes failed, by address and reason
     std::list<Worker> workers_;
 };
 

@@ -1,5 +1,6 @@
 #include "net/received_series.hpp"
 
+#include "net/series_marks.hpp"
 #include "net/store_scp.hpp" // isSafeUid
 
 #include <algorithm>
@@ -111,7 +112,9 @@ std::vector<ReceivedSeries> listReceivedSeries(const fs::path& store, std::chron
     for (const fs::path& study : uidFolders(store)) {
         for (const fs::path& folder : uidFolders(study)) {
             if (auto series = readSeries(folder)) {
-                series->arriving = now - series->newest < settle;
+                const SeriesState state = seriesState(folder);
+                series->arriving = now - series->newest < settle || state.receiving;
+                series->incomplete = state.incomplete;
                 list.push_back(std::move(*series));
             }
         }
@@ -134,7 +137,10 @@ std::string describe(const ReceivedSeries& s) {
     }
     line += (line.empty() ? "(" : " (") + std::to_string(s.images) +
             (s.images == 1 ? " image)" : " images)");
-    return s.arriving ? line + " - arriving" : line;
+    if (s.arriving) {
+        return line + " - arriving";
+    }
+    return s.incomplete ? line + " - incomplete (sending ended early)" : line;
 }
 
 } // namespace steerseg::net

@@ -4,6 +4,7 @@
 #include "net/retrieve_scu.hpp"
 
 #include "net/scu_association.hpp"
+#include "net/series_marks.hpp"
 #include "net/store_filing.hpp"
 #include "net/store_scp.hpp" // isSafeUid
 
@@ -31,7 +32,11 @@ class RetrieveScu : public PeerScu {
                   lastRefusal_ = line;
               }
           }),
-          target_{retrieve.store, retrieve.minFreeBytes, " from " + peer.aet} {}
+          marks_("a C-GET from " + describe(peer)), target_{retrieve.store, retrieve.minFreeBytes,
+                                                            " from " + peer.aet, &marks_} {}
+
+    // A C-GET that did not bring every image leaves its series marked incomplete.
+    void finishSeries(bool whole) { marks_.finish(whole); }
 
     // The request's context, for the C-CANCEL.
     void setRequestContext(T_ASC_PresentationContextID id) { requestContext_ = id; }
@@ -180,6 +185,7 @@ class RetrieveScu : public PeerScu {
     const RetrieveReport& report_;
     const RetrieveCancel& cancel_;
     StoreShared shared_;
+    SeriesMarks marks_;
     FilingTarget target_;
     std::string lastRefusal_;
     T_ASC_PresentationContextID requestContext_ = 0;
@@ -309,6 +315,7 @@ RetrieveOutcome retrieve(const DicomPeer& peer, const RetrieveRequest& request,
     } else {
         outcome.problem = outcomeProblem(scu, peer, retrieveOptions, outcome.cancelled);
     }
+    scu.finishSeries(outcome.problem.empty() && !outcome.cancelled);
     return outcome;
 }
 

@@ -2,11 +2,14 @@
 // rules: who may call, how much one association may bring, how much disk must stay free.
 #include "net/store_association.hpp"
 
+#include "net/series_marks.hpp"
+
 #include <algorithm>
 #include <dcmtk/config/osconfig.h> // must come first among DCMTK's headers
 #include <dcmtk/dcmdata/dcuid.h>
 #include <dcmtk/dcmnet/scpthrd.h>
 #include <memory>
+#include <optional>
 
 namespace steerseg::net {
 namespace {
@@ -40,6 +43,17 @@ class StoreAssociation : public DcmThreadSCP {
                                   DcmSCPActionType& /*desiredAction*/) override {
         callingAet_ = params.DULparams.callingAPTitle;
         callingHost_ = params.DULparams.callingPresentationAddress;
+        marks_.emplace(callingAet_ + " at " + callingHost_);
+    }
+
+    void notifyReleaseRequest() override { released_ = true; }
+    // DCMTK says so for an A-ABORT and for a connection closed or reset under it alike.
+    void notifyAbortRequest() override {
+        ending_ = "aborted by the sender, or its connection closed";
+    }
+    void notifyConnectionTimeout() override {
+        ending_ =
+            "nothing from the sender within " + std::to_string(settings_.timeoutSeconds) + " s";
     }
 
     // DcmSCP asks this after notifyAssociationRequest, so the caller's address is known here
@@ -98,6 +112,30 @@ class StoreAssociation : public DcmThreadSCP {
         }
     }
 
+  public:
+    // After run(): the series this association wrote into are whole, or marked incomplete and
+    // said so, one line each.
+    void finishSeries() {
+        if (!marks_) {
+            return;
+        }
+        const bool whole = released_ && failed_ == 0 && !overQuota_;
+        for (const auto& folder : marks_->finish(whole)) {
+            if (whole) {
+                continue;
+            }
+            const std::string why =
+                overQuota_           ? "the association was aborted past its quota"
+                : released_          ? std::to_string(failed_) + " object(s) refused"
+                : shared_.stopping() ? "the node stopped before the association's release"
+                                     : "the association ended before its release (" + ending_ + ")";
+            shared_.report("incomplete series " +
+                           folder.lexically_relative(settings_.store).string() + " from " +
+                           callingAet_ + ": " + why + "; " + std::to_string(stored_) +
+                           " object(s) of the association stored");
+        }
+    }
+
   private:
     OFCondition store(T_DIMSE_C_StoreRQ& request, const DcmPresentationContextInfo& info) {
         DcmDataset* received = nullptr;
@@ -118,8 +156,11 @@ class StoreAssociation : public DcmThreadSCP {
         const Uint16 status =
             fileObject(std::move(dataset), request.AffectedSOPClassUID,
                        request.AffectedSOPInstanceUID, info.acceptedTransferSyntax.c_str(),
-                       {settings_.store, settings_.minFreeBytes, " from " + callingAet_}, shared_);
+                       {settings_.store, settings_.minFreeBytes, " from " + callingAet_,
+                        marks_ ? &*marks_ : nullptr},
+                       shared_);
         stored_ += status == 0 ? 1 : 0;
+        failed_ += status == 0 ? 0 : 1;
         return sendSTOREResponse(info.presentationContextID, request, status);
     }
 
@@ -131,6 +172,10 @@ class StoreAssociation : public DcmThreadSCP {
     std::uint64_t objectBytes_ = 0;
     bool overQuota_ = false;
     int stored_ = 0;
+    int failed_ = 0;
+    bool released_ = false;
+    std::string ending_ = "the connection ended or the node stopped";
+    std::optional<SeriesMarks> marks_;
 };
 
 } // namespace
@@ -141,6 +186,7 @@ void serveStoreAssociation(T_ASC_Association* assoc, const ScpSettings& settings
     // run() negotiates, serves the commands and drops and destroys the association; what went
     // wrong on the way is reported by the hooks above.
     (void)scp.run(assoc);
+    scp.finishSeries();
 }
 
 } // namespace steerseg::net

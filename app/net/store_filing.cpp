@@ -4,6 +4,7 @@
 
 #include "exports/dicom_file_bytes.hpp"
 #include "files/file_write.hpp"
+#include "net/series_marks.hpp"
 
 #include <dcmtk/config/osconfig.h> // must come first among DCMTK's headers
 #include <dcmtk/dcmdata/dcdeftag.h>
@@ -46,6 +47,12 @@ std::uint16_t write(const FilingTarget& target, const std::string& study, const 
     const std::filesystem::path folder = target.store / study / series;
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
+    if (target.marks != nullptr) {
+        if (const std::string why = target.marks->mark(folder); !why.empty()) {
+            shared.report("refused object" + target.from + ": " + why);
+            return kOutOfResources;
+        }
+    }
     try {
         files::writeFileAtomically(folder / (sop + ".dcm"), {std::span<const std::byte>(bytes)});
     } catch (const std::exception& e) {

@@ -7,6 +7,7 @@
 // the disk above its free-space floor.
 #include "net/store_scp.hpp"
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -30,6 +31,9 @@ class StoreShared {
     bool reserve(const std::filesystem::path& store, std::uint64_t bytes, std::uint64_t minFree,
                  std::uint64_t& available);
     void release(std::uint64_t bytes);
+    // The SCP's stop, so that an association cut off by it says so (none for a C-GET).
+    const std::atomic<bool>* stop = nullptr;
+    [[nodiscard]] bool stopping() const { return stop != nullptr && *stop; }
 
   private:
     std::mutex reportMutex_;
@@ -43,11 +47,15 @@ class StoreShared {
 std::span<const char* const> acceptedImageSopClasses();
 std::span<const char* const> acceptedTransferSyntaxes();
 
+class SeriesMarks;
+
 // Where one object goes and who brought it, for the checks and the report's lines.
 struct FilingTarget {
     std::filesystem::path store;
     std::uint64_t minFreeBytes = 0;
     std::string from; // " from AE", appended to the report's lines
+    // Set: the series is marked as being received (series_marks) before the object lands.
+    SeriesMarks* marks = nullptr;
 };
 
 // Files `dataset` (taken) as received in `transferSyntaxUid` for a C-STORE request of

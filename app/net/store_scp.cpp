@@ -47,7 +47,7 @@ class StorageScp::Impl {
             }
         }
         try {
-            pool_.open(tls_ ? &tls_->layer() : nullptr);
+            pool_.open(tls_ ? tls_->context() : nullptr);
         } catch (const std::exception& e) {
             throw ScpError("cannot listen on port " + std::to_string(settings_.port) + ": " +
                            e.what());
@@ -55,6 +55,7 @@ class StorageScp::Impl {
     }
 
     void serve(const std::atomic<bool>& stop) {
+        shared_.stop = &stop;
         pool_.serve(
             stop,
             [this](T_ASC_Association* assoc) { serveStoreAssociation(assoc, settings_, shared_); },
@@ -97,10 +98,10 @@ StorageScp::StorageScp(ScpSettings settings, ScpReport report) {
     // The caller's numeric address, as AllowedCaller::host names it, and no DNS wait.
     dcmDisableGethostbyaddr.set(OFTrue);
     if (settings.tls) {
-        // The TLS handshake runs on the listening thread with blocking reads, bounded only by
-        // the socket's receive timeout (DCMTK's default 60 s, for the whole process): a caller
-        // that connects and says nothing then holds up new associations no longer than the
-        // ACSE timeout, as in clear.
+        // An association's blocking reads over TLS are bounded by the socket's receive timeout
+        // (DCMTK's default 60 s, for the whole process) as well as by the DIMSE timeout: the
+        // same as the latter. (The handshake itself is the pool's, within
+        // negotiationSeconds.)
         dcmSocketReceiveTimeout.set(settings.timeoutSeconds);
     }
     impl_ = std::make_unique<Impl>(std::move(settings), std::move(report));

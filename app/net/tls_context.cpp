@@ -139,4 +139,8 @@ DcmTransportLayer& TlsContext::layer() {
     return *layer_;
 }
 
+ssl_ctx_st* TlsContext::context() {
+    return layer_->getNativeHandle();
+}
+
 } // namespace steerseg::net

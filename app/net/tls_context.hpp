@@ -11,6 +11,7 @@
 
 class DcmTLSTransportLayer;
 class DcmTransportLayer;
+struct ssl_ctx_st;
 
 namespace steerseg::net {
 
@@ -43,6 +44,9 @@ class TlsContext {
 
     // For ASC_setTransportLayer / DcmSCU; owned by this context, which must outlive its use.
     [[nodiscard]] DcmTransportLayer& layer();
+    // OpenSSL's context under it (the same certificates, CAs, profile and verification), for an
+    // acceptor that runs its handshakes itself (AssociationPool).
+    [[nodiscard]] ssl_ctx_st* context();
     // The certificate's subject and how many CA certificates are trusted, for the self-test.
     [[nodiscard]] const std::string& summary() const { return summary_; }
 

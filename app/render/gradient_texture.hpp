@@ -7,11 +7,12 @@
 
 namespace steerseg::render {
 
-// The scan's gradient for the 3D view (shaders/render/gradient.comp), computed once per scan:
-// one linearly filtered fetch per sample instead of six. RGBA16F, 8 bytes per voxel. A scan
-// whose gradient would exceed the texture limits or the memory budget gets none (the ray caster
-// then differences the scan per sample, slower but the same picture), so a large scan still
-// renders.
+// The scan's gradient for the 3D view (shaders/render/gradient.comp), computed once per scan,
+// with the normalised intensity beside it: one linearly filtered fetch per sample for both
+// instead of seven. RGBA32F (16 bytes per voxel) where the budget allows, else RGBA16F (8). A
+// scan whose gradient would exceed the texture limits or the memory budget even in half floats
+// gets none (the ray caster then differences the scan per sample, slower but the same
+// picture), so a large scan still renders.
 class GradientTexture {
   public:
     // Bytes of gradient allowed before the ray caster falls back to per-sample differences.

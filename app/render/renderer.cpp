@@ -27,7 +27,8 @@ gpu::Buffer makeEmptyBuffer() {
 
 Renderer::Renderer(const Volume& scan, const gpu::ScanTexture& texture, std::size_t gradientBudget)
     : geometry_(scan.geometry()), stats_(scan.stats()), scan_(&texture), skip_(scan, texture),
-      gradient_(texture, gradientBudget), empty_(makeEmptyBuffer()) {
+      labels_(scan.dims(), skip_.blockSize()), gradient_(texture, gradientBudget),
+      empty_(makeEmptyBuffer()) {
     if (texture.dims() != scan.dims()) {
         throw std::invalid_argument("renderer: the scan texture is not this scan's size");
     }
@@ -36,7 +37,13 @@ Renderer::Renderer(const Volume& scan, const gpu::ScanTexture& texture, std::siz
 Renderer::Renderer(const Volume& scan, std::size_t gradientBudget)
     : geometry_(scan.geometry()), stats_(scan.stats()),
       ownScan_(std::make_unique<gpu::ScanTexture>(scan)), scan_(ownScan_.get()),
-      skip_(scan, *scan_), gradient_(*scan_, gradientBudget), empty_(makeEmptyBuffer()) {}
+      skip_(scan, *scan_), labels_(scan.dims(), skip_.blockSize()),
+      gradient_(*scan_, gradientBudget), empty_(makeEmptyBuffer()) {}
+
+void Renderer::setStructures(std::span<const StructureSurface> layers, std::uint64_t version) {
+    gpu::GlStateGuard guard;
+    labels_.set(layers, version);
+}
 
 std::optional<SliceFrame> Renderer::render(const ViewParams& params,
                                            const solver::BrickPoolView* pool,
@@ -52,7 +59,7 @@ std::optional<SliceFrame> Renderer::render(const ViewParams& params,
     const RenderInputs in{*scan_,      skip_,  geometry_,           pool,
                           empty_.id(), target, gradient_.texture(), speed};
     if (params.kind == ViewKind::Volume3d) {
-        volume_.draw(in, params);
+        volume_.draw(in, params, labels_);
         return std::nullopt;
     }
     return slices_.draw(in, params);

@@ -8,12 +8,15 @@
 #include "render/render_target.hpp"
 #include "render/skip_grid.hpp"
 #include "render/slice_view.hpp"
+#include "render/structure_labels.hpp"
 #include "render/volume_view.hpp"
 #include "solver/brick_pool_view.hpp"
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 
 namespace steerseg::render {
 
@@ -45,6 +48,17 @@ class Renderer {
     [[nodiscard]] RgbaImage readback() const { return target().readback(); }
     [[nodiscard]] const Geometry& geometry() const { return geometry_; }
     [[nodiscard]] const gpu::ScanTexture& scan() const { return *scan_; }
+    // The session's other structures, which the 3D view draws as opaque surfaces in their
+    // colours beside the level set (the visible ones with a surface; the masks are read during
+    // this call only). Uploaded only when `version` differs from the last one given;
+    // StructureLabels::set says what it refuses.
+    void setStructures(std::span<const StructureSurface> layers, std::uint64_t version);
+    // The version last given to setStructures (none before the first), and how many times the
+    // structures were uploaded.
+    [[nodiscard]] std::optional<std::uint64_t> structuresVersion() const {
+        return labels_.version();
+    }
+    [[nodiscard]] std::uint64_t structureUploads() const { return labels_.uploads(); }
     // Whether the 3D view reads a precomputed gradient (false: a scan over its budget).
     [[nodiscard]] bool precomputedGradient() const { return gradient_.available(); }
 
@@ -57,6 +71,7 @@ class Renderer {
     std::unique_ptr<gpu::ScanTexture> ownScan_;
     const gpu::ScanTexture* scan_;
     SkipGrid skip_;
+    StructureLabels labels_;
     GradientTexture gradient_;
     std::array<RenderTarget, kRenderTargets> targets_;
     std::size_t last_ = 0;

@@ -54,6 +54,7 @@ const std::vector<std::pair<std::string_view, Getter>>& fieldTable() {
                                                       [](const auto& r) { return !r.arriving; }));
          }},
         {"outbox", [](const S& s) { return static_cast<double>(s.outbox.size()); }},
+        {"structures", [](const S& s) { return static_cast<double>(s.structures.size()); }},
     };
     return kFields;
 }

@@ -167,6 +167,28 @@ StepKind boxMode(Words& w) {
     return actionStep(model::SetBoxMode{on == "on", std::nullopt});
 }
 
+// The session's structures (docs/structures.md); a name with blanks goes in double quotes.
+StepKind structure(Words& w) {
+    constexpr const char* kUsage = "structure add|select|show|hide|delete NAME, structure rename "
+                                   "NAME NEW_NAME, structure colour NAME R G B (0..1)";
+    const std::string word = w.text("add, select, rename, colour, show, hide or delete");
+    const std::optional<model::StructureOp> op =
+        word == "colour" ? model::StructureOp::Recolour : model::structureOpFromName(word);
+    if (!op) {
+        throw LineError("structure '" + word + "': " + kUsage);
+    }
+    model::EditStructure e{*op, w.text("the structure's name"), {}, glm::dvec3(0.0)};
+    if (*op == model::StructureOp::Rename) {
+        e.to = w.text("the new name");
+    } else if (*op == model::StructureOp::Recolour) {
+        e.colour.r = w.number("red", 0.0, 1.0);
+        e.colour.g = w.number("green", 0.0, 1.0);
+        e.colour.b = w.number("blue", 0.0, 1.0);
+    }
+    w.finish(kUsage);
+    return actionStep(e);
+}
+
 StepKind autosave(Words& w) {
     const std::string answer = w.text("resume or discard");
     w.finish("autosave resume|discard");
@@ -294,6 +316,7 @@ void addOperatorVerbs(VerbTable& table) {
         {"outside_mode", outsideMode},
         {"box", box},
         {"box_mode", boxMode},
+        {"structure", structure},
         {"clear_examples", plain<model::ClearExamples>("clear_examples")},
         {"set", set},
         {"nudge", nudge},

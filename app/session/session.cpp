@@ -95,6 +95,14 @@ void Session::setReach(const std::optional<model::Reach>& reach) {
     gpu_->solver.setReach(reach);
 }
 
+void Session::setClaimed(std::span<const std::uint8_t> claimed) {
+    gpu_->solver.setClaimed(claimed);
+}
+
+bool Session::hasClaimed() const {
+    return gpu_->solver.hasClaimed();
+}
+
 void Session::startFromMask(const std::filesystem::path& path) {
     const scan::LoadedScan mask = scan::readScan(path);
     if (mask.volume.dims() != scan_.dims()) {
@@ -328,6 +336,32 @@ std::vector<std::filesystem::path> Session::exportMask(const std::filesystem::pa
     return written;
 }
 
+std::vector<std::filesystem::path>
+Session::exportStructures(const std::filesystem::path& path,
+                          std::vector<exports::StructureLayer> layers,
+                          std::optional<std::size_t> levelSet) const {
+    const auto format = model::exportFormatOfFile(path);
+    if (!format) {
+        throw files::WriteError(path, "cannot tell the export format from the name (" +
+                                          model::exportFormatNames() + ")");
+    }
+    std::vector<std::uint8_t> inside;
+    std::vector<float> field;
+    if (levelSet && *levelSet < layers.size()) {
+        inside = mask();
+        layers[*levelSet].mask = inside;
+        if (model::isSurfaceFormat(*format)) {
+            field = phi();
+            layers[*levelSet].phi = field;
+        }
+    }
+    const exports::ExportSummary summary = exports::writeStructures(
+        path, *format, {scan_.geometry(), std::move(layers), dicom_.get(), &scan_});
+    std::vector<std::filesystem::path> written{path};
+    written.insert(written.end(), summary.companions.begin(), summary.companions.end());
+    return written;
+}
+
 render::ViewParams Session::defaultView(render::ViewKind kind, const glm::ivec2& size) const {
     return gpu_->renderer.defaultParams(kind, size);
 }
@@ -340,6 +374,15 @@ std::optional<render::SliceFrame> Session::render(const render::ViewParams& para
     }
     const solver::BrickPoolView pool = gpu_->solver.poolView();
     return gpu_->renderer.render(params, &pool, speed);
+}
+
+void Session::setStructures(std::span<const render::StructureSurface> structures,
+                            std::uint64_t version) {
+    gpu_->renderer.setStructures(structures, version);
+}
+
+std::optional<std::uint64_t> Session::structuresVersion() const {
+    return gpu_->renderer.structuresVersion();
 }
 
 RgbaImage Session::picture() const {

@@ -7,10 +7,12 @@
 #include "core/rgba_image.hpp"
 #include "core/volume.hpp"
 #include "exports/export_writer.hpp"
+#include "exports/structure_export.hpp"
 #include "model/level_set_params.hpp"
 #include "model/solver_types.hpp"
 #include "render/render_params.hpp"
 #include "render/slice_frame.hpp"
+#include "render/structure_surface.hpp"
 #include "scan/scan_reader.hpp"
 #include "session/probe.hpp"
 #include "session/speed_settings.hpp"
@@ -83,6 +85,11 @@ class Session {
     void clearBarriers();
     // Where the surface may move (solver::LevelSetSolver::setReach); nullopt: everywhere.
     void setReach(const std::optional<model::Reach>& reach);
+    // Voxels other structures hold (non-zero = claimed, one byte per voxel of the scan, i
+    // fastest): the surface never enters them (solver::LevelSetSolver::setClaimed); an empty
+    // span clears it. std::invalid_argument for a span of another size. Stays until set again.
+    void setClaimed(std::span<const std::uint8_t> claimed);
+    [[nodiscard]] bool hasClaimed() const;
     // A mask on the scan's grid (inside where > 0.5) replaces the level set. Throws
     // std::runtime_error naming the file when it cannot be read or its grid differs.
     void startFromMask(const std::filesystem::path& mask);
@@ -140,12 +147,23 @@ class Session {
     // exportAs in the format the file's extension names (model::exportFormatFor); the files
     // written, `path` first (a DICOM SEG's measurement report after it).
     std::vector<std::filesystem::path> exportMask(const std::filesystem::path& path) const;
+    // Several structures in the format the file's extension names (exports::writeStructures):
+    // `layers` carry their masks, but for the one at `levelSet` (if any), which is this
+    // session's level set, its mask and phi read back here. The files written, `path` first.
+    std::vector<std::filesystem::path> exportStructures(const std::filesystem::path& path,
+                                                        std::vector<exports::StructureLayer> layers,
+                                                        std::optional<std::size_t> levelSet) const;
 
     // Presets for this scan (MR-style transfer function, anterior camera, middle slice).
     [[nodiscard]] render::ViewParams defaultView(render::ViewKind kind,
                                                  const glm::ivec2& size) const;
     // Draws one view of the scan and the level set (if any); slice views return their frame.
     std::optional<render::SliceFrame> render(const render::ViewParams& params);
+    // The other structures the 3D view draws beside the level set (render::Renderer::
+    // setStructures: uploaded when `version` differs from the one last given, which
+    // structuresVersion() returns).
+    void setStructures(std::span<const render::StructureSurface> structures, std::uint64_t version);
+    [[nodiscard]] std::optional<std::uint64_t> structuresVersion() const;
     // Waits for the GPU's queued work (a caller timing its draws against a frame budget).
     void finishGpuWork() const;
     // The last view drawn.

@@ -9,7 +9,7 @@ namespace steerseg::solver::detail {
 struct ControlBlock {
     std::uint32_t allocArgs[3];
     std::uint32_t brickArgs[3];
-    std::uint32_t listArgs[3];
+    std::uint32_t settleArgs[3];
     std::uint32_t requestCount;
     std::uint32_t activeCount;
     std::uint32_t freeCount;
@@ -28,9 +28,17 @@ struct ControlBlock {
     std::uint32_t gainHi[3];
     std::uint32_t bandCount;     // used slots, asleep or awake
     std::uint32_t visitedBricks; // active bricks summed over the steps since the host cleared it
-    std::uint32_t frontVoxels;   // the front's voxels in the last iteration
+    std::uint32_t frontVoxels;   // the front's voxels in the iteration under way
+    std::uint32_t groupsDone;    // work groups of the pass under way that finished
+    // The last iteration's (or edit's) activeCount, bandCount and frontVoxels: settle_bricks
+    // clears the working counters for the next iteration before the host reads the block.
+    std::uint32_t shownActive;
+    std::uint32_t shownBand;
+    std::uint32_t shownFront;
+    std::uint32_t measureCount;   // active bricks whose front measure_speed measures
+    std::uint32_t measureArgs[3]; // its indirect dispatch
 };
-static_assert(sizeof(ControlBlock) == 32 * 4);
+static_assert(sizeof(ControlBlock) == 40 * 4);
 
 // Clears the leak watch's counters (update_phi.comp accumulates them between checks).
 inline void clearGrowth(ControlBlock& ctrl) {
@@ -45,7 +53,9 @@ inline void clearGrowth(ControlBlock& ctrl) {
 // Byte offsets of the indirect dispatch arguments in the control block.
 inline constexpr std::ptrdiff_t kAllocArgs = 0;
 inline constexpr std::ptrdiff_t kBrickArgs = 12;
-inline constexpr std::ptrdiff_t kListArgs = 24;
+inline constexpr std::ptrdiff_t kSettleArgs = 24;
+inline constexpr std::ptrdiff_t kMeasureArgs = 37 * 4;
+static_assert(kMeasureArgs == offsetof(ControlBlock, measureArgs));
 
 // Work groups per row of the passes laid out 2D over requested or active bricks (one group a
 // brick): solver_common.glsl's GROUPS_PER_ROW.

@@ -104,7 +104,7 @@ std::size_t GpuBrickPool::levelSetBytes() const {
 }
 
 std::size_t GpuBrickPool::bookkeepingBytes() const {
-    return static_cast<std::size_t>(capacity_) * 4 * 7 +
+    return static_cast<std::size_t>(capacity_) * 4 * 8 +
            static_cast<std::size_t>(brickCount_) * 4 * 2 + sizeof(ControlBlock);
 }
 
@@ -114,7 +114,7 @@ void GpuBrickPool::allocateSlotBuffers(std::uint32_t capacity) {
     shellNext_ = makeBuffer(capacity * shellBytes());
     slotBrick_ = makeBuffer(capacity * 4);
     freeList_ = makeBuffer(capacity * 4);
-    activeList_ = makeBuffer(capacity * 4);
+    activeList_ = makeBuffer(capacity * 8); // the active list, then the measure list
     slotState_ = makeBuffer(capacity * 4);
     bandList_ = makeBuffer(capacity * 4);
     slotFront_ = makeBuffer(capacity * 8);
@@ -216,6 +216,7 @@ void GpuBrickPool::resetControl(std::uint32_t freeCount) {
     ctrl.activeCount = 0;
     ctrl.popped = 0;
     ctrl.stalled = 0;
+    ctrl.groupsDone = 0;
     ctrl.freeCount = freeCount;
     writeControl(ctrl);
 }

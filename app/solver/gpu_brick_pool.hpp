@@ -103,7 +103,7 @@ class GpuBrickPool {
     [[nodiscard]] std::size_t shellBytes() const;
     // The phi pool, the shell scratch and the page table.
     [[nodiscard]] std::size_t levelSetBytes() const;
-    // Slot map, free, active and band lists, states, fronts, requests and epochs.
+    // Slot map, free, active, measure and band lists, states, fronts, requests and epochs.
     [[nodiscard]] std::size_t bookkeepingBytes() const;
     // What measure_speed keeps per slot (solver/speed_cache.glsl): a brick of speeds and a
     // header (the tag, the last side change, the last measure).

@@ -26,9 +26,9 @@ void LevelSetSolver::replaceLevelSet(const std::function<void()>& fill) {
     wakeAll(); // the new slots' states are unset until classify_bricks
     fill();
     pool_->bind();
-    allocateAndList();
+    allocateAndList(true, false);
     dispatchIndirect(programs_->classifyBricks.id(), kBrickArgs);
-    settle();
+    settle(false);
     noteChange();
     stats_.peakLevelSetBytes = std::max(stats_.peakLevelSetBytes, pool_->levelSetBytes());
 }
@@ -97,7 +97,7 @@ void LevelSetSolver::editSphere(const model::Sphere& sphere, bool add) {
     dispatch(req, groupsOf(static_cast<std::uint32_t>(size.x), 4),
              groupsOf(static_cast<std::uint32_t>(size.y), 4),
              groupsOf(static_cast<std::uint32_t>(size.z), 4));
-    allocateAndList();
+    allocateAndList(true, false);
     if (pool_->readControl().stalled != 0) {
         throw gpu::GpuCapacityError("the sphere edit needs more bricks than " +
                                     pool_->capacityLimitText());
@@ -105,7 +105,7 @@ void LevelSetSolver::editSphere(const model::Sphere& sphere, bool add) {
     dispatch(apply, static_cast<GLuint>(size.x), static_cast<GLuint>(size.y),
              static_cast<GLuint>(size.z));
     dispatchIndirect(p.classifyBricks.id(), kBrickArgs);
-    settle();
+    settle(false);
     noteChange();
     gpu::checkGl("sphere edit");
 }

@@ -21,7 +21,8 @@ using detail::ControlBlock;
 using detail::groupsOf;
 using detail::kAllocArgs;
 using detail::kBrickArgs;
-using detail::kListArgs;
+using detail::kMeasureArgs;
+using detail::kSettleArgs;
 
 namespace {
 
@@ -111,8 +112,9 @@ void LevelSetSolver::setParams(const model::LevelSetParams& params) {
     // Only measure_speed evaluates the speed (update_phi steps at the speeds it kept).
     setUniform(programs_->measureSpeed.id(), "T", params.T);
     setUniform(programs_->measureSpeed.id(), "eps", params.eps);
-    setUniform(programs_->chooseTimeStep.id(), "courant", rule.courant);
-    setUniform(programs_->chooseTimeStep.id(), "fixedRate", rule.fixedRate);
+    // measure_speed's last group chooses the time step.
+    setUniform(programs_->measureSpeed.id(), "courant", rule.courant);
+    setUniform(programs_->measureSpeed.id(), "fixedRate", rule.fixedRate);
     uploadBarriers(); // their hold depends on alpha; forgets the speeds the slots kept
     noteChange();
 }
@@ -139,11 +141,21 @@ void LevelSetSolver::dispatchIndirect(GLuint program, GLintptr offset) {
     gpu::memoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 }
 
-// Serves pending slot requests and lists the active bricks.
-void LevelSetSolver::allocateAndList() {
+// Serves pending slot requests and lists the active bricks; build_active_list's last group
+// sizes the passes over the lists. `begin`: size the allocation first (begin_iteration), after
+// an edit or an upload; within a run the last iteration's settle_bricks did. `evaluateNew`:
+// with a speed evaluated on demand, the allocation also evaluates the new bricks' speed (its
+// textures bound: bindSpeed).
+void LevelSetSolver::allocateAndList(bool begin, bool evaluateNew) {
     auto& p = *programs_;
-    dispatch(p.beginIteration.id(), 1);
-    dispatchIndirect(p.allocateBricks.id(), kAllocArgs);
+    if (begin) {
+        dispatch(p.beginIteration.id(), 1);
+    }
+    if (evaluateNew && speedOnDemand()) {
+        onDemand_->allocate(kAllocArgs);
+    } else {
+        dispatchIndirect(p.allocateBricks.id(), kAllocArgs);
+    }
     glProgramUniform1ui(p.buildActiveList.id(),
                         glGetUniformLocation(p.buildActiveList.id(), "capacity"),
                         pool_->capacity());
@@ -155,35 +167,37 @@ void LevelSetSolver::allocateAndList() {
     }
     wakePending_ = false;
     dispatch(p.buildActiveList.id(), groupsOf(pool_->capacity(), detail::kSlotsPerGroup));
-    dispatch(p.prepareDispatch.id(), 1);
 }
 
-// After the level set changed: bricks' states, retirement, and requests for the band's
-// neighbours (served at the start of the next iteration).
-void LevelSetSolver::settle() {
+// After the level set changed: the step's shells committed (`step`), bricks' states,
+// retirement, and requests for the band's neighbours (served at the start of the next
+// iteration), in one pass whose last group prepares that iteration.
+void LevelSetSolver::settle(bool step) {
     auto& p = *programs_;
-    if (!options_.dense) {
-        dispatchIndirect(p.retireBricks.id(), kListArgs);
-    }
+    const GLuint program = p.settleBricks.id();
     ++epoch_;
-    glProgramUniform1ui(p.markWantedBricks.id(),
-                        glGetUniformLocation(p.markWantedBricks.id(), "epoch"), epoch_);
-    dispatchIndirect(p.markWantedBricks.id(), kListArgs);
+    glProgramUniform1ui(program, glGetUniformLocation(program, "epoch"), epoch_);
+    glProgramUniform1i(program, glGetUniformLocation(program, "commitShells"), step ? 1 : 0);
+    glProgramUniform1i(program, glGetUniformLocation(program, "retire"), options_.dense ? 0 : 1);
+    dispatchIndirect(program, kSettleArgs);
 }
 
-// One iteration as a sequence of named passes (cf. OpenVDB's LevelSetTracker).
+// One iteration as a sequence of named passes (cf. OpenVDB's LevelSetTracker): five dispatches,
+// each behind its memory barrier, and no host sync. With a speed evaluated on demand, the
+// first iteration after a wake has a sixth: every brick of the band may step then, and those
+// allocated before the speed was set (or before an edit) have none yet; later the band's new
+// bricks get theirs where they are allocated.
 void LevelSetSolver::iterate(float timeLimit) {
     auto& p = *programs_;
-    allocateAndList();
-    if (speedOnDemand()) {
+    const bool woke = wakePending_;
+    allocateAndList(false, true);
+    if (speedOnDemand() && woke) {
         onDemand_->evaluateActive(kBrickArgs);
     }
-    dispatchIndirect(p.measureSpeed.id(), kBrickArgs);
-    setUniform(p.chooseTimeStep.id(), "timeLimit", timeLimit);
-    dispatch(p.chooseTimeStep.id(), 1);
+    setUniform(p.measureSpeed.id(), "timeLimit", timeLimit);
+    dispatchIndirect(p.measureSpeed.id(), kMeasureArgs);
     dispatchIndirect(p.updatePhi.id(), kBrickArgs);
-    dispatchIndirect(p.commitShells.id(), kBrickArgs);
-    settle();
+    settle(true);
 }
 
 model::StepResult LevelSetSolver::step(int n) {
@@ -241,7 +255,7 @@ model::StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bo
         converged_ = (sinceChange >= options_.convergeIterations &&
                       (ctrl.time - ctrl.lastChangeTime >= options_.convergeTime ||
                        sinceChange >= 10 * options_.convergeIterations)) ||
-                     (ctrl.activeCount == 0 && ctrl.bandCount > 0 && done > 0);
+                     (ctrl.shownActive == 0 && ctrl.shownBand > 0 && done > 0);
         stats_.peakActiveBricks = std::max(stats_.peakActiveBricks, ctrl.peakActive);
         if (ctrl.stalled != 0) {
             ++stats_.stalls;
@@ -270,9 +284,9 @@ model::StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bo
     stats_.peakLevelSetBytes = std::max(stats_.peakLevelSetBytes, pool_->levelSetBytes());
     lastIteration_ = static_cast<int>(ctrl.iteration);
     lastTime_ = ctrl.time;
-    stats_.activeBricks = ctrl.activeCount;
-    stats_.bandBricks = ctrl.bandCount;
-    stats_.frontVoxels = ctrl.frontVoxels;
+    stats_.activeBricks = ctrl.shownActive;
+    stats_.bandBricks = ctrl.shownBand;
+    stats_.frontVoxels = ctrl.shownFront;
     known_ = ctrl;
     model::StopReason reason = model::StopReason::IterationLimit;
     if (leak) {
@@ -311,7 +325,7 @@ std::optional<model::LeakSite> LevelSetSolver::watchGrowth(ControlBlock& ctrl) {
     }
     stats_.netGained += sample.net;
     const FrontCheck check{sample.iteration, sample.time,   ctrl.gained,  ctrl.lost,
-                           ctrl.frontVoxels, sample.gainLo, sample.gainHi};
+                           ctrl.shownFront,  sample.gainLo, sample.gainHi};
     if (checkObserver_) {
         checkObserver_(check);
     }

@@ -93,6 +93,13 @@ class LevelSetSolver {
     // std::invalid_argument for a box validateBox refuses.
     void setBox(const std::optional<model::Box>& box);
     [[nodiscard]] const std::optional<model::Box>& box() const { return box_; }
+    // Voxels other structures hold (non-zero = claimed, one byte per voxel of the scan, i
+    // fastest): the surface never enters them, as a blocking barrier's sphere
+    // (barrier_speed.glsl); an empty span clears it, and so does one with no voxel claimed.
+    // std::invalid_argument for a span of another size. Not part of the level set: copies,
+    // restores, parameters and speeds leave it as it is until it is set again.
+    void setClaimed(std::span<const std::uint8_t> claimed);
+    [[nodiscard]] bool hasClaimed() const { return static_cast<bool>(claimed_); }
     // Where the surface may move (shaders/solver/update_phi.comp): a sphere, for a correction's
     // run, which should change the surface around the correction and leave the rest as the
     // operator accepted it (or only withdraw there: model::Reach); nullopt: everywhere.
@@ -147,8 +154,8 @@ class LevelSetSolver {
     void iterate(float timeLimit);
     [[nodiscard]] bool speedOnDemand() const;
     void bindSpeed() const;
-    void allocateAndList();
-    void settle();
+    void allocateAndList(bool begin, bool evaluateNew);
+    void settle(bool step);
     void editSphere(const model::Sphere& sphere, bool add);
     // A dense phi, or empty: everything outside.
     void uploadPhi(std::span<const float> phi);
@@ -188,6 +195,7 @@ class LevelSetSolver {
     bool wakePending_ = true;
     std::vector<model::Barrier> barriers_;
     std::optional<model::Box> box_;
+    gpu::Texture claimed_; // R32UI, bit i % 32 of texel (i / 32, j, k); empty: none claimed
     std::optional<model::Reach> reach_;
     LeakWatch leakWatch_;
     SettleWatch settleWatch_;

@@ -25,14 +25,10 @@ SolverPrograms::SolverPrograms(int brickSize, int groupSize) : localSize(groupSi
     beginIteration = gpu::buildComputeProgram("solver/begin_iteration.comp", d);
     allocateBricks = gpu::buildComputeProgram("solver/allocate_bricks.comp", d);
     buildActiveList = gpu::buildComputeProgram("solver/build_active_list.comp", d);
-    prepareDispatch = gpu::buildComputeProgram("solver/prepare_dispatch.comp", d);
     measureSpeed = gpu::buildComputeProgram("solver/measure_speed.comp", d);
-    chooseTimeStep = gpu::buildComputeProgram("solver/choose_time_step.comp", d);
     updatePhi = gpu::buildComputeProgram("solver/update_phi.comp", d);
-    commitShells = gpu::buildComputeProgram("solver/commit_shells.comp", d);
+    settleBricks = gpu::buildComputeProgram("solver/settle_bricks.comp", d);
     classifyBricks = gpu::buildComputeProgram("solver/classify_bricks.comp", d);
-    retireBricks = gpu::buildComputeProgram("solver/retire_bricks.comp", d);
-    markWantedBricks = gpu::buildComputeProgram("solver/mark_wanted_bricks.comp", d);
     requestEditBricks = gpu::buildComputeProgram("solver/request_edit_bricks.comp", d);
     applySphere = gpu::buildComputeProgram("solver/apply_sphere.comp", d);
 }

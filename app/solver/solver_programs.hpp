@@ -14,14 +14,10 @@ struct SolverPrograms {
     gpu::Program beginIteration;
     gpu::Program allocateBricks;
     gpu::Program buildActiveList;
-    gpu::Program prepareDispatch;
     gpu::Program measureSpeed;
-    gpu::Program chooseTimeStep;
     gpu::Program updatePhi;
-    gpu::Program commitShells;
+    gpu::Program settleBricks;
     gpu::Program classifyBricks;
-    gpu::Program retireBricks;
-    gpu::Program markWantedBricks;
     gpu::Program requestEditBricks;
     gpu::Program applySphere;
     int localSize; // invocations per group of the per-brick passes
@@ -31,9 +27,8 @@ struct SolverPrograms {
     // Calls f(program) for each program (to set uniforms shared by all).
     template <typename F> void forEach(F&& f) {
         for (gpu::Program* p :
-             {&beginIteration, &allocateBricks, &buildActiveList, &prepareDispatch, &measureSpeed,
-              &chooseTimeStep, &updatePhi, &commitShells, &classifyBricks, &retireBricks,
-              &markWantedBricks, &requestEditBricks, &applySphere}) {
+             {&beginIteration, &allocateBricks, &buildActiveList, &measureSpeed, &updatePhi,
+              &settleBricks, &classifyBricks, &requestEditBricks, &applySphere}) {
             f(*p);
         }
     }

@@ -18,10 +18,14 @@ SpeedOnDemand::SpeedOnDemand(const glm::ivec3& dims, const glm::ivec3& brickGrid
     : program_(gpu::buildComputeProgram("solver/evaluate_speed.comp",
                                         solverDefines(brickSize, localSize))),
       bricks_(static_cast<std::uint32_t>(brickGrid.x * brickGrid.y * brickGrid.z)), dims_(dims) {
-    const GLuint p = program_.id();
-    glProgramUniform3i(p, glGetUniformLocation(p, "volumeDims"), dims.x, dims.y, dims.z);
-    glProgramUniform3i(p, glGetUniformLocation(p, "brickGrid"), brickGrid.x, brickGrid.y,
-                       brickGrid.z);
+    gpu::Defines allocateDefines = solverDefines(brickSize, localSize);
+    allocateDefines.emplace_back("EVALUATE_SPEED", "1");
+    allocate_ = gpu::buildComputeProgram("solver/allocate_bricks.comp", allocateDefines);
+    for (const GLuint p : {program_.id(), allocate_.id()}) {
+        glProgramUniform3i(p, glGetUniformLocation(p, "volumeDims"), dims.x, dims.y, dims.z);
+        glProgramUniform3i(p, glGetUniformLocation(p, "brickGrid"), brickGrid.x, brickGrid.y,
+                           brickGrid.z);
+    }
     ready_ = gpu::createBuffer(GL_SHADER_STORAGE_BUFFER,
                                static_cast<GLsizeiptr>((bricks_ + 1U) * sizeof(std::uint32_t)),
                                nullptr, GL_DYNAMIC_COPY);
@@ -36,6 +40,7 @@ void SpeedOnDemand::reset() {
 
 void SpeedOnDemand::bind(const speed::SpeedInputs& inputs) const {
     speed::bindClassifierForest(program_.id(), inputs.onDemand, dims_);
+    speed::bindClassifierForest(allocate_.id(), inputs.onDemand, dims_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SPEED_READY_BINDING, ready_.id());
     glBindImageTexture(SOLVER_SPEED_IMAGE_UNIT, inputs.factor, 0, GL_TRUE, 0, GL_WRITE_ONLY,
                        GL_R32F);
@@ -44,6 +49,12 @@ void SpeedOnDemand::bind(const speed::SpeedInputs& inputs) const {
 void SpeedOnDemand::evaluateActive(GLintptr argsOffset) const {
     glUseProgram(program_.id());
     glUniform1i(glGetUniformLocation(program_.id(), "fromActiveList"), 1);
+    gpu::dispatchComputeIndirect(argsOffset);
+    finishPass();
+}
+
+void SpeedOnDemand::allocate(GLintptr argsOffset) const {
+    glUseProgram(allocate_.id());
     gpu::dispatchComputeIndirect(argsOffset);
     finishPass();
 }

@@ -115,6 +115,15 @@ nlohmann::json values(const model::SetBoxMode& a) {
     }
     return v;
 }
+nlohmann::json values(const model::EditStructure& a) {
+    nlohmann::json v{{"op", model::structureOpName(a.op)}, {"name", a.name}};
+    if (a.op == model::StructureOp::Rename) {
+        v["to"] = a.to;
+    } else if (a.op == model::StructureOp::Recolour) {
+        v["colour"] = {a.colour.r, a.colour.g, a.colour.b};
+    }
+    return v;
+}
 template <class T> nlohmann::json values(const T&) {
     return nlohmann::json::object();
 }
@@ -270,7 +279,8 @@ void AuditLog::write(nlohmann::json& record) {
 }
 
 void AuditLog::action(model::State state, const model::Action& action, const nlohmann::json& result,
-                      std::string_view scan, bool accepted, std::string_view reason) {
+                      std::string_view scan, bool accepted, std::string_view reason,
+                      std::string_view structure) {
     try {
         nlohmann::json r{{"event", "action"},
                          {"state", model::stateName(state)},
@@ -278,6 +288,9 @@ void AuditLog::action(model::State state, const model::Action& action, const nlo
                          {"values", actionValues(action)},
                          {"accepted", accepted},
                          {"scan", scan}};
+        if (!structure.empty()) {
+            r["structure"] = structure;
+        }
         if (!result.is_null()) {
             r["result"] = result;
         }

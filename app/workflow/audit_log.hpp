@@ -40,9 +40,11 @@ class AuditLog {
     AuditLog& operator=(const AuditLog&) = delete;
 
     // `state`: the state the action found. `result`: what it changed (null: nothing to add).
-    // `reason`: empty for an accepted action, else why it was refused.
+    // `reason`: empty for an accepted action, else why it was refused. `structure`: the
+    // structure that was active when it came ("" before a scan has one).
     void action(model::State state, const model::Action& action, const nlohmann::json& result,
-                std::string_view scan, bool accepted, std::string_view reason);
+                std::string_view scan, bool accepted, std::string_view reason,
+                std::string_view structure = {});
     // `cause`: the action's name, or "load" / "evolve" for what update() and evolve() found.
     // `message`: the notice or error the new state shows ("" = none).
     void transition(model::State from, model::State to, std::string_view cause,

@@ -3,10 +3,13 @@
 // What the workflow needs from the scan, the solver and the writers, and nothing more. The
 // kiosk implements it over session::Session (GL, on the frame loop's thread); tests implement
 // it in memory. Errors are exceptions with one line for the operator (std::exception::what()).
+#include "core/mask_measurements.hpp"
+#include "core/mask_runs.hpp"
 #include "model/box.hpp"
 #include "model/level_set_params.hpp" // plain structs only: the workflow links no solver code
 #include "model/solver_types.hpp"
 #include "model/speed_kind.hpp" // the enum only: the workflow links no speed code
+#include "model/structure.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -72,6 +75,13 @@ struct SpeedChoice {
 // every undo entry's copy of the parameters); the classifier samples voxels from them anyway.
 inline constexpr std::size_t kMaxPaintedExamples = 4096;
 
+// One structure of an export of several (Engine::exportStructures), in label order.
+struct ExportedStructure {
+    model::StructureInfo info;
+    int label = 1;                  // its value in a label map, its segment number in a SEG
+    const MaskRuns* mask = nullptr; // null: the engine's level set (the active structure)
+};
+
 // A copy of the level set that undo can go back to.
 using SnapshotId = std::uint64_t;
 
@@ -126,6 +136,18 @@ class Engine {
     [[nodiscard]] virtual double volumeMl() const = 0;
     [[nodiscard]] virtual double exactVolumeMl() const { return volumeMl(); }
 
+    // The level set as a mask (no runs: none): a structure the operator leaves is kept so.
+    [[nodiscard]] virtual MaskRuns levelSetMask() const = 0;
+    // A mask replaces the level set (no runs: none), without barriers: a structure the operator
+    // comes back to. std::invalid_argument for a mask of another size.
+    virtual void setMask(const MaskRuns& mask) = 0;
+    // A structure's measurements on the scan (core/mask_measurements): `mask`, or the level set
+    // when null. std::invalid_argument for an empty one.
+    [[nodiscard]] virtual MaskMeasurements measureStructure(const MaskRuns* mask) const = 0;
+    // Voxels the surface never enters (no runs: none): the other structures', which act as
+    // barriers. Not part of the level set's state: it stays until set again.
+    virtual void setClaimed(const MaskRuns& claimed) = 0;
+
     // Level-set copies for undo; restore keeps the snapshot, drop frees it.
     virtual SnapshotId snapshot() = 0;
     virtual void restore(SnapshotId id) = 0;
@@ -135,6 +157,11 @@ class Engine {
     // the files written, `path` first, then any written beside it (a DICOM SEG's measurement
     // report), so that the export's record and the DICOM node see them all.
     virtual std::vector<std::filesystem::path> exportMask(const std::filesystem::path& path) = 0;
+    // The same for several structures at once, each its own segment, label or mesh
+    // (exports/structure_export); the files written, `path` first.
+    virtual std::vector<std::filesystem::path>
+    exportStructures(const std::filesystem::path& path,
+                     const std::vector<ExportedStructure>& structures) = 0;
 };
 
 } // namespace steerseg::workflow

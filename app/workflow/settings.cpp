@@ -68,6 +68,21 @@ void validateSettings(const Settings& s) {
         require(std::isfinite(p.windowLevel) && std::isfinite(p.windowWidth),
                 where + "window level and width must be finite numbers");
     }
+    std::set<std::string> kinds;
+    for (const model::StructureInfo& k : s.structureKinds) {
+        const std::string problem = model::structureNameProblem(k.name);
+        require(problem.empty(), "a structure kind: " + problem);
+        require(kinds.insert(k.name).second, "structure '" + k.name + "' is listed twice");
+        const std::string where = "structure '" + k.name + "': ";
+        const std::string category = model::structureCodeProblem(k.category);
+        require(category.empty(), where + "category: " + category);
+        const std::string type = model::structureCodeProblem(k.type);
+        require(type.empty(), where + "type: " + type);
+        for (int c = 0; c < 3; ++c) {
+            require(k.colour[c] >= 0.0 && k.colour[c] <= 1.0,
+                    where + "a colour's r, g and b lie within 0..1");
+        }
+    }
 }
 
 } // namespace steerseg::workflow

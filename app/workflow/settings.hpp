@@ -4,6 +4,7 @@
 // the export folder and the depth of undo. Plain data; config/ fills it from TOML and
 // validateSettings() says in one line what is wrong with it.
 #include "model/speed_kind.hpp" // the enum only
+#include "model/structure.hpp"
 
 #include <chrono>
 #include <filesystem>
@@ -78,6 +79,11 @@ struct Settings {
     // Set when the default speed failed the check too (every speed did: the solver itself is
     // wrong on this GPU), with the check's why: it runs, and the alarm says so.
     std::string defaultSpeedFailed;
+    // The site's structures (the config's [[structures]]): a new structure of one of these names
+    // takes its codes and colour; any other name is free text, coded as tissue.
+    std::vector<model::StructureInfo> structureKinds;
+    // Structures may overlap; by default the others act as barriers to the active one.
+    bool structuresOverlap = false;
     WallClock clock; // export names' time stamps; empty: the system clock (tests fix it)
 };
 

@@ -45,6 +45,22 @@ struct ReceivedScan {
     bool arriving = false; // images came a moment ago: more may follow, not offered yet
 };
 
+// One structure of the session, as the panel lists it.
+struct StructureRow {
+    model::StructureInfo info;
+    double volumeMl = 0.0; // the active one's: the status's own volumeMl
+    bool active = false;
+    bool empty = true; // no surface yet
+};
+
+// A structure's measurements (core/mask_measurements), taken when the workflow enters review.
+struct StructureMeasured {
+    std::string name;
+    glm::dvec3 colour{1.0};
+    bool visible = true;
+    MaskMeasurements measured;
+};
+
 struct Status {
     model::State state = model::State::NoScan;
     std::string message; // the last error or notice for the operator ("" = none)
@@ -103,6 +119,12 @@ struct Status {
     std::vector<std::string> exportedFiles; // Done: every file the last export wrote
     int exports = 0;                        // exports that succeeded: a new one changes it
     ViewState view;
+    // The session's structures in order (docs/structures.md); one of them is active.
+    std::vector<StructureRow> structures;
+    std::vector<std::string> structureKinds; // the site's names (Settings::structureKinds)
+    // Review, done: every structure with a surface, measured on entering review (the panel's
+    // table, the RECIST lines on the axial view); empty elsewhere.
+    std::vector<StructureMeasured> measurements;
     std::vector<std::string> presets; // names, in the config's order
     std::vector<DeviceLink> devices;  // the kiosk's, for the panel (see DeviceLink)
     // The kiosk's DICOM node (docs/dicom-network.md), for the panel; empty without one.

@@ -64,6 +64,8 @@ std::string_view guardName(Guard guard) {
         return "examples";
     case Guard::Box:
         return "a box";
+    case Guard::Result:
+        return "a surface in some structure";
     case Guard::AuditKept:
         return "the audit log written or its loss acknowledged";
     case Guard::AuditLost:

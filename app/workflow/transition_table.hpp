@@ -7,6 +7,7 @@
 #include "model/action.hpp"
 #include "workflow/status.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -49,6 +50,7 @@ struct Facts {
     bool auditLost = false;         // the audit log cannot be written now
     bool auditAcknowledged = false; // ... and the operator said to export anyway
     bool box = false;               // the operator's box is set (model::SetBox)
+    bool result = false; // the level set, or another structure, has a surface: something to export
 };
 // The same facts as a status shows them (a status built by hand, a test's).
 inline Facts factsOf(const Status& status) {
@@ -60,7 +62,10 @@ inline Facts factsOf(const Status& status) {
                 !status.paintedInside.empty() || !status.paintedOutside.empty(),
             !status.auditProblem.empty(),
             status.auditAcknowledged,
-            status.box.has_value()};
+            status.box.has_value(),
+            status.hasLevelSet ||
+                std::any_of(status.structures.begin(), status.structures.end(),
+                            [](const StructureRow& r) { return !r.active && !r.empty; })};
 }
 
 enum class Guard {
@@ -72,6 +77,7 @@ enum class Guard {
     CanRedo,
     Examples,
     Box,
+    Result,    // a surface in some structure (Facts::result)
     AuditKept, // the audit log is written, or the operator acknowledged that it cannot be
     AuditLost, // the audit log cannot be written and that is not acknowledged yet
 };
@@ -94,6 +100,8 @@ constexpr bool holds(Guard guard, const Facts& facts) {
         return facts.examples;
     case Guard::Box:
         return facts.box;
+    case Guard::Result:
+        return facts.result;
     case Guard::AuditKept:
         return !facts.auditLost || facts.auditAcknowledged;
     case Guard::AuditLost:
@@ -206,20 +214,21 @@ inline constexpr std::array kRules{
     Rule{{S::NoScan, S::Loading, S::Inspect, S::Seeding, S::Review, S::Done}, {K::Pause},
          Guard::Never, std::nullopt, "not running"},
     // Review.
-    Rule{{S::Seeding, S::Evolving, S::Paused}, {K::Finish}, Guard::LevelSet, S::Review,
+    Rule{{S::Seeding, S::Evolving, S::Paused}, {K::Finish}, Guard::Result, S::Review,
          "nothing to review: add a seed first"},
-    Rule{{S::Evolving, S::Paused}, {K::Proceed}, Guard::LevelSet, S::Review,
+    Rule{{S::Evolving, S::Paused}, {K::Proceed}, Guard::Result, S::Review,
          "nothing to review: add a seed first"},
     Rule{{S::Review}, {K::Finish}, Guard::Always, std::nullopt, {}},
-    Rule{{S::Inspect, S::Done}, {K::Finish}, Guard::Never, std::nullopt,
-         "nothing to finish in {state}"},
+    // Inspect after a new structure: the others may be finished without it.
+    Rule{{S::Inspect}, {K::Finish}, Guard::Result, S::Review, "nothing to finish in {state}"},
+    Rule{{S::Done}, {K::Finish}, Guard::Never, std::nullopt, "nothing to finish in {state}"},
     Rule{{S::Review}, {K::Resume, K::Back}, Guard::Always, S::Paused, {}},
     Rule{{S::NoScan, S::Loading, S::Inspect, S::Seeding, S::Evolving, S::Paused, S::Done},
          {K::Resume}, Guard::Never, std::nullopt, "resume goes from review back to steering"},
     // Export.
-    Rule{{S::Review, S::Paused}, {K::Export}, Guard::LevelSet, S::Exporting, kNothingToExport,
+    Rule{{S::Review, S::Paused}, {K::Export}, Guard::Result, S::Exporting, kNothingToExport,
          kExportNote, Guard::AuditKept, kAuditLost},
-    Rule{{S::Review}, {K::Proceed}, Guard::LevelSet, S::Exporting, kNothingToExport, kExportNote,
+    Rule{{S::Review}, {K::Proceed}, Guard::Result, S::Exporting, kNothingToExport, kExportNote,
          Guard::AuditKept, kAuditLost},
     Rule{{S::Inspect, S::Seeding, S::Evolving, S::Done}, {K::Export}, Guard::Never, std::nullopt,
          "export from review (or paused)"},
@@ -243,6 +252,12 @@ inline constexpr std::array kRules{
     Rule{{S::Done}, {K::Back}, Guard::Always, S::Review, {}},
     Rule{{S::NoScan, S::Loading, S::Inspect, S::Evolving, S::Paused}, {K::Back}, Guard::Never,
          std::nullopt, "no step back from {state}"},
+    // The structures: the action's own code moves the state (model::EditStructure).
+    Rule{{S::Inspect, S::Seeding, S::Paused, S::Review, S::Done}, {K::EditStructure}, Guard::Always,
+         std::nullopt, {},
+         "add goes to inspect; select to paused, or inspect for an empty one; delete of the active one as select"},
+    Rule{{S::Evolving}, {K::EditStructure}, Guard::Never, std::nullopt,
+         "pause before changing structures"},
     Rule{kAll, {K::Dismiss}, Guard::Always, std::nullopt, {},
          "clears the notice; error goes to paused with a level set, inspect with a scan, else no_scan"},
     Rule{kAll, {K::Quit}, Guard::Always, std::nullopt, {}, "quitRequested()"},

@@ -29,7 +29,7 @@ void UndoStack::clearRedo() {
 
 void UndoStack::push(UndoEntry entry) {
     if (!entry.levelSet) {
-        if (entry.paramsBefore == entry.paramsAfter) {
+        if (entry.paramsBefore == entry.paramsAfter && !entry.structuresAfter) {
             return;
         }
         if (mergeOpen_ && entry.coalesce && !undo_.empty() && !undo_.back().levelSet &&

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -34,6 +35,8 @@ struct LevelSetMark {
     int erasures = 0;
 };
 
+struct StructureList; // workflow/structures.hpp
+
 struct UndoEntry {
     std::string what;      // the action that made it: "add_seed", "set_param", "probe", ...
     bool levelSet = false; // a level-set edit; otherwise a parameter change
@@ -44,6 +47,9 @@ struct UndoEntry {
     std::optional<model::Param> coalesce;
     LevelSetMark before;
     LevelSetMark after;
+    // A change of the structures: the list on each side (the active one's surface is the marks').
+    std::shared_ptr<const StructureList> structuresBefore;
+    std::shared_ptr<const StructureList> structuresAfter;
 };
 
 class UndoStack {

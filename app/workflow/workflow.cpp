@@ -53,6 +53,9 @@ Workflow::Workflow(Engine& engine, Settings settings, AuditLog* audit)
         status_.presets.push_back(p.name);
     }
     status_.exportFormats = settings_.exportFormats;
+    for (const model::StructureInfo& k : settings_.structureKinds) {
+        status_.structureKinds.push_back(k.name);
+    }
     for (const SpeedOff& off : settings_.speedsOff) {
         status_.speedsOff.push_back(off.kind);
         status_.gpuAlarm += std::string(status_.gpuAlarm.empty() ? "" : " ") + "The " +
@@ -81,6 +84,9 @@ Workflow::~Workflow() = default;
 
 Workflow::Outcome Workflow::handle(const model::Action& action) {
     const model::State before = status_.state;
+    structureBefore_ = structures_.active < structures_.items.size()
+                           ? structures_.items[structures_.active].info.name
+                           : std::string();
     pending_.clear();
     handling_ = true;
     cause_ = model::actionName(action);
@@ -157,6 +163,12 @@ void Workflow::update() {
 void Workflow::enter(model::State next, std::string message) {
     const model::State from = status_.state;
     status_.state = next;
+    if (next == model::State::Review && from != model::State::Review) {
+        measureStructures();
+    } else if (next != model::State::Review && next != model::State::Exporting &&
+               next != model::State::Done) {
+        status_.measurements.clear(); // the surfaces may change from here
+    }
     if (from == model::State::Evolving && next != model::State::Evolving) {
         endReach(); // the next run, whoever starts it, is the whole surface's
         // The readouts during the run may lag a little; the stopped surface's are exact.
@@ -182,7 +194,19 @@ void Workflow::enter(model::State next, std::string message) {
 }
 
 bool Workflow::unexportedWork() const {
-    return scanLoaded_ && dirty_ && status_.hasLevelSet;
+    return scanLoaded_ && dirty_ && hasResult();
+}
+
+bool Workflow::hasResult() const {
+    if (status_.hasLevelSet) {
+        return true;
+    }
+    for (std::size_t i = 0; i < structures_.items.size(); ++i) {
+        if (i != structures_.active && !structures_.items[i].mask.runs.empty()) {
+            return true;
+        }
+    }
+    return false;
 }
 
 Facts Workflow::facts() const {
@@ -193,7 +217,8 @@ Facts Workflow::facts() const {
             params_.speed.hasInside() || params_.speed.hasOutside(),
             !status_.auditProblem.empty(),
             status_.auditAcknowledged,
-            params_.speed.box.has_value()};
+            params_.speed.box.has_value(),
+            hasResult()};
 }
 
 void Workflow::refreshAllowed() {
@@ -220,7 +245,7 @@ void Workflow::record(const model::Action& action, model::State before, const Ou
     try {
         const nlohmann::json result = outcome.accepted ? resultOf(action) : nlohmann::json();
         audit_->action(before, action, result, status_.scan.identity, outcome.accepted,
-                       outcome.reason);
+                       outcome.reason, structureBefore_);
     } catch (...) {
         // resultOf only reads the status; the log reports its own failures.
     }
@@ -262,6 +287,8 @@ void Workflow::forgetScan() {
     status_.paintedOutside.clear();
     status_.box.reset();
     status_.view = ViewState{};
+    structures_ = {};
+    status_.structures.clear();
 }
 
 Workflow::Outcome Workflow::on(const model::LoadScan& a) {
@@ -304,6 +331,7 @@ void Workflow::finishLoad() {
     scanLoaded_ = true;
     try {
         setDefaultParams();
+        firstStructure();
         refreshEngineStatus();
     } catch (const std::exception& e) {
         forgetScan();

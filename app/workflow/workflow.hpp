@@ -11,12 +11,15 @@
 #include "workflow/param_ranges.hpp"
 #include "workflow/settings.hpp"
 #include "workflow/status.hpp"
+#include "workflow/structures.hpp"
 #include "workflow/transition_table.hpp"
 #include "workflow/undo_stack.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
@@ -37,6 +40,9 @@ struct RestoredSession {
     model::State state = model::State::Paused;
     std::string notice; // for the operator, e.g. "resumed the session saved at 13:01:40 UTC"
     std::vector<model::Barrier> barriers; // placed again on the restored surface
+    // The session's structures (the active one's mask empty: the level set is its surface);
+    // nullopt: one, as a session before structures had.
+    std::optional<StructureList> structures;
 };
 
 class Workflow {
@@ -76,6 +82,15 @@ class Workflow {
     [[nodiscard]] std::size_t undoDepth() const { return undo_.undoDepth(); }
     [[nodiscard]] std::size_t redoDepth() const { return undo_.redoDepth(); }
     [[nodiscard]] std::size_t heldSnapshots() const { return undo_.snapshotCount(); }
+    // The structures (the active one's mask empty: the engine's level set is its surface), for
+    // the views that draw the others and for the autosave; its parameters as the workflow's now.
+    [[nodiscard]] StructureList structures() const;
+    // The same without a copy, the active one's record as it was when it became active: for a
+    // view drawing the others each frame.
+    [[nodiscard]] const StructureList& structureList() const { return structures_; }
+    // Counts changes of the structures' list (masks, names, colours, visibility): the views
+    // redraw the others on it.
+    [[nodiscard]] std::uint64_t structuresVersion() const { return structuresVersion_; }
 
   private:
     static Outcome ok() { return {true, {}}; }
@@ -149,6 +164,30 @@ class Workflow {
     bool takeBackEraseRun();
     Outcome on(const model::Quit& a);
 
+    // The structures (workflow_structures.cpp).
+    Outcome on(const model::EditStructure& a);
+    Outcome addStructure(const std::string& name);
+    // Makes `index` active: what the level set is now is kept as the one left's mask.
+    Outcome selectStructure(std::size_t index, std::string_view what);
+    Outcome deleteStructure(std::size_t index);
+    Outcome describeStructure(const model::EditStructure& a, std::size_t index);
+    // A new scan's one structure.
+    void firstStructure();
+    // The active structure as it is left now: its info, mask, parameters and counts.
+    [[nodiscard]] Structure leaveActive() const;
+    // The engine's barrier of the other structures' voxels (none where the config allows
+    // overlap), for `list`'s active one.
+    void claimOthers(const StructureList& list);
+    // An undo entry's list put back (nothing for an entry of no structure change).
+    void putStructures(const std::shared_ptr<const StructureList>& list);
+    void showStructures();
+    // Status::measurements of every structure with a surface (review's table and lines); one
+    // the engine cannot measure is left out.
+    void measureStructures();
+    // Why `list` cannot be this scan's structures ("" when it can): a resume's check.
+    [[nodiscard]] std::string structuresProblem(const StructureList& list) const;
+    [[nodiscard]] bool hasResult() const; // a surface in any structure
+
     // States and transitions (workflow.cpp).
     void enter(model::State next, std::string message = {});
     [[nodiscard]] bool unexportedWork() const;
@@ -170,6 +209,7 @@ class Workflow {
     Outcome setParam(model::Param param, double value, std::string_view what);
     void applyParams(const ParamValues& values, bool force = false); // the engine, the status
     [[nodiscard]] ParamValues clamped(ParamValues values) const;
+    [[nodiscard]] ParamValues defaultParams() const; // a new scan's or structure's
     void setDefaultParams();
 
     // The speed and the classifier's examples (workflow_speed.cpp).
@@ -207,8 +247,12 @@ class Workflow {
     [[nodiscard]] std::optional<model::TissueLevel> tissueLevel(const model::Sphere& sphere) const;
     // `params`, when given, are applied after the edit and undone and redone with it: a seed's
     // inside example (applyEditParams).
-    void editLevelSet(std::string_view what, const std::function<void()>& edit, int seeds,
-                      int erasures, const ParamValues* params = nullptr);
+    // `structures`: the lists before and after, for an edit that changes them.
+    void editLevelSet(
+        std::string_view what, const std::function<void()>& edit, int seeds, int erasures,
+        const ParamValues* params = nullptr,
+        std::pair<std::shared_ptr<const StructureList>, std::shared_ptr<const StructureList>>
+            structures = {});
     // A level-set edit's parameters, on the edit, its undo and its redo, when they differ from
     // those in force; a refusal leaves the level set as it now is and says so.
     void applyEditParams(const ParamValues& values);
@@ -221,6 +265,9 @@ class Workflow {
 
     // Export (workflow_export.cpp).
     Outcome exportTo(const std::string& path);
+    // The structures an export writes (engine's exportStructures), or none for a session that
+    // holds one structure as a scan starts it: its level set alone, as before structures.
+    [[nodiscard]] std::vector<ExportedStructure> exportedStructures() const;
     // <folder>/<scan>_<UTC time>, without an extension: the name no format's file has yet.
     [[nodiscard]] std::filesystem::path defaultExportBase() const;
 
@@ -253,6 +300,9 @@ class Workflow {
     std::string_view cause_; // the action being handled, or "load" / "evolve"
     ProbeResult lastProbe_;  // for the probe's audit record
     std::string lastUndone_; // what the last undo or redo took back or did again
+    StructureList structures_;
+    std::uint64_t structuresVersion_ = 0;
+    std::string structureBefore_; // the active structure when the action being handled came
 };
 
 } // namespace steerseg::workflow

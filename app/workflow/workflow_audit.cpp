@@ -126,6 +126,18 @@ nlohmann::json Workflow::resultOf(const model::Action& action) const {
                     return {{"exported", status_.exportedPath}, {"files", status_.exportedFiles}};
                 }
                 return nullptr;
+            } else if constexpr (std::is_same_v<A, model::EditStructure>) {
+                // The list after it, and the surface now in force (a select's or delete's).
+                nlohmann::json list = nlohmann::json::array();
+                for (const StructureRow& s : status_.structures) {
+                    list.push_back({{"name", s.info.name},
+                                    {"volume_ml", s.volumeMl},
+                                    {"visible", s.info.visible},
+                                    {"active", s.active}});
+                }
+                nlohmann::json r = levelSet();
+                r["structures"] = std::move(list);
+                return r;
             } else if constexpr (std::is_same_v<A, model::SetWindow>) {
                 return {{"window_level", v.windowLevel}, {"window_width", v.windowWidth}};
             } else if constexpr (isOneOf<A, model::RotateView, model::ZoomView>) {

@@ -26,6 +26,7 @@ void Workflow::refreshEngineStatus() {
     status_.evolvedTime = static_cast<double>(s.evolvedTime);
     status_.volumeMl =
         status_.state == model::State::Evolving ? engine_.volumeMl() : engine_.exactVolumeMl();
+    showStructures();
 }
 
 void Workflow::refreshUndoFlags() {
@@ -70,8 +71,11 @@ void Workflow::releaseSnapshot(const std::optional<SnapshotId>& id) {
     }
 }
 
-void Workflow::editLevelSet(std::string_view what, const std::function<void()>& edit, int seeds,
-                            int erasures, const ParamValues* params) {
+void Workflow::editLevelSet(
+    std::string_view what, const std::function<void()>& edit, int seeds, int erasures,
+    const ParamValues* params,
+    std::pair<std::shared_ptr<const StructureList>, std::shared_ptr<const StructureList>>
+        structures) {
     const LevelSetMark before = markNow(status_.seeds, status_.erasures);
     try {
         edit();
@@ -108,6 +112,8 @@ void Workflow::editLevelSet(std::string_view what, const std::function<void()>& 
     e.paramsAfter = params_;
     e.before = before;
     e.after = after;
+    e.structuresBefore = std::move(structures.first);
+    e.structuresAfter = std::move(structures.second);
     undo_.push(std::move(e));
     status_.seeds = seeds;
     status_.erasures = erasures;
@@ -272,9 +278,11 @@ Workflow::Outcome Workflow::on(const model::Undo&) {
     lastUndone_ = e->what;
     if (e->levelSet) {
         restoreMark(e->before);
+        putStructures(e->structuresBefore);
         afterLevelSetChange();
         applyEditParams(e->paramsBefore); // what came with the edit (a seed's inside example)
     } else {
+        putStructures(e->structuresBefore);
         applyParams(e->paramsBefore);
     }
     undo_.undone();
@@ -289,9 +297,11 @@ Workflow::Outcome Workflow::on(const model::Redo&) {
     lastUndone_ = e->what;
     if (e->levelSet) {
         restoreMark(e->after);
+        putStructures(e->structuresAfter);
         afterLevelSetChange();
         applyEditParams(e->paramsAfter);
     } else {
+        putStructures(e->structuresAfter);
         applyParams(e->paramsAfter);
     }
     undo_.redone();

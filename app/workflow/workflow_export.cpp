@@ -64,7 +64,33 @@ std::string firstLine(const std::exception& e) {
 
 } // namespace
 
+std::vector<ExportedStructure> Workflow::exportedStructures() const {
+    std::vector<ExportedStructure> out;
+    const bool asScanStarted =
+        structures_.items.size() == 1 &&
+        structures_.items.front().info ==
+            model::structureFor(model::kFirstStructureName, settings_.structureKinds, 0);
+    if (asScanStarted) {
+        return out; // the level set alone, as the exports wrote it before structures
+    }
+    // Labels and segment numbers count the structures written, 1..N, in the list's order: a
+    // DICOM SEG's segment numbers start at 1 and rise by 1.
+    for (std::size_t i = 0; i < structures_.items.size(); ++i) {
+        const Structure& s = structures_.items[i];
+        const bool active = i == structures_.active;
+        if (active ? !status_.hasLevelSet : s.mask.runs.empty()) {
+            continue; // nothing drawn yet: no segment
+        }
+        out.push_back({s.info, static_cast<int>(out.size()) + 1, active ? nullptr : &s.mask});
+    }
+    return out;
+}
+
 Workflow::Outcome Workflow::exportTo(const std::string& requested) {
+    const std::vector<ExportedStructure> structures = exportedStructures();
+    const auto write = [&](const std::filesystem::path& p) {
+        return structures.empty() ? engine_.exportMask(p) : engine_.exportStructures(p, structures);
+    };
     enter(model::State::Exporting);
     std::filesystem::path path;
     std::vector<std::string> files;
@@ -84,7 +110,7 @@ Workflow::Outcome Workflow::exportTo(const std::string& requested) {
             for (const std::string& format : settings_.exportFormats) {
                 try {
                     const std::filesystem::path target = withFormat(base, format);
-                    for (const std::filesystem::path& f : engine_.exportMask(target)) {
+                    for (const std::filesystem::path& f : write(target)) {
                         files.push_back(f.string());
                     }
                     if (written++ == 0) {
@@ -96,7 +122,7 @@ Workflow::Outcome Workflow::exportTo(const std::string& requested) {
             }
         } else {
             path = requested;
-            for (const std::filesystem::path& f : engine_.exportMask(path)) {
+            for (const std::filesystem::path& f : write(path)) {
                 files.push_back(f.string());
             }
             written = 1;

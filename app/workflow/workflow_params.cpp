@@ -63,7 +63,7 @@ void Workflow::applyParams(const ParamValues& values, bool force) {
     status_.preset = values.preset;
 }
 
-void Workflow::setDefaultParams() {
+ParamValues Workflow::defaultParams() const {
     // A probe or a preset is the operator's real first step; until then a centred, wide band
     // and some smoothing, as the sample's demo uses.
     const double lo = status_.scan.minValue;
@@ -74,6 +74,11 @@ void Workflow::setDefaultParams() {
     v.values[indexOf(model::Param::Alpha)] = 0.8;
     v.values[indexOf(model::Param::Radius)] = settings_.defaultRadius;
     v.speed.kind = settings_.defaultSpeed;
+    return clamped(v);
+}
+
+void Workflow::setDefaultParams() {
+    ParamValues v = defaultParams();
     try {
         applyParams(clamped(v), true); // a new scan: the engine hears its parameters
     } catch (const std::exception& e) {

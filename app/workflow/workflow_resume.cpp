@@ -1,6 +1,8 @@
 #include "workflow/one_line.hpp"
 #include "workflow/workflow.hpp"
 
+#include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace steerseg::workflow {
@@ -31,6 +33,29 @@ model::State resumedState(model::State saved, bool hasLevelSet) {
 }
 
 } // namespace
+
+std::string Workflow::structuresProblem(const StructureList& list) const {
+    if (list.items.empty() || list.items.size() > model::kMaxStructures ||
+        list.active >= list.items.size()) {
+        return "no active structure among " + std::to_string(list.items.size());
+    }
+    const std::size_t voxels = static_cast<std::size_t>(status_.scan.dims.x) *
+                               static_cast<std::size_t>(status_.scan.dims.y) *
+                               static_cast<std::size_t>(status_.scan.dims.z);
+    for (std::size_t i = 0; i < list.items.size(); ++i) {
+        const Structure& s = list.items[i];
+        if (std::string p = model::structureNameProblem(s.info.name); !p.empty()) {
+            return p;
+        }
+        if (list.find(s.info.name) != i) {
+            return "two structures are named '" + s.info.name + "'";
+        }
+        if (!s.mask.runs.empty() && s.mask.voxels != voxels) {
+            return "'" + s.info.name + "' has a mask of another size";
+        }
+    }
+    return {};
+}
 
 Workflow::Outcome Workflow::restoreSession(const RestoredSession& restored) {
     if (!scanLoaded_ || status_.state != model::State::Inspect) {
@@ -63,6 +88,12 @@ Workflow::Outcome Workflow::restoreSession(const RestoredSession& restored) {
         status_.seeds = restored.seeds;
         status_.erasures = restored.erasures;
         status_.converged = false;
+        if (restored.structures) {
+            if (std::string problem = structuresProblem(*restored.structures); !problem.empty()) {
+                throw std::invalid_argument("the autosave's structures: " + problem);
+            }
+            putStructures(std::make_shared<const StructureList>(*restored.structures));
+        }
         refreshEngineStatus();
     } catch (const std::exception& e) {
         enter(model::State::Error, e.what());
@@ -71,7 +102,7 @@ Workflow::Outcome Workflow::restoreSession(const RestoredSession& restored) {
         return no(e.what());
     }
     // Work that was never exported is still unexported.
-    dirty_ = status_.hasLevelSet;
+    dirty_ = hasResult();
     enter(resumedState(restored.state, status_.hasLevelSet), notice);
     noteAuditError();
     refreshAllowed();

@@ -44,11 +44,12 @@
 // Texture units of the samplers (glActiveTexture(GL_TEXTURE0 + unit)).
 #define SOLVER_SCAN_UNIT 0    // speed/data_speed.glsl, solver: I (scan or smoothed copy)
 #define SOLVER_FACTOR_UNIT 1  // speed/data_speed.glsl, solver: edge g or classifier output
+#define SOLVER_CLAIMED_UNIT 3 // solver/barrier_speed.glsl: voxels other structures hold
 #define SPEED_SOURCE_UNIT 0   // speed/*.comp (each runs alone): the texture it reads
 #define READ_VOLUME_UNIT 0    // gpu/read_volume.comp (runs alone): the texture it reads
 #define VIEW_SCAN_UNIT 0      // render/view_common.glsl: the scan, linear filtering
 #define VIEW_TF_LUT_UNIT 1    // render/raycast.comp: transfer function
-#define VIEW_SKIP_GRID_UNIT 2 // render/raycast.comp: block min/max for empty-space skipping
+#define VIEW_SKIP_GRID_UNIT 2 // render/raycast.comp: a byte per block, visible or skipped
 #define VIEW_OCCUPANCY_UNIT 3 // render/raycast.comp: occupied transfer-function bins
 #define VIEW_GRADIENT_UNIT 4  // render/raycast.comp: the scan's gradient (render/gradient.comp)
 // render/slice.comp's speed view (speed/data_speed.glsl): the ray caster's units 1 and 2, which

@@ -1,7 +1,8 @@
 #version 310 es
 // The 3D view's gradient texture, once per scan: at each voxel, in normalised intensity per
 // voxel, the difference [-1 -2 0 2 1] / 8 along each axis (the central difference of the scan
-// smoothed by [1 2 1] / 4 along that axis). The plain central difference made rings on the
+// smoothed by [1 2 1] / 4 along that axis), and in alpha the normalised intensity itself, so the
+// ray caster fetches both at once. The plain central difference made rings on the
 // built-in sample's head seen from above, one per 1.5 mm slice: on a boundary about a voxel
 // wide, the largest gradient it finds swings by up to half with where the boundary falls
 // between two voxels, and the transfer function's gradient axis turns that into opacity. The
@@ -17,9 +18,13 @@ precision highp image3D;
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 layout(binding = VIEW_SCAN_UNIT) uniform sampler3D scanTex;
-layout(rgba16f, binding = VIEW_GRADIENT_IMAGE_UNIT) uniform writeonly image3D gradientOut;
+// rgba32f, or rgba16f where the full floats would exceed the memory budget (GradientTexture).
+#ifndef GRADIENT_IMAGE_FORMAT
+#define GRADIENT_IMAGE_FORMAT rgba16f
+#endif
+layout(GRADIENT_IMAGE_FORMAT, binding = VIEW_GRADIENT_IMAGE_UNIT) uniform writeonly image3D gradientOut;
 uniform ivec3 volumeDims;
-uniform float toNormalised; // display-texture value difference -> normalised intensity
+uniform vec2 toNormalised; // display-texture value v -> normalised intensity: v * x + y
 
 float at(ivec3 v) {
     return texelFetch(scanTex, clamp(v, ivec3(0), volumeDims - 1), 0).r;
@@ -36,6 +41,6 @@ void main() {
         e[a] = 1;
         g[a] = (2.0 * (at(v + e) - at(v - e)) + at(v + 2 * e) - at(v - 2 * e)) / 8.0;
     }
-    g *= toNormalised;
-    imageStore(gradientOut, v, vec4(g, 0.0));
+    g *= toNormalised.x;
+    imageStore(gradientOut, v, vec4(g, at(v) * toNormalised.x + toNormalised.y));
 }

@@ -10,7 +10,8 @@
 // the partial volume between it and the added tissue. The classify speed learns the sphere
 // instead; bounded by the window (classifyWithinWindow), its bound widens there as the
 // threshold's does. Outside the operator's box (model::Box; without one it holds the whole scan)
-// every voxel blocks as a blocking sphere does: the surface never leaves the box.
+// every voxel blocks as a blocking sphere does: the surface never leaves the box. So does every
+// voxel another structure holds (LevelSetSolver::setClaimed): the surface never enters it.
 // The host side: LevelSetSolver::uploadBarriers (app/solver/level_set_edits.cpp).
 // Include after speed/data_speed.glsl and solver/sphere_metric.glsl.
 #ifndef MAX_BARRIERS
@@ -22,9 +23,20 @@ uniform vec2 barrierLevels[MAX_BARRIERS]; // tissue level (real units), reach (a
 uniform float barrierHold;
 uniform ivec3 boxLo;
 uniform ivec3 boxHi;
+// One bit a voxel, 32 along i to a texel (bit i % 32 of texel (i / 32, j, k)); bound only while
+// hasClaimed, so a run without claimed voxels reads no texture here.
+precision highp usampler3D;
+layout(binding = SOLVER_CLAIMED_UNIT) uniform highp usampler3D claimedBits;
+uniform bool hasClaimed;
+
+bool claimedVoxel(ivec3 voxel) {
+    uint word = texelFetch(claimedBits, ivec3(voxel.x >> 5, voxel.yz), 0).r;
+    return ((word >> uint(voxel.x & 31)) & 1u) != 0u;
+}
 
 float barrierSpeed(ivec3 voxel, float dataSpeed) {
-    if (any(lessThan(voxel, boxLo)) || any(greaterThan(voxel, boxHi))) {
+    if (any(lessThan(voxel, boxLo)) || any(greaterThan(voxel, boxHi)) ||
+        (hasClaimed && claimedVoxel(voxel))) {
         return -max(abs(dataSpeed), barrierHold);
     }
     vec3 p = vec3(voxel);

@@ -1,18 +1,11 @@
 #version 310 es
-// One thread: turns the requests of the last mark pass into the allocation's dispatch size and
-// clears the per-iteration counters.
+// One thread, after an edit's request_edit_bricks or an upload: the allocation's dispatch size
+// and cleared counters (solver_common.glsl's beginIteration). Within a run of iterations
+// settle_bricks's last group does the same, so an iteration has no dispatch for it.
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
 layout(local_size_x = 1) in;
 
 void main() {
-    uint n = ctrl.requestCount;
-    ctrl.allocArgs[0] = min(n, GROUPS_PER_ROW);
-    ctrl.allocArgs[1] = (n + GROUPS_PER_ROW - 1u) / GROUPS_PER_ROW;
-    ctrl.allocArgs[2] = 1u;
-    ctrl.popped = 0u;
-    ctrl.activeCount = 0u;
-    ctrl.maxRateBits = 0u;
-    ctrl.bandCount = 0u;
-    ctrl.frontVoxels = 0u;
+    beginIteration();
 }

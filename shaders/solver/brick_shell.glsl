@@ -1,7 +1,7 @@
 // A brick's shell: its voxels with a coordinate at 0 or BRICK_SIZE - 1, the only ones the 3x3x3
 // stencils of other bricks read. update_phi writes a brick's new interior in place and its new
 // shell aside (shellNext), so that no group reads a neighbour's half-updated shell;
-// commit_shells then copies the shells in. Host mirror: GpuBrickPool::shellBytes().
+// settle_bricks then copies the shells in. Host mirror: GpuBrickPool::shellBytes().
 const int SHELL_RING = 4 * BRICK_SIZE - 4; // shell voxels of one inner z slice
 const uint SHELL_VOXELS = uint(2 * BRICK_SIZE * BRICK_SIZE + (BRICK_SIZE - 2) * SHELL_RING);
 

@@ -3,12 +3,19 @@
 const int APRON = BRICK_SIZE + 2;
 shared float tile[APRON * APRON * APRON];
 
-// Fills the tile of the brick starting at voxel `origin`; call barrier() before reading.
-void loadTile(ivec3 origin) {
+// Fills the tile of the brick starting at voxel `origin`, stored in `slot`; call barrier() before
+// reading. The brick's own voxels inside the volume come straight from its slot, where phiAt
+// would find them through the page table; the apron, and voxels past the volume's end (which
+// repeat the border voxel), through phiAt.
+void loadTile(ivec3 origin, uint slot) {
     for (uint a = gl_LocalInvocationIndex; a < uint(APRON * APRON * APRON); a += uint(LOCAL_SIZE)) {
         int i = int(a);
         ivec3 l = ivec3(i % APRON, (i / APRON) % APRON, i / (APRON * APRON)) - 1;
-        tile[a] = phiAt(origin + l);
+        bool own = all(greaterThanEqual(l, ivec3(0))) && all(lessThan(l, ivec3(BRICK_SIZE))) &&
+                   all(lessThan(origin + l, volumeDims));
+        tile[a] = own ? phiPool[slot * BRICK_VOXELS +
+                                uint(l.x + BRICK_SIZE * (l.y + BRICK_SIZE * l.z))]
+                      : phiAt(origin + l);
     }
 }
 
@@ -21,23 +28,5 @@ PhiStencil tileFaces(ivec3 l) {
                               tileAt(l + ivec3(0, -1, 0)), tileAt(l + ivec3(0, 1, 0)),
                               tileAt(l + ivec3(0, 0, -1)), tileAt(l + ivec3(0, 0, 1)), 0.0, 0.0,
                               0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    return s;
-}
-
-// The whole stencil of one step (faces and the 12 edge neighbours).
-PhiStencil tileStencil(ivec3 l) {
-    PhiStencil s = tileFaces(l);
-    s.xpyp = tileAt(l + ivec3(1, 1, 0));
-    s.xpym = tileAt(l + ivec3(1, -1, 0));
-    s.xmyp = tileAt(l + ivec3(-1, 1, 0));
-    s.xmym = tileAt(l + ivec3(-1, -1, 0));
-    s.xpzp = tileAt(l + ivec3(1, 0, 1));
-    s.xpzm = tileAt(l + ivec3(1, 0, -1));
-    s.xmzp = tileAt(l + ivec3(-1, 0, 1));
-    s.xmzm = tileAt(l + ivec3(-1, 0, -1));
-    s.ypzp = tileAt(l + ivec3(0, 1, 1));
-    s.ypzm = tileAt(l + ivec3(0, 1, -1));
-    s.ymzp = tileAt(l + ivec3(0, -1, 1));
-    s.ymzm = tileAt(l + ivec3(0, -1, -1));
     return s;
 }

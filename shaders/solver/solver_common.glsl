@@ -21,7 +21,7 @@ const uint FACE_REACH_SHIFT = 8u;
 // in which no voxel of the brick moved by more than the tolerance (saturating at 255); a brick
 // whose count reached sleepAfter is left out of the active list. Bits MOVED_SHIFT + f: in the
 // last step a voxel on face f moved by more than the tolerance, so the bricks whose stencils
-// read that face must be awake (mark_wanted_bricks clears their count).
+// read that face must be awake (settle_bricks clears their count).
 const uint QUIET_SHIFT = 16u;
 const uint QUIET_MASK = 0xFFu << QUIET_SHIFT;
 const uint MOVED_SHIFT = 24u;
@@ -40,7 +40,7 @@ const uint GROUPS_PER_ROW = 1024u;
 layout(std430, binding = CONTROL_BINDING) coherent buffer Control {
     uint allocArgs[3]; // indirect dispatch: one group per requested brick
     uint brickArgs[3]; // indirect dispatch: one group per active brick
-    uint listArgs[3];  // indirect dispatch: one thread per used slot (bandList), 64 per group
+    uint settleArgs[3]; // indirect dispatch: settle_bricks (activeCount groups, 64 slots a group)
     uint requestCount; // bricks asking for a slot (neighbours of the band, sphere edits)
     uint activeCount;  // entries of activeList
     uint freeCount;    // entries of freeList
@@ -65,10 +65,24 @@ layout(std430, binding = CONTROL_BINDING) coherent buffer Control {
     uint bandCount;
     uint visitedBricks;
     uint frontVoxels;
+    // Work groups of the current pass that have finished (lastGroupDone).
+    uint groupsDone;
+    // The last iteration's activeCount, bandCount and frontVoxels, for the host: settle_bricks
+    // clears the working counters for the next iteration before the host reads them.
+    uint shownActive;
+    uint shownBand;
+    uint shownFront;
+    // Active bricks whose front measure_speed measures (measureListBase), and its dispatch.
+    uint measureCount;
+    uint measureArgs[3];
 } ctrl;
 
 layout(std430, binding = SLOT_BRICK_BINDING) buffer SlotBrick { uint slotBrick[]; };
+// Two lists of up to a slot each: the active bricks from 0, and from measureListBase() those of
+// them measure_speed measures (the rest keep their last measure: build_active_list).
 layout(std430, binding = ACTIVE_LIST_BINDING) buffer ActiveList { uint activeList[]; };
+
+uint measureListBase() { return uint(activeList.length()) / 2u; }
 layout(std430, binding = SLOT_STATE_BINDING) buffer SlotState { uint slotState[]; }; // state | reach
 layout(std430, binding = BAND_LIST_BINDING) buffer BandList { uint bandList[]; };
 // Per slot, as measure_speed last saw it: [2 s] max |alpha D| on its front (float bits),
@@ -91,6 +105,51 @@ ivec3 localVoxel(uint n) {
 uint activeListIndex() {
     uint n = gl_WorkGroupID.x + gl_WorkGroupID.y * GROUPS_PER_ROW;
     return n < ctrl.activeCount ? n : NO_BRICK;
+}
+
+// One pass's bookkeeping done by the group that finishes last, instead of a one-thread dispatch
+// of its own behind one more memory barrier (issue 50). Each group counts itself into
+// ctrl.groupsDone once its work is written; the group whose count completes the pass then sees
+// every other group's results. Why that holds on any GPU, not only on one that runs groups in
+// order: Control is `coherent` (no read is served from a core's stale cache), every counter the
+// bookkeeping reads is updated with atomics in the pass and read back with atomics by the last
+// group (performed at the device's point of coherence), every invocation that updates one calls
+// memoryBarrierBuffer() before its group's barrier() and the counting invocation calls it again
+// before its count (release: the group's updates are complete before it counts), and the last
+// group calls it after its count, before its reads (acquire). Call from one invocation of each
+// group, after `memoryBarrierBuffer(); barrier();` at main()'s top level where other invocations
+// update counters; every group of the dispatch must call it. It resets the count for the next
+// pass (the host's glMemoryBarrier between dispatches orders the reset before that pass).
+bool lastGroupDone() {
+    uint groups = gl_NumWorkGroups.x * gl_NumWorkGroups.y * gl_NumWorkGroups.z;
+    memoryBarrierBuffer();
+    bool last = atomicAdd(ctrl.groupsDone, 1u) == groups - 1u;
+    if (last) {
+        memoryBarrierBuffer();
+        ctrl.groupsDone = 0u;
+    }
+    return last;
+}
+
+// Indirect dispatch arguments for n groups, GROUPS_PER_ROW to a row.
+uvec3 groupsFor(uint n) {
+    return uvec3(min(n, GROUPS_PER_ROW), (n + GROUPS_PER_ROW - 1u) / GROUPS_PER_ROW, 1u);
+}
+
+// Before an iteration: the allocation's dispatch size from the requests the band asked for
+// (mark in settle_bricks, or an edit's request_edit_bricks), and the counters of the passes
+// over the lists cleared. Run by begin_iteration (after an edit) and settle_bricks's last group.
+void beginIteration() {
+    uvec3 alloc = groupsFor(atomicAdd(ctrl.requestCount, 0u));
+    ctrl.allocArgs[0] = alloc.x;
+    ctrl.allocArgs[1] = alloc.y;
+    ctrl.allocArgs[2] = alloc.z;
+    ctrl.popped = 0u;
+    ctrl.activeCount = 0u;
+    ctrl.maxRateBits = 0u;
+    ctrl.bandCount = 0u;
+    ctrl.frontVoxels = 0u;
+    ctrl.measureCount = 0u;
 }
 
 const ivec3 FACE_NEIGHBOURS[6] = ivec3[6](ivec3(-1, 0, 0), ivec3(1, 0, 0), ivec3(0, -1, 0),

@@ -159,6 +159,69 @@ TEST(AutosaveFormat, RoundTripWithoutALevelSet) {
     expectSame(decodeSnapshot(encodeSnapshot(s)), s);
 }
 
+// Several structures: the active one's surface is the snapshot's mask, every other one's runs
+// follow it in the file, with its description, parameters and counts in the metadata.
+AutosaveSnapshot withStructures() {
+    AutosaveSnapshot s = sampleSnapshot();
+    workflow::StructureList list;
+    workflow::Structure liver;
+    liver.info = {"Liver",
+                  {"123037004", "SCT", "Anatomical Structure"},
+                  {"10200004", "SCT", "Liver"},
+                  {0.8, 0.5, 0.4},
+                  false};
+    std::vector<std::uint8_t> slab(20 * 16 * 12, 0);
+    std::fill(slab.begin(), slab.begin() + 20 * 16 * 2, std::uint8_t{1});
+    liver.mask = encodeRuns(slab);
+    liver.params = s.params;
+    liver.params.values[workflow::indexOf(model::Param::T)] = 60.0;
+    liver.params.speed.box.reset();
+    liver.seeds = 3;
+    liver.volumeMl = 1.25;
+    workflow::Structure active;
+    active.info.name = "Spleen";
+    workflow::Structure empty;
+    empty.info.name = "Left kidney";
+    list.items = {liver, active, empty};
+    list.active = 1;
+    s.structures = list;
+    return s;
+}
+
+TEST(AutosaveFormat, EveryStructureComesBack) {
+    const AutosaveSnapshot s = withStructures();
+    const AutosaveSnapshot back = decodeSnapshot(encodeSnapshot(s));
+    expectSame(back, s);
+    ASSERT_TRUE(back.structures.has_value());
+    ASSERT_EQ(back.structures->items.size(), 3U);
+    EXPECT_EQ(back.structures->active, 1U);
+    for (std::size_t i = 0; i < 3; ++i) {
+        const workflow::Structure& a = s.structures->items[i];
+        const workflow::Structure& b = back.structures->items[i];
+        EXPECT_EQ(a.info, b.info) << i;
+        EXPECT_EQ(a.mask.runs, b.mask.runs) << i;
+        EXPECT_EQ(a.seeds, b.seeds) << i;
+        EXPECT_EQ(a.volumeMl, b.volumeMl) << i;
+        if (i != 1) {
+            EXPECT_EQ(a.params, b.params) << i;
+        }
+    }
+    // The active one without a surface: the others still come back.
+    AutosaveSnapshot bare = withStructures();
+    bare.mask = {};
+    const AutosaveSnapshot bareBack = decodeSnapshot(encodeSnapshot(bare));
+    EXPECT_TRUE(bareBack.mask.runs.empty());
+    EXPECT_EQ(bareBack.structures->items[0].mask.runs, bare.structures->items[0].mask.runs);
+    // Garbled: a run count that does not fit, a name no session allows, a code left empty.
+    const std::vector<std::byte> good = encodeSnapshot(s);
+    EXPECT_NE(decodeError(withMetadata(good, "\"name\":\"Liver\"", "\"name\":\"a|b\"")).find("'|'"),
+              std::string::npos);
+    EXPECT_NE(decodeError(withMetadata(good, "\"10200004\"", "\"\"")).find("code"),
+              std::string::npos);
+    EXPECT_NE(decodeError(withMetadata(good, "\"active\":1", "\"active\":5")).find("active"),
+              std::string::npos);
+}
+
 TEST(AutosaveFormat, EveryCorruptionIsOneClearError) {
     const std::vector<std::byte> good = encodeSnapshot(sampleSnapshot());
     auto badMagic = good;

@@ -122,6 +122,58 @@ TEST_F(CliMeasure, BadInputIsOneLineAndItsStatus) {
     }
 }
 
+// With ITK-SNAP's label description beside the label map (as the exports write it): the label's
+// name in the table and the JSON; a label the description does not name, in the map or asked
+// for, and a garbled description, refused in one line before anything is measured.
+TEST_F(CliMeasure, TheLabelDescriptionNamesEveryLabel) {
+    const std::string labels = (dir / "labels.nii").string();
+    const auto describe = [&](const std::string& rows) {
+        writeFile(dir / "labels.label.txt",
+                  "# ITK-SnAP Label Description File\n"
+                  "    0     0    0    0        0  0  0    \"Clear Label\"\n" +
+                      rows);
+    };
+    describe("    1   255    0    0        1  1  1    \"Liver\"\n"
+             "    2     0    0  255        1  1  1    \"Spleen (accessory)\"\n");
+    const CliRun json = measure("--mask " + labels + " --label 2 --json");
+    ASSERT_EQ(json.exitCode, 0) << json.err;
+    EXPECT_EQ(nlohmann::json::parse(json.out)["name"], "Spleen (accessory)");
+    const CliRun table = measure("--mask " + labels + " --label 1");
+    ASSERT_EQ(table.exitCode, 0) << table.err;
+    EXPECT_NE(table.out.find("structure             Liver\n"), std::string::npos) << table.out;
+
+    describe("    1   255    0    0        1  1  1    \"Liver\"\n");
+    for (const std::string& options : {std::string(""), std::string(" --label 1")}) {
+        const CliRun r = measure("--mask " + labels + options);
+        EXPECT_EQ(r.exitCode, 2) << r.err;
+        EXPECT_TRUE(r.out.empty());
+        EXPECT_NE(r.err.find("holds label 2, which labels.label.txt beside it does not name (it "
+                             "names 1 Liver)"),
+                  std::string::npos)
+            << r.err;
+    }
+    describe("    1   255    0    0        1  1  1    \"Liver\"\n"
+             "    2     0    0  255        1  1  1    \"Spleen\"\n"
+             "    3     0  255    0        1  1  1    \"Kidney\"\n");
+    const CliRun notThere = measure("--mask " + labels + " --label 3");
+    EXPECT_EQ(notThere.exitCode, 2);
+    EXPECT_NE(notThere.err.find("--label 3: no voxel of"), std::string::npos) << notThere.err;
+    describe("    2     0    0  255        1  1  1    \"Spleen\"\n");
+    const CliRun unnamed = measure("--mask " + labels + " --label 1");
+    EXPECT_EQ(unnamed.exitCode, 2);
+    EXPECT_NE(unnamed.err.find("holds label 1"), std::string::npos) << unnamed.err;
+
+    for (const std::string& garbled :
+         {std::string("    1   255    0 \"Liver\"\n"), std::string("    1 255 0 0 1 1 1 Liver\n"),
+          std::string("    0 0 0 0 0 0 0 \"Again\"\n")}) {
+        describe(garbled);
+        const CliRun r = measure("--mask " + labels + " --label 1");
+        EXPECT_EQ(r.exitCode, 2) << garbled << r.err;
+        EXPECT_NE(r.err.find("labels.label.txt line 3: "), std::string::npos) << r.err;
+        EXPECT_EQ(lineCount(r.err), 2) << r.err;
+    }
+}
+
 // The lung-ct-ibsi GTV: its volume is its voxel count times the voxel's volume, exactly.
 TEST(CliMeasureRealData, LungGtvVolumeIsItsVoxels) {
     STEERSEG_REQUIRE_DATA(image, "lung-ct-ibsi/nifti/image.nii.gz");

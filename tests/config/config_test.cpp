@@ -116,6 +116,17 @@ std::vector<std::string> differences(const KioskConfig& a, const KioskConfig& b)
             }
         }
     }
+    field("segmentation.structures_overlap",
+          a.segmentation.structuresOverlap == b.segmentation.structuresOverlap);
+    if (a.structures.size() != b.structures.size()) {
+        out.push_back("structures count");
+    } else {
+        for (std::size_t i = 0; i < a.structures.size(); ++i) {
+            if (!(a.structures[i] == b.structures[i])) {
+                out.push_back("structures[" + std::to_string(i + 1) + "]");
+            }
+        }
+    }
     const auto bindings = [&out](const char* table, const config::BindingTable& x,
                                  const config::BindingTable& y) {
         for (const auto& [key, binding] : x) {
@@ -547,6 +558,44 @@ TEST_F(ConfigTest, BadPresets) {
                    "preset[2].name", "given twice");
     expectRejected("[[preset]]\nname = \"CT bone\"\nHU = 1\n", 3, "preset[1].HU", "unknown key");
     expectRejected("preset = [1]\n", 1, "preset[1]", "expected a table");
+}
+
+TEST_F(ConfigTest, StructuresReplaceTheSiteListWhole) {
+    KioskConfig c = config::defaultConfig();
+    const auto problems = config::applyConfigText(
+        c,
+        "[segmentation]\nstructures_overlap = true\n"
+        "[[structures]]\nname = \"Prostate\"\ncategory = [\"123037004\", \"SCT\", "
+        "\"Anatomical Structure\"]\ntype = [\"41216001\", \"SCT\", \"Prostate\"]\n"
+        "[[structures]]\nname = \"Lesion 1\"\ncategory = [\"49755003\", \"SCT\", \"Morphologically "
+        "Abnormal Structure\"]\ntype = [\"52988006\", \"SCT\", \"Lesion\"]\ncolour = [1, 0, 0]\n",
+        "s.toml", kCheck);
+    ASSERT_TRUE(problems.empty()) << describeAll(problems);
+    EXPECT_TRUE(c.segmentation.structuresOverlap);
+    ASSERT_EQ(c.structures.size(), 2U);
+    EXPECT_EQ(c.structures[0].type.meaning, "Prostate");
+    EXPECT_EQ(c.structures[0].colour, model::paletteColour(0)) << "no colour: the palette's";
+    EXPECT_EQ(c.structures[1].colour, glm::dvec3(1.0, 0.0, 0.0));
+}
+
+TEST_F(ConfigTest, BadStructures) {
+    const std::string codes = "category = [\"123037004\", \"SCT\", \"Anatomical Structure\"]\n"
+                              "type = [\"10200004\", \"SCT\", \"Liver\"]\n";
+    expectRejected("[[structures]]\nname = \"Liver\"\ncategory = [\"1\", \"SCT\"]\n"
+                   "type = [\"10200004\", \"SCT\", \"Liver\"]\n",
+                   3, "structures[1].category", "three strings");
+    expectRejected("[[structures]]\nname = \"Liver\"\ncategory = [\"\", \"SCT\", \"x\"]\n"
+                   "type = [\"10200004\", \"SCT\", \"Liver\"]\n",
+                   3, "structures[1].category", "needs a value");
+    expectRejected("[[structures]]\nname = \"Liver\"\n" + codes +
+                       "[[structures]]\nname = \"Liver\"\n" + codes,
+                   6, "structures[2].name", "given twice");
+    expectRejected("[[structures]]\nname = \"a|b\"\n" + codes, 2, "structures[1].name",
+                   "no structure name");
+    expectRejected("[[structures]]\nname = \"Liver\"\n" + codes + "colour = [2, 0, 0]\n", 5,
+                   "structures[1].colour[1]", "at most 1");
+    expectRejected("[[structures]]\nname = \"Liver\"\ntype = [\"10200004\", \"SCT\", \"Liver\"]\n",
+                   1, "structures[1].category", "is missing");
 }
 
 TEST_F(ConfigTest, DescribeIsOneLine) {

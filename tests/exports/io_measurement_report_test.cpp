@@ -9,7 +9,9 @@
 #include "exports/measurement_report.hpp"
 #include "scan/scan_reader.hpp"
 #include "support/cli_run.hpp"
+#include "support/report_reader.hpp"
 #include "support/test_data.hpp"
+#include "synthetic_ct_series.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -28,77 +30,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string uid() {
-    char text[100];
-    return dcmGenerateUniqueIdentifier(text, SITE_INSTANCE_UID_ROOT);
-}
-
-constexpr int kColumns = 24;
-constexpr int kRows = 20;
-constexpr int kSlices = 10;
-
-// HU at a voxel: varied, so that mean, sd, min and max all mean something.
-int hounsfield(int i, int j, int k) {
-    return -60 + (3 * i + 5 * j + 7 * k) % 53;
-}
-
-// An axial CT series, one slice per file, 0.8 x 0.7 mm pixels, 2 mm apart; stored values with
-// a rescale intercept of -1024.
-std::string writeSeries(const fs::path& dir) {
-    const std::string study = uid();
-    const std::string series = uid();
-    const std::string frame = uid();
-    for (int k = 0; k < kSlices; ++k) {
-        DcmFileFormat file;
-        DcmDataset& d = *file.getDataset();
-        d.putAndInsertString(DCM_SOPClassUID, UID_CTImageStorage);
-        d.putAndInsertString(DCM_SOPInstanceUID, uid().c_str());
-        d.putAndInsertString(DCM_StudyInstanceUID, study.c_str());
-        d.putAndInsertString(DCM_SeriesInstanceUID, series.c_str());
-        d.putAndInsertString(DCM_FrameOfReferenceUID, frame.c_str());
-        d.putAndInsertString(DCM_PatientName, "Test^Report");
-        d.putAndInsertString(DCM_PatientID, "SR-TEST-1");
-        d.putAndInsertString(DCM_PatientBirthDate, "19700101");
-        d.putAndInsertString(DCM_PatientSex, "O");
-        d.putAndInsertString(DCM_StudyDate, "20261201");
-        d.putAndInsertString(DCM_StudyTime, "093000");
-        d.putAndInsertString(DCM_StudyID, "7");
-        d.putAndInsertString(DCM_AccessionNumber, "SR1");
-        d.putAndInsertString(DCM_ReferringPhysicianName, "");
-        d.putAndInsertString(DCM_Modality, "CT");
-        d.putAndInsertString(DCM_SeriesNumber, "2");
-        d.putAndInsertString(DCM_InstanceNumber, std::to_string(k + 1).c_str());
-        d.putAndInsertString(DCM_ImageType, "ORIGINAL\\PRIMARY\\AXIAL");
-        d.putAndInsertString(DCM_ImagePositionPatient,
-                             ("-10\\-8\\" + std::to_string(2 * k - 50)).c_str());
-        d.putAndInsertString(DCM_ImageOrientationPatient, "1\\0\\0\\0\\1\\0");
-        d.putAndInsertString(DCM_PixelSpacing, "0.7\\0.8"); // rows apart, then columns
-        d.putAndInsertString(DCM_SliceThickness, "2");
-        d.putAndInsertString(DCM_RescaleIntercept, "-1024");
-        d.putAndInsertString(DCM_RescaleSlope, "1");
-        d.putAndInsertUint16(DCM_SamplesPerPixel, 1);
-        d.putAndInsertString(DCM_PhotometricInterpretation, "MONOCHROME2");
-        d.putAndInsertUint16(DCM_Rows, kRows);
-        d.putAndInsertUint16(DCM_Columns, kColumns);
-        d.putAndInsertUint16(DCM_BitsAllocated, 16);
-        d.putAndInsertUint16(DCM_BitsStored, 16);
-        d.putAndInsertUint16(DCM_HighBit, 15);
-        d.putAndInsertUint16(DCM_PixelRepresentation, 0);
-        std::vector<Uint16> pixels;
-        for (int j = 0; j < kRows; ++j) {
-            for (int i = 0; i < kColumns; ++i) {
-                pixels.push_back(static_cast<Uint16>(1024 + hounsfield(i, j, k)));
-            }
-        }
-        d.putAndInsertUint16Array(DCM_PixelData, pixels.data(),
-                                  static_cast<unsigned long>(pixels.size()));
-        char name[32];
-        std::snprintf(name, sizeof name, "im%03d.dcm", k);
-        EXPECT_TRUE(file.saveFile((dir / name).c_str(), EXS_LittleEndianExplicit).good());
-    }
-    return series;
-}
-
 // An ellipsoid (semi-axes 6 x 5 mm in-plane, 7 mm across slices) off the grid's centre.
 std::vector<std::uint8_t> ellipsoid(const Geometry& g, const glm::dvec3& centreIndex,
                                     const glm::dvec3& semiAxesMm) {
@@ -112,52 +43,6 @@ std::vector<std::uint8_t> ellipsoid(const Geometry& g, const glm::dvec3& centreI
         }
     }
     return mask;
-}
-
-// What the independent reader found: tab-separated words per line, by their first word.
-std::multimap<std::string, std::vector<std::string>> readReport(const fs::path& report) {
-    const ShellRun r = runShell("/usr/bin/python3 " +
-                                shellQuoted(fs::path(STEERSEG_SOURCE_DIR) / "tests" / "tools" /
-                                            "read_measurement_report.py") +
-                                " " + shellQuoted(report));
-    EXPECT_EQ(r.status, 0) << r.output;
-    std::multimap<std::string, std::vector<std::string>> out;
-    std::istringstream lines(r.output);
-    std::string line;
-    while (std::getline(lines, line)) {
-        std::vector<std::string> words;
-        std::istringstream in(line);
-        for (std::string w; std::getline(in, w, '\t');) {
-            words.push_back(w);
-        }
-        if (!words.empty()) {
-            const std::string key = words.front();
-            words.erase(words.begin());
-            out.emplace(key, words);
-        }
-    }
-    return out;
-}
-
-// The NUM items of group `group`, by "code derivation" ("118565006 -", "112031 373098007"):
-// unit, DS value, floating point value.
-struct Num {
-    std::string unit;
-    double ds = 0.0;
-    double fp = 0.0;
-};
-
-std::map<std::string, Num> numsOf(const std::multimap<std::string, std::vector<std::string>>& r,
-                                  const std::string& group) {
-    std::map<std::string, Num> out;
-    const auto [from, to] = r.equal_range("num");
-    for (auto it = from; it != to; ++it) {
-        const std::vector<std::string>& w = it->second; // N code scheme unit derivation ds fp
-        if (w.size() == 7 && w[0] == group) {
-            out[w[1] + " " + w[4]] = {w[3], std::stod(w[5]), std::stod(w[6])};
-        }
-    }
-    return out;
 }
 
 std::string sopInstanceOf(const fs::path& file) {

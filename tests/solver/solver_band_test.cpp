@@ -1,6 +1,6 @@
 // Which bricks the sparse solver stores: those the narrow band occupies, and constant ones only
-// where the band reaches the face they share with a stored brick (mark_wanted_bricks,
-// retire_bricks). The results are the dense reference's either way (the agreement tests); this
+// where the band reaches the face they share with a stored brick (settle_bricks requests and
+// retires them). The results are the dense reference's either way (the agreement tests); this
 // checks the storage is no larger than that.
 #include "gpu/gl.hpp"
 #include "solver/level_set_solver.hpp"

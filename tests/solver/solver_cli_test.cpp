@@ -86,12 +86,12 @@ TEST(SolverCli, SegmentsTheSampleLesionAndWritesMaskAndReport) {
     EXPECT_LT(j["peak_active_bricks"].get<double>(), j["total_bricks"].get<double>());
     EXPECT_LE(j["active_bricks"].get<double>(), j["peak_active_bricks"].get<double>());
     EXPECT_LE(j["pool_bytes"].get<double>(), j["peak_pool_bytes"].get<double>());
-    // What an iteration costs in GL calls (issue 50): ten passes, each behind a barrier, and
+    // What an iteration costs in GL calls (issue 50): five passes, each behind a barrier, and
     // the host waiting only at the checks. Per iteration counted: the time stopped the run
     // within its last check interval, whose other iterations were dispatched and did nothing
-    // (41 of 48 here).
-    EXPECT_GE(j["dispatches_per_iteration"].get<double>(), 10.0);
-    EXPECT_LT(j["dispatches_per_iteration"].get<double>(), 16.0);
+    // (41 of 48 here: 5.85).
+    EXPECT_GE(j["dispatches_per_iteration"].get<double>(), 5.0);
+    EXPECT_LT(j["dispatches_per_iteration"].get<double>(), 8.0);
     EXPECT_GE(j["barriers_per_iteration"].get<double>(),
               j["dispatches_per_iteration"].get<double>());
     EXPECT_LT(j["host_syncs_per_iteration"].get<double>(), 1.0);

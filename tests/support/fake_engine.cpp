@@ -167,7 +167,13 @@ void FakeEngine::paint(const model::Sphere& s, std::uint8_t value) {
                 if (!model::sphereHolds(s, glm::dvec3(i, j, k), scale)) {
                     continue;
                 }
-                std::uint8_t& m = mask_[static_cast<std::size_t>(i + d.x * (j + d.y * k))];
+                const auto at = static_cast<std::size_t>(i + d.x * (j + d.y * k));
+                std::uint8_t& m = mask_[at];
+                // Another structure's voxel stays outside, as the solver's claimed barrier keeps
+                // the surface out of it.
+                if (value != 0 && !claimed_.empty() && claimed_[at] != 0) {
+                    continue;
+                }
                 if (m != value) {
                     inside_ = value != 0 ? inside_ + 1 : inside_ - 1;
                     m = value;
@@ -346,6 +352,97 @@ std::vector<std::filesystem::path> FakeEngine::exportMask(const std::filesystem:
         if (!out) {
             throw std::runtime_error(path.string() + ": cannot write");
         }
+    }
+    exports.push_back(path);
+    return {path};
+}
+
+MaskRuns FakeEngine::levelSetMask() const {
+    requireScan("levelSetMask");
+    return inside_ == 0 ? MaskRuns{} : encodeRuns(mask_);
+}
+
+MaskMeasurements FakeEngine::measureStructure(const MaskRuns* mask) const {
+    requireScan("measureStructure");
+    const std::vector<std::uint8_t> inside = mask != nullptr ? decodeRuns(*mask) : mask_;
+    MaskMeasurements m;
+    const glm::ivec3 d = scan_.dims;
+    bool first = true;
+    for (std::size_t v = 0; v < inside.size(); ++v) {
+        if (inside[v] == 0) {
+            continue;
+        }
+        const glm::dvec3 at(static_cast<double>(v % static_cast<std::size_t>(d.x)),
+                            static_cast<double>((v / static_cast<std::size_t>(d.x)) %
+                                                static_cast<std::size_t>(d.y)),
+                            static_cast<double>(v / static_cast<std::size_t>(d.x * d.y)));
+        if (first) {
+            m.axial.longest.index[0] = at;
+            m.axial.slice = static_cast<int>(at.z);
+            first = false;
+        }
+        m.axial.longest.index[1] = at;
+        ++m.voxels;
+    }
+    if (m.voxels == 0) {
+        throw std::invalid_argument("no voxel is inside");
+    }
+    m.volumeMl = static_cast<double>(m.voxels) * scan_.spacing.x * scan_.spacing.y *
+                 scan_.spacing.z / 1000.0;
+    return m;
+}
+
+void FakeEngine::setMask(const MaskRuns& mask) {
+    requireScan("setMask");
+    barriers_.clear();
+    if (mask.runs.empty()) {
+        std::fill(mask_.begin(), mask_.end(), std::uint8_t{0});
+    } else {
+        if (mask.voxels != mask_.size()) {
+            throw std::invalid_argument("a mask of another size");
+        }
+        mask_ = decodeRuns(mask);
+    }
+    inside_ = static_cast<std::size_t>(std::count(mask_.begin(), mask_.end(), std::uint8_t{1}));
+    iterations_ = 0;
+    time_ = 0.0F;
+    changed();
+}
+
+void FakeEngine::setClaimed(const MaskRuns& claimed) {
+    requireScan("setClaimed");
+    if (claimed.runs.empty()) {
+        claimed_.clear();
+        return;
+    }
+    if (claimed.voxels != mask_.size()) {
+        misused("setClaimed with a mask of another size");
+    }
+    claimed_ = decodeRuns(claimed);
+}
+
+std::size_t FakeEngine::claimedVoxels() const {
+    return static_cast<std::size_t>(
+        std::count_if(claimed_.begin(), claimed_.end(), [](std::uint8_t v) { return v != 0; }));
+}
+
+std::vector<std::filesystem::path>
+FakeEngine::exportStructures(const std::filesystem::path& path,
+                             const std::vector<workflow::ExportedStructure>& structures) {
+    requireScan("exportStructures");
+    if (structures.empty()) {
+        misused("exportStructures without a structure");
+    }
+    if (!exportError.empty()) {
+        throw std::runtime_error(exportError);
+    }
+    exportedStructures.clear();
+    for (const workflow::ExportedStructure& s : structures) {
+        const MaskRuns mask = s.mask != nullptr ? *s.mask : levelSetMask();
+        if (mask.runs.empty()) {
+            misused("exportStructures with an empty structure");
+        }
+        exportedStructures.push_back({s.info.name, s.label, mask});
     }
     exports.push_back(path);
     return {path};

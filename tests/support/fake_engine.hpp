@@ -83,6 +83,23 @@ class FakeEngine : public workflow::Engine {
     void restore(workflow::SnapshotId id) override;
     void drop(workflow::SnapshotId id) override;
     std::vector<std::filesystem::path> exportMask(const std::filesystem::path& path) override;
+    [[nodiscard]] MaskRuns levelSetMask() const override;
+    // The inside voxels counted; the lines from the mask's first and last inside voxel.
+    [[nodiscard]] MaskMeasurements measureStructure(const MaskRuns* mask) const override;
+    void setMask(const MaskRuns& mask) override;
+    void setClaimed(const MaskRuns& claimed) override;
+    std::vector<std::filesystem::path>
+    exportStructures(const std::filesystem::path& path,
+                     const std::vector<workflow::ExportedStructure>& structures) override;
+    // Voxels another structure claims now (setClaimed).
+    [[nodiscard]] std::size_t claimedVoxels() const;
+    // The last exportStructures' structures: name, label and mask, in order.
+    struct ExportedMask {
+        std::string name;
+        int label = 0;
+        MaskRuns mask;
+    };
+    std::vector<ExportedMask> exportedStructures;
 
   private:
     struct LevelSet {
@@ -102,7 +119,8 @@ class FakeEngine : public workflow::Engine {
     bool attached_ = false;
     bool loading_ = false;
     int polls_ = 0;
-    std::vector<std::uint8_t> mask_; // 1 inside, i fastest
+    std::vector<std::uint8_t> mask_;    // 1 inside, i fastest
+    std::vector<std::uint8_t> claimed_; // setClaimed's; empty: none
     std::size_t inside_ = 0;
     int iterations_ = 0;
     float time_ = 0.0F;

@@ -57,6 +57,52 @@ ui::PanelModel modelOf(workflow::Status st) {
 // For each state, every action the workflow offers there can be reached by touching the
 // panel (taps on the views add Probe, AddSeed, Erase, PageSlice, RotateView and ZoomView:
 // ui_interaction_test).
+TEST(UiPanelModel, TheStructuresListSelectsHidesDeletesAndAddsTheSiteOnes) {
+    workflow::Status st = status(State::Paused);
+    model::StructureInfo liver;
+    liver.name = "Liver";
+    model::StructureInfo spleen;
+    spleen.name = "Spleen";
+    spleen.visible = false;
+    st.structures = {{liver, 1530.25, true, false}, {spleen, 0.0, false, true}};
+    st.structureKinds = {"Liver", "Spleen", "Left kidney"};
+    const ui::PanelModel m = modelOf(st);
+    ASSERT_EQ(m.structures.size(), 6U);
+    EXPECT_EQ(m.structures[0].label, "Liver  1530.2 ml##structure0");
+    EXPECT_TRUE(m.structures[0].active);
+    EXPECT_FALSE(m.structures[0].enabled) << "the active one is selected already";
+    EXPECT_EQ(m.structures[3].label, "Spleen  (empty)##structure1");
+    EXPECT_TRUE(m.structures[3].enabled);
+    EXPECT_EQ(m.structures[4].label, "Show##structure1");
+    const auto* show = std::get_if<model::EditStructure>(&m.structures[4].action);
+    ASSERT_NE(show, nullptr);
+    EXPECT_EQ(show->op, model::StructureOp::Show);
+    EXPECT_EQ(show->name, "Spleen");
+    // The site's structures not in the session yet, then a free one.
+    ASSERT_EQ(m.newStructures.size(), 2U);
+    EXPECT_EQ(m.newStructures[0].label, "+ Left kidney##new");
+    EXPECT_EQ(m.newStructures[1].label, "+ Structure 3##new");
+    // Review's table, one row a measured structure.
+    workflow::Status review = status(State::Review);
+    MaskMeasurements f;
+    f.volumeMl = 1530.25;
+    f.axial.longest.lengthMm = 112.44;
+    f.axial.perpendicular.lengthMm = 80.06;
+    f.longest3d.lengthMm = 140.3;
+    f.intensity.mean = 54.2;
+    f.intensity.sd = 12.4;
+    review.measurements = {{"Liver", {1.0, 0.5, 0.4}, true, f}};
+    const ui::PanelModel rm = modelOf(review);
+    ASSERT_EQ(rm.measurements.size(), 1U);
+    EXPECT_EQ(rm.measurements[0].volume, "1530.2 ml");
+    EXPECT_EQ(rm.measurements[0].axes, "112.4 x 80.1 mm");
+    EXPECT_EQ(rm.measurements[0].longest, "140.3 mm");
+    EXPECT_EQ(rm.measurements[0].values, "54 +- 12 HU");
+    // A lone structure cannot be deleted.
+    st.structures.pop_back();
+    EXPECT_FALSE(modelOf(st).structures[2].enabled);
+}
+
 TEST(UiPanelModel, EveryMeaningfulActionIsReachableByTouch) {
     const std::size_t load = indexOf<model::LoadScan>();
     const std::size_t preset = indexOf<model::ApplyPreset>();
@@ -77,6 +123,7 @@ TEST(UiPanelModel, EveryMeaningfulActionIsReachableByTouch) {
     const std::size_t show = indexOf<model::ShowSlices>();
     const std::size_t speed = indexOf<model::SetSpeed>();
     const std::size_t boxMode = indexOf<model::SetBoxMode>();
+    const std::size_t structure = indexOf<model::EditStructure>();
     const std::set<std::size_t> steering{preset, set,     nudge, select, eraseMode, undo,
                                          redo,   restart, show,  speed,  boxMode};
     const auto with = [](std::set<std::size_t> s, std::initializer_list<std::size_t> more) {
@@ -87,13 +134,15 @@ TEST(UiPanelModel, EveryMeaningfulActionIsReachableByTouch) {
         {State::NoScan, {load}},
         {State::Loading, {}},
         {State::Inspect,
-         {load, preset, set, nudge, select, window, undo, redo, show, proceed, speed, boxMode}},
-        {State::Seeding, with(steering, {run, back})},
+         {load, preset, set, nudge, select, window, undo, redo, show, proceed, speed, boxMode,
+          structure}},
+        {State::Seeding, with(steering, {run, back, structure})},
+        // Structures wait for a pause: no list while the front moves.
         {State::Evolving, with(steering, {pause, proceed})},
-        {State::Paused, with(steering, {run, proceed})},
-        {State::Review, {show, back, proceed}},
+        {State::Paused, with(steering, {run, proceed, structure})},
+        {State::Review, {show, back, proceed, structure}},
         {State::Exporting, {}},
-        {State::Done, {load, exportMask, back, show}},
+        {State::Done, {load, exportMask, back, show, structure}},
         {State::Error, {dismiss}},
     };
     for (const auto& [state, want] : expected) {

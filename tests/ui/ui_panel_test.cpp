@@ -1,7 +1,9 @@
 #include "exports/image_file.hpp"
 #include "gpu/gl_handle.hpp"
+#include "model/structure.hpp"
 #include "render/slice_frame.hpp"
 #include "support/gpu_fixture.hpp"
+#include "support/workflow_rig.hpp"
 #include "ui/imgui_layer.hpp"
 #include "ui/layout.hpp"
 #include "ui/overlays.hpp"
@@ -497,6 +499,193 @@ TEST_F(UiPanel, FingerDragScrollsATallPanel) {
     const std::vector<Action> tapped = tap(layer, st, "Sagittal##view2");
     ASSERT_EQ(tapped.size(), 1U);
     EXPECT_EQ(std::get<model::ShowSlices>(tapped[0]).second, model::SliceAxis::Sagittal);
+}
+
+// ImGui takes one press or release a frame, and the kiosk draws a frame only when something
+// asks for one: a tap's down and up that came together keep the UI asking until the panel has
+// taken both, or the release (and the button's action) would wait for an unrelated redraw.
+TEST_F(UiPanel, TheTouchUiAsksForFramesUntilThePanelHasTakenATap) {
+    Screen screen;
+    ui::TouchUi touch(ui::TouchUiOptions{});
+    const workflow::Status st = status(State::Seeding);
+    ui::ScreenState s;
+    s.layout = layout_;
+    double t = 0.0;
+    std::vector<Action> out;
+    const auto frame1 = [&] {
+        t += 1.0 / 30.0;
+        for (const Action& a : touch.drawFrame({kW, kH}, t, s, st)) {
+            out.push_back(a);
+        }
+    };
+    frame1();
+    frame1();
+    EXPECT_FALSE(touch.pressing());
+    const std::optional<ui::Rect> run = touch.panel().widgetRect("Run");
+    ASSERT_TRUE(run);
+    const glm::dvec2 at(run->x + 0.5 * run->w, run->y + 0.5 * run->h);
+    for (const auto kind :
+         {platform::InputEvent::Kind::PointerDown, platform::InputEvent::Kind::PointerUp}) {
+        platform::InputEvent e = pointer(kind, at);
+        e.time = t;
+        touch.feed(e, s, st, out);
+    }
+    EXPECT_TRUE(touch.pressing()) << "the finger is up, but the panel has not seen the tap";
+    frame1(); // the press
+    EXPECT_TRUE(touch.pressing()) << "the release is still to come";
+    frame1(); // the release: Run
+    EXPECT_FALSE(touch.pressing());
+    ASSERT_EQ(out.size(), 1U);
+    EXPECT_TRUE(std::holds_alternative<model::Run>(out[0]));
+}
+
+// Issue 49: a structure renamed and recoloured by touch alone, through the whole touch UI and
+// the workflow on the in-memory engine, its actions handled between frames as the kiosk does.
+// Rename opens the keyboard across the screen's bottom with the name; a name the workflow
+// refuses keeps it open with the reason; the views take no gesture while it is open; OK with a
+// good name renames and closes it; a swatch recolours.
+TEST_F(UiPanel, ARenameAndARecolourByTouchAlone) {
+    Screen screen;
+    ui::TouchUi touch(ui::TouchUiOptions{});
+    Rig rig;
+    rig.driveTo(State::Paused);
+    using model::StructureOp;
+    ASSERT_TRUE(rig.act(model::EditStructure{StructureOp::Add, "Spleen", {}, {}}).accepted);
+    ASSERT_TRUE(rig.act(model::EditStructure{StructureOp::Select, "Segment 1", {}, {}}).accepted);
+    ASSERT_TRUE(rig.act(model::Finish{}).accepted);
+    ASSERT_EQ(rig.state(), State::Review);
+
+    ui::ScreenState s;
+    s.layout = layout_;
+    Geometry g;
+    g.dims = rig.status().scan.dims;
+    render::ViewParams p;
+    p.kind = render::ViewKind::Axial;
+    p.size = {layout_.slice1.w, layout_.slice1.h};
+    s.slice1 = ui::SliceView{render::sliceFrame(g, p), p.size, layout_.slice1};
+
+    double t = 0.0;
+    std::vector<Action> sent; // every action of the touches, as handed to the workflow
+    std::vector<std::string> refusals;
+    const auto handle = [&](std::vector<Action> actions) {
+        for (const Action& a : actions) {
+            sent.push_back(a);
+            const workflow::Workflow::Outcome o = rig.act(a);
+            if (!o.accepted) {
+                refusals.push_back(o.reason);
+            }
+        }
+    };
+    const auto frames = [&](int n) {
+        for (int i = 0; i < n; ++i) {
+            t += 1.0 / 30.0;
+            handle(touch.drawFrame({kW, kH}, t, s, rig.status()));
+        }
+    };
+    const auto touchAt = [&](platform::InputEvent::Kind kind, glm::dvec2 at) {
+        platform::InputEvent e = pointer(kind, at);
+        e.time = t;
+        std::vector<Action> out;
+        touch.feed(e, s, rig.status(), out);
+        handle(out);
+    };
+    const auto tapAt = [&](const ui::Rect& r) {
+        const glm::dvec2 at(r.x + 0.5 * r.w, r.y + 0.5 * r.h);
+        touchAt(platform::InputEvent::Kind::PointerDown, at);
+        touchAt(platform::InputEvent::Kind::PointerUp, at);
+        frames(4); // ImGui takes the press and the release a frame each; then what it opened
+    };
+    const auto tapWidget = [&](const std::string& label) {
+        const std::optional<ui::Rect> r = touch.panel().widgetRect(label);
+        ASSERT_TRUE(r) << label;
+        ASSERT_LE(r->y + r->h, kH) << label << " is on the screen";
+        tapAt(*r);
+    };
+    const auto typeKeys = [&](std::initializer_list<const char*> names) {
+        for (const char* name : names) {
+            const auto& keys = touch.panel().keyboardFrame().keys;
+            const auto it = keys.find(name);
+            ASSERT_NE(it, keys.end()) << name;
+            tapAt(it->second);
+        }
+    };
+    // A finger dragged up a slice view, above the keyboard: paging, when the views take it.
+    const auto dragOnSlice = [&] {
+        glm::dvec2 at(layout_.slice1.x + 0.5 * layout_.slice1.w, layout_.slice1.y + 150.0);
+        touchAt(platform::InputEvent::Kind::PointerDown, at);
+        for (int i = 0; i < 6; ++i) {
+            at.y -= 20.0;
+            touchAt(platform::InputEvent::Kind::PointerMove, at);
+        }
+        touchAt(platform::InputEvent::Kind::PointerUp, at);
+        frames(1);
+    };
+    const auto paged = [&] {
+        return std::count_if(sent.begin(), sent.end(), [](const Action& a) {
+            return std::holds_alternative<model::PageSlice>(a);
+        });
+    };
+
+    frames(2);
+    ASSERT_TRUE(sent.empty());
+    tapWidget("Rename##structure");
+    ASSERT_TRUE(touch.panel().keyboardOpen());
+    EXPECT_TRUE(sent.empty()) << "Rename only opens the keyboard";
+    const ui::KeyboardFrame& kb = touch.panel().keyboardFrame();
+    EXPECT_EQ(kb.window.x, 0);
+    EXPECT_EQ(kb.window.w, kW) << "across the screen";
+    EXPECT_NEAR(kb.window.y + kb.window.h, kH, 1) << "at its bottom";
+    EXPECT_LT(kb.window.h, kH / 2);
+    for (const auto& [name, r] : kb.keys) {
+        EXPECT_GE(r.w + 1, static_cast<int>(touch.layer().touchPx())) << name;
+        EXPECT_GE(r.h + 1, static_cast<int>(touch.layer().touchPx())) << name;
+        EXPECT_GE(r.y, kb.window.y) << name;
+        EXPECT_LE(r.y + r.h, kb.window.y + kb.window.h) << name << " is on the keyboard";
+    }
+    EXPECT_EQ(touch.panel().editing().keyboard()->text(), "Segment 1");
+
+    dragOnSlice();
+    EXPECT_EQ(paged(), 0) << "the views take no gesture while the keyboard is open";
+
+    // The other structure's name: the workflow refuses, the keyboard stays with the reason.
+    typeKeys({"clear", "shift", "s", "p", "l", "e", "e", "n", "ok"});
+    ASSERT_EQ(refusals.size(), 1U);
+    EXPECT_NE(refusals[0].find("exists already"), std::string::npos) << refusals[0];
+    EXPECT_TRUE(touch.panel().keyboardOpen());
+    EXPECT_EQ(touch.panel().editing().problem(), refusals[0]);
+    if (const char* dir = std::getenv("STEERSEG_UI_SNAPSHOTS")) {
+        Screen::clear();
+        frames(1);
+        exports::writeImage(std::filesystem::path(dir) / "panel_keyboard.png",
+                            RgbaImage{kW, kH, screen.read()});
+    }
+
+    typeKeys({"clear", "shift", "t", "u", "m", "o", "u", "r", "space", "2", "ok"});
+    EXPECT_EQ(refusals.size(), 1U);
+    EXPECT_FALSE(touch.panel().keyboardOpen()) << "taken: the keyboard closes";
+    ASSERT_EQ(rig.status().structures.size(), 2U);
+    EXPECT_EQ(rig.status().structures[0].info.name, "Tumour 2");
+    const auto renames = std::count_if(sent.begin(), sent.end(), [](const Action& a) {
+        const auto* e = std::get_if<model::EditStructure>(&a);
+        return e != nullptr && e->op == StructureOp::Rename && e->name == "Segment 1";
+    });
+    EXPECT_EQ(renames, 2);
+
+    dragOnSlice();
+    EXPECT_GT(paged(), 0) << "the views take gestures again";
+
+    tapWidget("Colour##structure");
+    if (const char* dir = std::getenv("STEERSEG_UI_SNAPSHOTS")) {
+        Screen::clear();
+        frames(1);
+        exports::writeImage(std::filesystem::path(dir) / "panel_swatches.png",
+                            RgbaImage{kW, kH, screen.read()});
+    }
+    tapWidget("##colour5");
+    EXPECT_EQ(rig.status().structures[0].info.colour, model::paletteColour(5));
+    frames(1);
+    EXPECT_FALSE(touch.panel().widgetRect("##colour5")) << "a tap picks and closes the swatches";
+    EXPECT_EQ(refusals.size(), 1U);
 }
 
 } // namespace steerseg::test

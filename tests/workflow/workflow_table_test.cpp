@@ -63,7 +63,7 @@ TEST(WorkflowTable, RulesSayWhyExactlyWhenTheyCanRefuse) {
     }
     // Everything is accepted somewhere (else a kind would be dead vocabulary).
     Facts all;
-    all.levelSet = all.canUndo = all.canRedo = all.examples = all.box = true;
+    all.levelSet = all.canUndo = all.canRedo = all.examples = all.box = all.result = true;
     Facts auditLost = all; // acknowledge_audit has a use only then
     auditLost.auditLost = true;
     for (std::size_t k = 0; k < kActionKindCount; ++k) {
@@ -147,6 +147,9 @@ Action sample(ActionKind kind) {
         return PageSlice{SliceAxis::Axial, 1};
     case ActionKind::SetSlice:
         return SetSlice{SliceAxis::Coronal, 3};
+    case ActionKind::EditStructure: // a rename: the kinds that move the state have their tests
+        return model::EditStructure{
+            model::StructureOp::Rename, std::string(model::kFirstStructureName), "Liver", {}};
     default:
         break; // the kinds without arguments: their default value
     }
