@@ -8,6 +8,7 @@
 //                 [--sleep 0|1] [--sleep-tolerance V] [--against-awake 1]
 //                 [--converge 1] [--stop-on-leak 1] [--growth-log FILE] [--compare-label N]
 //                 [--settle-iterations N] [--settle-displacement V] [--runaway-factor V]
+//                 [--voxel-spheres 1]
 // Each run prints iterations/s beside the voxels visited per iteration and the front's voxels
 // (sleeping bricks, docs/solver.md). --against-awake 1 adds one run with sleeping off and the
 // Dice between its mask and the last run's.
@@ -19,6 +20,9 @@
 // rules are tested on (tests/data/growth). --compare-label N compares with label N of --compare
 // rather than with its non-zero voxels. --settle-iterations 0 turns the settle rule off (the
 // convergence rule before it, for comparisons); --runaway-factor 0 the runaway watch.
+// --voxel-spheres 1 makes each seed a ball in voxel steps, as ITK's tool seeds it (the product's
+// spheres are round in millimetres: model::Sphere), so that the ITK comparison starts both
+// solvers from the same voxels.
 // --trace N steps one iteration at a time for N iterations and prints the evolved time and a
 // checksum of phi after each: two runs of it show where a driver stops being deterministic.
 #include "bench/bench_scan.hpp"
@@ -56,6 +60,7 @@ struct Options {
     bool converge = false;
     std::string growthLog;
     int compareLabel = -1;
+    bool voxelSpheres = false;
 };
 
 model::Sphere parseSeed(const std::string& text) {
@@ -118,6 +123,8 @@ Options parse(int argc, char** argv) {
             o.growthLog = value;
         } else if (key == "--compare-label") {
             o.compareLabel = std::stoi(value);
+        } else if (key == "--voxel-spheres") {
+            o.voxelSpheres = value == "1";
         } else if (key == "--compare") {
             o.compare = value;
         } else {
@@ -135,7 +142,12 @@ Options parse(int argc, char** argv) {
 int main(int argc, char** argv) {
     try {
         const Options o = parse(argc, argv);
-        const Volume volume = bench::loadScan(o.scan);
+        Volume volume = bench::loadScan(o.scan);
+        if (o.voxelSpheres) {
+            // The seeds as balls in voxel steps (ITK's, which knows no spacing here): the PDE is
+            // in voxel units either way, so the spacing only shapes the spheres.
+            volume.geometry().spacing = glm::dvec3(1.0);
+        }
         const Volume reference = o.compare.empty() ? Volume{} : bench::loadScan(o.compare);
         auto context = platform::createOffscreenContext();
         const glm::ivec3 d = volume.dims();

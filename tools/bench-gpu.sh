@@ -72,6 +72,7 @@ build_benches() { # build-dir light(ON|OFF) [more targets]
     io=(large_scan_bench) # the DICOM series needs GDCM
   fi
   cmake --build "$1" -j "$(nproc)" --target solver_bench render_frame_bench segment_bench \
+    classifier_bench \
     "${io[@]}" "${@:3}" >&2
 }
 
@@ -103,10 +104,12 @@ if [[ -n $pack ]]; then
   # A pack made again in the same folder: only this run's test programs are listed.
   rm -f "$pack/tests/programs.txt" "$pack/test-gpu.sh" "$pack/data/sources.txt"
   mkdir -p "$pack/lib" "$pack/data" "$pack/tools" "$pack/bench/kiosk"
-  for b in solver_bench render_frame_bench segment_bench; do
+  for b in solver_bench render_frame_bench segment_bench classifier_bench; do
     cp "$built/bench/$b" "$pack/"
   done
   cp "$built/steerseg" "$pack/"
+  # Stripped like the tests below: the pack and the tree travel within the device tool's 64 MiB.
+  strip --strip-unneeded "$pack"/steerseg "$pack"/*_bench
   cp "$0" "$pack/bench-gpu.sh"
   programs=()
   if ((tests)); then
@@ -260,8 +263,9 @@ if wants segment; then
       repeat=1 t=0.5 itk=0 # llvmpipe takes tens of seconds to ITK's time: no comparison
     fi
     echo "case $name itk_seconds $itk time $t" >>"$out/segment.txt"
+    # ITK's seed is a ball in voxel steps; the product's spheres are round in millimetres.
     run segment "$bin/segment_bench" --scan "$s" --seed "$seed" --T "$T" --eps "$eps" \
-      --alpha "$alpha" --time "$t" --repeat "$repeat" --compare "$m"
+      --alpha "$alpha" --time "$t" --repeat "$repeat" --compare "$m" --voxel-spheres 1
   done
 fi
 if wants pictures; then

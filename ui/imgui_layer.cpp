@@ -72,7 +72,7 @@ ImGuiLayer::ImGuiLayer(const ImGuiLayerOptions& options) {
     style.FrameRounding = static_cast<float>(0.15 * fontPx_);
     style.GrabMinSize = static_cast<float>(0.6 * touchPx_);
     style.ScrollbarSize = static_cast<float>(0.5 * touchPx_);
-    loadFonts(options.fontPath.empty() ? std::string(STEERSEG_UI_FONT) : options.fontPath);
+    loadFonts(options.fontPath.empty() ? std::string(kDefaultFontPath) : options.fontPath);
     {
         gpu::GlStateGuard guard;
         backend_ = steerseg_ImGui_ImplGles3_Init("#version 300 es");

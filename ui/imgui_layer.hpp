@@ -16,6 +16,9 @@ struct ImFont;
 
 namespace steerseg::ui {
 
+// fonts-dejavu-core's DejaVuSans: the panel's font where options name none.
+inline constexpr const char* kDefaultFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
 struct ImGuiLayerOptions {
     double dpi = 96.0;
     double touchMm = 9.0;   // the smallest touch target (config ui.touch_target_mm, >= 9)

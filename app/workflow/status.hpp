@@ -55,6 +55,9 @@ struct StructureRow {
 
 // A structure's measurements (core/mask_measurements), taken when the workflow enters review.
 struct StructureMeasured {
+    // Which of the session's structures (its place in the list): a rename or a recolour in
+    // review changes the name and colour shown here, not which structure the figures are of.
+    std::size_t structure = 0;
     std::string name;
     glm::dvec3 colour{1.0};
     bool visible = true;

@@ -49,9 +49,14 @@ void Workflow::firstStructure() {
 }
 
 void Workflow::showStructures() {
+    // Measurements live only in review, where the list keeps its order (adding, selecting and
+    // deleting leave review): the figures stay, the description follows the structure's.
     for (StructureMeasured& m : status_.measurements) {
-        if (const auto i = structures_.find(m.name)) {
-            m.visible = structures_.items[*i].info.visible; // hidden in review: no lines
+        if (m.structure < structures_.items.size()) {
+            const model::StructureInfo& info = structures_.items[m.structure].info;
+            m.name = info.name;
+            m.colour = info.colour;
+            m.visible = info.visible; // hidden in review: no lines
         }
     }
     status_.structures.clear();
@@ -72,7 +77,7 @@ void Workflow::measureStructures() {
             continue;
         }
         try {
-            status_.measurements.push_back({s.info.name, s.info.colour, s.info.visible,
+            status_.measurements.push_back({i, s.info.name, s.info.colour, s.info.visible,
                                             engine_.measureStructure(active ? nullptr : &s.mask)});
         } catch (const std::exception&) {
             // The surface is shown and exported whatever its figures: the table goes without.
@@ -241,6 +246,14 @@ Workflow::Outcome Workflow::describeStructure(const model::EditStructure& a, std
             return no("a structure named '" + a.to + "' exists already");
         }
         info.name = a.to;
+        {
+            // The code follows the name: a structure renamed to one of the site's kinds is
+            // exported as that kind, one renamed to free text as tissue. The colour stays.
+            const model::StructureInfo kind =
+                model::structureFor(a.to, settings_.structureKinds, index);
+            info.category = kind.category;
+            info.type = kind.type;
+        }
         break;
     case model::StructureOp::Recolour:
         for (int c = 0; c < 3; ++c) {

@@ -61,7 +61,7 @@
 #define VIEW_SURFACE_INTENSITY_UNIT 5
 #define VIEW_SURFACE_FACTOR_UNIT 6
 // speed/classifier_forest.glsl (speed/classifier_evaluate.comp, solver/evaluate_speed.comp): the
-// examples' vote of where (speed/place_vote), linear filtering; within gpu::GlStateGuard's 7.
+// examples' vote of where (speed/place_vote), linear filtering; within gpu::GlStateGuard's 8.
 #define CLASSIFIER_PLACE_UNIT 2
 
 // Image units.

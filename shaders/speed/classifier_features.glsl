@@ -11,11 +11,33 @@
 layout(binding = SPEED_SOURCE_UNIT) uniform highp sampler3D classifierIntensity;
 uniform ivec3 classifierDims;
 
+#if CLASSIFIER_FEATURE_COUNT != 8
+#error "ClassifierFeatureVector holds eight features"
+#endif
+
+// Two vectors, not an array: handed back through a function's `out` array and read with the
+// forest's dynamic index, the features were garbage on NVIDIA's driver (580, H200: the gather,
+// which reads them with a constant index, matched the CPU; the forest's walk over the same
+// function's array agreed with it nowhere), as NVIDIA's compilers have been reported to drop
+// an `out` array's copy back to the caller. A struct returned by value and a feature picked by
+// selects involve neither.
+struct ClassifierFeatureVector {
+    vec4 lo; // features 0-3
+    vec4 hi; // features 4-7
+};
+
+// Feature i (0..7) of fv, by selects rather than an index into a vector or an array.
+float classifierFeature(ClassifierFeatureVector fv, int i) {
+    vec4 q = i < 4 ? fv.lo : fv.hi;
+    int c = i & 3;
+    return c == 0 ? q.x : (c == 1 ? q.y : (c == 2 ? q.z : q.w));
+}
+
 float classifierFetch(ivec3 v) {
     return texelFetch(classifierIntensity, clamp(v, ivec3(0), classifierDims - 1), 0).r;
 }
 
-void classifierFeatures(ivec3 v, out float f[CLASSIFIER_FEATURE_COUNT]) {
+ClassifierFeatureVector classifierFeatures(ivec3 v) {
     float centre = classifierFetch(v);
     float s3 = 0.0;
     float q3 = 0.0;
@@ -62,12 +84,9 @@ void classifierFeatures(ivec3 v, out float f[CLASSIFIER_FEATURE_COUNT]) {
     float m3 = s3 / 27.0;
     float m5 = s5 / 125.0;
     float m9 = s9 / 125.0;
-    f[0] = centre;
-    f[1] = centre + m3;
-    f[2] = centre + m5;
-    f[3] = centre + m9;
-    f[4] = sqrt(max(q3 / 27.0 - m3 * m3, 0.0));
-    f[5] = sqrt(max(q5 / 125.0 - m5 * m5, 0.0));
-    f[6] = sqrt(max(q9 / 125.0 - m9 * m9, 0.0));
-    f[7] = length(g) * (0.5 / 27.0);
+    ClassifierFeatureVector fv;
+    fv.lo = vec4(centre, centre + m3, centre + m5, centre + m9);
+    fv.hi = vec4(sqrt(max(q3 / 27.0 - m3 * m3, 0.0)), sqrt(max(q5 / 125.0 - m5 * m5, 0.0)),
+                 sqrt(max(q9 / 125.0 - m9 * m9, 0.0)), length(g) * (0.5 / 27.0));
+    return fv;
 }

@@ -37,13 +37,12 @@ float classifierPlaceAt(ivec3 v) {
 // A walk written as an unbounded while over the node buffer was miscompiled by llvmpipe (only the
 // first tree counted, and 50 times slower): the bounded for is what runs.
 float classifierSpeedAt(ivec3 v) {
-    float f[CLASSIFIER_FEATURE_COUNT];
-    classifierFeatures(v, f);
+    ClassifierFeatureVector f = classifierFeatures(v);
     float sum = 0.0;
     for (int t = 0; t < treeCount; ++t) {
         ForestNode node = nodes[roots[t]];
         for (int depth = 0; depth < maxDepth && node.feature >= 0; ++depth) {
-            node = nodes[node.left + (f[node.feature] < node.threshold ? 0 : 1)];
+            node = nodes[node.left + (classifierFeature(f, node.feature) < node.threshold ? 0 : 1)];
         }
         sum += node.value;
     }

@@ -23,9 +23,9 @@ void main() {
     if (s >= sampleCount) {
         return;
     }
-    float f[CLASSIFIER_FEATURE_COUNT];
-    classifierFeatures(sampleVoxels[s].xyz, f);
+    // Each feature through the accessor the forest's walk uses (speed/classifier_forest.glsl).
+    ClassifierFeatureVector f = classifierFeatures(sampleVoxels[s].xyz);
     for (int n = 0; n < CLASSIFIER_FEATURE_COUNT; ++n) {
-        sampleFeatures[s * CLASSIFIER_FEATURE_COUNT + n] = f[n];
+        sampleFeatures[s * CLASSIFIER_FEATURE_COUNT + n] = classifierFeature(f, n);
     }
 }

@@ -91,7 +91,7 @@ TEST(UiPanelModel, TheStructuresListSelectsHidesDeletesAndAddsTheSiteOnes) {
     f.longest3d.lengthMm = 140.3;
     f.intensity.mean = 54.2;
     f.intensity.sd = 12.4;
-    review.measurements = {{"Liver", {1.0, 0.5, 0.4}, true, f}};
+    review.measurements = {{0, "Liver", {1.0, 0.5, 0.4}, true, f}};
     const ui::PanelModel rm = modelOf(review);
     ASSERT_EQ(rm.measurements.size(), 1U);
     EXPECT_EQ(rm.measurements[0].volume, "1530.2 ml");

@@ -3,6 +3,7 @@
 // invariants after each: no exception, a valid state, only actions the status allowed accepted,
 // parameters finite and in range, a level set whenever evolving, bounded undo and snapshots (none
 // leaked), the status agreeing with the engine, and no call the engine should never see.
+#include "model/structure.hpp"
 #include "support/fake_engine.hpp"
 #include "workflow/transition_table.hpp"
 #include "workflow/workflow.hpp"
@@ -62,7 +63,7 @@ class Generator {
 
     Action action() {
         // Weighted towards what an operator does most: steering, seeding, looking.
-        switch (integer(0, 50)) {
+        switch (integer(0, 52)) {
         case 0:
             return LoadScan{chance(0.05) ? "" : "scan.nii.gz"};
         case 1:
@@ -169,6 +170,19 @@ class Generator {
                                                ? std::optional<model::BoxFace>(
                                                      model::BoxFace{integer(0, 2), chance(0.5)})
                                                : std::nullopt};
+        case 51:
+        case 52: {
+            // A few names, so that adds collide, selects find one and renames clash; now and
+            // then an op or a colour out of range.
+            static const std::array<std::string, 4> names{
+                std::string(model::kFirstStructureName), "Liver", "Spleen", ""};
+            model::EditStructure edit;
+            edit.op = static_cast<model::StructureOp>(chance(0.01) ? 9 : integer(0, 6));
+            edit.name = names[static_cast<std::size_t>(integer(0, 3))];
+            edit.to = names[static_cast<std::size_t>(integer(0, 3))];
+            edit.colour = {number(-0.1, 1.0), number(0.0, 1.0), number(0.0, 1.0)};
+            return edit;
+        }
         default:
             return Run{};
         }

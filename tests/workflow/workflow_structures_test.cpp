@@ -179,6 +179,18 @@ TEST(WorkflowStructures, ReviewMeasuresEveryStructureWithASurface) {
     EXPECT_EQ(r.status().measurements[1].measured.voxels, second);
     ASSERT_TRUE(r.act(op(StructureOp::Hide, "Spleen")).accepted);
     EXPECT_FALSE(r.status().measurements[1].visible) << "a hidden one draws no lines";
+    // Renamed and recoloured in review: the table follows, the figures stay the structure's,
+    // and hiding it by its new name still reaches its lines.
+    ASSERT_TRUE(r.act(op(StructureOp::Show, "Spleen")).accepted);
+    ASSERT_TRUE(r.act(op(StructureOp::Rename, "Spleen", "Left kidney")).accepted);
+    model::EditStructure recolour = op(StructureOp::Recolour, "Left kidney");
+    recolour.colour = {0.2, 0.4, 0.6};
+    ASSERT_TRUE(r.act(recolour).accepted);
+    EXPECT_EQ(r.status().measurements[1].name, "Left kidney");
+    EXPECT_EQ(r.status().measurements[1].colour, recolour.colour);
+    EXPECT_EQ(r.status().measurements[1].measured.voxels, second);
+    ASSERT_TRUE(r.act(op(StructureOp::Hide, "Left kidney")).accepted);
+    EXPECT_FALSE(r.status().measurements[1].visible);
     ASSERT_TRUE(r.act(model::Resume{}).accepted);
     EXPECT_TRUE(r.status().measurements.empty()) << "steering may change them";
 }
@@ -213,6 +225,19 @@ TEST(WorkflowStructures, TheSiteListGivesANameItsCodesAndTheAuditNamesTheStructu
     EXPECT_EQ(list.items[1].info.type, liver.type) << "matched without case";
     EXPECT_EQ(list.items[1].info.colour, liver.colour);
     EXPECT_EQ(list.items[1].info.name, "liver") << "the operator's own spelling";
+    // Renamed, the first structure takes the site's code for its new name, and free text
+    // takes tissue's again; the colour is the operator's.
+    const std::string first(model::kFirstStructureName);
+    ASSERT_TRUE(r.act(op(StructureOp::Delete, "liver")).accepted);
+    ASSERT_TRUE(r.act(op(StructureOp::Rename, first, "LIVER")).accepted);
+    EXPECT_EQ(r.wf->structures().items[0].info.type, liver.type);
+    EXPECT_NE(r.wf->structures().items[0].info.colour, liver.colour);
+    ASSERT_TRUE(r.act(op(StructureOp::Rename, "LIVER", first)).accepted);
+    EXPECT_EQ(r.wf->structures().items[0].info.type, model::tissueCode());
+    ASSERT_TRUE(r.act(model::Undo{}).accepted);
+    ASSERT_TRUE(r.act(model::Undo{}).accepted);
+    ASSERT_TRUE(r.act(model::Undo{}).accepted);
+    ASSERT_EQ(r.wf->structures().items.size(), 2U);
     r.seed({3.0, 3.0, 2.0}, 1.5);
     const workflow::AuditLogContents contents = workflow::readAuditLog(path);
     std::vector<std::string> named;
