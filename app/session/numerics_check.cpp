@@ -223,6 +223,16 @@ void checkClassify(Verdict& v, const Volume& volume, const gpu::ScanTexture& sca
     params.trees = 16;
     const speed::ClassifierSpeed classifier(scan.exact(), kDims, inside, outside, params, {},
                                             &volume);
+    // The forest's walk alone, on the CPU's features: beside the evaluation below, which computes
+    // its features itself, it tells a GPU that walks the trees wrongly from one that computes the
+    // features wrongly (both agree on the CPU's floats, so the walk takes the same branches).
+    try {
+        v.compare("forest walk on the CPU's features",
+                  gapOf(classifier.walkOnGpu(cpuFeatures),
+                        speed::cpuForestLooks(classifier.forest(), cpuFeatures), 1e-5, 0.0));
+    } catch (const gpu::GpuNumericsError& e) {
+        v.fail(e.what());
+    }
     // The solver's own evaluation of the bricks (solver/evaluate_speed.comp), over every brick.
     speed::SpeedInputs inputs{SpeedKind::Classify, 0, classifier.texture(),
                               classifier.onDemandForest(), true};

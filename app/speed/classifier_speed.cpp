@@ -1,6 +1,7 @@
 #include "speed/classifier_speed.hpp"
 
 #include "common/bindings.h"
+#include "gpu/buffer_io.hpp"
 #include "gpu/gl_counts.hpp"
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_state_guard.hpp"
@@ -12,7 +13,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -24,6 +28,9 @@ constexpr int kMaxSamplesPerClass = 1 << 20;
 constexpr int kEvaluateGroup = 4; // classifier_evaluate.comp's local size per axis
 // Slices per dispatch: 16M voxels at 512^2 a slice, a bounded share of a large scan each.
 constexpr int kSlabSlices = 64;
+constexpr std::size_t kWalkGroup = 64; // classifier_walk.comp's local size
+// One dispatch's rows: within the 65535 groups a dimension allows.
+constexpr std::size_t kMaxWalkRows = std::size_t{65535} * kWalkGroup;
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -185,6 +192,48 @@ void ClassifierSpeed::evaluate(GLuint intensity) {
     // on nothing.
     gpu::finish();
     gpu::checkGl("evaluating the classifier speed");
+}
+
+std::vector<float> ClassifierSpeed::walkOnGpu(std::span<const float> features) const {
+    if (features.size() % kClassifierFeatureCount != 0) {
+        throw std::invalid_argument("classifier speed: feature rows of " +
+                                    std::to_string(kClassifierFeatureCount) + " values each");
+    }
+    const std::size_t rows = features.size() / kClassifierFeatureCount;
+    if (rows == 0) {
+        return {};
+    }
+    if (rows > kMaxWalkRows) {
+        throw std::invalid_argument("classifier speed: at most " + std::to_string(kMaxWalkRows) +
+                                    " feature rows a walk");
+    }
+    gpu::GlStateGuard guard;
+    const gpu::Program program = gpu::buildComputeProgram("speed/classifier_walk.comp");
+    glUseProgram(program.id());
+    bindClassifierForest(program.id(), gpuForest(), dims_);
+    const gpu::Buffer in =
+        gpu::createBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(features.size_bytes()),
+                          features.data(), GL_STATIC_DRAW);
+    // NaN until the dispatch writes a look, as the gather's rows.
+    std::vector<float> looks(rows, std::numeric_limits<float>::quiet_NaN());
+    const gpu::Buffer out =
+        gpu::createBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(rows * sizeof(float)),
+                          looks.data(), GL_STREAM_READ);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFIER_FEATURES_BINDING, in.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFIER_SAMPLES_BINDING, out.id());
+    glUniform1i(glGetUniformLocation(program.id(), "rowCount"), static_cast<GLint>(rows));
+    gpu::dispatchCompute(static_cast<GLuint>((rows + kWalkGroup - 1) / kWalkGroup), 1, 1);
+    gpu::readBufferBytes(out, 0, looks.data(), looks.size() * sizeof(float),
+                         "the classifier's walk");
+    gpu::checkGl("walking the classifier's forest");
+    const auto unwritten = static_cast<std::size_t>(
+        std::count_if(looks.begin(), looks.end(), [](float f) { return !std::isfinite(f); }));
+    if (unwritten > 0) {
+        throw gpu::GpuNumericsError("classifier speed: the GPU's walk left " +
+                                    std::to_string(unwritten) + " of " + std::to_string(rows) +
+                                    " looks unwritten or not finite");
+    }
+    return looks;
 }
 
 } // namespace steerseg::speed

@@ -78,6 +78,13 @@ class ClassifierSpeed {
     [[nodiscard]] const ClassifierTraining& training() const { return training_; }
     [[nodiscard]] const RandomForest& forest() const { return forest_; }
     [[nodiscard]] const PlaceVote& placeVote() const { return placeVote_; }
+    // The forest walked on the GPU over given feature rows (kClassifierFeatureCount floats each,
+    // e.g. cpuClassifierFeatures'): each row's look, P(inside) - P(outside) over the trees,
+    // without the marks' vote; forest().predict's twin. For the numerics check, which compares
+    // it beside the evaluation to tell a wrong walk from wrong features. Throws
+    // std::invalid_argument for rows of the wrong length, gpu::GpuNumericsError for a look the
+    // GPU left unwritten or not finite.
+    [[nodiscard]] std::vector<float> walkOnGpu(std::span<const float> features) const;
 
   private:
     [[nodiscard]] OnDemandForest gpuForest() const;

@@ -16,6 +16,10 @@ namespace steerseg::speed {
 // it is unsure.
 float classifierSpeedFrom(float look, float place);
 
+// The forest's look at each feature row (kClassifierFeatureCount values a row): the twin of
+// ClassifierSpeed::walkOnGpu. Throws std::invalid_argument for rows of the wrong length.
+std::vector<float> cpuForestLooks(const RandomForest& forest, std::span<const float> features);
+
 // The speed at each voxel from its feature row (kClassifierFeatureCount values per voxel, in
 // the order of `voxels`: cpuClassifierFeatures). Throws std::invalid_argument when the sizes
 // disagree.

@@ -34,10 +34,12 @@ float classifierPlaceAt(ivec3 v) {
     return textureLod(classifierPlace, at, 0.0).r;
 }
 
-// A walk written as an unbounded while over the node buffer was miscompiled by llvmpipe (only the
-// first tree counted, and 50 times slower): the bounded for is what runs.
-float classifierSpeedAt(ivec3 v) {
-    ClassifierFeatureVector f = classifierFeatures(v);
+// The forest's look at one feature vector: the mean over the trees of the leaf's value. Also
+// walked alone over given features (speed/classifier_walk.comp, the numerics check's), so that a
+// wrong walk and wrong features tell apart on a GPU. A walk written as an unbounded while over
+// the node buffer was miscompiled by llvmpipe (only the first tree counted, and 50 times
+// slower): the bounded for is what runs.
+float classifierLook(ClassifierFeatureVector f) {
     float sum = 0.0;
     for (int t = 0; t < treeCount; ++t) {
         ForestNode node = nodes[roots[t]];
@@ -46,6 +48,10 @@ float classifierSpeedAt(ivec3 v) {
         }
         sum += node.value;
     }
-    float look = sum / float(treeCount);
+    return sum / float(treeCount);
+}
+
+float classifierSpeedAt(ivec3 v) {
+    float look = classifierLook(classifierFeatures(v));
     return look + (1.0 - abs(look)) * classifierPlaceAt(v);
 }

@@ -8,6 +8,7 @@
 #include "gpu/scan_texture.hpp"
 #include "gpu/texture_readback.hpp"
 #include "speed/classifier_features.hpp"
+#include "speed/classifier_features_cpu.hpp"
 #include "speed/classifier_speed.hpp"
 #include "speed/classifier_speed_cpu.hpp"
 #include "speed/place_vote.hpp"
@@ -209,6 +210,34 @@ TEST_F(ClassifierSpeedTest, GpuEvaluationMatchesTheCpuForest) {
     }
     EXPECT_EQ(near, voxels.size());
     EXPECT_GT(between, 10U);
+}
+
+// The walk alone, on the CPU twin's features (the numerics check's): the same branches, so the
+// same looks as the CPU forest's, mixed ones included; rows of the wrong length are refused.
+TEST_F(ClassifierSpeedTest, GpuWalkOnTheCpuFeaturesEqualsTheCpuForest) {
+    const std::vector<float> vol = twoTextures();
+    const gpu::ScanTexture scan(vol, kTwoDims);
+    ClassifierParams params;
+    params.trees = 12;
+    params.evaluation = speed::ClassifierEvaluation::OnDemand;
+    const std::vector<Example> straddling{{glm::vec3(22.0F, 16.0F, 16.0F), 6.0F}};
+    const ClassifierSpeed speed(scan.exact(), kTwoDims, straddling, kRough, params);
+    const std::vector<glm::ivec3> voxels = allVoxels(kTwoDims);
+    const std::vector<float> features = speed::cpuClassifierFeatures(vol, kTwoDims, voxels);
+    const std::vector<float> gpu = speed.walkOnGpu(features);
+    const std::vector<float> cpu = speed::cpuForestLooks(speed.forest(), features);
+    ASSERT_EQ(gpu.size(), voxels.size());
+    std::size_t apart = 0;
+    std::size_t mixed = 0;
+    for (std::size_t n = 0; n < gpu.size(); ++n) {
+        apart += std::abs(gpu[n] - cpu[n]) > 1e-6F ? 1 : 0;
+        mixed += std::abs(cpu[n]) < 0.9F ? 1 : 0;
+    }
+    EXPECT_EQ(apart, 0U);
+    EXPECT_GT(mixed, 10U) << "a walk that goes wrong shows on mixed leaves";
+    EXPECT_TRUE(speed.walkOnGpu({}).empty());
+    EXPECT_THROW((void)speed.walkOnGpu(std::span(features).first(kClassifierFeatureCount + 1)),
+                 std::invalid_argument);
 }
 
 // One texture throughout, an inside mark at one end and an outside mark at the other: the
