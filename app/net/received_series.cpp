@@ -2,6 +2,7 @@
 
 #include "net/series_marks.hpp"
 #include "net/store_scp.hpp" // isSafeUid
+#include "scan/series_state.hpp"
 
 #include <algorithm>
 #include <dcmtk/config/osconfig.h> // must come first among DCMTK's headers
@@ -112,7 +113,7 @@ std::vector<ReceivedSeries> listReceivedSeries(const fs::path& store, std::chron
     for (const fs::path& study : uidFolders(store)) {
         for (const fs::path& folder : uidFolders(study)) {
             if (auto series = readSeries(folder)) {
-                const SeriesState state = seriesState(folder);
+                const scan::SeriesState state = scan::seriesState(folder);
                 series->arriving = now - series->newest < settle || state.receiving;
                 series->incomplete = state.incomplete;
                 list.push_back(std::move(*series));

@@ -16,32 +16,6 @@ namespace fs = std::filesystem;
 
 std::atomic<unsigned> nextMark{0};
 
-bool isMark(const fs::path& file) {
-    return file.filename().string().rfind(kReceivingMarkPrefix, 0) == 0;
-}
-
-// Whether the mark's writer is gone: its lock can be taken (and is let go at once).
-bool dead(const fs::path& file) {
-    const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
-    if (fd < 0) {
-        return false; // removed meanwhile: its series was finished
-    }
-    const bool free = ::flock(fd, LOCK_SH | LOCK_NB) == 0;
-    ::close(fd); // lets go of the lock
-    return free;
-}
-
-std::vector<fs::path> marksIn(const fs::path& folder) {
-    std::vector<fs::path> marks;
-    std::error_code ec;
-    for (const auto& item : fs::directory_iterator(folder, ec)) {
-        if (isMark(item.path())) {
-            marks.push_back(item.path());
-        }
-    }
-    return marks;
-}
-
 bool syncFolder(const fs::path& folder) {
     const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (fd < 0) {
@@ -77,15 +51,11 @@ std::string SeriesMarks::mark(const fs::path& folder) {
     }
     Mark m;
     m.folder = folder;
-    for (const fs::path& other : marksIn(folder)) {
-        if (dead(other)) {
-            m.stale.push_back(other);
-        }
-    }
+    m.stale = scan::deadSeriesMarks(folder);
     // Unique within the process and across its restarts (the pid and the time).
     const std::string name = std::to_string(::getpid()) + "-" + std::to_string(std::time(nullptr)) +
                              "-" + std::to_string(nextMark++);
-    m.file = folder / (kReceivingMarkPrefix + name);
+    m.file = folder / (scan::kReceivingMarkPrefix + name);
     // Made and locked under another name, then renamed (the lock goes with the file): nobody
     // looking for marks ever sees this one unlocked while its association is open.
     const fs::path making = folder / (".marking-" + name);
@@ -131,14 +101,6 @@ std::vector<fs::path> SeriesMarks::finish(bool whole) {
     }
     marks_.clear();
     return folders;
-}
-
-SeriesState seriesState(const fs::path& folder) {
-    SeriesState state;
-    for (const fs::path& mark : marksIn(folder)) {
-        (dead(mark) ? state.incomplete : state.receiving) = true;
-    }
-    return state;
 }
 
 } // namespace steerseg::net

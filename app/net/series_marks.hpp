@@ -8,7 +8,10 @@
 // when it began writing there (a later complete send makes the series whole again). One that
 // ends any other way (aborted by the peer, a reset connection, a timeout, the node stopped, the
 // process killed) leaves them: its series is incomplete, across restarts, until a complete send.
-// A mark whose lock is held belongs to an association still open; one nobody holds is dead.
+// A mark whose lock is held belongs to an association still open; one nobody holds is dead
+// (scan/series_state reads them).
+#include "scan/series_state.hpp"
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -42,16 +45,5 @@ class SeriesMarks {
     std::vector<Mark> marks_;
     bool finished_ = false;
 };
-
-// What the marks in `folder` say: `incomplete` when a dead one is there, `receiving` when an
-// open association holds one.
-struct SeriesState {
-    bool incomplete = false;
-    bool receiving = false;
-};
-SeriesState seriesState(const std::filesystem::path& folder);
-
-// A series folder's mark files begin with this.
-inline constexpr const char* kReceivingMarkPrefix = ".receiving-";
 
 } // namespace steerseg::net

@@ -3,6 +3,7 @@
 #include "core/sample_phantom.hpp"
 #include "model/file_name.hpp"
 #include "scan/readers.hpp"
+#include "scan/series_state.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -51,6 +52,18 @@ LoadedScan readScan(const std::filesystem::path& path, const ReadLimits& limits)
     if (std::filesystem::is_directory(status)) {
         if (std::filesystem::is_empty(path, ec)) {
             throw ScanError(path, "the folder is empty");
+        }
+        // A series the DICOM node is receiving, or one an association left unfinished, is not
+        // read as if whole (issue 48), whoever asks: the load screen, a script, the command line.
+        const SeriesState state = seriesState(path);
+        if (state.receiving) {
+            throw ScanError(path, "the series is still arriving (an association is writing it): "
+                                  "load it once it is whole");
+        }
+        if (state.incomplete) {
+            throw ScanError(path, "an incomplete series: the association that sent it ended "
+                                  "before it finished; a whole send of the series makes it "
+                                  "whole again");
         }
         if (folderHoldsDicom(path)) {
             return readDicomScan(path, limits);

