@@ -82,6 +82,15 @@ class Drawer {
         ImGui::ProgressBar(static_cast<float>(shown), ImVec2(-FLT_MIN, touch_), overlay);
     }
 
+    // A retrieve's bar: the images received of those expected, or how many so far while the
+    // PACS has not said (`fraction` < 0).
+    void progress(double fraction, const std::string& text) {
+        const double shown =
+            fraction >= 0.0 && std::isfinite(fraction) ? std::min(fraction, 1.0) : 0.0;
+        ImGui::ProgressBar(static_cast<float>(shown), ImVec2(-FLT_MIN, touch_), text.c_str());
+        record("##pacs_progress");
+    }
+
     // A small line per controller, so a knob that does nothing shows why at a glance.
     void devices(const std::vector<Readout>& items) {
         if (items.empty() || !ImGui::BeginTable("##devices", 2)) {
@@ -296,6 +305,38 @@ class Drawer {
     float touch_;
 };
 
+// The search form, the results and a retrieve's progress (PanelModel::pacs).
+void drawPacs(Drawer& d, const PacsPanel& p) {
+    if (!p.fields.empty()) {
+        d.heading("Search the PACS (tap a field to type)");
+        std::vector<PanelButton> fields;
+        for (const PacsField& f : p.fields) {
+            fields.push_back({f.label, model::SearchPacs{}, false, true, Completion::Form});
+        }
+        d.grid(fields, 2);
+        std::vector<PanelButton> chips;
+        for (const PacsChip& c : p.dates) {
+            chips.push_back({c.label, model::SearchPacs{}, c.chosen, true, Completion::Form});
+        }
+        d.grid(chips, 3);
+        d.grid({p.search}, 1);
+        if (!p.searchLine.empty()) {
+            ImGui::TextWrapped("%s", p.searchLine.c_str());
+        }
+        d.grid(p.results, 1);
+    }
+    if (p.progress) {
+        d.heading("Retrieve");
+        d.progress(*p.progress, p.progressText);
+        if (!p.retrieveLine.empty()) {
+            ImGui::TextWrapped("%s", p.retrieveLine.c_str());
+        }
+        if (p.cancel) {
+            d.grid({*p.cancel}, 1);
+        }
+    }
+}
+
 } // namespace
 
 std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status& status,
@@ -306,8 +347,10 @@ std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status&
     if (rect.empty()) {
         return actions;
     }
-    const PanelModel model =
-        buildPanelModel(status, scans, PanelEditors{editing_.renameOpen(), editing_.coloursOpen()});
+    const PanelModel model = buildPanelModel(
+        status, scans,
+        PanelEditors{editing_.renameOpen(), editing_.coloursOpen(), pacsForm_.keys()});
+    pacsForm_.follow(status.pacs, model.pacs && !model.pacs->fields.empty());
     std::vector<PanelButton> completions;
     ImGui::SetNextWindowPos(ImVec2(static_cast<float>(rect.x), static_cast<float>(rect.y)));
     ImGui::SetNextWindowSize(ImVec2(static_cast<float>(rect.w), static_cast<float>(rect.h)));
@@ -397,6 +440,9 @@ std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status&
             d.heading("Received (newest first)");
             d.grid(model.received, 1);
         }
+        if (model.pacs) {
+            drawPacs(d, *model.pacs);
+        }
         if (!model.scans.empty()) {
             d.heading("Scans");
             d.grid(model.scans, 1);
@@ -417,6 +463,10 @@ std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status&
     }
     ImGui::End();
     for (const PanelButton& b : completions) {
+        if (b.completion == Completion::Form && model.pacs) {
+            formTapped(*model.pacs, b.label);
+            continue;
+        }
         const auto* edit = std::get_if<model::EditStructure>(&b.action);
         if (edit == nullptr) {
             continue;
@@ -430,9 +480,33 @@ std::vector<Action> Panel::draw(const ImGuiLayer& layer, const workflow::Status&
     return actions;
 }
 
+void Panel::formTapped(const PacsPanel& p, const std::string& label) {
+    for (const PacsField& f : p.fields) {
+        if (f.label == label) {
+            editing_.closeColours();
+            pacsForm_.openField(f.field);
+        }
+    }
+    for (const PacsChip& c : p.dates) {
+        if (c.label == label) {
+            pacsForm_.choosePreset(c.preset);
+        }
+    }
+}
+
 std::vector<Action> Panel::drawKeyboard(const ImGuiLayer& layer, const Rect& area) {
     std::vector<Action> actions;
     keyboard_ = {};
+    if (const OnscreenKeyboard* search = pacsForm_.keyboard();
+        search != nullptr && !editing_.renameOpen()) {
+        const std::string title =
+            "Search: " + std::string(model::searchFieldLabel(*pacsForm_.editing()));
+        keyboard_ = ui::drawKeyboard(layer, *search, {title, ""}, area);
+        if (keyboard_.pressed) {
+            pacsForm_.press(*keyboard_.pressed);
+        }
+        return actions;
+    }
     const OnscreenKeyboard* keyboard = editing_.keyboard();
     if (keyboard == nullptr) {
         return actions;

@@ -292,6 +292,9 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
                                   model::LoadScan{r.path}, false, !r.arriving});
         }
     }
+    m.pacs = buildPacsPanel(st.pacs, editors.pacsKeys,
+                            offered.contains(ActionKind::LoadScan) &&
+                                (s == State::NoScan || s == State::Inspect || s == State::Done));
 
     if (offered.contains(ActionKind::SetParam)) {
         std::vector<Param> shown{Param::T, Param::Eps, Param::Alpha};
@@ -428,6 +431,20 @@ std::vector<Action> reachableActions(const PanelModel& m) {
     }
     if (m.window) {
         out.emplace_back(model::SetWindow{m.window->level, m.window->width});
+    }
+    if (m.pacs) {
+        std::vector<PanelButton> pacs = m.pacs->results;
+        if (!m.pacs->fields.empty()) {
+            pacs.push_back(m.pacs->search);
+        }
+        if (m.pacs->cancel) {
+            pacs.push_back(*m.pacs->cancel);
+        }
+        for (const PanelButton& b : pacs) {
+            if (b.enabled) {
+                out.push_back(b.action);
+            }
+        }
     }
     return out;
 }

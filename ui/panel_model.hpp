@@ -17,7 +17,9 @@ namespace steerseg::ui {
 // What a button asks of the operator before its action can go: nothing (a tap sends it), a
 // name typed on the on-screen keyboard, or a colour tapped among the swatches. The action is
 // then only the pattern (the structure it names) the panel completes and sends from there.
-enum class Completion { None, Name, Colour };
+// `Form`: a button of the panel's own PACS search form (a field, a date chip): the panel acts
+// on it and no action goes.
+enum class Completion { None, Name, Colour, Form };
 
 struct PanelButton {
     std::string label; // unique within the panel (it is the widget's id)
@@ -28,10 +30,37 @@ struct PanelButton {
     std::optional<glm::dvec3> swatch = std::nullopt; // drawn in this colour (r g b within 0..1)
 };
 
-// The panel's own editors that change what it offers (ui/structure_editing).
+// The panel's own editors that change what it offers (ui/structure_editing, ui/pacs_form).
 struct PanelEditors {
-    bool rename = false;  // the keyboard is open for the active structure's name
-    bool colours = false; // the palette's swatches are shown for the active structure
+    bool rename = false;      // the keyboard is open for the active structure's name
+    bool colours = false;     // the palette's swatches are shown for the active structure
+    model::PacsKeys pacsKeys = {}; // what the PACS search form holds
+};
+
+// The load screen's PACS search (Status::pacs; docs/dicom-network.md "The kiosk's search").
+// The fields and chips change only the form (PacsForm); Search, a result's Retrieve and
+// Cancel are actions.
+struct PacsField {
+    model::SearchField field = model::SearchField::PatientId;
+    std::string label; // "Patient ID: 12345##pacs_patient_id": a tap opens the keyboard
+};
+struct PacsChip {
+    std::string preset; // model::datePresetName
+    std::string label;  // "Last 7 days##pacs_date_last_7_days"
+    bool chosen = false;
+};
+struct PacsPanel {
+    std::vector<PacsField> fields;
+    std::vector<PacsChip> dates;      // where the site has study_date among its fields
+    PanelButton search;               // SearchPacs with the form's keys (disabled while one runs)
+    std::string searchLine;           // "searching...", "3 studies on pacs", or why it failed
+    std::vector<PanelButton> results; // RetrievePacs of each study (disabled while one runs)
+    // While a retrieve runs, and after it: images received of those expected (the bar: -1
+    // while the PACS has not said how many), the line, and Cancel while it runs.
+    std::optional<double> progress;
+    std::string progressText; // "12 of 60 images"
+    std::string retrieveLine;
+    std::optional<PanelButton> cancel;
 };
 
 // A steerable parameter: tapping its name selects it for the knob (SelectParam), -/+ nudge it
@@ -76,7 +105,10 @@ struct PanelModel {
     // still arriving is greyed out. The note announces one that has just come.
     std::vector<PanelButton> received;
     std::string receivedNote;
-    std::vector<std::string> outbox;  // what waits to be sent to the PACS, and why
+    std::vector<std::string> outbox; // what waits to be sent to the PACS, and why
+    // The PACS search form and its results (the load screen; elsewhere only a retrieve's
+    // progress and Cancel); nullopt without a peer to query.
+    std::optional<PacsPanel> pacs;
     std::vector<PanelButton> presets; // ApplyPreset
     std::vector<PanelButton> speeds;  // SetSpeed: threshold, edge, classify (the chosen one active)
     // Classify chosen: the outside-mode toggle and Clear examples, the counts in `examples`,
@@ -112,6 +144,10 @@ struct PanelModel {
 // `scans`: what the Load list offers ("builtin:sample" and the paths the kiosk passes in).
 PanelModel buildPanelModel(const workflow::Status& status, const std::vector<std::string>& scans,
                            const PanelEditors& editors = {});
+
+// The PACS section of the panel (PanelModel::pacs): `loadScreen` where the scans are listed.
+std::optional<PacsPanel> buildPacsPanel(const workflow::PacsView& view, const model::PacsKeys& keys,
+                                        bool loadScreen);
 
 // Every action a touch on the panel can emit (enabled buttons that need no completion, and for
 // each parameter row SelectParam, NudgeParam -1/+1 and SetParam at its ends; SetWindow for the

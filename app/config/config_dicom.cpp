@@ -3,6 +3,7 @@
 #include "config/config_sections.hpp"
 #include "config/key_names.hpp"
 #include "model/ae_title.hpp"
+#include "model/pacs_search.hpp"
 
 #include <algorithm>
 #include <utility>
@@ -101,6 +102,53 @@ bool readPeer(TableReader& t, DicomPeerConfig& peer) {
     return good;
 }
 
+std::string knownList(const std::vector<std::string_view>& names) {
+    std::string list;
+    for (const std::string_view n : names) {
+        list += (list.empty() ? "" : ", ") + std::string(n);
+    }
+    return list;
+}
+
+// A list of names from `known`, none twice; `out` only when every entry is good. An empty list
+// is refused where `allowEmpty` is false.
+void readNames(TableReader& t, std::string_view key, const std::vector<std::string_view>& known,
+               bool allowEmpty, std::vector<std::string>& out) {
+    const toml::array* list = t.array(key);
+    if (list == nullptr) {
+        return;
+    }
+    std::vector<std::string> read;
+    bool good = true;
+    for (std::size_t i = 0; i < list->size(); ++i) {
+        const std::string path = t.path(key) + '[' + std::to_string(i) + ']';
+        auto name = readText(
+            *list->get(i), path,
+            [&](std::string_view n) -> std::string {
+                if (std::find(known.begin(), known.end(), n) == known.end()) {
+                    return "unknown name \"" + std::string(n) + "\"; known: " + knownList(known);
+                }
+                if (std::find(read.begin(), read.end(), n) != read.end()) {
+                    return "\"" + std::string(n) + "\" is listed twice";
+                }
+                return "";
+            },
+            t.sink());
+        if (name) {
+            read.push_back(*name);
+        } else {
+            good = false;
+        }
+    }
+    if (good && read.empty() && !allowEmpty) {
+        t.problem(key, "must name at least one of " + knownList(known));
+        good = false;
+    }
+    if (good) {
+        out = std::move(read);
+    }
+}
+
 void readPeers(const toml::array& entries, std::vector<DicomPeerConfig>& peers, ProblemSink& sink) {
     std::vector<DicomPeerConfig> next;
     for (std::size_t i = 0; i < entries.size(); ++i) {
@@ -189,6 +237,12 @@ void readDicom(TableReader& t, DicomConfig& d) {
         t.problem("tls", "TLS is set per peer (tls = true in [[dicom.peers]]) and for the port "
                          "(tls_receive), with tls_certificate, tls_private_key and "
                          "tls_ca_certificates");
+    }
+    // The kiosk's search form: a site without a query peer never shows it, whatever these say.
+    readNames(t, "search_fields", model::searchFieldNames(), false, d.searchFields);
+    readNames(t, "search_date_presets", model::datePresetNames(), true, d.searchDatePresets);
+    if (auto v = t.integer("query_timeout_seconds", {1, 300})) {
+        d.queryTimeoutSeconds = static_cast<int>(*v);
     }
     if (const toml::array* peers = t.array("peers")) {
         readPeers(*peers, d.peers, t.sink());

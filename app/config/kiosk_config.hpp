@@ -205,6 +205,13 @@ struct DicomConfig {
     std::filesystem::path tlsPrivateKey;
     std::filesystem::path tlsCaCertificates;
     bool tlsReceive = false; // the port speaks TLS only; the receive peers need tls = true
+    // The kiosk's PACS search (docs/dicom-network.md "The kiosk's search"): the form's fields
+    // (model::searchFieldNames) and date chips (model::datePresetNames), in the form's order,
+    // and how long a search or a retrieve waits for a peer's each answer.
+    std::vector<std::string> searchFields{"patient_name", "patient_id", "study_date", "modality"};
+    std::vector<std::string> searchDatePresets{"today", "yesterday", "last_7_days", "last_30_days",
+                                               "any"};
+    int queryTimeoutSeconds = 10;
     std::vector<DicomPeerConfig> peers; // a file's [[dicom.peers]] replaces the list
     bool operator==(const DicomConfig&) const = default;
 };

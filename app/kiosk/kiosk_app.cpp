@@ -143,6 +143,11 @@ void Kiosk::applyActions() {
         const workflow::Workflow::Outcome o = flow_.handle(a);
         if (!o.accepted) {
             err_ << kLogPrefix << model::actionName(a) << " refused: " << o.reason << '\n';
+        } else if (std::holds_alternative<model::SearchPacs>(a) ||
+                   std::holds_alternative<model::RetrievePacs>(a) ||
+                   std::holds_alternative<model::CancelRetrieve>(a)) {
+            // Checked and recorded by the workflow; the network is the node's.
+            node_.request(a);
         }
     }
     actions_.clear();

@@ -1,6 +1,7 @@
 #include "kiosk/kiosk_dicom_node.hpp"
 
 #include "kiosk/dicom_node_config.hpp"
+#include "kiosk/kiosk_pacs.hpp"
 #include "net/dcmtk_quiet.hpp"
 #include "net/outbox.hpp"
 #include "net/received_series.hpp"
@@ -37,6 +38,7 @@ std::string waitingLine(const net::OutboxEntry& e) {
 struct DicomNode::Link {
     std::unique_ptr<net::Outbox> outbox;
     std::unique_ptr<net::StorageScp> scp;
+    std::unique_ptr<PacsClient> pacs; // with a peer to query only
 };
 
 DicomNode::DicomNode(const config::DicomConfig& dicom)
@@ -75,6 +77,10 @@ DicomNode::DicomNode(const config::DicomConfig& dicom)
     } catch (const std::exception& e) {
         say(std::string("no outbox: ") + e.what());
     }
+    if (std::any_of(dicom_.peers.begin(), dicom_.peers.end(),
+                    [](const config::DicomPeerConfig& p) { return p.query; })) {
+        link_->pacs = std::make_unique<PacsClient>(dicom_, link_->scp != nullptr);
+    }
     worker_ = std::thread([this] { work(); });
 }
 
@@ -83,6 +89,9 @@ DicomNode::~DicomNode() {
 }
 
 void DicomNode::stop() {
+    if (link_->pacs) {
+        link_->pacs->stop();
+    }
     {
         const std::lock_guard lock(mutex_);
         stop_ = true;
@@ -274,13 +283,27 @@ void DicomNode::frame(const workflow::Status& status, workflow::AuditLog& audit,
         }
     }
     take(audit, err);
+    if (link_->pacs) {
+        link_->pacs->take(audit, err, kLogPrefix);
+    }
     // Loading a scan is the operator's answer to the note.
     if (status.state == model::State::Loading) {
         noteDismissed_ = note_;
     }
 }
 
+void DicomNode::request(const model::Action& action) {
+    if (link_->pacs) {
+        link_->pacs->request(action);
+    } else if (dicom_.enabled) {
+        say(std::string(model::actionName(action)) + ": no [[dicom.peers]] with query = true");
+    }
+}
+
 void DicomNode::show(workflow::Status& status) const {
+    if (link_->pacs) {
+        link_->pacs->show(status.pacs);
+    }
     status.received = received_;
     status.outbox = outbox_;
     status.receivedNote = note_ != noteDismissed_ ? note_ : "";
@@ -296,6 +319,9 @@ void DicomNode::finish(workflow::AuditLog& audit, std::ostream& err) {
     stop();
     if (dicom_.enabled) {
         take(audit, err);
+        if (link_->pacs) {
+            link_->pacs->take(audit, err, kLogPrefix);
+        }
     }
 }
 

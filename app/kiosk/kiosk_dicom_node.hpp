@@ -48,6 +48,9 @@ class DicomNode {
     // (the log is the frame thread's), a new export's DICOM files to the outbox, and the lists
     // for the panel into `status`.
     void frame(const workflow::Status& status, workflow::AuditLog& audit, std::ostream& err);
+    // A PACS action the workflow accepted (SearchPacs, RetrievePacs, CancelRetrieve), for the
+    // node's PACS client (kiosk_pacs); others are ignored. Returns at once.
+    void request(const model::Action& action);
     // The panel's and a script's view: `status` with the received series, the note of a new
     // one (until the operator loads a scan) and the outbox's lines, as of the last frame().
     void show(workflow::Status& status) const;
@@ -98,7 +101,8 @@ class DicomNode {
     std::vector<std::string> outbox_;
     std::string note_;
     std::string noteDismissed_;
-    // The Storage SCP and the outbox's files (the worker's after the constructor): net's in the
+    // The Storage SCP, the outbox's files (the worker's after the constructor) and the PACS
+    // client: net's in the
     // full build (kiosk_dicom_node.cpp); the light build (kiosk_dicom_node_light.cpp) has none.
     struct Link;
     std::unique_ptr<Link> link_;

@@ -25,7 +25,13 @@ void DicomNode::frame(const workflow::Status& /*status*/, workflow::AuditLog& /*
     shared_.log.clear();
 }
 
+void DicomNode::request(const model::Action& action) {
+    shared_.log.push_back(std::string(model::actionName(action)) + ": " +
+                          model::leftOutOfLightBuild("The PACS search", "DCMTK"));
+}
+
 void DicomNode::show(workflow::Status& status) const {
+    status.pacs = {};
     status.received.clear();
     status.outbox.clear();
     status.receivedNote.clear();

@@ -113,6 +113,12 @@ template <class T> constexpr std::string_view nameOf() {
         return "set_box_mode";
     } else if constexpr (std::is_same_v<T, EditStructure>) {
         return "edit_structure";
+    } else if constexpr (std::is_same_v<T, SearchPacs>) {
+        return "search_pacs";
+    } else if constexpr (std::is_same_v<T, RetrievePacs>) {
+        return "retrieve_pacs";
+    } else if constexpr (std::is_same_v<T, CancelRetrieve>) {
+        return "cancel_retrieve";
     } else {
         static_assert(std::is_same_v<T, Quit>, "every action needs a name");
         return "quit";
@@ -143,6 +149,7 @@ const std::vector<Binding>& bindings() {
         {"dismiss", [](double) -> Action { return Dismiss{}; }},
         {"acknowledge_audit", [](double) -> Action { return AcknowledgeAudit{}; }},
         {"quit", [](double) -> Action { return Quit{}; }},
+        {"cancel_retrieve", [](double) -> Action { return CancelRetrieve{}; }},
         {"erase_mode:on", [](double) -> Action { return SetEraseMode{true}; }},
         {"erase_mode:off", [](double) -> Action { return SetEraseMode{false}; }},
         {"speed:threshold", [](double) -> Action { return SetSpeed{model::SpeedKind::Threshold}; }},
@@ -314,6 +321,9 @@ static_assert(std::is_same_v<TypeOf<ActionKind::SetBox>, SetBox>);
 static_assert(std::is_same_v<TypeOf<ActionKind::ClearBox>, ClearBox>);
 static_assert(std::is_same_v<TypeOf<ActionKind::SetBoxMode>, SetBoxMode>);
 static_assert(std::is_same_v<TypeOf<ActionKind::EditStructure>, EditStructure>);
+static_assert(std::is_same_v<TypeOf<ActionKind::SearchPacs>, SearchPacs>);
+static_assert(std::is_same_v<TypeOf<ActionKind::RetrievePacs>, RetrievePacs>);
+static_assert(std::is_same_v<TypeOf<ActionKind::CancelRetrieve>, CancelRetrieve>);
 static_assert(std::is_same_v<TypeOf<ActionKind::Quit>, Quit>);
 static_assert(static_cast<std::size_t>(ActionKind::Quit) + 1 == kActionKindCount);
 

@@ -4,6 +4,7 @@
 // move it. Devices, gestures, bindings and scripts all end here; nothing here knows where an
 // action came from. No GL, no OS: the workflow runs in unit tests without a GPU.
 #include "model/box.hpp"
+#include "model/pacs_search.hpp"
 #include "model/speed_kind.hpp"
 #include "model/structure.hpp"
 
@@ -196,6 +197,19 @@ struct EditStructure {
     std::string to;         // rename: the new name
     glm::dvec3 colour{0.0}; // recolour: r g b within 0..1
 };
+// The PACS (docs/dicom-network.md "The kiosk's search"): the workflow takes them in every state
+// (they touch no scan) so that scripts drive them and the audit log records them; the kiosk's
+// DICOM node asks the network. `peer`: a [[dicom.peers]] name with query = true ("" = the first).
+struct SearchPacs {
+    std::string peer;
+    PacsKeys keys;
+};
+struct RetrievePacs { // a study, or one of its series, into the incoming store
+    std::string peer;
+    std::string studyUid;
+    std::string seriesUid; // "" = the whole study
+};
+struct CancelRetrieve {};
 struct Quit {};
 
 using Action =
@@ -204,7 +218,7 @@ using Action =
                  ClearExamples, SetOutsideMode, PaintStroke, Run, Pause, ToggleRun, Finish, Resume,
                  Export, Undo, Redo, Restart, Proceed, Back, Dismiss, AcknowledgeAudit, RotateView,
                  ZoomView, PageSlice, SetSlice, ShowSlices, Correct, SetBox, ClearBox, SetBoxMode,
-                 EditStructure, Quit>;
+                 EditStructure, SearchPacs, RetrievePacs, CancelRetrieve, Quit>;
 
 // "load_scan", "probe", ... (snake_case of the type): the audit log's and scripts' names.
 std::string_view actionName(const Action& action);
@@ -252,6 +266,9 @@ enum class ActionKind {
     ClearBox,
     SetBoxMode,
     EditStructure,
+    SearchPacs,
+    RetrievePacs,
+    CancelRetrieve,
     Quit,
 };
 inline constexpr std::size_t kActionKindCount = std::variant_size_v<Action>;

@@ -253,8 +253,8 @@ Script loadScript(const std::filesystem::path& path) {
 }
 
 const std::vector<std::string_view>& scriptVariables() {
-    static const std::vector<std::string_view> kNames = {"SCAN", "DATA", "OUT", "EXPORTED",
-                                                         "RECEIVED"};
+    static const std::vector<std::string_view> kNames = {"SCAN",     "DATA",     "OUT",
+                                                         "EXPORTED", "RECEIVED", "FOUND"};
     return kNames;
 }
 

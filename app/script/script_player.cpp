@@ -83,7 +83,7 @@ ScriptPlayer::ScriptPlayer(Script script, Variables variables)
     // Given variables now, so a missing --scan is said before anything runs; EXPORTED and
     // RECEIVED later.
     const auto given = [this](const std::string& name) -> const std::string* {
-        if (name == "EXPORTED" || name == "RECEIVED") {
+        if (name == "EXPORTED" || name == "RECEIVED" || name == "FOUND") {
             return nullptr;
         }
         const auto it = variables_.find(name);
@@ -100,6 +100,9 @@ ScriptPlayer::ScriptPlayer(Script script, Variables variables)
                         fill(load->path);
                     } else if (auto* out = std::get_if<model::Export>(&kind.action)) {
                         fill(out->path);
+                    } else if (auto* get = std::get_if<model::RetrievePacs>(&kind.action)) {
+                        fill(get->studyUid);
+                        fill(get->seriesUid);
                     }
                 } else if constexpr (std::is_same_v<K, FrameStep>) {
                     fill(kind.path);
@@ -113,6 +116,7 @@ ScriptPlayer::ScriptPlayer(Script script, Variables variables)
             step.kind);
         missing.erase("EXPORTED");
         missing.erase("RECEIVED");
+        missing.erase("FOUND");
         for (const std::string& name : missing) {
             const char* how = howToSet(name);
             errors += (errors.empty() ? "" : "\n") + script_.name + ":" +
@@ -135,7 +139,13 @@ std::string ScriptPlayer::runtimePath(const std::string& path, const workflow::S
             break;
         }
     }
+    // FOUND: the first study the last PACS search found ("" when none).
+    const std::string found =
+        status.pacs.studies.empty() ? std::string() : status.pacs.studies.front().studyUid;
     const auto runtime = [&](const std::string& name) -> const std::string* {
+        if (name == "FOUND") {
+            return &found;
+        }
         return name == "EXPORTED" ? &status.exportedPath
                                   : (name == "RECEIVED" ? &received : nullptr);
     };
@@ -208,6 +218,9 @@ void ScriptPlayer::poll(double now, const workflow::Status& status, ScriptSink& 
                     out->path = runtimePath(out->path, status, true);
                 } else if (auto* load = std::get_if<model::LoadScan>(&action)) {
                     load->path = runtimePath(load->path, status, false);
+                } else if (auto* get = std::get_if<model::RetrievePacs>(&action)) {
+                    get->studyUid = runtimePath(get->studyUid, status, false);
+                    get->seriesUid = runtimePath(get->seriesUid, status, false);
                 }
                 sink.action(action);
                 emitted = true;

@@ -160,11 +160,11 @@ void checkVariables(std::string_view word) {
         const std::string_view name = word.substr(begin, end - begin);
         if (name.empty()) {
             throw LineError("a $ in " + quoteWord(word) +
-                            " names no variable (SCAN, DATA, OUT, EXPORTED, RECEIVED)");
+                            " names no variable (SCAN, DATA, OUT, EXPORTED, RECEIVED, FOUND)");
         }
         if (std::find(known.begin(), known.end(), name) == known.end()) {
             throw LineError("unknown variable $" + std::string(name) +
-                            " (known: SCAN, DATA, OUT, EXPORTED, RECEIVED)");
+                            " (known: SCAN, DATA, OUT, EXPORTED, RECEIVED, FOUND)");
         }
         n = end;
     }

@@ -124,6 +124,19 @@ nlohmann::json values(const model::EditStructure& a) {
     }
     return v;
 }
+nlohmann::json values(const model::SearchPacs& a) {
+    nlohmann::json v{{"peer", a.peer}};
+    for (std::size_t i = 0; i < model::kSearchFieldCount; ++i) {
+        const auto field = static_cast<model::SearchField>(i);
+        if (const std::string& key = model::keyOf(a.keys, field); !key.empty()) {
+            v[std::string(model::searchFieldName(field))] = key;
+        }
+    }
+    return v;
+}
+nlohmann::json values(const model::RetrievePacs& a) {
+    return {{"peer", a.peer}, {"study", a.studyUid}, {"series", a.seriesUid}};
+}
 template <class T> nlohmann::json values(const T&) {
     return nlohmann::json::object();
 }
@@ -342,6 +355,16 @@ void AuditLog::send(std::string_view peer, std::string_view file, std::string_vi
         if (!accepted) {
             r["problem"] = problem;
         }
+        write(r);
+    } catch (const std::exception& e) {
+        fail(path_.string() + ": record failed: " + e.what());
+    }
+}
+
+void AuditLog::pacs(std::string_view event, const nlohmann::json& fields) {
+    try {
+        nlohmann::json r{{"event", event}};
+        r.update(fields);
         write(r);
     } catch (const std::exception& e) {
         fail(path_.string() + ": record failed: " + e.what());

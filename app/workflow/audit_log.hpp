@@ -57,6 +57,9 @@ class AuditLog {
     // outbox's record (docs/dicom-network.md). `problem`: "" when the peer accepted it.
     void send(std::string_view peer, std::string_view file, std::string_view sopInstanceUid,
               int attempt, bool accepted, std::string_view problem);
+    // A PACS search or retrieve the kiosk's DICOM node ran (docs/dicom-network.md "The kiosk's
+    // search"): `event` "query" or "retrieve", `fields` what it asked, of whom, and how it ended.
+    void pacs(std::string_view event, const nlohmann::json& fields);
 
     // While the log cannot be written: tries again, at most once a second (the frame loop
     // calls it every frame), writing the records held meanwhile.

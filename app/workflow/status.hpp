@@ -45,6 +45,33 @@ struct ReceivedScan {
     bool arriving = false; // images came a moment ago: more may follow, not offered yet
 };
 
+// One study a PACS search found, for the load screen's results list.
+struct PacsStudy {
+    std::string studyUid; // what RetrievePacs names
+    std::string label;    // one line: date, patient, ID, modalities, description, image count
+};
+
+// The kiosk's PACS search and retrieve (docs/dicom-network.md "The kiosk's search"), filled by
+// its DICOM node like `received`; the workflow leaves it empty. Counters only grow, so that a
+// script can wait for the next search or retrieve to end.
+struct PacsView {
+    std::vector<std::string> peers;       // [[dicom.peers]] with query = true; empty: no search
+    std::vector<std::string> fields;      // the form's fields ([dicom] search_fields), in order
+    std::vector<std::string> datePresets; // the date chips ([dicom] search_date_presets)
+    bool searching = false;
+    int searches = 0;       // searches ended (found, failed or refused)
+    std::string searchLine; // how the last one ended: "3 studies on pacs", or why not
+    std::vector<PacsStudy> studies;
+    bool retrieving = false;
+    int retrieves = 0; // retrieves ended
+    // The retrieve under way, or the last one: images stored of those the PACS expects (0
+    // until its first response says).
+    int received = 0;
+    int failed = 0;
+    int expected = 0;
+    std::string retrieveLine; // "retrieving 12 of 60 images ...", its end, or why it failed
+};
+
 // One structure of the session, as the panel lists it.
 struct StructureRow {
     model::StructureInfo info;
@@ -134,6 +161,7 @@ struct Status {
     std::vector<ReceivedScan> received; // newest first
     std::string receivedNote;           // a series that has just arrived ("" = none)
     std::vector<std::string> outbox;    // each object waiting to be sent, and why, one line each
+    PacsView pacs;
 };
 
 } // namespace steerseg::workflow

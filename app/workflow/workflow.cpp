@@ -35,6 +35,9 @@ bool keepsNotice(const model::Action& action) {
            std::holds_alternative<model::SetOutsideMode>(action) ||
            std::holds_alternative<model::SetBoxMode>(action) ||
            std::holds_alternative<model::SetWindow>(action) ||
+           std::holds_alternative<model::SearchPacs>(action) ||
+           std::holds_alternative<model::RetrievePacs>(action) ||
+           std::holds_alternative<model::CancelRetrieve>(action) ||
            std::holds_alternative<model::Quit>(action);
 }
 

@@ -163,6 +163,10 @@ class Workflow {
     // True when it took the run back.
     bool takeBackEraseRun();
     Outcome on(const model::Quit& a);
+    // The PACS's (workflow_pacs.cpp): their arguments checked, nothing else here.
+    Outcome on(const model::SearchPacs& a);
+    Outcome on(const model::RetrievePacs& a);
+    Outcome on(const model::CancelRetrieve& a);
 
     // The structures (workflow_structures.cpp).
     Outcome on(const model::EditStructure& a);

@@ -95,6 +95,10 @@ std::vector<std::string> differences(const KioskConfig& a, const KioskConfig& b)
     field("dicom.tls_private_key", a.dicom.tlsPrivateKey == b.dicom.tlsPrivateKey);
     field("dicom.tls_ca_certificates", a.dicom.tlsCaCertificates == b.dicom.tlsCaCertificates);
     field("dicom.tls_receive", a.dicom.tlsReceive == b.dicom.tlsReceive);
+    field("dicom.search_fields", a.dicom.searchFields == b.dicom.searchFields);
+    field("dicom.search_date_presets", a.dicom.searchDatePresets == b.dicom.searchDatePresets);
+    field("dicom.query_timeout_seconds",
+          a.dicom.queryTimeoutSeconds == b.dicom.queryTimeoutSeconds);
     if (a.presets.size() != b.presets.size()) {
         out.push_back("preset count");
     } else {
@@ -241,6 +245,9 @@ TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
     other.dicom.tlsPrivateKey = "node.key";
     other.dicom.tlsCaCertificates = "ca.pem";
     other.dicom.tlsReceive = true;
+    other.dicom.searchFields = {"accession"};
+    other.dicom.searchDatePresets = {};
+    other.dicom.queryTimeoutSeconds = 3;
     for (config::Preset& p : other.presets) {
         p = {p.name, p.T + 1, p.eps + 1, p.alpha / 2, p.windowLevel + 1, p.windowWidth + 1, "x"};
     }
@@ -253,9 +260,9 @@ TEST_F(ConfigTest, ShippedFileSetsEveryKey) {
     for (config::InputDeviceConfig& d : other.input.devices) {
         d = {d.name + "x", config::InputDeviceKind::GpioLed, 1, 2, 3, 4, "/x", "c", "l", true, 1.0};
     }
-    // 36 plain fields, 6 per preset (its name is its identity), every binding.
+    // 39 plain fields, 6 per preset (its name is its identity), every binding.
     ASSERT_EQ(differences(other, config::defaultConfig()).size(),
-              36U + 6U * other.presets.size() + other.bindings.keys.size() +
+              39U + 6U * other.presets.size() + other.bindings.keys.size() +
                   other.bindings.knobs.size() + other.bindings.buttons.size() +
                   other.input.devices.size());
 
@@ -757,6 +764,31 @@ TEST_F(ConfigTest, DicomQueryPeers) {
     expectRejected(peer + "query = \"yes\"\nsend = true\n", 5, "dicom.peers[1].query",
                    "expected true or false");
     expectRejected(peer + "query = false\n", 1, "dicom.peers[1].receive", "query = true");
+}
+
+// The kiosk's PACS search form: the fields and date chips a site turns on, by name.
+TEST_F(ConfigTest, SearchFieldsAndDatePresetsAreReadAndCheckedByName) {
+    const fs::path good = write("good.toml", "[dicom]\nsearch_fields = [\"accession\", "
+                                             "\"patient_id\"]\nsearch_date_presets = []\n"
+                                             "query_timeout_seconds = 4\n");
+    const config::LoadedConfig loaded = load({good});
+    ASSERT_TRUE(loaded.problems.empty()) << describeAll(loaded.problems);
+    EXPECT_EQ(loaded.config.dicom.searchFields,
+              (std::vector<std::string>{"accession", "patient_id"}));
+    EXPECT_TRUE(loaded.config.dicom.searchDatePresets.empty());
+    EXPECT_EQ(loaded.config.dicom.queryTimeoutSeconds, 4);
+    expectRejected("[dicom]\nsearch_fields = [\"patient_id\", \"birth_date\"]\n", 2,
+                   "dicom.search_fields[1]",
+                   "unknown name \"birth_date\"; known: patient_name, patient_id, study_date, "
+                   "modality, accession");
+    expectRejected("[dicom]\nsearch_fields = [\"modality\", \"modality\"]\n", 2,
+                   "dicom.search_fields[1]", "listed twice");
+    expectRejected("[dicom]\nsearch_fields = []\n", 2, "dicom.search_fields",
+                   "must name at least one");
+    expectRejected("[dicom]\nsearch_date_presets = [\"last_week\"]\n", 2,
+                   "dicom.search_date_presets[0]", "known: any, today, yesterday");
+    expectRejected("[dicom]\nquery_timeout_seconds = 0\n", 2, "dicom.query_timeout_seconds",
+                   "at least 1");
 }
 
 TEST_F(ConfigTest, BadDicomValuesAreRefusedWithTheirPlace) {

@@ -275,4 +275,21 @@ std::vector<std::filesystem::path> filesBelow(const std::filesystem::path& root)
     return found;
 }
 
+SilentPeer::SilentPeer() {
+    fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    addr.sin_port = 0;
+    ::bind(fd_, reinterpret_cast<const sockaddr*>(&addr), sizeof addr);
+    ::listen(fd_, 16);
+    socklen_t length = sizeof addr;
+    ::getsockname(fd_, reinterpret_cast<sockaddr*>(&addr), &length);
+    port_ = ntohs(addr.sin_port);
+}
+
+SilentPeer::~SilentPeer() {
+    ::close(fd_);
+}
+
 } // namespace steerseg::test

@@ -35,6 +35,21 @@ int freePort();
 bool waitUntil(const std::function<bool()>& ready, std::chrono::milliseconds timeout);
 
 // A child process with stdout and stderr in `log`; SIGTERM and reaped by stop() or at the end.
+// A TCP port on 127.0.0.1 that completes every connection (the kernel's backlog) and never says
+// anything: the silent peer.
+class SilentPeer {
+  public:
+    SilentPeer();
+    ~SilentPeer();
+    SilentPeer(const SilentPeer&) = delete;
+    SilentPeer& operator=(const SilentPeer&) = delete;
+    [[nodiscard]] int port() const { return port_; }
+
+  private:
+    int fd_ = -1;
+    int port_ = 0;
+};
+
 class ChildProcess {
   public:
     ChildProcess(const std::vector<std::string>& argv, const std::filesystem::path& log);

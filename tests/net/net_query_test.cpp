@@ -139,32 +139,6 @@ std::size_t countLines(const std::string& text) {
     return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
 }
 
-// A TCP port on 127.0.0.1 that completes every connection (the kernel's backlog) and never says
-// anything: the silent peer.
-class SilentPeer {
-  public:
-    SilentPeer() {
-        fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-        sockaddr_in addr{};
-        addr.sin_family = AF_INET;
-        addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-        addr.sin_port = 0;
-        ::bind(fd_, reinterpret_cast<const sockaddr*>(&addr), sizeof addr);
-        ::listen(fd_, 16);
-        socklen_t length = sizeof addr;
-        ::getsockname(fd_, reinterpret_cast<sockaddr*>(&addr), &length);
-        port_ = ntohs(addr.sin_port);
-    }
-    ~SilentPeer() { ::close(fd_); }
-    SilentPeer(const SilentPeer&) = delete;
-    SilentPeer& operator=(const SilentPeer&) = delete;
-    [[nodiscard]] int port() const { return port_; }
-
-  private:
-    int fd_ = -1;
-    int port_ = 0;
-};
-
 // Orthanc with the synthetic studies, knowing the node (STEERSEG at 127.0.0.1:nodePort) as a
 // modality that may query, get and move; and the node's config naming it thrice.
 class NetQuery : public ::testing::Test {

@@ -771,6 +771,57 @@ TEST(ScriptPlayer, ReceivedSeriesAndTheOutbox) {
     EXPECT_TRUE(p.finished()) << p.failure();
 }
 
+// The PACS verbs (docs/scripts.md): the form's keys by the config's names, a retrieve of the
+// last search's first study ($FOUND, known when the step runs), and their bad lines.
+TEST(ScriptParse, PacsVerbs) {
+    const auto s =
+        action<model::SearchPacs>("search patient_id PID-7 study_date last_7_days peer pacs");
+    EXPECT_EQ(s.peer, "pacs");
+    EXPECT_EQ(s.keys.patientId, "PID-7");
+    EXPECT_EQ(s.keys.studyDate, "last_7_days");
+    EXPECT_EQ(action<model::SearchPacs>("search patient_name \"DOE*\"").keys.patientName, "DOE*");
+    const auto r = action<model::RetrievePacs>("retrieve 1.2.3 1.2.3.4 peer archive");
+    EXPECT_EQ(r.studyUid, "1.2.3");
+    EXPECT_EQ(r.seriesUid, "1.2.3.4");
+    EXPECT_EQ(r.peer, "archive");
+    EXPECT_EQ(action<model::RetrievePacs>("retrieve $FOUND").studyUid, "$FOUND");
+    action<model::CancelRetrieve>("cancel_retrieve");
+    EXPECT_NE(parseError("search birth_date 1970\n").find("search 'birth_date'"),
+              std::string::npos);
+    EXPECT_NE(parseError("search study_date yesterday-ish\n").find("study_date"),
+              std::string::npos);
+    EXPECT_NE(parseError("retrieve 1.2.x\n").find("not a DICOM UID"), std::string::npos);
+    EXPECT_NE(parseError("retrieve $FOUNDS\n").find("unknown variable $FOUNDS"), std::string::npos);
+}
+
+TEST(ScriptPlayer, RetrieveTakesTheFirstStudyTheLastSearchFound) {
+    struct Sink : Recorder {
+        std::vector<model::RetrievePacs> retrieves;
+        void action(const model::Action& a) override {
+            if (const auto* r = std::get_if<model::RetrievePacs>(&a)) {
+                retrieves.push_back(*r);
+            }
+        }
+    } r;
+    ScriptPlayer p = player("search patient_id P\nwait until found >= 1 timeout 5\n"
+                            "retrieve $FOUND\nwait until retrieved == 3 timeout 5\n"
+                            "expect retrieve_expected == 3\n");
+    workflow::Status st;
+    p.poll(0.0, st, r);
+    p.poll(0.1, st, r);
+    EXPECT_TRUE(r.retrieves.empty()) << "nothing found yet";
+    st.pacs.studies = {{"1.2.840.5", "2024-01-05  DOE JANE"}, {"1.2.840.6", "other"}};
+    p.poll(0.2, st, r);
+    p.poll(0.3, st, r);
+    ASSERT_EQ(r.retrieves.size(), 1U);
+    EXPECT_EQ(r.retrieves[0].studyUid, "1.2.840.5");
+    st.pacs.received = 3;
+    st.pacs.expected = 3;
+    p.poll(0.4, st, r);
+    p.poll(0.5, st, r);
+    EXPECT_TRUE(p.finished()) << p.failure();
+}
+
 TEST(ScriptPlayer, DiceAndSinkFailures) {
     Recorder r;
     workflow::Status st;

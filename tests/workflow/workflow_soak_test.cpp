@@ -63,7 +63,7 @@ class Generator {
 
     Action action() {
         // Weighted towards what an operator does most: steering, seeding, looking.
-        switch (integer(0, 52)) {
+        switch (integer(0, 55)) {
         case 0:
             return LoadScan{chance(0.05) ? "" : "scan.nii.gz"};
         case 1:
@@ -183,6 +183,17 @@ class Generator {
             edit.colour = {number(-0.1, 1.0), number(0.0, 1.0), number(0.0, 1.0)};
             return edit;
         }
+        case 53: {
+            // The PACS's: now and then a key or a UID the workflow must refuse.
+            model::SearchPacs search;
+            search.keys.patientId = chance(0.05) ? std::string(70, 'X') : "PID-A";
+            search.keys.studyDate = chance(0.5) ? "last_7_days" : "";
+            return search;
+        }
+        case 54:
+            return model::RetrievePacs{"", chance(0.05) ? "1.2.x" : "1.2.840.5", ""};
+        case 55:
+            return model::CancelRetrieve{};
         default:
             return Run{};
         }

@@ -150,6 +150,8 @@ Action sample(ActionKind kind) {
     case ActionKind::EditStructure: // a rename: the kinds that move the state have their tests
         return model::EditStructure{
             model::StructureOp::Rename, std::string(model::kFirstStructureName), "Liver", {}};
+    case ActionKind::RetrievePacs:
+        return model::RetrievePacs{"", "1.2.840.5", ""};
     default:
         break; // the kinds without arguments: their default value
     }

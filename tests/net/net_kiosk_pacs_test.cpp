@@ -1,0 +1,170 @@
+// The kiosk's PACS search (docs/dicom-network.md "The kiosk's search") end to end: the IBSI lung
+// CT stored into Orthanc, then a scripted kiosk (offscreen) searches it by patient ID, retrieves
+// it by C-GET with the progress reaching 60 of 60, finds it listed as received, loads it and
+// seeds; the audit log has the search, the retrieve and their outcomes. A peer that accepts the
+// connection and says nothing ends the search with one line within the configured timeout.
+#include "net/net_harness.hpp"
+#include "net/store_scu.hpp"
+#include "support/test_data.hpp"
+
+#include <chrono>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <sstream>
+
+namespace steerseg::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+void writeConfig(const fs::path& dir, int pacsPort, int queryTimeout = 10) {
+    std::ofstream(dir / "kiosk.toml")
+        << "[export]\nfolder = \"" << (dir / "export").string() << "\"\n[audit]\npath = \""
+        << (dir / "audit.jsonl").string() << "\"\n[autosave]\nfolder = \""
+        << (dir / "autosave").string() << "\"\n[dicom]\nenabled = true\nport = " << freePort()
+        << "\nstore = \"" << (dir / "store").string() << "\"\noutbox = \""
+        << (dir / "outbox").string()
+        << "\"\nmin_free_mb = 0\nquery_timeout_seconds = " << queryTimeout
+        << "\nsearch_fields = [\"patient_id\", \"study_date\"]\n"
+           "[[dicom.peers]]\nname = \"pacs\"\naet = \"ORTHANC\"\nhost = \"127.0.0.1\"\n"
+           "query = true\nport = "
+        << pacsPort << "\n";
+}
+
+ChildProcess startKiosk(const fs::path& dir, const std::string& session) {
+    std::ofstream(dir / "pacs.session") << session;
+    return ChildProcess({steersegBinary().string(), "kiosk", "--allow-root", "--platform",
+                         "offscreen", "--size", "480x320", "--max-seconds", "120", "--no-resume",
+                         "--config", (dir / "kiosk.toml").string(), "--script",
+                         (dir / "pacs.session").string(), "--frames", (dir / "frames").string()},
+                        dir / "kiosk.log");
+}
+
+std::vector<nlohmann::json> auditRecords(const fs::path& audit, const std::string& event) {
+    std::vector<nlohmann::json> out;
+    std::istringstream lines(readText(audit));
+    for (std::string line; std::getline(lines, line);) {
+        const nlohmann::json r = nlohmann::json::parse(line);
+        if (r.value("event", "") == event) {
+            out.push_back(r);
+        }
+    }
+    return out;
+}
+
+TEST(NetKioskPacs, AScriptSearchesRetrievesByCGetWithProgressAndLoadsTheSeries) {
+    STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
+    STEERSEG_REQUIRE_PROGRAM(OrthancServer::kProgram, "orthanc");
+    const fs::path dir = tempDir("net-kiosk-pacs");
+    // Orthanc answers C-FIND and C-GET only for a modality it knows.
+    OrthancServer pacs(
+        dir,
+        nlohmann::json{
+            {"DicomModalities",
+             {{"steerseg", {{"AET", "STEERSEG"}, {"Host", "127.0.0.1"}, {"Port", freePort()}}}}}});
+    const std::vector<fs::path> files = filesBelow(series);
+    const net::DicomPeer orthanc{OrthancServer::kAet, "127.0.0.1", pacs.dicomPort(), false};
+    for (const net::SendOutcome& o : net::sendFiles(orthanc, files, {})) {
+        ASSERT_TRUE(o.accepted) << o.file << ": " << o.problem;
+    }
+    const nlohmann::json patients = pacs.get("/patients?expand");
+    ASSERT_EQ(patients.size(), 1U) << patients.dump();
+    const std::string patientId =
+        patients[0].at("MainDicomTags").at("PatientID").get<std::string>();
+    const std::string studyUid =
+        pacs.get("/studies?expand")[0].at("MainDicomTags").at("StudyInstanceUID");
+    writeConfig(dir, pacs.dicomPort());
+    // A search for another patient finds nothing; then the right one, retrieved and loaded.
+    ChildProcess kiosk = startKiosk(dir, "search patient_id NOBODY-" + patientId + R"(
+wait until searches >= 1 timeout 30
+expect found == 0
+search patient_id )" + patientId + R"( study_date any
+wait until searches >= 2 timeout 30
+expect found == 1
+retrieve $FOUND
+wait until retrieves >= 1 timeout 60
+expect retrieved == )" + std::to_string(files.size()) +
+                                             R"(
+expect retrieve_expected == )" + std::to_string(files.size()) +
+                                             R"(
+expect retrieve_failed == 0
+wait until received >= 1 timeout 30
+load $RECEIVED
+wait loaded timeout 60
+expect state inspect
+probe 102 100 30 5
+seed 102 100 30 6
+expect seeds == 1
+)");
+    ASSERT_TRUE(waitUntil([&] { return !kiosk.running(); }, std::chrono::seconds(130)))
+        << kiosk.log();
+    const std::string log = kiosk.log();
+    EXPECT_EQ(log.find("pacs.session:"), std::string::npos) << log; // no step failed
+    EXPECT_EQ(log.find("--max-seconds"), std::string::npos) << log;
+    EXPECT_NE(log.find("dicom: 1 study on pacs"), std::string::npos) << log;
+    EXPECT_NE(log.find("dicom: retrieved " + std::to_string(files.size()) + " of " +
+                       std::to_string(files.size()) + " images from pacs"),
+              std::string::npos)
+        << log;
+    // Every image in the store, in the study's folder: what the load screen listed.
+    std::size_t stored = 0;
+    for (const fs::path& f : filesBelow(dir / "store" / studyUid)) {
+        stored += f.extension() == ".dcm" ? 1 : 0;
+    }
+    EXPECT_EQ(stored, files.size());
+
+    // The actions and the node's records of them in the audit log.
+    const fs::path audit = dir / "audit.jsonl";
+    const auto queries = auditRecords(audit, "query");
+    ASSERT_EQ(queries.size(), 2U);
+    EXPECT_EQ(queries[1].at("patient_id"), patientId);
+    EXPECT_EQ(queries[1].at("matches"), 1);
+    EXPECT_EQ(queries[1].at("problem"), "");
+    const auto retrieves = auditRecords(audit, "retrieve");
+    ASSERT_EQ(retrieves.size(), 1U);
+    EXPECT_EQ(retrieves[0].at("study"), studyUid);
+    EXPECT_EQ(retrieves[0].at("method"), "get");
+    EXPECT_EQ(retrieves[0].at("received"), files.size());
+    EXPECT_EQ(retrieves[0].at("expected"), files.size());
+    EXPECT_EQ(retrieves[0].at("problem"), "");
+    bool retrieveAction = false;
+    for (const nlohmann::json& a : auditRecords(audit, "action")) {
+        if (a.value("action", "") == "retrieve_pacs") {
+            retrieveAction = true;
+            EXPECT_EQ(a.at("values").at("study"), studyUid) << a.dump();
+        }
+    }
+    EXPECT_TRUE(retrieveAction) << readText(audit);
+    fs::remove_all(dir);
+}
+
+// A PACS that takes the connection and never answers: the search ends with one line naming
+// the peer within query_timeout_seconds (2 s here), and the kiosk goes on.
+TEST(NetKioskPacs, ASilentPeerEndsTheSearchWithALineWithinTheTimeout) {
+    const fs::path dir = tempDir("net-kiosk-pacs-silent");
+    const SilentPeer silent;
+    writeConfig(dir, silent.port(), 2);
+    const auto start = std::chrono::steady_clock::now();
+    ChildProcess kiosk = startKiosk(dir, R"(search patient_id ANYONE
+wait until searches >= 1 timeout 30
+expect found == 0
+expect searching == 0
+load builtin:sample
+wait loaded timeout 60
+)");
+    ASSERT_TRUE(waitUntil([&] { return !kiosk.running(); }, std::chrono::seconds(60)))
+        << kiosk.log();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::string log = kiosk.log();
+    EXPECT_EQ(log.find("pacs.session:"), std::string::npos) << log; // no step failed
+    EXPECT_NE(log.find("dicom: search on pacs failed: "), std::string::npos) << log;
+    EXPECT_LT(seconds, 30.0) << log;
+    const auto queries = auditRecords(dir / "audit.jsonl", "query");
+    ASSERT_EQ(queries.size(), 1U);
+    EXPECT_NE(queries[0].at("problem"), "");
+    fs::remove_all(dir);
+}
+
+} // namespace
+} // namespace steerseg::test
