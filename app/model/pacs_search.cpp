@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <optional>
 
 namespace steerseg::model {
 namespace {
@@ -28,6 +29,16 @@ std::chrono::year_month_day daysBefore(std::chrono::year_month_day d, int days) 
     return std::chrono::year_month_day(std::chrono::sys_days(d) - std::chrono::days(days));
 }
 
+// One enum's value by its config name, and the names in order: the fields' and the presets'.
+template <typename Enum, std::size_t N>
+std::optional<Enum> fromName(const std::array<std::string_view, N>& names, std::string_view name) {
+    const auto* it = std::find(names.begin(), names.end(), name);
+    if (it == names.end()) {
+        return std::nullopt;
+    }
+    return static_cast<Enum>(it - names.begin());
+}
+
 } // namespace
 
 std::string_view searchFieldName(SearchField field) {
@@ -35,11 +46,7 @@ std::string_view searchFieldName(SearchField field) {
 }
 
 std::optional<SearchField> searchFieldFromName(std::string_view name) {
-    const auto* it = std::find(kFieldNames.begin(), kFieldNames.end(), name);
-    if (it == kFieldNames.end()) {
-        return std::nullopt;
-    }
-    return static_cast<SearchField>(it - kFieldNames.begin());
+    return fromName<SearchField>(kFieldNames, name);
 }
 
 const std::vector<std::string_view>& searchFieldNames() {
@@ -76,11 +83,7 @@ std::string_view datePresetName(DatePreset preset) {
 }
 
 std::optional<DatePreset> datePresetFromName(std::string_view name) {
-    const auto* it = std::find(kPresetNames.begin(), kPresetNames.end(), name);
-    if (it == kPresetNames.end()) {
-        return std::nullopt;
-    }
-    return static_cast<DatePreset>(it - kPresetNames.begin());
+    return fromName<DatePreset>(kPresetNames, name);
 }
 
 const std::vector<std::string_view>& datePresetNames() {
