@@ -52,7 +52,9 @@ std::vector<nlohmann::json> auditRecords(const fs::path& audit, const std::strin
     return out;
 }
 
-TEST(NetKioskPacs, AScriptSearchesRetrievesByCGetWithProgressAndLoadsTheSeries) {
+// Issue 48's loop from the console: a script searches the PACS, retrieves the study by C-GET
+// with the progress counted, loads the series, segments it and exports.
+TEST(NetKioskPacs, AScriptSearchesRetrievesByCGetLoadsSegmentsAndExports) {
     STEERSEG_REQUIRE_DATA(series, "lung-ct-ibsi/dicom/image");
     STEERSEG_REQUIRE_PROGRAM(OrthancServer::kProgram, "orthanc");
     const fs::path dir = tempDir("net-kiosk-pacs");
@@ -95,6 +97,15 @@ expect state inspect
 probe 102 100 30 5
 seed 102 100 30 6
 expect seeds == 1
+run
+wait iterations 20 timeout 30
+pause
+wait state paused
+finish
+wait state review
+export
+wait state done timeout 30
+expect volume_ml > 0
 )");
     ASSERT_TRUE(waitUntil([&] { return !kiosk.running(); }, std::chrono::seconds(130)))
         << kiosk.log();
@@ -112,6 +123,8 @@ expect seeds == 1
         stored += f.extension() == ".dcm" ? 1 : 0;
     }
     EXPECT_EQ(stored, files.size());
+    // The retrieved series segmented and exported: the whole loop from the PACS's search.
+    EXPECT_FALSE(filesBelow(dir / "export").empty()) << "nothing exported under " << dir / "export";
 
     // The actions and the node's records of them in the audit log.
     const fs::path audit = dir / "audit.jsonl";
