@@ -46,7 +46,14 @@ class StoreAssociation : public DcmThreadSCP {
         marks_.emplace(callingAet_ + " at " + callingHost_);
     }
 
-    void notifyReleaseRequest() override { released_ = true; }
+    // DcmSCP calls this before it acknowledges the release: a series whole at the release is
+    // unmarked here, so that a sender whose release is done finds it listed whole at once.
+    void notifyReleaseRequest() override {
+        released_ = true;
+        if (marks_ && failed_ == 0 && !overQuota_) {
+            marks_->finish(true);
+        }
+    }
     // DCMTK says so for an A-ABORT and for a connection closed or reset under it alike.
     void notifyAbortRequest() override {
         ending_ = "aborted by the sender, or its connection closed";
