@@ -102,7 +102,8 @@ TEST(NetKioskStructures, ThreeOrgansGoToThePacsAsOneSegAndOneReport) {
 
     const auto boxes = boxesOf(series, labels);
     std::ostringstream script;
-    script << "load " << series.string() << "\nwait loaded timeout 60\n";
+    // Reading the abdominal CT takes over a minute under ASan beside another test on 2 cores.
+    script << "load " << series.string() << "\nwait loaded timeout 240\n";
     for (const Organ& organ : kOrgans) {
         const auto& [lo, hi] = boxes.at(organ.label);
         script << "structure add " << quoted(organ.name) << "\nbox " << lo.x << ' ' << lo.y << ' '
