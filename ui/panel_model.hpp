@@ -32,8 +32,8 @@ struct PanelButton {
 
 // The panel's own editors that change what it offers (ui/structure_editing, ui/pacs_form).
 struct PanelEditors {
-    bool rename = false;      // the keyboard is open for the active structure's name
-    bool colours = false;     // the palette's swatches are shown for the active structure
+    bool rename = false;           // the keyboard is open for the active structure's name
+    bool colours = false;          // the palette's swatches are shown for the active structure
     model::PacsKeys pacsKeys = {}; // what the PACS search form holds
 };
 

@@ -1,5 +1,7 @@
 #include "net/net_harness.hpp"
 
+#include "workflow/audit_log.hpp"
+
 #include <arpa/inet.h>
 #include <csignal>
 #include <fcntl.h>
@@ -290,6 +292,17 @@ SilentPeer::SilentPeer() {
 
 SilentPeer::~SilentPeer() {
     ::close(fd_);
+}
+
+std::vector<nlohmann::json> auditRecords(const std::filesystem::path& audit,
+                                         const std::string& event) {
+    std::vector<nlohmann::json> out;
+    for (nlohmann::json& r : workflow::readAuditLog(audit).records) {
+        if (r.value("event", "") == event) {
+            out.push_back(std::move(r));
+        }
+    }
+    return out;
 }
 
 } // namespace steerseg::test

@@ -34,6 +34,10 @@ int freePort();
 // Polls `ready` every 50 ms until it holds or `timeout` passes.
 bool waitUntil(const std::function<bool()>& ready, std::chrono::milliseconds timeout);
 
+// The audit log's records of one event ("send", "query", ...), in order.
+std::vector<nlohmann::json> auditRecords(const std::filesystem::path& audit,
+                                         const std::string& event);
+
 // A child process with stdout and stderr in `log`; SIGTERM and reaped by stop() or at the end.
 // A TCP port on 127.0.0.1 that completes every connection (the kernel's backlog) and never says
 // anything: the silent peer.

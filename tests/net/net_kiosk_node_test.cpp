@@ -157,18 +157,6 @@ TEST(NetKioskNode, ASegWaitsForThePacsAndIsDeliveredOnceItIsBack) {
     runScenario(series, "net-kiosk-node-pacs-down", true);
 }
 
-// The attempts in the audit log, in order (both runs of the kiosk write the same log).
-std::vector<nlohmann::json> sendRecords(const fs::path& audit) {
-    std::vector<nlohmann::json> sends;
-    std::istringstream lines(readText(audit));
-    for (std::string line; std::getline(lines, line);) {
-        if (const auto record = nlohmann::json::parse(line); record.at("event") == "send") {
-            sends.push_back(record);
-        }
-    }
-    return sends;
-}
-
 // kill -9 while the SEG waits for the PACS, right after the outbox counted a failed attempt:
 // the outbox keeps it, the next start delivers it once, and the audit log has every attempt
 // the outbox counted, none missing.
@@ -246,7 +234,7 @@ TEST(NetKioskNode, ASegPendingWhenTheKioskIsKilledIsDeliveredOnceAfterTheRestart
     EXPECT_TRUE(fs::is_empty(dir / "outbox"));
     // Per object, attempts 1, 2, ... N without a gap, only the last one accepted.
     std::map<std::string, std::vector<nlohmann::json>> byFile;
-    for (const nlohmann::json& send : sendRecords(dir / "audit.jsonl")) {
+    for (const nlohmann::json& send : auditRecords(dir / "audit.jsonl", "send")) {
         byFile[send.at("file").get<std::string>()].push_back(send);
     }
     ASSERT_EQ(byFile.size(), 2U) << kiosk.log() << readText(dir / "audit.jsonl");

@@ -40,18 +40,6 @@ ChildProcess startKiosk(const fs::path& dir, const std::string& session) {
                         dir / "kiosk.log");
 }
 
-std::vector<nlohmann::json> auditRecords(const fs::path& audit, const std::string& event) {
-    std::vector<nlohmann::json> out;
-    std::istringstream lines(readText(audit));
-    for (std::string line; std::getline(lines, line);) {
-        const nlohmann::json r = nlohmann::json::parse(line);
-        if (r.value("event", "") == event) {
-            out.push_back(r);
-        }
-    }
-    return out;
-}
-
 // Issue 48's loop from the console: a script searches the PACS, retrieves the study by C-GET
 // with the progress counted, loads the series, segments it and exports.
 TEST(NetKioskPacs, AScriptSearchesRetrievesByCGetLoadsSegmentsAndExports) {

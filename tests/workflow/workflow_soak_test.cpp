@@ -174,8 +174,8 @@ class Generator {
         case 52: {
             // A few names, so that adds collide, selects find one and renames clash; now and
             // then an op or a colour out of range.
-            static const std::array<std::string, 4> names{
-                std::string(model::kFirstStructureName), "Liver", "Spleen", ""};
+            static const std::array<std::string, 4> names{std::string(model::kFirstStructureName),
+                                                          "Liver", "Spleen", ""};
             model::EditStructure edit;
             edit.op = static_cast<model::StructureOp>(chance(0.01) ? 9 : integer(0, 6));
             edit.name = names[static_cast<std::size_t>(integer(0, 3))];
