@@ -56,6 +56,9 @@ done
 # Packed, the script sits in the pack; from the source tree, --bin names it.
 bin=${bin:-$(dirname "$0")}
 bin=$(cd "$bin" && pwd)
+if [[ ! -f $bin/tests/programs.txt && -f $bin/tests.tar.xz ]]; then
+  tar -C "$bin" -xJf "$bin/tests.tar.xz" # the pack carries them compressed
+fi
 if [[ ! -f $bin/tests/programs.txt ]]; then
   echo "test-gpu: $bin has no tests/programs.txt: pack it with 'tools/bench-gpu.sh --pack DIR --tests'" >&2
   exit 2

@@ -15,12 +15,10 @@ uniform ivec3 classifierDims;
 #error "ClassifierFeatureVector holds eight features"
 #endif
 
-// Two vectors, not an array: handed back through a function's `out` array and read with the
-// forest's dynamic index, the features were garbage on NVIDIA's driver (580, H200: the gather,
-// which reads them with a constant index, matched the CPU; the forest's walk over the same
-// function's array agreed with it nowhere), as NVIDIA's compilers have been reported to drop
-// an `out` array's copy back to the caller. A struct returned by value and a feature picked by
-// selects involve neither.
+// Two vectors, not an array, and a feature picked by selects: no index into an array or a
+// vector, which some drivers' compilers have handled wrongly. (On NVIDIA's driver 580 the
+// features were right either way; the walk's node copy was what went wrong:
+// speed/classifier_forest.glsl.)
 struct ClassifierFeatureVector {
     vec4 lo; // features 0-3
     vec4 hi; // features 4-7

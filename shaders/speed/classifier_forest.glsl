@@ -9,15 +9,13 @@
 #include "speed/classifier_features.glsl"
 
 // A split sends f[feature] < threshold to `left`, the rest to left + 1; a leaf (feature < 0)
-// holds its value. The same layout as speed::ForestNode.
-struct ForestNode {
-    int feature;
-    float threshold;
-    int left;
-    float value;
-};
+// holds its value. speed::ForestNode's 16 bytes, read as four words (feature, threshold's bits,
+// left, value's bits), by index. On NVIDIA's driver 580 (H200, bench/classifier_walk_probe) a
+// walk that copied the node as a struct and assigned the next node over it in the loop took
+// the first step right and every later one wrong, whatever held the features; reading the
+// node's fields by index, as a struct or as words, matched the CPU in every tree.
 layout(std430, binding = CLASSIFIER_NODES_BINDING) readonly buffer Nodes {
-    ForestNode nodes[];
+    ivec4 nodes[];
 };
 layout(std430, binding = CLASSIFIER_ROOTS_BINDING) readonly buffer Roots {
     int roots[];
@@ -42,11 +40,15 @@ float classifierPlaceAt(ivec3 v) {
 float classifierLook(ClassifierFeatureVector f) {
     float sum = 0.0;
     for (int t = 0; t < treeCount; ++t) {
-        ForestNode node = nodes[roots[t]];
-        for (int depth = 0; depth < maxDepth && node.feature >= 0; ++depth) {
-            node = nodes[node.left + (classifierFeature(f, node.feature) < node.threshold ? 0 : 1)];
+        int n = roots[t];
+        for (int depth = 0; depth < maxDepth; ++depth) {
+            ivec4 node = nodes[n];
+            if (node.x < 0) {
+                break;
+            }
+            n = node.z + (classifierFeature(f, node.x) < intBitsToFloat(node.y) ? 0 : 1);
         }
-        sum += node.value;
+        sum += intBitsToFloat(nodes[n].w);
     }
     return sum / float(treeCount);
 }
