@@ -10,6 +10,7 @@
 //
 // Prints one line per formulation: rows apart from the CPU (beyond 1e-6) and the largest
 // difference; exits 1 when the shipped walk is apart.
+#include "common/bindings.h"
 #include "gpu/buffer_io.hpp"
 #include "gpu/gl_counts.hpp"
 #include "gpu/gl_error.hpp"
@@ -20,8 +21,6 @@
 #include "speed/classifier_features.hpp"
 #include "speed/random_forest.hpp"
 #include "speed/split_mix.hpp"
-
-#include "common/bindings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -233,10 +232,9 @@ std::vector<float> run(const gpu::Program& program, const Setup& s, int first, i
                        int maxDepth) {
     std::vector<float> looks(static_cast<std::size_t>(s.rowCount),
                              std::numeric_limits<float>::quiet_NaN());
-    const gpu::Buffer out =
-        gpu::createBuffer(GL_SHADER_STORAGE_BUFFER,
-                          static_cast<GLsizeiptr>(looks.size() * sizeof(float)), looks.data(),
-                          GL_STREAM_READ);
+    const gpu::Buffer out = gpu::createBuffer(GL_SHADER_STORAGE_BUFFER,
+                                              static_cast<GLsizeiptr>(looks.size() * sizeof(float)),
+                                              looks.data(), GL_STREAM_READ);
     glUseProgram(program.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFIER_SAMPLES_BINDING, out.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFIER_FEATURES_BINDING, s.rows->id());
@@ -276,8 +274,7 @@ int main(int argc, char** argv) {
         params.maxDepth = std::max(1, argOr(argc, argv, "--depth", 10));
         auto context = platform::createOffscreenContext();
         std::printf("renderer: %s; %d rows, %d trees, depth <= %d\n",
-                    gpu::queryGpuInfo().renderer.c_str(), rowCount, params.trees,
-                    params.maxDepth);
+                    gpu::queryGpuInfo().renderer.c_str(), rowCount, params.trees, params.maxDepth);
 
         // Rows whose label is a noisy nonlinear rule of several features: deep trees with
         // mixed leaves, so that a step taken wrongly anywhere shows in the look.
@@ -300,10 +297,10 @@ int main(int argc, char** argv) {
         const gpu::Buffer rowBuffer = gpu::createBuffer(
             GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(rows.size() * sizeof(float)),
             rows.data(), GL_STATIC_DRAW);
-        const gpu::Buffer nodeBuffer = gpu::createBuffer(
-            GL_SHADER_STORAGE_BUFFER,
-            static_cast<GLsizeiptr>(nodes.size() * sizeof(speed::ForestNode)), nodes.data(),
-            GL_STATIC_DRAW);
+        const gpu::Buffer nodeBuffer =
+            gpu::createBuffer(GL_SHADER_STORAGE_BUFFER,
+                              static_cast<GLsizeiptr>(nodes.size() * sizeof(speed::ForestNode)),
+                              nodes.data(), GL_STATIC_DRAW);
         const gpu::Buffer rootBuffer = gpu::createBuffer(
             GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(roots.size() * sizeof(std::int32_t)),
             roots.data(), GL_STATIC_DRAW);
@@ -314,8 +311,8 @@ int main(int argc, char** argv) {
         for (float look : cpu) {
             mixed += std::abs(look) < 0.9F ? 1 : 0;
         }
-        std::printf("%zu nodes; %zu of %d rows with a mixed look (|look| < 0.9)\n\n",
-                    nodes.size(), mixed, rowCount);
+        std::printf("%zu nodes; %zu of %d rows with a mixed look (|look| < 0.9)\n\n", nodes.size(),
+                    mixed, rowCount);
 
         const auto line = [](const std::string& name, const Gap& g) {
             std::printf("%-58s %s: %zu rows apart, largest %.3g\n", name.c_str(),

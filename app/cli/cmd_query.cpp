@@ -61,6 +61,9 @@ void finish(const net::QueryResult<Match>& result, const std::string& peer,
                  result.matches.size() == 1 ? what.first : what.second, peer.c_str(),
                  result.truncated ? " (the first only; the rest cancelled: narrow the search)"
                                   : "");
+    if (!result.leftOut.empty()) {
+        std::fprintf(stderr, "%s\n", result.leftOut.c_str());
+    }
 }
 
 void printStudies(const std::vector<net::StudyMatch>& studies, bool json) {

@@ -183,6 +183,20 @@ void put(DcmDataset& keys, const DcmTagKey& tag, const std::string& value) {
     keys.putAndInsertOFStringArray(tag, value.c_str());
 }
 
+// Keeps `match` when its UID is one a retrieve can name; counts it into `leftOut` otherwise.
+template <typename Match>
+void keep(QueryResult<Match>& result, Match match, const std::string& uid, const char* what,
+          int& unusable) {
+    if (isSafeUid(uid)) {
+        result.matches.push_back(std::move(match));
+        return;
+    }
+    ++unusable;
+    result.leftOut = std::to_string(unusable) + (unusable == 1 ? " answer" : " answers") +
+                     " without a usable " + what + " UID left out (the PACS sent " +
+                     (uid.empty() ? "none" : "'" + uid.substr(0, 64) + "'") + ")";
+}
+
 } // namespace
 
 std::string studyDateProblem(std::string_view date) {
@@ -244,6 +258,7 @@ QueryResult<StudyMatch> findStudies(const DicomPeer& peer, const StudyQuery& que
     put(keys, DCM_ModalitiesInStudy, query.modality);
     put(keys, DCM_NumberOfStudyRelatedSeries, "");
     put(keys, DCM_NumberOfStudyRelatedInstances, "");
+    int unusable = 0;
     result.problem = find(
         peer, options, keys, maxMatches,
         [&](DcmDataset& d) {
@@ -258,7 +273,8 @@ QueryResult<StudyMatch> findStudies(const DicomPeer& peer, const StudyQuery& que
             m.modalities = text(d, DCM_ModalitiesInStudy);
             m.seriesCount = count(d, DCM_NumberOfStudyRelatedSeries);
             m.instanceCount = count(d, DCM_NumberOfStudyRelatedInstances);
-            result.matches.push_back(std::move(m));
+            const std::string uid = m.studyUid;
+            keep(result, std::move(m), uid, "Study Instance", unusable);
         },
         result.truncated);
     return result;
@@ -279,6 +295,7 @@ QueryResult<SeriesMatch> findSeries(const DicomPeer& peer, const std::string& st
     put(keys, DCM_SeriesNumber, "");
     put(keys, DCM_SeriesDescription, "");
     put(keys, DCM_NumberOfSeriesRelatedInstances, "");
+    int unusable = 0;
     result.problem = find(
         peer, options, keys, maxMatches,
         [&](DcmDataset& d) {
@@ -288,7 +305,8 @@ QueryResult<SeriesMatch> findSeries(const DicomPeer& peer, const std::string& st
             m.number = text(d, DCM_SeriesNumber);
             m.description = text(d, DCM_SeriesDescription);
             m.instanceCount = count(d, DCM_NumberOfSeriesRelatedInstances);
-            result.matches.push_back(std::move(m));
+            const std::string uid = m.seriesUid;
+            keep(result, std::move(m), uid, "Series Instance", unusable);
         },
         result.truncated);
     return result;

@@ -46,9 +46,12 @@ struct SeriesMatch {
 
 // What a question brought: the matches in the PACS's order, whether more were cut off
 // (`maxMatches`: the rest cancelled with C-CANCEL), and `problem`, one line, when it failed.
+// A match whose UID (the study's, or the series') is missing or not a UID cannot be retrieved:
+// it is left out, and `leftOut` says how many were, in one line ("" when none).
 template <typename Match> struct QueryResult {
     std::vector<Match> matches;
     bool truncated = false;
+    std::string leftOut;
     std::string problem;
 };
 

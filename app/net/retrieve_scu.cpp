@@ -24,19 +24,27 @@ using Clock = std::chrono::steady_clock;
 
 class RetrieveScu : public PeerScu {
   public:
-    RetrieveScu(const DicomPeer& peer, const ScuOptions& options, const RetrieveOptions& retrieve,
-                const RetrieveReport& report, const RetrieveCancel& cancel)
-        : PeerScu(peer, options), retrieve_(retrieve), report_(report), cancel_(cancel),
-          shared_([this](const std::string& line) {
+    RetrieveScu(const DicomPeer& peer, const ScuOptions& options, const RetrieveRequest& request,
+                const RetrieveOptions& retrieve, const RetrieveReport& report,
+                const RetrieveCancel& cancel)
+        : PeerScu(peer, options), request_(request), retrieve_(retrieve), report_(report),
+          cancel_(cancel), shared_([this](const std::string& line) {
               if (line.rfind("refused", 0) == 0) {
                   lastRefusal_ = line;
               }
           }),
-          marks_("a C-GET from " + describe(peer)), target_{retrieve.store, retrieve.minFreeBytes,
-                                                            " from " + peer.aet, &marks_} {}
+          marks_("a C-GET from " + describe(peer)),
+          foreignMarks_("a C-GET from " + describe(peer) + " (not of the study asked for)"),
+          target_{retrieve.store, retrieve.minFreeBytes, " from " + peer.aet, &marks_},
+          foreignTarget_{retrieve.store, retrieve.minFreeBytes, " from " + peer.aet,
+                         &foreignMarks_} {}
 
-    // A C-GET that did not bring every image leaves its series marked incomplete.
-    void finishSeries(bool whole) { marks_.finish(whole); }
+    // A C-GET that did not bring every image leaves its series marked incomplete. Images of
+    // another study (or series) are a fragment of theirs whatever happened: marked always.
+    void finishSeries(bool whole) {
+        marks_.finish(whole);
+        foreignMarks_.finish(false);
+    }
 
     // The request's context, for the C-CANCEL.
     void setRequestContext(T_ASC_PresentationContextID id) { requestContext_ = id; }
@@ -46,6 +54,8 @@ class RetrieveScu : public PeerScu {
     [[nodiscard]] bool answered() const { return answered_; }
     [[nodiscard]] Uint16 finalStatus() const { return finalStatus_; }
     [[nodiscard]] const std::string& lastRefusal() const { return lastRefusal_; }
+    [[nodiscard]] int foreign() const { return foreign_; }
+    [[nodiscard]] const std::string& foreignWhat() const { return foreignWhat_; }
 
   protected:
     OFCondition handleMOVEResponse(const T_ASC_PresentationContextID /*presID*/,
@@ -121,13 +131,19 @@ class RetrieveScu : public PeerScu {
         OFString sopClass;
         OFString xfer;
         findPresentationContext(id, sopClass, xfer);
+        // Kept (nothing that arrived is lost) but apart from what was asked for: another
+        // patient's image must not make the study asked for look whole.
+        const std::string stranger = notAskedFor(*received);
         const Uint16 status =
             fileObject(std::unique_ptr<DcmDataset>(received), request.AffectedSOPClassUID,
-                       request.AffectedSOPInstanceUID, xfer.c_str(), target_, shared_);
-        if (status == STATUS_Success) {
-            ++filed_;
-        } else {
+                       request.AffectedSOPInstanceUID, xfer.c_str(),
+                       stranger.empty() ? target_ : foreignTarget_, shared_);
+        if (status != STATUS_Success) {
             ++refused_;
+        } else if (stranger.empty()) {
+            ++filed_;
+        } else if (++foreign_ == 1) {
+            foreignWhat_ = stranger;
         }
         count(filed_, 0, 0, 0, 0);
         // Before the answer: a PACS checks for a cancel before its next image.
@@ -137,6 +153,28 @@ class RetrieveScu : public PeerScu {
             return answer;
         }
         return going ? EC_Normal : DIMSE_NODATAAVAILABLE;
+    }
+
+    // "" when the data set is of the study (and series) asked for; else whose it is.
+    std::string notAskedFor(DcmDataset& d) const {
+        OFString study;
+        OFString series;
+        d.findAndGetOFString(DCM_StudyInstanceUID, study);
+        d.findAndGetOFString(DCM_SeriesInstanceUID, series);
+        const auto shown = [](const OFString& uid) {
+            std::string text = uid.c_str();
+            if (!isSafeUid(text)) {
+                text = "(not a UID)";
+            }
+            return text;
+        };
+        if (request_.studyUid != study.c_str()) {
+            return "study " + shown(study);
+        }
+        if (!request_.seriesUid.empty() && request_.seriesUid != series.c_str()) {
+            return "series " + shown(series);
+        }
+        return "";
     }
 
     // Reported when it changed. `expected` only from the PACS's counts: a C-GET's first image
@@ -181,13 +219,18 @@ class RetrieveScu : public PeerScu {
         return true;
     }
 
+    const RetrieveRequest& request_;
     const RetrieveOptions& retrieve_;
     const RetrieveReport& report_;
     const RetrieveCancel& cancel_;
     StoreShared shared_;
     SeriesMarks marks_;
+    SeriesMarks foreignMarks_;
     FilingTarget target_;
+    FilingTarget foreignTarget_;
     std::string lastRefusal_;
+    std::string foreignWhat_;
+    int foreign_ = 0;
     T_ASC_PresentationContextID requestContext_ = 0;
     RetrieveProgress progress_;
     int filed_ = 0;
@@ -267,7 +310,7 @@ RetrieveOutcome retrieve(const DicomPeer& peer, const RetrieveRequest& request,
     }
     const char* model = get ? UID_GETStudyRootQueryRetrieveInformationModel
                             : UID_MOVEStudyRootQueryRetrieveInformationModel;
-    RetrieveScu scu(peer, options, retrieveOptions, report, cancel);
+    RetrieveScu scu(peer, options, request, retrieveOptions, report, cancel);
     scu.addPresentationContext(model, uncompressed());
     if (get) {
         // The images come as C-STOREs on this association: this side is their Storage SCP, for
@@ -316,6 +359,14 @@ RetrieveOutcome retrieve(const DicomPeer& peer, const RetrieveRequest& request,
         outcome.problem = outcomeProblem(scu, peer, retrieveOptions, outcome.cancelled);
     }
     scu.finishSeries(outcome.problem.empty() && !outcome.cancelled);
+    if (scu.foreign() > 0) {
+        const std::string line = describe(peer) + " also sent " + std::to_string(scu.foreign()) +
+                                 " image(s) not of the " +
+                                 (request.seriesUid.empty() ? "study" : "series") +
+                                 " asked for (the first of " + scu.foreignWhat() +
+                                 "): kept in the store apart from it, listed as incomplete";
+        outcome.problem = outcome.problem.empty() ? line : outcome.problem + "; " + line;
+    }
     return outcome;
 }
 
