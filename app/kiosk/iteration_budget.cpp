@@ -17,9 +17,13 @@ IterationBudget::IterationBudget(double share, double frameSeconds, int minItera
 }
 
 int IterationBudget::next(double lastFrameSeconds) {
+    // A frame that came in under the frame budget earns the share of the budget, not of the
+    // shorter frame: on a GPU that draws in a few ms the solver fills the budget's headroom
+    // rather than half of a frame nobody waits for (frames stay within the budget).
+    const double budget = seconds_ / share_;
     const double frame = std::isfinite(lastFrameSeconds) && lastFrameSeconds > 0.0
-                             ? lastFrameSeconds
-                             : seconds_ / share_;
+                             ? std::max(lastFrameSeconds, budget)
+                             : budget;
     // Credit saved over idle frames is capped: a run resumed after a pause must not spend a
     // burst of frames on the solver.
     credit_ = std::min(credit_ + share_ * frame, 2.0 * std::max(seconds_, perIteration_ * min_));

@@ -6,7 +6,8 @@ namespace steerseg::kiosk {
 // The cost of an iteration grows and shrinks with the front (the active set), so it is learned
 // as it goes: an exponential average of the measured seconds per iteration, which follows a
 // growing front within a few frames and ignores one slow frame. Each frame earns the solver its
-// share of the time the last frame took; iterations spend it. When one iteration costs more
+// share of the time the last frame took, or of the frame budget when the frame took less;
+// iterations spend it. When one iteration costs more
 // than that (a large scan on a software rasteriser), the solver runs every few frames and the
 // frames between stay quick for the operator's input, instead of every frame running late.
 class IterationBudget {

@@ -56,6 +56,21 @@ TEST(IterationBudget, StartsAtTheMinimumThenGivesTheSolverItsShare) {
     EXPECT_NEAR(simulate(budget, 0.0001, 0.010, 200).perFrame, 100.0, 15.0);
 }
 
+// A GPU that draws a frame in 2 ms: the solver fills the 33 ms budget's share (up to the
+// per-frame maximum) rather than half of a 2 ms frame, and the frames stay within the budget.
+TEST(IterationBudget, FramesFarUnderTheBudgetLeaveTheSolverTheHeadroom) {
+    IterationBudget budget(0.5, 0.033, 1, 64);
+    budget.record(1, 0.0001);
+    const Simulated gpu = simulate(budget, 0.0001, 0.002, 300);
+    EXPECT_NEAR(gpu.perFrame, 64.0, 1.0);
+    EXPECT_NEAR(gpu.solverShare, 0.0064 / 0.0084, 0.02); // the frame's maximum bounds it
+    IterationBudget uncapped(0.5, 0.033, 1, 10000);
+    uncapped.record(1, 0.0001);
+    const Simulated most = simulate(uncapped, 0.0001, 0.002, 300);
+    EXPECT_NEAR(most.perFrame, 165.0, 5.0); // the budget's share, 16.5 ms
+    EXPECT_LE(0.002 + most.perFrame * 0.0001, 0.033);
+}
+
 TEST(IterationBudget, ASlowSolverRunsEveryFewFramesAndKeepsItsShare) {
     IterationBudget budget(0.5, 0.033, 1, 64);
     EXPECT_EQ(budget.next(0.0), 1);
