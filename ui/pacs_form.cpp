@@ -44,6 +44,9 @@ void PacsForm::choosePreset(const std::string& preset) {
 }
 
 void PacsForm::follow(const workflow::PacsView& view, bool shown) {
+    if (std::find(view.peers.begin(), view.peers.end(), peer_) == view.peers.end()) {
+        peer_.clear();
+    }
     if (!shown || view.peers.empty()) {
         keyboard_.reset();
         editing_.reset();

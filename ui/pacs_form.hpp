@@ -1,9 +1,9 @@
 #pragma once
 
 // The load screen's PACS search form (docs/dicom-network.md "The kiosk's search"), as plain
-// state: the keys typed so far, the date chip chosen, and the on-screen keyboard while a field
-// is typed. The keys stay on the screen until changed, so a search can be narrowed; a tap on
-// Search hands the workflow a SearchPacs with them.
+// state: the query peer chosen (where the site has several), the keys typed so far, the date
+// chip chosen, and the on-screen keyboard while a field is typed. The keys stay on the screen until
+// changed, so a search can be narrowed; a tap on Search hands the workflow a SearchPacs with them.
 #include "model/action.hpp"
 #include "ui/onscreen_keyboard.hpp"
 #include "workflow/status.hpp"
@@ -22,11 +22,14 @@ class PacsForm {
     void press(const Key& key);
     // A date chip: it becomes the date key, or, tapped again, no date at all.
     void choosePreset(const std::string& preset);
-    // Each frame: the keyboard closes and the chip is dropped where the status no longer
-    // offers them (the site's config, a screen that left the load screen).
+    // A peer's button: Search asks it from now on.
+    void choosePeer(const std::string& peer) { peer_ = peer; }
+    // Each frame: the keyboard closes and the peer is dropped (the first is asked) where the
+    // status no longer offers them (the site's config, a screen that left the load screen).
     void follow(const workflow::PacsView& view, bool shown);
 
     [[nodiscard]] const model::PacsKeys& keys() const { return keys_; }
+    [[nodiscard]] const std::string& peer() const { return peer_; } // "" = the first
     [[nodiscard]] bool keyboardOpen() const { return keyboard_.has_value(); }
     [[nodiscard]] const OnscreenKeyboard* keyboard() const {
         return keyboard_ ? &*keyboard_ : nullptr;
@@ -35,6 +38,7 @@ class PacsForm {
 
   private:
     model::PacsKeys keys_;
+    std::string peer_;
     std::optional<OnscreenKeyboard> keyboard_;
     std::optional<model::SearchField> editing_;
 };

@@ -1,6 +1,7 @@
-// The PACS section of the panel model (PanelModel::pacs): the search form's fields and date
-// chips as the site's config lists them, Search, the results as Retrieve buttons, and a
-// retrieve's progress with Cancel.
+// The PACS section of the panel model (PanelModel::pacs): the choice of query peer, the search
+// form's fields and date chips as the site's config lists them, Search, the results as Retrieve
+// and Series buttons, a study's series each with its Retrieve, and a retrieve's progress with
+// Cancel.
 #include "ui/panel_model.hpp"
 
 #include <algorithm>
@@ -15,8 +16,20 @@ bool offers(const std::vector<std::string>& list, std::string_view name) {
 
 } // namespace
 
+std::string pacsSeriesLabel(const workflow::PacsSeries& series) {
+    std::string line;
+    for (const std::string& part :
+         {series.modality, series.number.empty() ? "" : "#" + series.number, series.description,
+          series.images < 0 ? "" : "(" + std::to_string(series.images) + " images)"}) {
+        if (!part.empty()) {
+            line += (line.empty() ? "" : "  ") + part;
+        }
+    }
+    return line.empty() ? "series" : line;
+}
+
 std::optional<PacsPanel> buildPacsPanel(const workflow::PacsView& view, const model::PacsKeys& keys,
-                                        bool loadScreen) {
+                                        const std::string& peer, bool loadScreen) {
     if (view.peers.empty() || (!loadScreen && !view.retrieving)) {
         return std::nullopt;
     }
@@ -33,6 +46,12 @@ std::optional<PacsPanel> buildPacsPanel(const workflow::PacsView& view, const mo
     }
     if (!loadScreen) {
         return p; // the progress only, while a retrieve runs on
+    }
+    const std::string chosen = offers(view.peers, peer) ? peer : view.peers.front();
+    if (view.peers.size() > 1) {
+        for (const std::string& name : view.peers) {
+            p.peers.push_back({name, name + "##pacs_peer_" + name, name == chosen});
+        }
     }
     for (const std::string& name : view.fields) {
         const std::optional<model::SearchField> field = model::searchFieldFromName(name);
@@ -57,14 +76,33 @@ std::optional<PacsPanel> buildPacsPanel(const workflow::PacsView& view, const mo
                                         (value.empty() || chip ? "-" : value) + "##pacs_" + name});
     }
     model::SearchPacs search;
+    search.peer = chosen;
     search.keys = keys;
     p.search = PanelButton{view.searching ? "Searching...##pacs_search" : "Search##pacs_search",
                            search, false, !view.searching};
     p.searchLine = view.searchLine;
     for (std::size_t i = 0; i < view.studies.size(); ++i) {
         const workflow::PacsStudy& study = view.studies[i];
-        p.results.push_back({"Retrieve " + study.label + "##pacs_study" + std::to_string(i),
-                             model::RetrievePacs{"", study.studyUid, ""}, false, !view.retrieving});
+        const std::string n = std::to_string(i);
+        p.results.push_back({"Retrieve " + study.label + "##pacs_study" + n,
+                             model::RetrievePacs{view.studiesPeer, study.studyUid, ""}, false,
+                             !view.retrieving});
+        const bool listed = !view.seriesStudyUid.empty() && study.studyUid == view.seriesStudyUid;
+        p.seriesOf.push_back({"Series##pacs_series_of" + n,
+                              model::ListPacsSeries{view.studiesPeer, study.studyUid}, listed});
+        if (listed && !p.seriesStudy) {
+            p.seriesStudy = i;
+        }
+    }
+    if (!p.seriesStudy) {
+        return p; // no listing, or one of a study this search did not find
+    }
+    p.seriesLine = view.seriesLine;
+    for (std::size_t k = 0; k < view.series.size(); ++k) {
+        const workflow::PacsSeries& s = view.series[k];
+        p.series.push_back({"Retrieve " + pacsSeriesLabel(s) + "##pacs_series" + std::to_string(k),
+                            model::RetrievePacs{view.seriesPeer, view.seriesStudyUid, s.seriesUid},
+                            false, !view.retrieving});
     }
     return p;
 }

@@ -292,7 +292,7 @@ PanelModel buildPanelModel(const workflow::Status& st, const std::vector<std::st
                                   model::LoadScan{r.path}, false, !r.arriving});
         }
     }
-    m.pacs = buildPacsPanel(st.pacs, editors.pacsKeys,
+    m.pacs = buildPacsPanel(st.pacs, editors.pacsKeys, editors.pacsPeer,
                             offered.contains(ActionKind::LoadScan) &&
                                 (s == State::NoScan || s == State::Inspect || s == State::Done));
 
@@ -434,6 +434,8 @@ std::vector<Action> reachableActions(const PanelModel& m) {
     }
     if (m.pacs) {
         std::vector<PanelButton> pacs = m.pacs->results;
+        pacs.insert(pacs.end(), m.pacs->seriesOf.begin(), m.pacs->seriesOf.end());
+        pacs.insert(pacs.end(), m.pacs->series.begin(), m.pacs->series.end());
         if (!m.pacs->fields.empty()) {
             pacs.push_back(m.pacs->search);
         }

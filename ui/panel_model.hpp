@@ -35,6 +35,7 @@ struct PanelEditors {
     bool rename = false;           // the keyboard is open for the active structure's name
     bool colours = false;          // the palette's swatches are shown for the active structure
     model::PacsKeys pacsKeys = {}; // what the PACS search form holds
+    std::string pacsPeer = {};     // the query peer the form has chosen ("" = the first)
 };
 
 // The load screen's PACS search (Status::pacs; docs/dicom-network.md "The kiosk's search").
@@ -49,12 +50,30 @@ struct PacsChip {
     std::string label;  // "Last 7 days##pacs_date_last_7_days"
     bool chosen = false;
 };
+// Where the site has more than one query peer: which one Search asks (the first by default).
+struct PacsPeerChoice {
+    std::string name;  // a [[dicom.peers]] name with query = true
+    std::string label; // "archive##pacs_peer_archive"
+    bool chosen = false;
+};
 struct PacsPanel {
+    std::vector<PacsPeerChoice> peers; // empty with one query peer: no choice to make
     std::vector<PacsField> fields;
-    std::vector<PacsChip> dates;      // where the site has study_date among its fields
-    PanelButton search;               // SearchPacs with the form's keys (disabled while one runs)
-    std::string searchLine;           // "searching...", "3 studies on pacs", or why it failed
-    std::vector<PanelButton> results; // RetrievePacs of each study (disabled while one runs)
+    std::vector<PacsChip> dates; // where the site has study_date among its fields
+    // SearchPacs with the form's keys to the chosen peer (disabled while one runs).
+    PanelButton search;
+    std::string searchLine; // "searching...", "3 studies on pacs", or why it failed
+    // Each study found: RetrievePacs of the whole study (disabled while a retrieve runs) and,
+    // beside it, Series (ListPacsSeries; active while its series are listed), both to the peer
+    // the study was found on.
+    std::vector<PanelButton> results;
+    std::vector<PanelButton> seriesOf;
+    // The series of one of them (`seriesStudy`: its index in `results`, listed under it): the
+    // listing's line while it runs or how it ended, and RetrievePacs of each series alone
+    // ("Retrieve CT #3 Chest 1 mm (60 images)"; disabled while a retrieve runs).
+    std::optional<std::size_t> seriesStudy;
+    std::string seriesLine;
+    std::vector<PanelButton> series;
     // While a retrieve runs, and after it: images received of those expected (the bar: -1
     // while the PACS has not said how many), the line, and Cancel while it runs.
     std::optional<double> progress;
@@ -146,8 +165,11 @@ PanelModel buildPanelModel(const workflow::Status& status, const std::vector<std
                            const PanelEditors& editors = {});
 
 // The PACS section of the panel (PanelModel::pacs): `loadScreen` where the scans are listed.
+// `peer`: the form's choice among view.peers ("" or one no longer offered: the first).
 std::optional<PacsPanel> buildPacsPanel(const workflow::PacsView& view, const model::PacsKeys& keys,
-                                        bool loadScreen);
+                                        const std::string& peer, bool loadScreen);
+// A series row's words: "CT  #3  Chest 1 mm  (60 images)" (what the PACS did not say left out).
+std::string pacsSeriesLabel(const workflow::PacsSeries& series);
 
 // Every action a touch on the panel can emit (enabled buttons that need no completion, and for
 // each parameter row SelectParam, NudgeParam -1/+1 and SetParam at its ends; SetWindow for the

@@ -144,6 +144,7 @@ void Kiosk::applyActions() {
         if (!o.accepted) {
             err_ << kLogPrefix << model::actionName(a) << " refused: " << o.reason << '\n';
         } else if (std::holds_alternative<model::SearchPacs>(a) ||
+                   std::holds_alternative<model::ListPacsSeries>(a) ||
                    std::holds_alternative<model::RetrievePacs>(a) ||
                    std::holds_alternative<model::CancelRetrieve>(a)) {
             // Checked and recorded by the workflow; the network is the node's.

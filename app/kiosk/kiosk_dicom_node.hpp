@@ -48,8 +48,9 @@ class DicomNode {
     // (the log is the frame thread's), a new export's DICOM files to the outbox, and the lists
     // for the panel into `status`.
     void frame(const workflow::Status& status, workflow::AuditLog& audit, std::ostream& err);
-    // A PACS action the workflow accepted (SearchPacs, RetrievePacs, CancelRetrieve), for the
-    // node's PACS client (kiosk_pacs); others are ignored. Returns at once.
+    // A PACS action the workflow accepted (SearchPacs, ListPacsSeries, RetrievePacs,
+    // CancelRetrieve), for the node's PACS client (kiosk_pacs); others are ignored. Returns at
+    // once.
     void request(const model::Action& action);
     // The panel's and a script's view: `status` with the received series, the note of a new
     // one (until the operator loads a scan) and the outbox's lines, as of the last frame().

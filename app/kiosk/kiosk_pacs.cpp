@@ -107,6 +107,14 @@ void PacsClient::request(const model::Action& action) {
     const std::lock_guard lock(mutex_);
     if (const auto* s = std::get_if<model::SearchPacs>(&action)) {
         shared_.search = *s;
+    } else if (const auto* l = std::get_if<model::ListPacsSeries>(&action)) {
+        shared_.series = *l;
+        // Shown at once, the rows of another study gone: the tap is answered in the next frame.
+        shared_.view.listingSeries = true;
+        shared_.view.seriesStudyUid = l->studyUid;
+        shared_.view.seriesPeer = peerName(l->peer);
+        shared_.view.series.clear();
+        shared_.view.seriesLine = "listing the series on " + shared_.view.seriesPeer + "...";
     } else if (const auto* r = std::get_if<model::RetrievePacs>(&action)) {
         if (shared_.view.retrieving || shared_.retrieve) {
             shared_.log.push_back("retrieve of " + r->studyUid +
@@ -130,18 +138,29 @@ void PacsClient::request(const model::Action& action) {
 
 void PacsClient::searchLoop() {
     for (;;) {
-        model::SearchPacs request;
+        std::optional<model::SearchPacs> search;
+        std::optional<model::ListPacsSeries> series;
         {
             std::unique_lock lock(mutex_);
-            wake_.wait(lock, [this] { return stop_ || shared_.search.has_value(); });
+            wake_.wait(lock, [this] {
+                return stop_ || shared_.search.has_value() || shared_.series.has_value();
+            });
             if (stop_) {
                 return;
             }
-            request = *std::exchange(shared_.search, std::nullopt);
-            shared_.view.searching = true;
-            shared_.view.searchLine = "searching " + peerName(request.peer) + "...";
+            if (shared_.search) {
+                search = std::exchange(shared_.search, std::nullopt);
+                shared_.view.searching = true;
+                shared_.view.searchLine = "searching " + peerName(search->peer) + "...";
+            } else {
+                series = std::exchange(shared_.series, std::nullopt);
+            }
         }
-        runSearch(request);
+        if (search) {
+            runSearch(*search);
+        } else {
+            runSeries(*series);
+        }
     }
 }
 
@@ -194,14 +213,58 @@ void PacsClient::runSearch(const model::SearchPacs& request) {
     ++shared_.view.searches;
     shared_.view.searchLine = line;
     shared_.view.studies = std::move(studies);
+    shared_.view.studiesPeer = name;
     shared_.log.push_back(line);
     shared_.audit.emplace_back("query", nlohmann::json{{"peer", name},
+                                                       {"level", "study"},
                                                        {"patient_name", query.patientName},
                                                        {"patient_id", query.patientId},
                                                        {"study_date", query.studyDate},
                                                        {"modality", query.modality},
                                                        {"accession", query.accession},
                                                        {"matches", shared_.view.studies.size()},
+                                                       {"problem", problem}});
+}
+
+void PacsClient::runSeries(const model::ListPacsSeries& request) {
+    const std::string name = peerName(request.peer);
+    std::vector<workflow::PacsSeries> series;
+    std::string line;
+    std::string problem;
+    const std::optional<QueryPeer> peer = queryPeer(dicom_, name);
+    if (!peer) {
+        problem = "no [[dicom.peers]] named '" + name + "' with query = true";
+    } else if (problem = model::uidProblem(request.studyUid); problem.empty()) {
+        net::ScuOptions options = sendOptions(dicom_);
+        options.timeoutSeconds = dicom_.queryTimeoutSeconds;
+        const net::QueryResult<net::SeriesMatch> found =
+            net::findSeries(peer->peer, request.studyUid, options, kMaxStudies);
+        problem = found.problem;
+        for (const net::SeriesMatch& s : found.matches) {
+            series.push_back({s.seriesUid, s.modality, s.number, s.description, s.instanceCount});
+        }
+        line = std::to_string(series.size()) + " series of the study on " + name +
+               (found.truncated ? " (the first " + std::to_string(kMaxStudies) + " only)" : "");
+    }
+    if (!problem.empty()) {
+        line = "series of the study on " + name + " failed: " + problem;
+    }
+    const std::size_t matches = series.size();
+    const std::lock_guard lock(mutex_);
+    const bool newer = shared_.series.has_value(); // another study asked meanwhile: it shows
+    if (!newer) {
+        shared_.view.listingSeries = false;
+        shared_.view.seriesLine = line;
+        shared_.view.seriesStudyUid = request.studyUid;
+        shared_.view.seriesPeer = name;
+        shared_.view.series = std::move(series);
+    }
+    ++shared_.view.seriesListings;
+    shared_.log.push_back(line);
+    shared_.audit.emplace_back("query", nlohmann::json{{"peer", name},
+                                                       {"level", "series"},
+                                                       {"study", request.studyUid},
+                                                       {"matches", matches},
                                                        {"problem", problem}});
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 
 // The kiosk's PACS search and retrieve (docs/dicom-network.md "The kiosk's search"): what the
-// workflow accepted as SearchPacs, RetrievePacs and CancelRetrieve, run on two threads of their
-// own (a search may go while a retrieve runs), every answer bounded by [dicom]
+// workflow accepted as SearchPacs, ListPacsSeries, RetrievePacs and CancelRetrieve, run on two
+// threads of their own (the searches and series listings on one, the retrieve on the other: a
+// search may go while a retrieve runs), every answer bounded by [dicom]
 // query_timeout_seconds. The frame thread hands requests in and takes the results out under a
 // lock once a frame; it never waits for the network. Part of the kiosk's DICOM node (full
 // build only: it needs DCMTK).
@@ -36,8 +37,9 @@ class PacsClient {
     PacsClient(const PacsClient&) = delete;
     PacsClient& operator=(const PacsClient&) = delete;
 
-    // The frame thread: one accepted PACS action. A search while one runs waits for it (the
-    // newest only); a retrieve while one runs is refused with a line (cancel it first).
+    // The frame thread: one accepted PACS action. A search or series listing while one runs
+    // waits for it (the newest of each only); a retrieve while one runs is refused with a line
+    // (cancel it first).
     void request(const model::Action& action);
     // The frame thread: the threads' lines to `err`, their audit records to `audit`, and the
     // state for show().
@@ -48,6 +50,7 @@ class PacsClient {
   private:
     struct Shared {
         std::optional<model::SearchPacs> search;     // waiting for the search thread
+        std::optional<model::ListPacsSeries> series; // waiting for the search thread too
         std::optional<model::RetrievePacs> retrieve; // waiting for the retrieve thread
         workflow::PacsView view;
         std::vector<std::string> log;
@@ -57,6 +60,7 @@ class PacsClient {
     void searchLoop();
     void retrieveLoop();
     void runSearch(const model::SearchPacs& request);
+    void runSeries(const model::ListPacsSeries& request);
     void runRetrieve(const model::RetrievePacs& request);
     [[nodiscard]] std::string peerName(const std::string& asked) const;
 

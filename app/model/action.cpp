@@ -119,6 +119,8 @@ template <class T> constexpr std::string_view nameOf() {
         return "retrieve_pacs";
     } else if constexpr (std::is_same_v<T, CancelRetrieve>) {
         return "cancel_retrieve";
+    } else if constexpr (std::is_same_v<T, ListPacsSeries>) {
+        return "list_pacs_series";
     } else {
         static_assert(std::is_same_v<T, Quit>, "every action needs a name");
         return "quit";
@@ -324,6 +326,7 @@ static_assert(std::is_same_v<TypeOf<ActionKind::EditStructure>, EditStructure>);
 static_assert(std::is_same_v<TypeOf<ActionKind::SearchPacs>, SearchPacs>);
 static_assert(std::is_same_v<TypeOf<ActionKind::RetrievePacs>, RetrievePacs>);
 static_assert(std::is_same_v<TypeOf<ActionKind::CancelRetrieve>, CancelRetrieve>);
+static_assert(std::is_same_v<TypeOf<ActionKind::ListPacsSeries>, ListPacsSeries>);
 static_assert(std::is_same_v<TypeOf<ActionKind::Quit>, Quit>);
 static_assert(static_cast<std::size_t>(ActionKind::Quit) + 1 == kActionKindCount);
 

@@ -204,6 +204,10 @@ struct SearchPacs {
     std::string peer;
     PacsKeys keys;
 };
+struct ListPacsSeries { // the series of a study a search found, for a retrieve of one
+    std::string peer;
+    std::string studyUid;
+};
 struct RetrievePacs { // a study, or one of its series, into the incoming store
     std::string peer;
     std::string studyUid;
@@ -218,7 +222,7 @@ using Action =
                  ClearExamples, SetOutsideMode, PaintStroke, Run, Pause, ToggleRun, Finish, Resume,
                  Export, Undo, Redo, Restart, Proceed, Back, Dismiss, AcknowledgeAudit, RotateView,
                  ZoomView, PageSlice, SetSlice, ShowSlices, Correct, SetBox, ClearBox, SetBoxMode,
-                 EditStructure, SearchPacs, RetrievePacs, CancelRetrieve, Quit>;
+                 EditStructure, SearchPacs, ListPacsSeries, RetrievePacs, CancelRetrieve, Quit>;
 
 // "load_scan", "probe", ... (snake_case of the type): the audit log's and scripts' names.
 std::string_view actionName(const Action& action);
@@ -267,6 +271,7 @@ enum class ActionKind {
     SetBoxMode,
     EditStructure,
     SearchPacs,
+    ListPacsSeries,
     RetrievePacs,
     CancelRetrieve,
     Quit,

@@ -26,6 +26,7 @@ const detail::VerbTable& verbs() {
         detail::VerbTable table;
         detail::addDeviceVerbs(table);
         detail::addOperatorVerbs(table);
+        detail::addPacsVerbs(table);
         detail::addCheckVerbs(table);
         return table;
     }();
@@ -253,8 +254,8 @@ Script loadScript(const std::filesystem::path& path) {
 }
 
 const std::vector<std::string_view>& scriptVariables() {
-    static const std::vector<std::string_view> kNames = {"SCAN",     "DATA",     "OUT",
-                                                         "EXPORTED", "RECEIVED", "FOUND"};
+    static const std::vector<std::string_view> kNames = {"SCAN",     "DATA",  "OUT",   "EXPORTED",
+                                                         "RECEIVED", "FOUND", "SERIES"};
     return kNames;
 }
 

@@ -133,8 +133,9 @@ std::optional<model::State> scriptStateFromName(std::string_view name);
 const std::vector<std::string_view>& statusFields();
 
 // The variables a script may name: SCAN, DATA, OUT (given before the run), EXPORTED (the path
-// of the last export), RECEIVED (the newest complete received series) and FOUND (the study UID
-// of the last PACS search's first match), known only when the step runs.
+// of the last export), RECEIVED (the newest complete received series), FOUND (the study UID
+// of the last PACS search's first match) and SERIES (the series UID of the last series
+// listing's first), known only when the step runs.
 const std::vector<std::string_view>& scriptVariables();
 
 } // namespace steerseg::script

@@ -56,10 +56,15 @@ const std::vector<std::pair<std::string_view, Getter>>& fieldTable() {
         {"outbox", [](const S& s) { return static_cast<double>(s.outbox.size()); }},
         {"structures", [](const S& s) { return static_cast<double>(s.structures.size()); }},
         // The kiosk's PACS search and retrieve (Status::pacs): counters of those ended, the
-        // last search's matches, and the retrieve's images as its progress bar shows them.
+        // last search's matches, a study's series, and the retrieve's images as its progress
+        // bar shows them.
         {"searches", [](const S& s) { return static_cast<double>(s.pacs.searches); }},
         {"searching", [](const S& s) { return s.pacs.searching ? 1.0 : 0.0; }},
         {"found", [](const S& s) { return static_cast<double>(s.pacs.studies.size()); }},
+        // A study's series (ListPacsSeries): listings ended, one under way, the last one's rows.
+        {"series_listings", [](const S& s) { return static_cast<double>(s.pacs.seriesListings); }},
+        {"listing_series", [](const S& s) { return s.pacs.listingSeries ? 1.0 : 0.0; }},
+        {"series_found", [](const S& s) { return static_cast<double>(s.pacs.series.size()); }},
         {"retrieves", [](const S& s) { return static_cast<double>(s.pacs.retrieves); }},
         {"retrieving", [](const S& s) { return s.pacs.retrieving ? 1.0 : 0.0; }},
         {"retrieved", [](const S& s) { return static_cast<double>(s.pacs.received); }},

@@ -2,6 +2,7 @@
 
 #include "script/script_condition.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <set>
@@ -24,6 +25,28 @@ std::string seconds(double s) {
     char text[32];
     std::snprintf(text, sizeof text, "%.3g s", s);
     return text;
+}
+
+// "" when the PACS action names no peer or one of the status's query peers; else why not.
+std::string unknownPeer(const model::Action& action, const workflow::Status& status) {
+    std::string peer;
+    if (const auto* s = std::get_if<model::SearchPacs>(&action)) {
+        peer = s->peer;
+    } else if (const auto* l = std::get_if<model::ListPacsSeries>(&action)) {
+        peer = l->peer;
+    } else if (const auto* r = std::get_if<model::RetrievePacs>(&action)) {
+        peer = r->peer;
+    }
+    const std::vector<std::string>& peers = status.pacs.peers;
+    if (peer.empty() || std::find(peers.begin(), peers.end(), peer) != peers.end()) {
+        return "";
+    }
+    std::string known;
+    for (const std::string& p : peers) {
+        known += (known.empty() ? "" : ", ") + p;
+    }
+    return "no query peer named '" + peer + "' (" +
+           (known.empty() ? "none in the config" : "the config's: " + known) + ")";
 }
 
 // Replaces $NAME and ${NAME} with the values of `lookup`; names it cannot give go to `missing`
@@ -83,7 +106,7 @@ ScriptPlayer::ScriptPlayer(Script script, Variables variables)
     // Given variables now, so a missing --scan is said before anything runs; EXPORTED and
     // RECEIVED later.
     const auto given = [this](const std::string& name) -> const std::string* {
-        if (name == "EXPORTED" || name == "RECEIVED" || name == "FOUND") {
+        if (name == "EXPORTED" || name == "RECEIVED" || name == "FOUND" || name == "SERIES") {
             return nullptr;
         }
         const auto it = variables_.find(name);
@@ -103,6 +126,8 @@ ScriptPlayer::ScriptPlayer(Script script, Variables variables)
                     } else if (auto* get = std::get_if<model::RetrievePacs>(&kind.action)) {
                         fill(get->studyUid);
                         fill(get->seriesUid);
+                    } else if (auto* list = std::get_if<model::ListPacsSeries>(&kind.action)) {
+                        fill(list->studyUid);
                     }
                 } else if constexpr (std::is_same_v<K, FrameStep>) {
                     fill(kind.path);
@@ -117,6 +142,7 @@ ScriptPlayer::ScriptPlayer(Script script, Variables variables)
         missing.erase("EXPORTED");
         missing.erase("RECEIVED");
         missing.erase("FOUND");
+        missing.erase("SERIES");
         for (const std::string& name : missing) {
             const char* how = howToSet(name);
             errors += (errors.empty() ? "" : "\n") + script_.name + ":" +
@@ -142,9 +168,15 @@ std::string ScriptPlayer::runtimePath(const std::string& path, const workflow::S
     // FOUND: the first study the last PACS search found ("" when none).
     const std::string found =
         status.pacs.studies.empty() ? std::string() : status.pacs.studies.front().studyUid;
+    // SERIES: the first series the last series listing found ("" when none).
+    const std::string series =
+        status.pacs.series.empty() ? std::string() : status.pacs.series.front().seriesUid;
     const auto runtime = [&](const std::string& name) -> const std::string* {
         if (name == "FOUND") {
             return &found;
+        }
+        if (name == "SERIES") {
+            return &series;
         }
         return name == "EXPORTED" ? &status.exportedPath
                                   : (name == "RECEIVED" ? &received : nullptr);
@@ -221,6 +253,12 @@ void ScriptPlayer::poll(double now, const workflow::Status& status, ScriptSink& 
                 } else if (auto* get = std::get_if<model::RetrievePacs>(&action)) {
                     get->studyUid = runtimePath(get->studyUid, status, false);
                     get->seriesUid = runtimePath(get->seriesUid, status, false);
+                } else if (auto* list = std::get_if<model::ListPacsSeries>(&action)) {
+                    list->studyUid = runtimePath(list->studyUid, status, false);
+                }
+                if (const std::string problem = unknownPeer(action, status); !problem.empty()) {
+                    fail(step, problem);
+                    return;
                 }
                 sink.action(action);
                 emitted = true;

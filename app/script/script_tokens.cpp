@@ -159,12 +159,13 @@ void checkVariables(std::string_view word) {
         }
         const std::string_view name = word.substr(begin, end - begin);
         if (name.empty()) {
-            throw LineError("a $ in " + quoteWord(word) +
-                            " names no variable (SCAN, DATA, OUT, EXPORTED, RECEIVED, FOUND)");
+            throw LineError(
+                "a $ in " + quoteWord(word) +
+                " names no variable (SCAN, DATA, OUT, EXPORTED, RECEIVED, FOUND, SERIES)");
         }
         if (std::find(known.begin(), known.end(), name) == known.end()) {
             throw LineError("unknown variable $" + std::string(name) +
-                            " (known: SCAN, DATA, OUT, EXPORTED, RECEIVED, FOUND)");
+                            " (known: SCAN, DATA, OUT, EXPORTED, RECEIVED, FOUND, SERIES)");
         }
         n = end;
     }

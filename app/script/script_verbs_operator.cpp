@@ -189,56 +189,6 @@ StepKind structure(Words& w) {
     return actionStep(e);
 }
 
-// The PACS (docs/dicom-network.md "The kiosk's search"): `search` with the form's keys by the
-// config's field names, `retrieve` a study ($FOUND: the last search's first) or one series.
-StepKind search(Words& w) {
-    constexpr const char* kUsage = "search [peer NAME] [patient_name P] [patient_id ID] "
-                                   "[study_date YYYYMMDD[-YYYYMMDD]|PRESET] [modality M] "
-                                   "[accession N]";
-    model::SearchPacs s;
-    while (!w.empty()) {
-        const std::string key = w.text("a search key");
-        if (key == "peer") {
-            s.peer = w.text("the peer's name");
-        } else if (const auto field = model::searchFieldFromName(key)) {
-            model::keyOf(s.keys, *field) = w.text("the key's value");
-        } else {
-            throw LineError("search '" + key + "': " + kUsage);
-        }
-    }
-    if (const std::string problem = model::pacsKeysProblem(s.keys); !problem.empty()) {
-        throw LineError(problem);
-    }
-    return actionStep(s);
-}
-
-std::string uidWord(Words& w, const char* what) {
-    std::string uid = w.text(what);
-    if (uid.starts_with('$')) {
-        detail::checkVariables(uid);
-    } else if (const std::string problem = model::uidProblem(uid); !problem.empty()) {
-        throw LineError(problem);
-    }
-    return uid;
-}
-
-StepKind retrieve(Words& w) {
-    constexpr const char* kUsage = "retrieve STUDY_UID|$FOUND [SERIES_UID] [peer NAME]";
-    model::RetrievePacs r;
-    r.studyUid = uidWord(w, "the study's UID");
-    if (!w.empty() && !w.accept("peer")) {
-        r.seriesUid = uidWord(w, "the series' UID");
-        if (!w.empty() && !w.accept("peer")) {
-            w.finish(kUsage); // neither: says what was unexpected
-        }
-    }
-    if (r.peer.empty() && !w.empty()) {
-        r.peer = w.text("the peer's name"); // after `peer`: the only word left
-    }
-    w.finish(kUsage);
-    return actionStep(r);
-}
-
 StepKind autosave(Words& w) {
     const std::string answer = w.text("resume or discard");
     w.finish("autosave resume|discard");
@@ -395,9 +345,6 @@ void addOperatorVerbs(VerbTable& table) {
         {"export", exportMask},
         {"frame", frame},
         {"autosave", autosave},
-        {"search", search},
-        {"retrieve", retrieve},
-        {"cancel_retrieve", plain<model::CancelRetrieve>("cancel_retrieve")},
     });
 }
 

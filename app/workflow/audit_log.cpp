@@ -137,6 +137,9 @@ nlohmann::json values(const model::SearchPacs& a) {
 nlohmann::json values(const model::RetrievePacs& a) {
     return {{"peer", a.peer}, {"study", a.studyUid}, {"series", a.seriesUid}};
 }
+nlohmann::json values(const model::ListPacsSeries& a) {
+    return {{"peer", a.peer}, {"study", a.studyUid}};
+}
 template <class T> nlohmann::json values(const T&) {
     return nlohmann::json::object();
 }

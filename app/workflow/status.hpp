@@ -51,6 +51,15 @@ struct PacsStudy {
     std::string label;    // one line: date, patient, ID, modalities, description, image count
 };
 
+// One series of a study a PACS listing found, for the load screen's series rows.
+struct PacsSeries {
+    std::string seriesUid; // what RetrievePacs names beside its study
+    std::string modality;
+    std::string number; // SeriesNumber as the PACS gives it ("" when it did not)
+    std::string description;
+    int images = -1; // -1: the PACS did not say
+};
+
 // The kiosk's PACS search and retrieve (docs/dicom-network.md "The kiosk's search"), filled by
 // its DICOM node like `received`; the workflow leaves it empty. Counters only grow, so that a
 // script can wait for the next search or retrieve to end.
@@ -62,6 +71,15 @@ struct PacsView {
     int searches = 0;       // searches ended (found, failed or refused)
     std::string searchLine; // how the last one ended: "3 studies on pacs", or why not
     std::vector<PacsStudy> studies;
+    std::string studiesPeer; // the peer they were found on: their series and retrieve ask it
+    // The series of one study (ListPacsSeries): while listed, how the last listing ended, the
+    // study and peer it asked, and the series found.
+    bool listingSeries = false;
+    int seriesListings = 0; // listings ended (found, failed or refused)
+    std::string seriesLine; // "2 series of the study on pacs", or why not
+    std::string seriesStudyUid;
+    std::string seriesPeer;
+    std::vector<PacsSeries> series;
     bool retrieving = false;
     int retrieves = 0; // retrieves ended
     // The retrieve under way, or the last one: images stored of those the PACS expects (0

@@ -261,7 +261,7 @@ inline constexpr std::array kRules{
     Rule{kAll, {K::Dismiss}, Guard::Always, std::nullopt, {},
          "clears the notice; error goes to paused with a level set, inspect with a scan, else no_scan"},
     Rule{kAll, {K::Quit}, Guard::Always, std::nullopt, {}, "quitRequested()"},
-    Rule{kAll, {K::SearchPacs, K::RetrievePacs, K::CancelRetrieve}, Guard::Always, std::nullopt, {},
+    Rule{kAll, {K::SearchPacs, K::ListPacsSeries, K::RetrievePacs, K::CancelRetrieve}, Guard::Always, std::nullopt, {},
          "the kiosk's DICOM node asks the PACS; no scan is touched"},
     Rule{kAll, {K::AcknowledgeAudit}, Guard::AuditLost, std::nullopt,
          "the audit log is written: nothing to acknowledge",

@@ -38,6 +38,7 @@ bool keepsNotice(const model::Action& action) {
            std::holds_alternative<model::SearchPacs>(action) ||
            std::holds_alternative<model::RetrievePacs>(action) ||
            std::holds_alternative<model::CancelRetrieve>(action) ||
+           std::holds_alternative<model::ListPacsSeries>(action) ||
            std::holds_alternative<model::Quit>(action);
 }
 

@@ -167,6 +167,7 @@ class Workflow {
     Outcome on(const model::SearchPacs& a);
     Outcome on(const model::RetrievePacs& a);
     Outcome on(const model::CancelRetrieve& a);
+    Outcome on(const model::ListPacsSeries& a);
 
     // The structures (workflow_structures.cpp).
     Outcome on(const model::EditStructure& a);

@@ -1,7 +1,7 @@
-// The PACS's actions (model::SearchPacs, RetrievePacs, CancelRetrieve): the workflow knows no
-// network. It checks what it can of their arguments, so that a garbled one is refused in the
-// operator's message and the audit log like any other action, and leaves the state as it is;
-// the kiosk hands the accepted ones to its DICOM node.
+// The PACS's actions (model::SearchPacs, ListPacsSeries, RetrievePacs, CancelRetrieve): the
+// workflow knows no network. It checks what it can of their arguments, so that a garbled one is
+// refused in the operator's message and the audit log like any other action, and leaves the
+// state as it is; the kiosk hands the accepted ones to its DICOM node.
 #include "workflow/workflow.hpp"
 
 namespace steerseg::workflow {
@@ -21,6 +21,13 @@ Workflow::Outcome Workflow::on(const model::RetrievePacs& a) {
         if (const std::string problem = model::uidProblem(a.seriesUid); !problem.empty()) {
             return no("retrieve: the series " + problem);
         }
+    }
+    return ok();
+}
+
+Workflow::Outcome Workflow::on(const model::ListPacsSeries& a) {
+    if (const std::string problem = model::uidProblem(a.studyUid); !problem.empty()) {
+        return no("series: the study " + problem);
     }
     return ok();
 }

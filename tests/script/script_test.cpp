@@ -792,6 +792,86 @@ TEST(ScriptParse, PacsVerbs) {
               std::string::npos);
     EXPECT_NE(parseError("retrieve 1.2.x\n").find("not a DICOM UID"), std::string::npos);
     EXPECT_NE(parseError("retrieve $FOUNDS\n").find("unknown variable $FOUNDS"), std::string::npos);
+    // A study's series, and one series retrieved by the listing's first ($SERIES).
+    const auto l = action<model::ListPacsSeries>("series 1.2.3 peer archive");
+    EXPECT_EQ(l.studyUid, "1.2.3");
+    EXPECT_EQ(l.peer, "archive");
+    EXPECT_EQ(action<model::ListPacsSeries>("series $FOUND").studyUid, "$FOUND");
+    EXPECT_EQ(action<model::ListPacsSeries>("series $FOUND").peer, "");
+    const auto one = action<model::RetrievePacs>("retrieve $FOUND $SERIES peer archive");
+    EXPECT_EQ(one.seriesUid, "$SERIES");
+    EXPECT_EQ(one.peer, "archive");
+    EXPECT_EQ(action<model::RetrievePacs>("retrieve 1.2.3 peer archive").seriesUid, "");
+    // The refusals: each line's error names what is wrong.
+    const std::vector<std::pair<std::string, std::string>> refused{
+        {"series\n", "missing the study's UID"},
+        {"series 1.2.x\n", "not a DICOM UID"},
+        {"series $SERIESS\n", "unknown variable $SERIESS"},
+        {"series 1.2.3 peer\n", "missing the peer's name"},
+        {"series 1.2.3 peer \"\"\n", "the peer's name is empty"},
+        {"series 1.2.3 archive\n", "unexpected"},
+        {"series 1.2.3 peer a b\n", "unexpected"},
+        {"retrieve 1.2.3 peer\n", "missing the peer's name"},
+        {"retrieve 1.2.3 1.2.x\n", "not a DICOM UID"},
+        {"retrieve 1.2.3 1.2.4 archive\n", "unexpected"},
+        {"search peer\n", "missing the peer's name"},
+        {"cancel_retrieve now\n", "unexpected"},
+    };
+    for (const auto& [line, why] : refused) {
+        const std::string error = parseError(line);
+        EXPECT_EQ(error.rfind("s.session:1: ", 0), 0U) << line << error;
+        EXPECT_NE(error.find(why), std::string::npos) << line << error;
+    }
+}
+
+// `series $FOUND` lists the last search's first study, `retrieve $FOUND $SERIES` fetches the
+// listing's first series; the waits read the listing's counters. A peer the kiosk's status does
+// not offer fails the step at once, naming the peers it has.
+TEST(ScriptPlayer, SeriesOfTheFoundStudyAndTheFirstSeriesRetrieved) {
+    struct Sink : Recorder {
+        std::vector<model::Action> pacs;
+        void action(const model::Action& a) override {
+            if (std::holds_alternative<model::ListPacsSeries>(a) ||
+                std::holds_alternative<model::RetrievePacs>(a)) {
+                pacs.push_back(a);
+            }
+        }
+    } r;
+    ScriptPlayer p = player("series $FOUND peer archive\n"
+                            "wait until series_listings >= 1 timeout 5\n"
+                            "expect series_found == 2\nexpect listing_series == 0\n"
+                            "retrieve $FOUND $SERIES peer archive\n");
+    workflow::Status st;
+    st.pacs.peers = {"pacs", "archive"};
+    st.pacs.studies = {{"1.2.840.5", "2024-01-05  DOE JANE"}};
+    p.poll(0.0, st, r);
+    ASSERT_EQ(r.pacs.size(), 1U);
+    EXPECT_EQ(std::get<model::ListPacsSeries>(r.pacs[0]).studyUid, "1.2.840.5");
+    EXPECT_EQ(std::get<model::ListPacsSeries>(r.pacs[0]).peer, "archive");
+    st.pacs.listingSeries = true;
+    p.poll(0.1, st, r);
+    EXPECT_EQ(r.pacs.size(), 1U) << "the listing has not ended";
+    st.pacs.listingSeries = false;
+    st.pacs.seriesListings = 1;
+    st.pacs.series = {{"1.2.840.5.2", "CT", "2", "", 60}, {"1.2.840.5.1", "SEG", "", "", 1}};
+    p.poll(0.2, st, r);
+    p.poll(0.3, st, r);
+    ASSERT_EQ(r.pacs.size(), 2U) << p.failure();
+    const auto& get = std::get<model::RetrievePacs>(r.pacs[1]);
+    EXPECT_EQ(get.studyUid, "1.2.840.5");
+    EXPECT_EQ(get.seriesUid, "1.2.840.5.2");
+    EXPECT_TRUE(p.finished()) << p.failure();
+
+    Recorder plain;
+    ScriptPlayer unknown = player("search peer archiv patient_id P\n");
+    unknown.poll(0.0, st, plain);
+    EXPECT_EQ(unknown.failure(), "t.session:1: search peer archiv patient_id P: no query peer "
+                                 "named 'archiv' (the config's: pacs, archive)");
+    ScriptPlayer none = player("series 1.2.3 peer pacs\n");
+    none.poll(0.0, workflow::Status{}, plain);
+    EXPECT_NE(none.failure().find("no query peer named 'pacs' (none in the config)"),
+              std::string::npos)
+        << none.failure();
 }
 
 TEST(ScriptPlayer, RetrieveTakesTheFirstStudyTheLastSearchFound) {

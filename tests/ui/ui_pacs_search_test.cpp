@@ -1,7 +1,8 @@
 // The load screen's PACS search without a GPU: the form typed on the on-screen keyboard, the
-// date chips, and the panel model built from the node's Status::pacs (fields as the site's
-// config lists them, Search with the form's keys, the results as Retrieve, the progress bar
-// and Cancel), plus the dates a chip asks for.
+// date chips, the peer choice, and the panel model built from the node's Status::pacs (fields
+// as the site's config lists them, Search with the form's keys to the chosen peer, the results
+// as Retrieve and Series, a study's series each with its Retrieve, the progress bar and
+// Cancel), plus the dates a chip asks for.
 #include "ui/pacs_form.hpp"
 #include "ui/panel_model.hpp"
 #include "workflow/transition_table.hpp"
@@ -128,6 +129,128 @@ TEST(UiPacsSearch, ARetrieveShowsItsProgressAndCancelEvenOffTheLoadScreen) {
     EXPECT_FALSE(ui::buildPanelModel(loadScreen(v), {}).pacs->cancel);
     v.peers.clear();
     EXPECT_FALSE(ui::buildPanelModel(loadScreen(v), {}).pacs);
+}
+
+// Two query peers: one button each, the first chosen by default, Search asking the chosen one;
+// the results retrieve and list series from the peer they were found on, whichever is chosen
+// now. One peer: no choice shown.
+TEST(UiPacsSearch, APeerChoiceWhereTheSiteHasSeveral) {
+    workflow::PacsView v = view();
+    ui::PanelModel m = ui::buildPanelModel(loadScreen(v), {});
+    ASSERT_TRUE(m.pacs);
+    EXPECT_TRUE(m.pacs->peers.empty()) << "one peer: nothing to choose";
+    EXPECT_EQ(std::get<model::SearchPacs>(m.pacs->search.action).peer, "pacs");
+
+    v.peers = {"pacs", "archive"};
+    v.studies = {{"1.2.3", "a"}};
+    v.studiesPeer = "archive";
+    m = ui::buildPanelModel(loadScreen(v), {});
+    ASSERT_EQ(m.pacs->peers.size(), 2U);
+    EXPECT_EQ(m.pacs->peers[0].label, "pacs##pacs_peer_pacs");
+    EXPECT_TRUE(m.pacs->peers[0].chosen) << "the first by default";
+    EXPECT_FALSE(m.pacs->peers[1].chosen);
+    EXPECT_EQ(std::get<model::SearchPacs>(m.pacs->search.action).peer, "pacs");
+
+    ui::PanelEditors editors;
+    editors.pacsPeer = "archive";
+    m = ui::buildPanelModel(loadScreen(v), {}, editors);
+    EXPECT_FALSE(m.pacs->peers[0].chosen);
+    EXPECT_TRUE(m.pacs->peers[1].chosen);
+    EXPECT_EQ(std::get<model::SearchPacs>(m.pacs->search.action).peer, "archive");
+    // The study found on archive goes on asking archive, whatever the form chooses now.
+    editors.pacsPeer = "pacs";
+    m = ui::buildPanelModel(loadScreen(v), {}, editors);
+    EXPECT_EQ(std::get<model::SearchPacs>(m.pacs->search.action).peer, "pacs");
+    EXPECT_EQ(std::get<model::RetrievePacs>(m.pacs->results[0].action).peer, "archive");
+    EXPECT_EQ(std::get<model::ListPacsSeries>(m.pacs->seriesOf[0].action).peer, "archive");
+    // A name the config no longer has: the first again.
+    editors.pacsPeer = "gone";
+    m = ui::buildPanelModel(loadScreen(v), {}, editors);
+    EXPECT_TRUE(m.pacs->peers[0].chosen);
+    EXPECT_EQ(std::get<model::SearchPacs>(m.pacs->search.action).peer, "pacs");
+
+    // The form keeps the choice while the status offers it, and drops it when not.
+    ui::PacsForm form;
+    EXPECT_EQ(form.peer(), "");
+    form.choosePeer("archive");
+    form.follow(v, true);
+    EXPECT_EQ(form.peer(), "archive");
+    v.peers = {"pacs"};
+    form.follow(v, true);
+    EXPECT_EQ(form.peer(), "") << "archive left the config";
+}
+
+// Series beside each study; the listed study's series under it, each row its modality, number,
+// description and images with a Retrieve of that series alone; the whole study's Retrieve
+// stays. A listing running shows its line; one of a study this search did not find is not shown.
+TEST(UiPacsSearch, AStudysSeriesEachWithItsOwnRetrieve) {
+    workflow::PacsView v = view();
+    v.studies = {{"1.2.3", "a"}, {"1.2.4", "b"}};
+    v.studiesPeer = "pacs";
+    ui::PanelModel m = ui::buildPanelModel(loadScreen(v), {});
+    ASSERT_TRUE(m.pacs);
+    ASSERT_EQ(m.pacs->seriesOf.size(), 2U);
+    EXPECT_EQ(m.pacs->seriesOf[1].label, "Series##pacs_series_of1");
+    const auto& list = std::get<model::ListPacsSeries>(m.pacs->seriesOf[1].action);
+    EXPECT_EQ(list.studyUid, "1.2.4");
+    EXPECT_EQ(list.peer, "pacs");
+    EXPECT_FALSE(m.pacs->seriesOf[1].active);
+    EXPECT_FALSE(m.pacs->seriesStudy);
+    EXPECT_TRUE(m.pacs->series.empty());
+
+    // Listing: the line, no rows yet, the study's Series highlighted.
+    v.listingSeries = true;
+    v.seriesStudyUid = "1.2.4";
+    v.seriesPeer = "pacs";
+    v.seriesLine = "listing the series on pacs...";
+    m = ui::buildPanelModel(loadScreen(v), {});
+    ASSERT_TRUE(m.pacs->seriesStudy);
+    EXPECT_EQ(*m.pacs->seriesStudy, 1U);
+    EXPECT_TRUE(m.pacs->seriesOf[1].active);
+    EXPECT_FALSE(m.pacs->seriesOf[0].active);
+    EXPECT_EQ(m.pacs->seriesLine, "listing the series on pacs...");
+    EXPECT_TRUE(m.pacs->series.empty());
+
+    v.listingSeries = false;
+    v.seriesListings = 1;
+    v.seriesLine = "2 series of the study on pacs";
+    v.series = {{"1.2.4.1", "CT", "3", "Chest 1 mm", 60}, {"1.2.4.2", "SEG", "", "", -1}};
+    m = ui::buildPanelModel(loadScreen(v), {});
+    ASSERT_EQ(m.pacs->series.size(), 2U);
+    EXPECT_EQ(m.pacs->series[0].label, "Retrieve CT  #3  Chest 1 mm  (60 images)##pacs_series0");
+    EXPECT_EQ(m.pacs->series[1].label, "Retrieve SEG##pacs_series1")
+        << "what was not said, left out";
+    const auto& one = std::get<model::RetrievePacs>(m.pacs->series[0].action);
+    EXPECT_EQ(one.studyUid, "1.2.4");
+    EXPECT_EQ(one.seriesUid, "1.2.4.1");
+    EXPECT_EQ(one.peer, "pacs");
+    EXPECT_EQ(std::get<model::RetrievePacs>(m.pacs->results[1].action).seriesUid, "")
+        << "the whole study's Retrieve stays";
+    EXPECT_TRUE(m.pacs->series[0].enabled);
+    // Every Series and every series' Retrieve reachable by touch.
+    std::size_t lists = 0;
+    std::size_t seriesRetrieves = 0;
+    for (const model::Action& a : ui::reachableActions(m)) {
+        lists += std::holds_alternative<model::ListPacsSeries>(a);
+        if (const auto* r = std::get_if<model::RetrievePacs>(&a)) {
+            seriesRetrieves += r->seriesUid.empty() ? 0 : 1;
+        }
+    }
+    EXPECT_EQ(lists, 2U);
+    EXPECT_EQ(seriesRetrieves, 2U);
+
+    // A retrieve under way: one at a time, the series' too.
+    v.retrieving = true;
+    m = ui::buildPanelModel(loadScreen(v), {});
+    EXPECT_FALSE(m.pacs->series[0].enabled);
+    // A new search that did not find the study: its series are not shown.
+    v.retrieving = false;
+    v.studies = {{"1.2.9", "c"}};
+    m = ui::buildPanelModel(loadScreen(v), {});
+    EXPECT_FALSE(m.pacs->seriesStudy);
+    EXPECT_TRUE(m.pacs->series.empty());
+    EXPECT_FALSE(m.pacs->seriesOf[0].active);
+    EXPECT_EQ(ui::pacsSeriesLabel({"1.2", "", "", "", -1}), "series");
 }
 
 TEST(UiPacsSearch, DatePresetsCountBackFromToday) {

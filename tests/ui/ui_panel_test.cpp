@@ -691,4 +691,45 @@ TEST_F(UiPanel, ARenameAndARecolourByTouchAlone) {
     EXPECT_EQ(refusals.size(), 1U);
 }
 
+// The PACS section by touch alone: a peer's button chooses it (the form's, no action), Search
+// asks it, a study's Series lists its series on the peer it was found on, and a series' own
+// Retrieve names that series.
+TEST_F(UiPanel, APeerTappedThenSearchSeriesAndOneSeriesRetrieved) {
+    Screen screen;
+    ui::ImGuiLayer layer;
+    workflow::Status st = status(State::NoScan);
+    st.pacs.peers = {"pacs", "archive"};
+    st.pacs.fields = {"patient_id"};
+    st.pacs.studies = {{"1.2.3", "2024-01-05  DOE JANE"}};
+    st.pacs.studiesPeer = "archive";
+    EXPECT_TRUE(tap(layer, st, "archive##pacs_peer_archive").empty());
+    EXPECT_EQ(panel_.pacsForm().peer(), "archive");
+    const std::vector<Action> search = tap(layer, st, "Search##pacs_search");
+    ASSERT_EQ(search.size(), 1U);
+    EXPECT_EQ(std::get<model::SearchPacs>(search[0]).peer, "archive");
+
+    const std::vector<Action> list = tap(layer, st, "Series##pacs_series_of0");
+    ASSERT_EQ(list.size(), 1U);
+    EXPECT_EQ(std::get<model::ListPacsSeries>(list[0]).studyUid, "1.2.3");
+    EXPECT_EQ(std::get<model::ListPacsSeries>(list[0]).peer, "archive");
+
+    st.pacs.seriesStudyUid = "1.2.3";
+    st.pacs.seriesPeer = "archive";
+    st.pacs.seriesLine = "1 series of the study on archive";
+    st.pacs.series = {{"1.2.3.1", "CT", "2", "Chest", 60}};
+    const std::vector<Action> one =
+        tap(layer, st, "Retrieve CT  #2  Chest  (60 images)##pacs_series0");
+    ASSERT_EQ(one.size(), 1U);
+    const auto& retrieve = std::get<model::RetrievePacs>(one[0]);
+    EXPECT_EQ(retrieve.studyUid, "1.2.3");
+    EXPECT_EQ(retrieve.seriesUid, "1.2.3.1");
+    EXPECT_EQ(retrieve.peer, "archive");
+    // The series row lies under its study's row, inside the panel.
+    const auto study = panel_.widgetRect("Retrieve 2024-01-05  DOE JANE##pacs_study0");
+    const auto row = panel_.widgetRect("Retrieve CT  #2  Chest  (60 images)##pacs_series0");
+    ASSERT_TRUE(study && row);
+    EXPECT_GT(row->y, study->y);
+    EXPECT_LE(row->y + row->h, layout_.panel.y + layout_.panel.h);
+}
+
 } // namespace steerseg::test

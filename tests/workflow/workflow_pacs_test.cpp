@@ -1,6 +1,6 @@
-// The PACS's actions in the workflow (model::SearchPacs, RetrievePacs, CancelRetrieve): taken in
-// every state without touching the scan or the state, garbled arguments refused, and each one
-// in the audit log with what it asked.
+// The PACS's actions in the workflow (model::SearchPacs, ListPacsSeries, RetrievePacs,
+// CancelRetrieve): taken in every state without touching the scan or the state, garbled
+// arguments refused, and each one in the audit log with what it asked.
 #include "support/test_data.hpp"
 #include "support/workflow_rig.hpp"
 #include "workflow/audit_log.hpp"
@@ -28,6 +28,7 @@ TEST(WorkflowPacs, SearchAndRetrieveAreTakenInEveryStateAndLeaveItAsItIs) {
         EXPECT_TRUE(r.act(search).accepted) << model::stateName(s);
         EXPECT_TRUE(r.act(model::RetrievePacs{"", "1.2.3", ""}).accepted) << model::stateName(s);
         EXPECT_TRUE(r.act(model::CancelRetrieve{}).accepted) << model::stateName(s);
+        EXPECT_TRUE(r.act(model::ListPacsSeries{"", "1.2.3"}).accepted) << model::stateName(s);
         EXPECT_EQ(r.state(), s);
         EXPECT_EQ(r.status().seeds, seeds);
     }
@@ -39,6 +40,9 @@ TEST(WorkflowPacs, GarbledArgumentsAreRefusedWithTheirReason) {
     EXPECT_FALSE(bad.accepted);
     EXPECT_NE(bad.reason.find("not a DICOM UID"), std::string::npos) << bad.reason;
     EXPECT_FALSE(r.act(model::RetrievePacs{"", "1.2.3", "x"}).accepted);
+    const auto series = r.act(model::ListPacsSeries{"pacs", "1.2.x"});
+    EXPECT_FALSE(series.accepted);
+    EXPECT_NE(series.reason.find("series: the study"), std::string::npos) << series.reason;
     model::SearchPacs search;
     search.keys.patientName = std::string(65, 'A');
     const auto longName = r.act(search);
@@ -57,6 +61,7 @@ TEST(WorkflowPacs, TheAuditLogRecordsWhatWasAsked) {
         search.keys.patientId = "PID-A";
         ASSERT_TRUE(r.act(search).accepted);
         ASSERT_TRUE(r.act(model::RetrievePacs{"pacs", "1.2.3", "1.2.3.4"}).accepted);
+        ASSERT_TRUE(r.act(model::ListPacsSeries{"pacs", "1.2.3"}).accepted);
         audit.pacs("retrieve", {{"peer", "pacs"}, {"received", 3}});
     }
     std::ifstream in(path);
@@ -77,6 +82,8 @@ TEST(WorkflowPacs, TheAuditLogRecordsWhatWasAsked) {
               (nlohmann::json{{"peer", "pacs"}, {"patient_id", "PID-A"}}));
     EXPECT_EQ(find("retrieve_pacs").at("values"),
               (nlohmann::json{{"peer", "pacs"}, {"study", "1.2.3"}, {"series", "1.2.3.4"}}));
+    EXPECT_EQ(find("list_pacs_series").at("values"),
+              (nlohmann::json{{"peer", "pacs"}, {"study", "1.2.3"}}));
     EXPECT_EQ(records.back().at("event"), "retrieve");
     EXPECT_EQ(records.back().at("received"), 3);
     std::filesystem::remove_all(dir);

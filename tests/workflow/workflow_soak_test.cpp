@@ -63,7 +63,7 @@ class Generator {
 
     Action action() {
         // Weighted towards what an operator does most: steering, seeding, looking.
-        switch (integer(0, 55)) {
+        switch (integer(0, 56)) {
         case 0:
             return LoadScan{chance(0.05) ? "" : "scan.nii.gz"};
         case 1:
@@ -194,6 +194,8 @@ class Generator {
             return model::RetrievePacs{"", chance(0.05) ? "1.2.x" : "1.2.840.5", ""};
         case 55:
             return model::CancelRetrieve{};
+        case 56:
+            return model::ListPacsSeries{"", chance(0.05) ? "1.2.x" : "1.2.840.5"};
         default:
             return Run{};
         }

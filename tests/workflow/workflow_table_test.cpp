@@ -152,6 +152,8 @@ Action sample(ActionKind kind) {
             model::StructureOp::Rename, std::string(model::kFirstStructureName), "Liver", {}};
     case ActionKind::RetrievePacs:
         return model::RetrievePacs{"", "1.2.840.5", ""};
+    case ActionKind::ListPacsSeries:
+        return model::ListPacsSeries{"", "1.2.840.5"};
     default:
         break; // the kinds without arguments: their default value
     }
