@@ -203,7 +203,8 @@ void PacsClient::runSearch(const model::SearchPacs& request) {
                " on " + name +
                (found.truncated
                     ? " (the first " + std::to_string(kMaxStudies) + " only: narrow the search)"
-                    : "");
+                    : "") +
+               (found.leftOut.empty() ? "" : "; " + found.leftOut);
     }
     if (!problem.empty()) {
         line = "search on " + name + " failed: " + problem;
@@ -244,7 +245,8 @@ void PacsClient::runSeries(const model::ListPacsSeries& request) {
             series.push_back({s.seriesUid, s.modality, s.number, s.description, s.instanceCount});
         }
         line = std::to_string(series.size()) + " series of the study on " + name +
-               (found.truncated ? " (the first " + std::to_string(kMaxStudies) + " only)" : "");
+               (found.truncated ? " (the first " + std::to_string(kMaxStudies) + " only)" : "") +
+               (found.leftOut.empty() ? "" : "; " + found.leftOut);
     }
     if (!problem.empty()) {
         line = "series of the study on " + name + " failed: " + problem;
