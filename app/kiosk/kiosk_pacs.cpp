@@ -54,6 +54,18 @@ std::string studyLabel(const net::StudyMatch& s) {
     return line;
 }
 
+// The peer's association options for a question or a retrieve: the send options, the query's
+// timeout.
+net::ScuOptions queryOptions(const config::DicomConfig& dicom) {
+    net::ScuOptions options = sendOptions(dicom);
+    options.timeoutSeconds = dicom.queryTimeoutSeconds;
+    return options;
+}
+
+std::string noQueryPeer(const std::string& name) {
+    return "no [[dicom.peers]] named '" + name + "' with query = true";
+}
+
 std::string ofExpected(const net::RetrieveProgress& p) {
     return std::to_string(p.received) +
            (p.expected > 0 ? " of " + std::to_string(p.expected) : "") + " images" +
@@ -189,10 +201,9 @@ void PacsClient::runSearch(const model::SearchPacs& request) {
     std::string problem;
     const std::optional<QueryPeer> peer = queryPeer(dicom_, name);
     if (!peer) {
-        problem = "no [[dicom.peers]] named '" + name + "' with query = true";
+        problem = noQueryPeer(name);
     } else if (problem = net::studyQueryProblem(query); problem.empty()) {
-        net::ScuOptions options = sendOptions(dicom_);
-        options.timeoutSeconds = dicom_.queryTimeoutSeconds;
+        const net::ScuOptions options = queryOptions(dicom_);
         const net::QueryResult<net::StudyMatch> found =
             net::findStudies(peer->peer, query, options, kMaxStudies);
         problem = found.problem;
@@ -234,10 +245,9 @@ void PacsClient::runSeries(const model::ListPacsSeries& request) {
     std::string problem;
     const std::optional<QueryPeer> peer = queryPeer(dicom_, name);
     if (!peer) {
-        problem = "no [[dicom.peers]] named '" + name + "' with query = true";
+        problem = noQueryPeer(name);
     } else if (problem = model::uidProblem(request.studyUid); problem.empty()) {
-        net::ScuOptions options = sendOptions(dicom_);
-        options.timeoutSeconds = dicom_.queryTimeoutSeconds;
+        const net::ScuOptions options = queryOptions(dicom_);
         const net::QueryResult<net::SeriesMatch> found =
             net::findSeries(peer->peer, request.studyUid, options, kMaxStudies);
         problem = found.problem;
@@ -276,7 +286,7 @@ void PacsClient::runRetrieve(const model::RetrievePacs& request) {
     const std::optional<QueryPeer> peer = queryPeer(dicom_, name);
     net::RetrieveOptions how;
     if (!peer) {
-        outcome.problem = "no [[dicom.peers]] named '" + name + "' with query = true";
+        outcome.problem = noQueryPeer(name);
     } else {
         how.method = peer->retrieve;
         how.store = dicom_.store;
@@ -288,8 +298,7 @@ void PacsClient::runRetrieve(const model::RetrievePacs& request) {
             outcome.problem = "retrieve = \"move\" needs the node receiving on its port, and it "
                               "is not (see the log's first dicom line)";
         } else {
-            net::ScuOptions options = sendOptions(dicom_);
-            options.timeoutSeconds = dicom_.queryTimeoutSeconds;
+            const net::ScuOptions options = queryOptions(dicom_);
             outcome = net::retrieve(
                 peer->peer, {request.studyUid, request.seriesUid}, how, options,
                 [this, &name](const net::RetrieveProgress& p) {

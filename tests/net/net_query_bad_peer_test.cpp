@@ -14,6 +14,7 @@
 #include <dcmtk/dcmdata/dcuid.h>
 #include <dcmtk/dcmnet/scp.h>
 #include <gtest/gtest.h>
+#include <stdexcept>
 #include <thread>
 
 namespace steerseg::test {
@@ -69,7 +70,13 @@ class MisbehavingPacs : public DcmSCP {
         addPresentationContext(UID_GETStudyRootQueryRetrieveInformationModel, xfers);
         // The requestor of a C-GET plays the Storage SCP for the images that come back.
         addPresentationContext(UID_CTImageStorage, xfers, ASC_SC_ROLE_SCP);
-        thread_ = std::thread([this] { listen(); });
+        // Listening before the constructor returns: a client of the test must not race the
+        // thread to the port.
+        if (openListenPort().bad()) {
+            throw std::runtime_error("the misbehaving PACS cannot listen on port " +
+                                     std::to_string(port_));
+        }
+        thread_ = std::thread([this] { acceptAssociations(); });
     }
     ~MisbehavingPacs() override {
         stop_ = true;
