@@ -20,8 +20,10 @@
 #   scan: bench/kiosk/resample_nifti.py makes one from a real MR (--large does, into DIR).
 #
 #   tools/bench-kiosk.sh [--small] [--sizes WxH[,WxH...]] [--out DIR] [--bin STEERSEG]
-#                        [--scan SCAN --seed I,J,K | --large]
+#                        [--scan SCAN --seed I,J,K [--scan-only] | --large]
 #
+# --scan-only: the scan's figures alone (at the first size), not the built-in sample's: a run
+# over many scans spends its time on them.
 # --small: 800x500 and a 3 s + 2 s session (CI runs it through tools/bench-gpu.sh --small).
 # Without --bin it builds build/release/steerseg (Release) if it is missing. Latency runs from
 # the poll that brought an event to the end of the present of the frame that drew its effect
@@ -36,6 +38,7 @@ bin=""
 scan=""
 scan_seed=""
 large=0
+scan_only=0
 while (($#)); do
   case $1 in
     --small) small=1 ;;
@@ -45,6 +48,7 @@ while (($#)); do
     --scan) scan=${2:?--scan needs a scan}; shift ;;
     --seed) scan_seed=${2:?--seed needs I,J,K}; shift ;;
     --large) large=1 ;;
+    --scan-only) scan_only=1 ;;
     -h|--help) sed -n '2,28p' "$0"; exit 0 ;;
     *) echo "bench-kiosk: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
@@ -74,6 +78,10 @@ if ((large)); then
 fi
 if [[ -n $scan && ! $scan_seed =~ ^[0-9]+,[0-9]+,[0-9]+$ ]]; then
   echo "bench-kiosk: --scan needs --seed I,J,K (voxel indices)" >&2
+  exit 2
+fi
+if ((scan_only)) && [[ -z $scan ]]; then
+  echo "bench-kiosk: --scan-only goes with --scan SCAN --seed I,J,K (or --large)" >&2
   exit 2
 fi
 IFS=',' read -r -a size_list <<<"$sizes"
@@ -125,13 +133,15 @@ run_kiosk() {
   fi
 }
 
-for s in "${size_list[@]}"; do
-  run_kiosk "$s" "$session" "$s"
-done
+if ((!scan_only)); then
+  for s in "${size_list[@]}"; do
+    run_kiosk "$s" "$session" "$s"
+  done
+fi
 
 # The ratios (see the top): the kiosk and its parts on the same scan, in this run.
 ratios=""
-if ((!small)); then
+if ((!small && !scan_only)); then
   s=${size_list[0]}
   for name in untouched still; do
     run_kiosk "$name" "$root/bench/kiosk/$name.session" "$s"
@@ -186,14 +196,14 @@ load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 
 planned=$( ((small)) && echo 3 || echo 10)
 python3 - "$out" "$renderer" "$small" "$planned" "$(($(date +%s) - started))" "$load_before" "$load_after" \
-  "$ratios" "$scan" "$scan_files" "${size_list[@]}" <<'EOF'
+  "$ratios" "$scan" "$scan_files" "$scan_only" "${size_list[@]}" <<'EOF'
 import json, pathlib, sys
 out, renderer, small, planned = pathlib.Path(sys.argv[1]), sys.argv[2], sys.argv[3] == "1", float(sys.argv[4])
 seconds, load_before, load_after, ratio_files = int(sys.argv[5]), sys.argv[6], sys.argv[7], sys.argv[8].split()
-scan, scan_files, sizes = sys.argv[9], sys.argv[10].split(), sys.argv[11:]
+scan, scan_files, scan_only, sizes = sys.argv[9], sys.argv[10].split(), sys.argv[11] == "1", sys.argv[12:]
 software = any(s in renderer for s in ("llvmpipe", "softpipe", "SwiftShader")) or not renderer
 rows = []
-for size in sizes:
+for size in [] if scan_only else sizes:
     st = json.loads((out / f"stats-{size}.json").read_text())
     ev, idle, lat = st["frames_evolving"], st["frames_idle"], st["latency"]
     if ev["count"] == 0 or idle["count"] == 0 or lat["count"] == 0:
@@ -257,9 +267,10 @@ def pct(p):
     return f"{p['p50_ms']:g} / {p['p90_ms']:g} / {p['p99_ms']:g}"
 md = ["## The kiosk's frame loop", "",
       f"Renderer {renderer or 'unknown'}; {'short session (--small); ' if small else ''}{seconds} s in all; "
-      f"load average {load_before} before, {load_after} after.", "",
-      "| size | renderer | frame ms evolving p50 / p90 / p99 | frame ms idle p50 / p90 / p99 | input to screen ms p50 / p90 / p99 | iterations/s evolving | Mpixels/s drawn | time: solver / draw |",
-      "|---|---|---|---|---|---|---|---|"]
+      f"load average {load_before} before, {load_after} after."]
+if rows:
+    md += ["", "| size | renderer | frame ms evolving p50 / p90 / p99 | frame ms idle p50 / p90 / p99 | input to screen ms p50 / p90 / p99 | iterations/s evolving | Mpixels/s drawn | time: solver / draw |",
+           "|---|---|---|---|---|---|---|---|"]
 for r in rows:
     md.append(f"| {r['size']} | {r['renderer']} | {pct(r['frames_evolving'])} | {pct(r['frames_idle'])} | "
               f"{pct(r['latency'])} | {r['iterations_per_second']:g} | {r['megapixels_per_second']:g} | "
