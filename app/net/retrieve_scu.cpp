@@ -27,8 +27,8 @@ class RetrieveScu : public PeerScu {
     RetrieveScu(const DicomPeer& peer, const ScuOptions& options, const RetrieveRequest& request,
                 const RetrieveOptions& retrieve, const RetrieveReport& report,
                 const RetrieveCancel& cancel)
-        : PeerScu(peer, options), request_(request), retrieve_(retrieve), report_(report),
-          cancel_(cancel), shared_([this](const std::string& line) {
+        : PeerScu(peer, options), request_(request), report_(report), cancel_(cancel),
+          shared_([this](const std::string& line) {
               if (line.rfind("refused", 0) == 0) {
                   lastRefusal_ = line;
               }
@@ -220,7 +220,6 @@ class RetrieveScu : public PeerScu {
     }
 
     const RetrieveRequest& request_;
-    const RetrieveOptions& retrieve_;
     const RetrieveReport& report_;
     const RetrieveCancel& cancel_;
     StoreShared shared_;

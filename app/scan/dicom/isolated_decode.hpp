@@ -4,7 +4,9 @@
 // codec assert and abort the whole process (fuzz_dicom keeps finding new ones in the JPEG,
 // JPEG-LS and JPEG 2000 codecs). A crash on a bad file is not acceptable on the console, so
 // compressed pixel data is decoded in a forked child: the child writes into a shared mapping and
-// exits; if it dies instead, the parent reports the file as malformed and carries on.
+// exits; if it dies instead, the parent reports the file as malformed and carries on. (An
+// AddressSanitizer build with other threads running decodes in-process: its allocator is not
+// fork-safe; isolated_decode.cpp says why.)
 #include <cstddef>
 #include <filesystem>
 #include <functional>
