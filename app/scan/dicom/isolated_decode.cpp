@@ -61,8 +61,8 @@ class SharedBuffer {
 // under ASan hung so at the first JPEG 2000 frame of a series, its GL driver's and DICOM node's
 // threads allocating beside the load; glibc's malloc, which the product uses, is fork-safe).
 // So a sanitizer build with other threads running decodes in-process (the readers' tests too:
-// OpenImageIO's pool has started its threads by then); one thread alone (the fuzzers) forks as
-// the product does.
+// log4cplus, which DCMTK's logging loads, has started its pool's threads by then); one thread
+// alone (the fuzzers) forks as the product does.
 bool forkIsSafe() {
 #if defined(__SANITIZE_ADDRESS__)
     std::error_code ec;
