@@ -164,6 +164,9 @@ struct PanelModel {
 PanelModel buildPanelModel(const workflow::Status& status, const std::vector<std::string>& scans,
                            const PanelEditors& editors = {});
 
+// The structures section of the panel (PanelModel::structures and newStructures).
+void addStructures(const workflow::Status& st, const PanelEditors& open, PanelModel& m);
+
 // The PACS section of the panel (PanelModel::pacs): `loadScreen` where the scans are listed.
 // `peer`: the form's choice among view.peers ("" or one no longer offered: the first).
 std::optional<PacsPanel> buildPacsPanel(const workflow::PacsView& view, const model::PacsKeys& keys,
