@@ -14,7 +14,7 @@ packages=(
   libgpiod-dev libhidapi-dev libinput-dev libudev-dev libsystemd-dev
   libdcmtk-dev dicom3tools python3-pydicom python3-skimage python3-nibabel
   orthanc dcmtk openssl
-  dpkg-dev fakeroot lintian systemd
+  dpkg-dev fakeroot lintian systemd xz-utils
   libtomlplusplus-dev nlohmann-json3-dev libimgui-dev fonts-dejavu-core libboost-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
