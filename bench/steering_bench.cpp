@@ -4,14 +4,15 @@
 // baseline: the same robot with each click painted as a sphere of the same radius, no solver.
 //   steering_bench --input SCAN --reference LABEL [--reference-label N] [--clicks N]
 //                  [--paint-only] [--max-iterations N] [--config FILE] [--nsd-mm T]
-//                  --report R.json
+//                  [--masks DIR] --report R.json
 // The report: {"clicks": [...], "baseline": {"clicks": [...]}, "summary": {...}}, one entry a
 // click (0: the initial prompt) with its kind, voxel, radius, Dice, normalised surface Dice,
 // seconds from the click to the solver's stop and to its first visible change (and where the
 // latter went: undo snapshots, the edit, the speed's training, the volume count), stop reason.
 // The summary: Dice initially and after 5 and 10, its AUC over 6 steps, and the interactive
 // challenge's own scores after 5 corrections (dsc_auc, nsd_auc, final_dsc, final_nsd,
-// total_seconds; bench::challengeScores).
+// total_seconds; bench::challengeScores). --masks writes the level set's mask after each step
+// as DIR/stepNN.u8 (one byte a voxel, the scan's storage order), to see what a step moved.
 #include "config/config_loader.hpp"
 #include "core/mask_overlap.hpp"
 #include "engine/click_session.hpp"
@@ -47,6 +48,7 @@ struct Options {
     std::string config;
     double nsdMm = 2.0;
     std::string report;
+    std::string masks;
 };
 
 Options parse(int argc, char** argv) {
@@ -77,6 +79,8 @@ Options parse(int argc, char** argv) {
             o.nsdMm = std::stod(value);
         } else if (name == "--report") {
             o.report = value;
+        } else if (name == "--masks") {
+            o.masks = value;
         } else {
             throw std::invalid_argument("unknown option " + name);
         }
@@ -262,7 +266,7 @@ int run(const Options& o) {
         std::fprintf(stderr, "level set:\n");
         Json steered = robot(
             grid, label, o, maxRadius, box,
-            [&](int, const bench::RobotClick* c, double radius, Json& extra) {
+            [&](int step, const bench::RobotClick* c, double radius, Json& extra) {
                 const model::Action prompt =
                     c == nullptr
                         ? model::Action(model::SetBox{model::Box{box->lo, box->hi}})
@@ -297,7 +301,13 @@ int run(const Options& o) {
                     }
                     extra["box_inside"] = std::move(inside);
                 }
-                return session.mask();
+                std::vector<std::uint8_t> mask = session.mask();
+                if (!o.masks.empty()) {
+                    char name[32];
+                    std::snprintf(name, sizeof name, "/step%02d.u8", step);
+                    files::writeFileAtomically(o.masks + name, {std::as_bytes(std::span(mask))});
+                }
+                return mask;
             });
         report["clicks"] = steered["clicks"];
         report["summary"] = steered["summary"];
