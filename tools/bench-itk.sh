@@ -13,7 +13,8 @@
 #                      (tools/make-noise-volumes.py: uniform, white noise, smoothed noise)
 #   BENCH_CONVERGE     1 (default) runs steerseg to convergence; 0 runs it only for ITK's
 #                      converged time (a front that leaks may not converge within the cap)
-#   STEERSEG_BINARY    a steerseg binary to compare instead of this checkout's build
+#   STEERSEG_BINARY    a steerseg binary to compare instead of this checkout's Release build
+#                      (which is then not built)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -27,8 +28,9 @@ cap=20000
 tools/install-deps.sh --bench >&2
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSTEERSEG_BENCH_ITK=ON \
   -DSTEERSEG_BUILD_TESTS=OFF >/dev/null
-cmake --build "$build" -j "${BENCH_JOBS:-2}" --target steerseg steerseg-itk-levelset \
-  steerseg-mask-dice steerseg-mask-stats >&2
+targets=(steerseg-itk-levelset steerseg-mask-dice steerseg-mask-stats)
+[[ -n ${STEERSEG_BINARY:-} ]] || targets+=(steerseg) # a binary given is not built here
+cmake --build "$build" -j "${BENCH_JOBS:-2}" --target "${targets[@]}" >&2
 steerseg=${STEERSEG_BINARY:-$build/steerseg}
 itk=$build/bench/steerseg-itk-levelset
 dice=$build/bench/steerseg-mask-dice
@@ -36,7 +38,9 @@ stats=$build/bench/steerseg-mask-stats
 mkdir -p "$out"
 
 have_segment=0
-if "$steerseg" --help 2>&1 | grep -q '^  segment'; then
+# The help read whole first: under pipefail, grep -q leaving at its first match ends steerseg
+# with SIGPIPE while it still writes, and the pipeline then fails as if no segment were found.
+if [[ $'\n'$("$steerseg" --help 2>&1 || true) == *$'\n  segment '* ]]; then
   have_segment=1
 fi
 
@@ -75,7 +79,8 @@ for name in $cases; do
 
   # Parameters from the expert mask: T = mean, eps = std of the intensities inside it; the seed
   # sits at the mask voxel farthest from the mask's border (the centroid of a curved tumour can
-  # fall outside it), radius clamp(depth / 2, 1, 3) voxels.
+  # fall outside it), radius clamp(depth / 2, 1, 3) voxels along the finest axis, round in mm on
+  # both sides (the product's spheres; steerseg-itk-levelset --spheres mm, its default).
   "$stats" "$scan" "$expert" >"$dir/expert-stats.json"
   T=$(json "$dir/expert-stats.json" mean)
   eps=$(json "$dir/expert-stats.json" std)

@@ -21,7 +21,8 @@ using namespace steerseg::itkbench;
 constexpr const char* kUsage =
     "steerseg-itk-levelset --input PATH --seed i,j,k,r [--seed ...] --T v --eps v --alpha a\n"
     "    (--iterations N | --time t [--max-iterations N] | --converge [--max-iterations N]\n"
-    "    [--rms v]) [--interpolate-surface] --output MASK.nii.gz [--report REPORT.json]";
+    "    [--rms v]) [--interpolate-surface] [--spheres mm|voxels] --output MASK.nii.gz\n"
+    "    [--report REPORT.json]";
 
 constexpr long long kDefaultConvergeCap = 20000;
 
@@ -55,13 +56,19 @@ LevelSetParams parseParams(const cli::Args& args) {
         throw cli::UsageError("--max-iterations must be >= 1");
     }
     p.interpolateSurface = args.flag("interpolate-surface");
+    // mm (the default): the seeds are the product's spheres, as `steerseg segment` draws them.
+    const std::string spheres = args.value("spheres").value_or("mm");
+    if (spheres != "mm" && spheres != "voxels") {
+        throw cli::UsageError("--spheres is mm or voxels, not '" + spheres + "'");
+    }
+    p.spheres = spheres == "mm" ? SeedSpheres::Millimetres : SeedSpheres::Voxels;
     return p;
 }
 
 int run(const std::vector<std::string>& words) {
     const cli::Args args(words,
                          {"input", "seed", "T", "eps", "alpha", "iterations", "time",
-                          "max-iterations", "rms", "output", "report"},
+                          "max-iterations", "rms", "spheres", "output", "report"},
                          {"converge", "interpolate-surface"});
     if (!args.positional().empty()) {
         throw cli::UsageError("unexpected argument '" + args.positional().front() + "'");
@@ -98,6 +105,7 @@ int run(const std::vector<std::string>& words) {
         static_cast<double>(r.insideVoxels) * spacing[0] * spacing[1] * spacing[2] / 1000.0;
     j["threads"] = r.threads;
     j["interpolate_surface"] = params.interpolateSurface;
+    j["spheres"] = params.spheres == SeedSpheres::Millimetres ? "mm" : "voxels";
     const std::string text = j.dump(2);
     std::printf("%s\n", text.c_str());
     if (const auto reportPath = args.value("report")) {

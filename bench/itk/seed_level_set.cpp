@@ -1,9 +1,10 @@
 #include "seed_level_set.hpp"
 
 #include "cli/args.hpp"
+#include "model/level_set_params.hpp"
 
 #include <algorithm>
-#include <cmath>
+#include <glm/glm.hpp>
 #include <itkImageRegionIteratorWithIndex.h>
 #include <limits>
 #include <stdexcept>
@@ -18,7 +19,8 @@ Seed parseSeed(const std::string& text) {
     return Seed{v[0], v[1], v[2], v[3]};
 }
 
-FloatImage::Pointer seedLevelSet(const itk::ImageBase<3>* grid, std::span<const Seed> seeds) {
+FloatImage::Pointer seedLevelSet(const itk::ImageBase<3>* grid, std::span<const Seed> seeds,
+                                 SeedSpheres spheres) {
     if (seeds.empty()) {
         throw std::runtime_error("at least one seed is needed");
     }
@@ -33,6 +35,10 @@ FloatImage::Pointer seedLevelSet(const itk::ImageBase<3>* grid, std::span<const 
             }
         }
     }
+    const auto spacing = grid->GetSpacing();
+    const glm::vec3 scale = spheres == SeedSpheres::Voxels
+                                ? glm::vec3(1.0F)
+                                : model::sphereScale({spacing[0], spacing[1], spacing[2]});
     auto phi = FloatImage::New();
     phi->CopyInformation(grid);
     phi->SetRegions(grid->GetLargestPossibleRegion());
@@ -40,14 +46,16 @@ FloatImage::Pointer seedLevelSet(const itk::ImageBase<3>* grid, std::span<const 
     itk::ImageRegionIteratorWithIndex<FloatImage> it(phi, phi->GetLargestPossibleRegion());
     for (it.GoToBegin(); !it.IsAtEnd(); ++it) {
         const auto idx = it.GetIndex();
-        double d = std::numeric_limits<double>::max();
+        const glm::vec3 voxel(static_cast<float>(idx[0]), static_cast<float>(idx[1]),
+                              static_cast<float>(idx[2]));
+        float d = std::numeric_limits<float>::max();
         for (const Seed& s : seeds) {
-            const double di = static_cast<double>(idx[0]) - s.i;
-            const double dj = static_cast<double>(idx[1]) - s.j;
-            const double dk = static_cast<double>(idx[2]) - s.k;
-            d = std::min(d, std::sqrt(di * di + dj * dj + dk * dk) - s.r);
+            const model::Sphere sphere{glm::vec3(static_cast<float>(s.i), static_cast<float>(s.j),
+                                                 static_cast<float>(s.k)),
+                                       static_cast<float>(s.r)};
+            d = std::min(d, model::sphereDistance(sphere, voxel, scale));
         }
-        it.Set(static_cast<float>(d));
+        it.Set(d);
     }
     return phi;
 }

@@ -60,7 +60,7 @@ MaskImage::Pointer insideMask(const FloatImage* phi, long long& insideVoxels) {
 LevelSetResult runThresholdLevelSet(const FloatImage* scan, std::span<const Seed> seeds,
                                     const LevelSetParams& params) {
     checkParams(params);
-    const FloatImage::Pointer initial = seedLevelSet(scan, seeds);
+    const FloatImage::Pointer initial = seedLevelSet(scan, seeds, params.spheres);
 
     auto filter = TimedThresholdLevelSetFilter::New();
     filter->SetInput(initial);

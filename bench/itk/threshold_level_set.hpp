@@ -19,6 +19,7 @@ struct LevelSetParams {
     double time = 0.0;               // Time: evolve until the summed time step reaches this
     double maxRmsChange = 0.02;      // Converge: ITK's MaximumRMSError
     bool interpolateSurface = false; // ITK's InterpolateSurfaceLocation (speed at the zero set)
+    SeedSpheres spheres = SeedSpheres::Millimetres; // what the seeds' radii measure
 };
 
 struct LevelSetResult {

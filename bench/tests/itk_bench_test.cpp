@@ -1,6 +1,7 @@
 #include "cli/args.hpp"
 #include "mask_dice.hpp"
 #include "mask_stats.hpp"
+#include "model/level_set_params.hpp"
 #include "seed_level_set.hpp"
 #include "synthetic_ball.hpp"
 #include "threshold_level_set.hpp"
@@ -17,13 +18,30 @@ using test::thresholdMask;
 TEST(ItkSeedLevelSet, SignedDistanceToUnionOfSpheresNegativeInside) {
     const FloatImage::Pointer grid = syntheticBall(5.0, 1.0F, 0.0F);
     const std::vector<Seed> seeds{{8, 8, 8, 3}, {20, 8, 8, 2}};
-    const FloatImage::Pointer phi = seedLevelSet(grid, seeds);
+    const FloatImage::Pointer phi = seedLevelSet(grid, seeds, SeedSpheres::Voxels);
     EXPECT_FLOAT_EQ(phi->GetPixel({{8, 8, 8}}), -3.0F);
     EXPECT_FLOAT_EQ(phi->GetPixel({{11, 8, 8}}), 0.0F);
     EXPECT_FLOAT_EQ(phi->GetPixel({{20, 8, 8}}), -2.0F);
     EXPECT_FLOAT_EQ(phi->GetPixel({{14, 8, 8}}), 3.0F); // nearer the first sphere
     // Radius in voxels whatever the spacing (2 mm along i here).
     EXPECT_FLOAT_EQ(phi->GetPixel({{8, 11, 8}}), 0.0F);
+}
+
+TEST(ItkSeedLevelSet, SpheresRoundInMillimetresAsTheProductDrawsThem) {
+    // 2 mm along i, 1 mm along j and k: a radius of 3 reaches 3 voxels along j, 1.5 along i.
+    const FloatImage::Pointer grid = syntheticBall(5.0, 1.0F, 0.0F);
+    const std::vector<Seed> seeds{{8, 8, 8, 3}};
+    const FloatImage::Pointer phi = seedLevelSet(grid, seeds);
+    EXPECT_FLOAT_EQ(phi->GetPixel({{8, 11, 8}}), 0.0F);
+    EXPECT_LT(phi->GetPixel({{9, 8, 8}}), 0.0F);
+    EXPECT_GT(phi->GetPixel({{10, 8, 8}}), 0.0F);
+    // The product's own distance, voxel for voxel.
+    const model::Sphere sphere{glm::vec3(8.0F), 3.0F};
+    const glm::vec3 scale = model::sphereScale({2.0, 1.0, 1.0});
+    for (const glm::ivec3 v : {glm::ivec3(10, 8, 8), glm::ivec3(9, 10, 7), glm::ivec3(12, 3, 9)}) {
+        EXPECT_FLOAT_EQ(phi->GetPixel({{v.x, v.y, v.z}}),
+                        model::sphereDistance(sphere, glm::vec3(v), scale));
+    }
 }
 
 TEST(ItkSeedLevelSet, RejectsBadSeeds) {
