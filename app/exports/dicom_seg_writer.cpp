@@ -5,10 +5,10 @@
 
 #include "exports/dicom_file_bytes.hpp"
 #include "exports/display_color.hpp"
+#include "exports/seg_frames.hpp"
 #include "files/file_write.hpp"
 #include "scan/scan_reader.hpp"
 
-#include <algorithm>
 #include <cinttypes>
 #include <cstdio>
 #include <dcmtk/dcmdata/dcdeftag.h>
@@ -217,50 +217,6 @@ void addReferences(const std::filesystem::path& path, DcmSegmentation& seg,
     }
 }
 
-// One frame: a segment (its index in the list) on a slice.
-struct Frame {
-    std::size_t segment = 0;
-    int k = 0;
-};
-
-// The slices that hold segmented voxels of one segment, ascending.
-std::vector<int> segmentedSlices(const Geometry& g, std::span<const std::uint8_t> mask) {
-    const std::size_t plane =
-        static_cast<std::size_t>(g.dims.x) * static_cast<std::size_t>(g.dims.y);
-    std::vector<int> slices;
-    for (int k = 0; k < g.dims.z; ++k) {
-        const auto slab = mask.subspan(static_cast<std::size_t>(k) * plane, plane);
-        if (std::any_of(slab.begin(), slab.end(), [](std::uint8_t v) { return v != 0; })) {
-            slices.push_back(k);
-        }
-    }
-    return slices;
-}
-
-// 1-bit frames packed back to back, least significant bit first, with no padding between
-// frames (PS3.5 8.1.1), the whole padded to an even length. DCMTK 3.6.7's dcmseg packs frames
-// whose pixel count is not a multiple of 8 wrongly (the independent reader in the tests caught
-// it), so the Pixel Data it wrote is replaced by this.
-std::vector<Uint8> packFrames(const Geometry& g, std::span<const DicomSegment> segments,
-                              const std::vector<Frame>& frames) {
-    const std::size_t plane =
-        static_cast<std::size_t>(g.dims.x) * static_cast<std::size_t>(g.dims.y);
-    const std::size_t bits = plane * frames.size();
-    std::vector<Uint8> packed((bits + 15) / 16 * 2, 0);
-    std::size_t bit = 0;
-    for (const Frame& f : frames) {
-        const auto slab =
-            segments[f.segment].mask.subspan(static_cast<std::size_t>(f.k) * plane, plane);
-        for (const std::uint8_t v : slab) {
-            if (v != 0) {
-                packed[bit / 8] = static_cast<Uint8>(packed[bit / 8] | (1U << (bit % 8)));
-            }
-            ++bit;
-        }
-    }
-    return packed;
-}
-
 std::unique_ptr<DcmSegmentation>
 buildSegmentation(const std::filesystem::path& path, const Geometry& g,
                   std::span<const DicomSegment> segments, const std::vector<Frame>& frames,
@@ -397,7 +353,7 @@ SegInstance writeDicomSeg(const std::filesystem::path& path, const Geometry& geo
         DcmDataset& dataset = *file.getDataset();
         check(path, seg->writeDataset(dataset), "building the data set");
         addReferencedFrameNumbers(path, dataset, frames, *source);
-        const std::vector<Uint8> pixels = packFrames(geometry, segments, frames);
+        const std::vector<std::uint8_t> pixels = packFrames(geometry, segments, frames);
         check(path,
               dataset.putAndInsertUint8Array(DCM_PixelData, pixels.data(),
                                              static_cast<unsigned long>(pixels.size())),
