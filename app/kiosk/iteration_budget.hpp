@@ -24,6 +24,10 @@ class IterationBudget {
     // frames short while the operator acts, unless min = max (a fixed count).
     [[nodiscard]] int forSlice(double seconds) const;
     void record(int iterations, double seconds);
+    // A run starts: the next slice starts from the minimum and doubles (forSlice), so that
+    // its first picture comes within an iteration or two, not after a whole slice sized by
+    // the last run's count.
+    void restartSlices() { lastCount_ = 0; }
     [[nodiscard]] double secondsPerIteration() const { return perIteration_; }
 
   private:

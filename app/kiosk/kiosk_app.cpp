@@ -59,7 +59,12 @@ bool Kiosk::step() {
     if (hadInput) {
         pacing_.input(now_);
     }
+    const bool wasEvolving = flow_.state() == model::State::Evolving;
     applyActions();
+    if (!wasEvolving && flow_.state() == model::State::Evolving) {
+        pacing_.runStarted();
+        budget_.restartSlices();
+    }
     node_.frame(flow_.status(), audit_, err_);
     reportAudit();
     stepSolver();

@@ -28,6 +28,11 @@ class OperatorPacing {
 
     // An input (touch, knob, key, a script's step) at `now` (seconds).
     void input(double now) { lastInput_ = now; }
+    // The operator started a run (Run, a correction): the press hands the machine to the
+    // solver, so the inputs so far hold no frame to the budget. A short run otherwise spent
+    // its first `quietAfter` in budget frames, half of it drawing (a 3 s run on llvmpipe lost
+    // a tenth, a 0.1 s one on a GPU half); the next input turns the split back as any does.
+    void runStarted() { lastInput_ = kNever; }
     [[nodiscard]] bool quiet(double now) const;
     // The solver's time this frame while quiet; 0 while the operator acts (the frame budget's
     // share applies).
@@ -41,9 +46,10 @@ class OperatorPacing {
     [[nodiscard]] bool screenDue(double now, bool changed);
 
   private:
+    static constexpr double kNever = -1e30; // long enough ago for any quietAfter
     Settings settings_;
-    double lastInput_ = -1e30;
-    double lastScreen_ = -1e30;
+    double lastInput_ = kNever;
+    double lastScreen_ = kNever;
 };
 
 } // namespace steerseg::kiosk

@@ -153,6 +153,34 @@ TEST(OperatorPacing, QuietGivesTheSolverMostOfTheMachineAndInputTurnsItBack) {
     EXPECT_TRUE(pacing.quiet(now + 0.6));
 }
 
+// The press that starts a run hands the machine to the solver: no budget frames after it, and
+// the slices start small (the first picture at once) and double.
+TEST(OperatorPacing, StartingARunHandsTheMachineToTheSolverFromItsFirstSlice) {
+    kiosk::OperatorPacing pacing;
+    pacing.input(5.0);
+    EXPECT_FALSE(pacing.quiet(5.1));
+    pacing.runStarted();
+    EXPECT_TRUE(pacing.quiet(5.1));
+    EXPECT_DOUBLE_EQ(pacing.solverSlice(5.1), 0.5);
+    pacing.input(5.2); // the next touch turns the split back as any does
+    EXPECT_EQ(pacing.solverSlice(5.3), 0.0);
+
+    IterationBudget budget(0.5, 0.033, 1, 64);
+    budget.record(100, 0.4);               // the last run's slices: 100 iterations of 4 ms
+    const int fits = budget.forSlice(0.5); // 0.5 s at 4 ms, give or take the rounding
+    EXPECT_NEAR(fits, 125, 1);
+    budget.restartSlices();
+    std::vector<int> counts;
+    for (int k = 0; k < 9; ++k) {
+        counts.push_back(budget.forSlice(0.5));
+        budget.record(counts.back(), counts.back() * 0.004);
+    }
+    EXPECT_EQ(std::vector<int>(counts.begin(), counts.begin() + 7),
+              (std::vector<int>{1, 2, 4, 8, 16, 32, 64}));
+    EXPECT_NEAR(counts[7], fits, 1); // then what the slice fits, no more
+    EXPECT_NEAR(counts[8], fits, 1);
+}
+
 TEST(OperatorPacing, TilesGrowOnceQuietOrAwaitedAndTheScreenIsComposedWhenItChanges) {
     kiosk::OperatorPacing pacing;
     pacing.input(1.0);
