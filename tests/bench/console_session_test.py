@@ -8,27 +8,16 @@ Exit 77 (CTest's skip) without nibabel or scipy, but 1 (a failure) under
 STEERSEG_REQUIRE_DATA=1 or CI, where they must be installed (tools/install-deps.sh).
 """
 import math
-import os
 import sys
 import unittest
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "bench" / "steering"))
-
-try:
-    import numpy as np
-    import nibabel  # noqa: F401
-    import scipy  # noqa: F401
-except ImportError as missing:
-    if os.environ.get("STEERSEG_REQUIRE_DATA") == "1" or os.environ.get("CI"):
-        print(f"FAILED: {missing} (Debian: python3-nibabel python3-scipy, "
-              "tools/install-deps.sh)", file=sys.stderr)
-        sys.exit(1)
-    print(f"skipped: {missing} (Debian: python3-nibabel python3-scipy)")
-    sys.exit(77)
-
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from bench_python import require  # noqa: E402
+
+require(["numpy", "nibabel", "scipy"], "python3-nibabel python3-scipy")
+import numpy as np  # noqa: E402
 import console_session as session  # noqa: E402
 
 

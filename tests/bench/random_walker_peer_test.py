@@ -21,23 +21,12 @@ import tempfile
 import unittest
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "bench" / "steering"))
-
-try:
-    import numpy as np
-    import nibabel  # noqa: F401
-    import scipy  # noqa: F401
-    import skimage  # noqa: F401
-except ImportError as missing:
-    if os.environ.get("STEERSEG_REQUIRE_DATA") == "1" or os.environ.get("CI"):
-        print(f"FAILED: {missing} (Debian: python3-skimage python3-nibabel, "
-              "tools/install-deps.sh)", file=sys.stderr)
-        sys.exit(1)
-    print(f"skipped: {missing} (Debian: python3-skimage python3-nibabel)")
-    sys.exit(77)
-
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from bench_python import require  # noqa: E402
+
+require(["numpy", "nibabel", "scipy", "skimage"], "python3-skimage python3-nibabel")
+import numpy as np  # noqa: E402
 import random_walker_peer as peer  # noqa: E402
 
 STEERING_BENCH = None
