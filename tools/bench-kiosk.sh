@@ -49,7 +49,7 @@ while (($#)); do
     --seed) scan_seed=${2:?--seed needs I,J,K}; shift ;;
     --large) large=1 ;;
     --scan-only) scan_only=1 ;;
-    -h|--help) sed -n '2,28p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,/^set -euo/{/^set -euo/d;p}' "$0"; exit 0 ;;
     *) echo "bench-kiosk: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
