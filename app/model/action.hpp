@@ -52,7 +52,7 @@ struct LoadScan {
 };
 struct Probe { // statistics of a sphere -> T and eps (with the eps floor)
     glm::dvec3 voxel{0.0};
-    double radiusMm = 5.0;
+    double radiusMm = 0.0; // <= 0: the config's [probe] radius_mm
 };
 struct ApplyPreset {
     std::string name; // a tissue preset of the config

@@ -5,6 +5,7 @@
 #include "gpu/gl_counts.hpp"
 #include "session/session.hpp"
 #include "session/session_gpu.hpp"
+#include "speed/classifier_features_cpu.hpp"
 #include "speed/classifier_speed.hpp"
 #include "speed/edge_factor.hpp"
 #include "speed/smoothing.hpp"
@@ -85,6 +86,7 @@ void Session::setSpeed(const SpeedSettings& settings, const SpeedProgress& progr
         params.evaluation = speed::ClassifierEvaluation::OnDemand;
         params.placeReach = static_cast<float>(settings.placeReach);
         params.sphereScale = g.solver.sphereScale();
+        params.featureStride = speed::classifierFeatureStride(scan_.geometry().spacing);
         g.classifier.emplace(intensity, dims, examples(settings.inside), examples(settings.outside),
                              params, std::move(recycled), g.smoothed ? nullptr : &scan_);
         factor = g.classifier->texture();

@@ -47,7 +47,10 @@ void checkIntensityTexture(GLuint intensity, glm::ivec3 dims) {
 }
 
 std::vector<float> gatherClassifierFeatures(GLuint intensity, glm::ivec3 dims,
-                                            std::span<const glm::ivec3> voxels) {
+                                            std::span<const glm::ivec3> voxels, glm::ivec3 stride) {
+    if (glm::any(glm::lessThan(stride, glm::ivec3(1)))) {
+        throw std::invalid_argument("classifier features: a stride below one voxel");
+    }
     gpu::GlStateGuard guard;
     std::vector<float> features(voxels.size() * kClassifierFeatureCount);
     if (voxels.empty()) {
@@ -74,6 +77,8 @@ std::vector<float> gatherClassifierFeatures(GLuint intensity, glm::ivec3 dims,
     glActiveTexture(GL_TEXTURE0 + SPEED_SOURCE_UNIT);
     glBindTexture(GL_TEXTURE_3D, intensity);
     glUniform3i(glGetUniformLocation(program.id(), "classifierDims"), dims.x, dims.y, dims.z);
+    glUniform3i(glGetUniformLocation(program.id(), "classifierStride"), stride.x, stride.y,
+                stride.z);
     const GLint countAt = glGetUniformLocation(program.id(), "sampleCount");
     for (std::size_t first = 0; first < coords.size(); first += kMaxDispatchSamples) {
         const std::size_t count = std::min(kMaxDispatchSamples, coords.size() - first);

@@ -17,7 +17,9 @@ void checkIntensityTexture(GLuint intensity, glm::ivec3 dims);
 // One row of kClassifierFeatureCount values per voxel, in the order given. `intensity`: an R32F
 // 3D texture of `dims` (texelFetch only). Voxels must lie in the scan. The rows start as NaN, so
 // a row the GPU did not write cannot pass for features: throws GpuNumericsError naming how many.
+// The windows step `stride` voxels (classifierFeatureStride).
 std::vector<float> gatherClassifierFeatures(GLuint intensity, glm::ivec3 dims,
-                                            std::span<const glm::ivec3> voxels);
+                                            std::span<const glm::ivec3> voxels,
+                                            glm::ivec3 stride = glm::ivec3(1));
 
 } // namespace steerseg::speed

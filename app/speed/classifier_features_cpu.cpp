@@ -1,5 +1,6 @@
 #include "speed/classifier_features_cpu.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -8,10 +9,13 @@ namespace steerseg::speed {
 
 namespace {
 
+constexpr double kMaxFeatureStride = 16.0;
+
 // classifierFeatures() of classifier_features.glsl, statement for statement: the same sums in
 // the same order, float throughout (a double here would differ from every GPU's answer).
 template <typename Fetch>
-void featuresAt(const Fetch& fetchLinear, glm::ivec3 dims, glm::ivec3 v, float* f) {
+void featuresAt(const Fetch& fetchLinear, glm::ivec3 dims, glm::ivec3 stride, glm::ivec3 v,
+                float* f) {
     const auto fetch = [&](glm::ivec3 p) {
         const glm::ivec3 c = glm::clamp(p, glm::ivec3(0), dims - 1);
         return fetchLinear(linearIndex(dims, c.x, c.y, c.z));
@@ -26,7 +30,7 @@ void featuresAt(const Fetch& fetchLinear, glm::ivec3 dims, glm::ivec3 v, float* 
         for (int dy = -2; dy <= 2; ++dy) {
             for (int dx = -2; dx <= 2; ++dx) {
                 const glm::ivec3 a = glm::abs(glm::ivec3(dx, dy, dz));
-                const float d = fetch(v + glm::ivec3(dx, dy, dz)) - centre;
+                const float d = fetch(v + glm::ivec3(dx, dy, dz) * stride) - centre;
                 s5 += d;
                 q5 += d * d;
                 if (a.x <= 1 && a.y <= 1 && a.z <= 1) {
@@ -50,7 +54,7 @@ void featuresAt(const Fetch& fetchLinear, glm::ivec3 dims, glm::ivec3 v, float* 
     for (int dz = -4; dz <= 4; dz += 2) {
         for (int dy = -4; dy <= 4; dy += 2) {
             for (int dx = -4; dx <= 4; dx += 2) {
-                const float d = fetch(v + glm::ivec3(dx, dy, dz)) - centre;
+                const float d = fetch(v + glm::ivec3(dx, dy, dz) * stride) - centre;
                 s9 += d;
                 q9 += d * d;
             }
@@ -72,32 +76,47 @@ void featuresAt(const Fetch& fetchLinear, glm::ivec3 dims, glm::ivec3 v, float* 
 }
 
 template <typename Fetch>
-std::vector<float> featuresOf(const Fetch& fetchLinear, glm::ivec3 dims,
+std::vector<float> featuresOf(const Fetch& fetchLinear, glm::ivec3 dims, glm::ivec3 stride,
                               std::span<const glm::ivec3> voxels) {
+    if (glm::any(glm::lessThan(stride, glm::ivec3(1)))) {
+        throw std::invalid_argument("classifier features: a stride below one voxel");
+    }
     std::vector<float> out(voxels.size() * kClassifierFeatureCount);
     for (std::size_t n = 0; n < voxels.size(); ++n) {
         const glm::ivec3 v = voxels[n];
         if (glm::any(glm::lessThan(v, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(v, dims))) {
             throw std::invalid_argument("classifier speed: a sample voxel lies outside the scan");
         }
-        featuresAt(fetchLinear, dims, v, out.data() + n * kClassifierFeatureCount);
+        featuresAt(fetchLinear, dims, stride, v, out.data() + n * kClassifierFeatureCount);
     }
     return out;
 }
 
 } // namespace
 
+glm::ivec3 classifierFeatureStride(const glm::dvec3& spacing) {
+    glm::ivec3 stride(1);
+    for (int a = 0; a < 3; ++a) {
+        const double steps = kClassifierFeatureStepMm / spacing[a];
+        if (std::isfinite(steps) && steps > 0.0) {
+            stride[a] = static_cast<int>(std::clamp(std::round(steps), 1.0, kMaxFeatureStride));
+        }
+    }
+    return stride;
+}
+
 std::vector<float> cpuClassifierFeatures(std::span<const float> intensities, glm::ivec3 dims,
-                                         std::span<const glm::ivec3> voxels) {
+                                         std::span<const glm::ivec3> voxels, glm::ivec3 stride) {
     if (glm::any(glm::lessThan(dims, glm::ivec3(1))) ||
         intensities.size() != static_cast<std::size_t>(dims.x) * static_cast<std::size_t>(dims.y) *
                                   static_cast<std::size_t>(dims.z)) {
         throw std::invalid_argument("classifier features: the intensities do not fill the scan");
     }
-    return featuresOf([&](std::size_t n) { return intensities[n]; }, dims, voxels);
+    return featuresOf([&](std::size_t n) { return intensities[n]; }, dims, stride, voxels);
 }
 
-std::vector<float> cpuClassifierFeatures(const Volume& scan, std::span<const glm::ivec3> voxels) {
+std::vector<float> cpuClassifierFeatures(const Volume& scan, std::span<const glm::ivec3> voxels,
+                                         glm::ivec3 stride) {
     // The stored type chosen once, not at each of the 250 fetches a sample makes: the value is
     // Volume::realAt's, as gpu::ScanTexture uploads it.
     const Rescale r = scan.rescale();
@@ -106,7 +125,7 @@ std::vector<float> cpuClassifierFeatures(const Volume& scan, std::span<const glm
             [&](std::size_t n) {
                 return static_cast<float>(r.apply(static_cast<double>(stored[n])));
             },
-            scan.dims(), voxels);
+            scan.dims(), stride, voxels);
     };
     switch (scan.type()) {
     case VoxelType::UInt8:

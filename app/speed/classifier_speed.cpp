@@ -54,7 +54,8 @@ static_assert(kPlaceVoteCell == CLASSIFIER_PLACE_CELL);
 ClassifierSpeed::ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<const Example> inside,
                                  std::span<const Example> outside, const ClassifierParams& params,
                                  gpu::Texture recycled, const Volume* hostScan)
-    : dims_(dims), maxDepth_(params.maxDepth), evaluation_(params.evaluation) {
+    : dims_(dims), stride_(params.featureStride), maxDepth_(params.maxDepth),
+      evaluation_(params.evaluation) {
     const ForestParams forestSettings = forestParams(params);
     if (forestSettings.trees < 1 || forestSettings.trees > 256 || forestSettings.maxDepth < 1 ||
         forestSettings.maxDepth > 16) {
@@ -77,9 +78,9 @@ ClassifierSpeed::ClassifierSpeed(GLuint intensity, glm::ivec3 dims, std::span<co
                       params.sphereScale);
     std::vector<glm::ivec3> voxels = in.voxels;
     voxels.insert(voxels.end(), out.voxels.begin(), out.voxels.end());
-    const std::vector<float> features = hostScan != nullptr
-                                            ? cpuClassifierFeatures(*hostScan, voxels)
-                                            : gatherClassifierFeatures(intensity, dims, voxels);
+    const std::vector<float> features =
+        hostScan != nullptr ? cpuClassifierFeatures(*hostScan, voxels, stride_)
+                            : gatherClassifierFeatures(intensity, dims, voxels, stride_);
     training_.featureSeconds = secondsSince(start);
     training_.insideSamples = in.voxels.size();
     training_.outsideSamples = out.voxels.size();
@@ -115,8 +116,10 @@ OnDemandForest ClassifierSpeed::onDemandForest() const {
 }
 
 OnDemandForest ClassifierSpeed::gpuForest() const {
-    return {nodes_.id(), roots_.id(), static_cast<int>(forest_.roots().size()), maxDepth_,
-            place_.id()};
+    OnDemandForest forest{nodes_.id(), roots_.id(), static_cast<int>(forest_.roots().size()),
+                          maxDepth_, place_.id()};
+    forest.stride = stride_;
+    return forest;
 }
 
 void bindClassifierForest(GLuint program, const OnDemandForest& forest, const glm::ivec3& dims) {
@@ -124,6 +127,8 @@ void bindClassifierForest(GLuint program, const OnDemandForest& forest, const gl
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFIER_ROOTS_BINDING, forest.roots);
     glProgramUniform3i(program, glGetUniformLocation(program, "classifierDims"), dims.x, dims.y,
                        dims.z);
+    glProgramUniform3i(program, glGetUniformLocation(program, "classifierStride"), forest.stride.x,
+                       forest.stride.y, forest.stride.z);
     glProgramUniform1i(program, glGetUniformLocation(program, "treeCount"), forest.trees);
     glProgramUniform1i(program, glGetUniformLocation(program, "maxDepth"), forest.maxDepth);
     glActiveTexture(GL_TEXTURE0 + CLASSIFIER_PLACE_UNIT);

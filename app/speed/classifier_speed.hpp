@@ -37,6 +37,8 @@ struct ClassifierParams {
     float placeReach = 3.0F;
     // What the examples' radii are measured in (model::sphereScale of the scan's spacing).
     glm::vec3 sphereScale{1.0F};
+    // The features' step in voxels per axis (classifierFeatureStride of the scan's spacing).
+    glm::ivec3 featureStride{1};
 };
 
 // What the training took and found; seconds of wall time, GPU work finished.
@@ -93,6 +95,7 @@ class ClassifierSpeed {
     void clear();
 
     glm::ivec3 dims_;
+    glm::ivec3 stride_;
     int maxDepth_;
     ClassifierEvaluation evaluation_;
     RandomForest forest_;

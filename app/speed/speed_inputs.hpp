@@ -3,6 +3,8 @@
 #include "gpu/gl.hpp"
 #include "model/speed_kind.hpp"
 
+#include <glm/glm.hpp>
+
 namespace steerseg::speed {
 
 // What the data term reads (shaders/speed/data_speed.glsl: the solver's passes, and the slice
@@ -21,7 +23,8 @@ struct OnDemandForest {
     GLuint roots = 0; // SSBO of each tree's root node index
     int trees = 0;
     int maxDepth = 0;
-    GLuint place = 0; // the place vote's 3D texture (speed/place_vote)
+    GLuint place = 0;     // the place vote's 3D texture (speed/place_vote)
+    glm::ivec3 stride{1}; // the features' step (classifierFeatureStride)
 };
 
 struct SpeedInputs {

@@ -8,7 +8,7 @@ against the label. Two builds given the same case run the same taps: a regressio
 them shows here without the scan it was seen on.
 
   console_session.py --bin STEERSEG --scan SCAN --label LABEL [--label-value N]
-                     [--seed-radius R] [--out DIR]
+                     [--seed-radius R] [--config FILE] [--out DIR]
 
 Prints one JSON line: dice, mask and label voxels, the taps, the seconds. Needs Debian's
 python3-nibabel and python3-scipy (/usr/bin/python3).
@@ -76,6 +76,8 @@ def main():
     ap.add_argument("--label-value", type=int)
     ap.add_argument("--seed-radius", type=float, help="voxels along the finest axis (default: "
                     "the brush)")
+    ap.add_argument("--config", help="a kiosk config layered over the defaults (the kiosk's "
+                    "--config)")
     ap.add_argument("--out", default="out/console-session")
     a = ap.parse_args()
     binary = str(Path(a.bin).resolve())
@@ -89,8 +91,11 @@ def main():
     script = out / "console.session"
     script.write_text(session_text(Path(a.scan).resolve(), centre, marks, a.seed_radius, export))
     start = time.monotonic()
-    run = subprocess.run([binary, "kiosk", "--platform", "offscreen", "--script", str(script),
-                          "--size", "1280x800", "--allow-root"], cwd=out,
+    command = [binary, "kiosk", "--platform", "offscreen", "--script", str(script), "--size",
+               "1280x800", "--allow-root"]
+    if a.config:
+        command += ["--config", str(Path(a.config).resolve())]
+    run = subprocess.run(command, cwd=out,
                          capture_output=True, text=True)
     seconds = time.monotonic() - start
     (out / "kiosk.log").write_text(run.stdout + run.stderr)

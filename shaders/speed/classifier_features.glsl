@@ -1,8 +1,10 @@
 // The classifier's per-voxel features (speed/classifier_layout.h), one code for the training
 // samples (classifier_gather.comp) and for every voxel (classifier_evaluate.comp), so that the
 // forest meets at evaluation exactly the numbers it was trained on. Computed on the fly from the
-// intensities: a stored feature stack would be 32 bytes per voxel (4 GiB at 512^3). Voxel units;
-// outside the scan the nearest edge voxel stands in (clamp to edge). Sums are of differences
+// intensities: a stored feature stack would be 32 bytes per voxel (4 GiB at 512^3). Steps of
+// classifierStride voxels along each axis (speed::classifierFeatureStride: about a millimetre,
+// so a fine series' windows cover the tissue a coarse one's do); outside the scan the nearest
+// edge voxel stands in (clamp to edge). Sums are of differences
 // from the centre voxel, so that a variance of a few units survives intensities in the
 // thousands in single precision.
 #include "common/bindings.h"
@@ -10,6 +12,7 @@
 
 layout(binding = SPEED_SOURCE_UNIT) uniform highp sampler3D classifierIntensity;
 uniform ivec3 classifierDims;
+uniform ivec3 classifierStride; // >= 1 on each axis
 
 #if CLASSIFIER_FEATURE_COUNT != 8
 #error "ClassifierFeatureVector holds eight features"
@@ -48,7 +51,7 @@ ClassifierFeatureVector classifierFeatures(ivec3 v) {
             for (int dx = -2; dx <= 2; ++dx) {
                 ivec3 o = ivec3(dx, dy, dz);
                 ivec3 a = abs(o);
-                float d = classifierFetch(v + o) - centre;
+                float d = classifierFetch(v + o * classifierStride) - centre;
                 s5 += d;
                 q5 += d * d;
                 if (all(lessThanEqual(a, ivec3(1)))) {
@@ -73,7 +76,7 @@ ClassifierFeatureVector classifierFeatures(ivec3 v) {
     for (int dz = -4; dz <= 4; dz += 2) {
         for (int dy = -4; dy <= 4; dy += 2) {
             for (int dx = -4; dx <= 4; dx += 2) {
-                float d = classifierFetch(v + ivec3(dx, dy, dz)) - centre;
+                float d = classifierFetch(v + ivec3(dx, dy, dz) * classifierStride) - centre;
                 s9 += d;
                 q9 += d * d;
             }

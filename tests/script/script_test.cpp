@@ -88,7 +88,8 @@ TEST(ScriptParse, OperatorActions) {
     const auto probe = action<model::Probe>("probe 80 56 52 6");
     EXPECT_EQ(probe.voxel, glm::dvec3(80, 56, 52));
     EXPECT_DOUBLE_EQ(probe.radiusMm, 6.0);
-    EXPECT_DOUBLE_EQ(action<model::Probe>("probe 1 2 3").radiusMm, model::Probe{}.radiusMm);
+    EXPECT_DOUBLE_EQ(action<model::Probe>("probe 1 2 3").radiusMm, 0.0)
+        << "0: the config's [probe] radius_mm";
     const auto seed = action<model::AddSeed>("seed 1.5 2 3 4");
     EXPECT_EQ(seed.voxel, glm::dvec3(1.5, 2, 3));
     EXPECT_DOUBLE_EQ(seed.radius, 4.0);

@@ -106,6 +106,40 @@ TEST_F(SpeedTwinsTest, GatheredFeaturesEqualTheCpuTwinAtOddAndEvenSizes) {
     }
 }
 
+// A fine series' features step about a millimetre (classifierFeatureStride): the gather and the
+// evaluation read the same strided windows as the twin.
+TEST_F(SpeedTwinsTest, StridedFeaturesAndTheirEvaluationEqualTheCpuTwin) {
+    const glm::ivec3 d{97, 61, 45};
+    const glm::ivec3 stride{2, 3, 1};
+    const std::vector<float> vol = scanOf(d, 7);
+    const gpu::ScanTexture scan(vol, d);
+    const std::vector<glm::ivec3> voxels = samplesOf(d);
+    const std::vector<float> cpu = speed::cpuClassifierFeatures(vol, d, voxels, stride);
+    std::size_t beyond = 0;
+    double largest = largestBeyond(speed::gatherClassifierFeatures(scan.exact(), d, voxels, stride),
+                                   cpu, 1e-5, beyond);
+    EXPECT_EQ(beyond, 0U) << "gathered: largest difference " << largest;
+    largestBeyond(speed::gatherClassifierFeatures(scan.exact(), d, voxels), cpu, 1e-5, beyond);
+    EXPECT_GT(beyond, cpu.size() / 4) << "voxel steps are other features";
+
+    speed::ClassifierParams params;
+    params.featureStride = stride;
+    const glm::vec3 ball = glm::vec3(d) * 0.4F;
+    const std::vector<speed::Example> inside{{ball, 2.5F}};
+    const std::vector<speed::Example> outside{{glm::vec3(2.0F), 2.0F}};
+    const speed::ClassifierSpeed classifier(scan.exact(), d, inside, outside, params);
+    const std::vector<float> gpuFactor = gpu::readVolumeTexture(classifier.texture(), d);
+    const std::vector<float> cpuFactor =
+        speed::cpuClassifierSpeed(classifier.forest(), classifier.placeVote(), cpu, voxels);
+    std::size_t far = 0;
+    for (std::size_t n = 0; n < voxels.size(); ++n) {
+        const glm::ivec3 v = voxels[n];
+        far += std::abs(gpuFactor[linearIndex(d, v.x, v.y, v.z)] - cpuFactor[n]) > 0.02F;
+    }
+    EXPECT_LE(far, voxels.size() / 500)
+        << "the evaluation at " << far << " of " << voxels.size() << " voxels";
+}
+
 // The rows of the inside examples (gathered first) carrying the outside examples' features: the
 // comparison with the twin fails, and so does a forest trained on them, on the classifier
 // benchmark's phantom, where the CPU twin's forest separates the ball.
