@@ -215,6 +215,16 @@ void checkClassify(Verdict& v, const Volume& volume, const gpu::ScanTexture& sca
     } catch (const gpu::GpuNumericsError& e) {
         v.fail(e.what());
     }
+    // A fine series' windows step more than a voxel (speed::classifierFeatureStride).
+    const glm::ivec3 stride{2, 2, 1};
+    try {
+        v.compare("gathered features, windows stepping 2 x 2 x 1 voxels",
+                  gapOf(speed::gatherClassifierFeatures(scan.exact(), kDims, voxels, stride),
+                        speed::cpuClassifierFeatures(intensities, kDims, voxels, stride), 1e-3,
+                        1e-5));
+    } catch (const gpu::GpuNumericsError& e) {
+        v.fail(e.what());
+    }
     const std::vector<speed::Example> inside{{kBall, 3.0F}};
     const std::vector<speed::Example> outside{{glm::vec3(13.0F, 14.0F, 20.0F), 2.5F},
                                               {glm::vec3(29.0F, 14.0F, 11.0F), 2.5F}};

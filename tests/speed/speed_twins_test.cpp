@@ -88,6 +88,23 @@ double largestBeyond(const std::vector<float>& gpu, const std::vector<float>& cp
     return largest;
 }
 
+// The voxels where the GPU's evaluation of `classifier` (`gpuFactor`, every voxel) and the CPU's
+// over the twin's `features` of `voxels` differ by more than 0.02: the marks' vote is a half
+// float, filtered, 0.01 at most.
+std::size_t evaluationMisses(const speed::ClassifierSpeed& classifier,
+                             const std::vector<float>& gpuFactor, glm::ivec3 d,
+                             const std::vector<float>& features,
+                             const std::vector<glm::ivec3>& voxels) {
+    const std::vector<float> cpuFactor =
+        speed::cpuClassifierSpeed(classifier.forest(), classifier.placeVote(), features, voxels);
+    std::size_t far = 0;
+    for (std::size_t n = 0; n < voxels.size(); ++n) {
+        const glm::ivec3 v = voxels[n];
+        far += std::abs(gpuFactor[linearIndex(d, v.x, v.y, v.z)] - cpuFactor[n]) > 0.02F;
+    }
+    return far;
+}
+
 const glm::ivec3 kSizes[] = {{13, 11, 9}, {64, 64, 64}, {96, 96, 96}, {97, 61, 45}};
 
 TEST_F(SpeedTwinsTest, GatheredFeaturesEqualTheCpuTwinAtOddAndEvenSizes) {
@@ -128,14 +145,8 @@ TEST_F(SpeedTwinsTest, StridedFeaturesAndTheirEvaluationEqualTheCpuTwin) {
     const std::vector<speed::Example> inside{{ball, 2.5F}};
     const std::vector<speed::Example> outside{{glm::vec3(2.0F), 2.0F}};
     const speed::ClassifierSpeed classifier(scan.exact(), d, inside, outside, params);
-    const std::vector<float> gpuFactor = gpu::readVolumeTexture(classifier.texture(), d);
-    const std::vector<float> cpuFactor =
-        speed::cpuClassifierSpeed(classifier.forest(), classifier.placeVote(), cpu, voxels);
-    std::size_t far = 0;
-    for (std::size_t n = 0; n < voxels.size(); ++n) {
-        const glm::ivec3 v = voxels[n];
-        far += std::abs(gpuFactor[linearIndex(d, v.x, v.y, v.z)] - cpuFactor[n]) > 0.02F;
-    }
+    const std::size_t far = evaluationMisses(
+        classifier, gpu::readVolumeTexture(classifier.texture(), d), d, cpu, voxels);
     EXPECT_LE(far, voxels.size() / 500)
         << "the evaluation at " << far << " of " << voxels.size() << " voxels";
 }
@@ -199,15 +210,8 @@ TEST_F(SpeedTwinsTest, EachKindsSpeedEqualsTheCpuAtEveryVoxel) {
         const speed::ClassifierSpeed classifier(scan.exact(), d, inside, outside);
         const std::vector<glm::ivec3> voxels = samplesOf(d);
         const std::vector<float> gpuFactor = gpu::readVolumeTexture(classifier.texture(), d);
-        const std::vector<float> cpuFactor =
-            speed::cpuClassifierSpeed(classifier.forest(), classifier.placeVote(),
-                                      speed::cpuClassifierFeatures(vol, d, voxels), voxels);
-        std::size_t far = 0;
-        for (std::size_t n = 0; n < voxels.size(); ++n) {
-            const glm::ivec3 v = voxels[n];
-            // The marks' vote is a half float, filtered: 0.01 at most.
-            far += std::abs(gpuFactor[linearIndex(d, v.x, v.y, v.z)] - cpuFactor[n]) > 0.02F;
-        }
+        const std::size_t far = evaluationMisses(
+            classifier, gpuFactor, d, speed::cpuClassifierFeatures(vol, d, voxels), voxels);
         EXPECT_LE(far, voxels.size() / 500)
             << "the evaluation at " << far << " of " << voxels.size() << " voxels";
         for (const bool within : {false, true}) {
