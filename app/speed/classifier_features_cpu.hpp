@@ -20,8 +20,8 @@ namespace steerseg::speed {
 inline constexpr int kClassifierFeatureCount = 8;
 
 // The windows' step along an axis is about this many mm: in voxel steps, a series of 0.3 mm
-// pixels has windows a third as wide across the tissue as the 1 mm scans they were designed
-// on, and its forest told the tumour from the muscle on a sample of noise (docs/speed.md).
+// pixels has windows a third as wide across the tissue as on the 1 mm scans they were made on,
+// and a first session's forest drew less of the structure the finer the grid (docs/speed.md).
 inline constexpr double kClassifierFeatureStepMm = 1.0;
 
 // The step per axis: round(kClassifierFeatureStepMm / spacing), at least 1 (an axis of 0.67 mm
