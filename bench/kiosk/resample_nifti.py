@@ -4,7 +4,11 @@
 voxel count and spacing (tools/bench-kiosk.sh --large). Writes float32 NIfTI-1 (gzip); keeps
 the qform's orientation and origin, scales the spacing so the scan covers the same millimetres.
 
-    resample_nifti.py IN.nii[.gz] OUT.nii.gz NX NY NZ
+    resample_nifti.py IN.nii[.gz] OUT.nii.gz NX NY NZ [--label]
+
+--label: IN is a mask; the interpolated value is cut at 0.5 (1 inside, 0 outside), so a scan
+and its label resampled alike stay on one grid (the steering benchmark's finer-resampled cases:
+docs/steering-log.md, "512x512x120").
 
 Needs numpy (Debian's python3-numpy); reads float32, int16, uint16, uint8 and int32 data and
 applies scl_slope and scl_inter.
@@ -64,8 +68,13 @@ def resample_axis(a, axis, n):
 
 
 def main():
-    if len(sys.argv) != 6:
-        fail("usage: resample_nifti.py IN.nii[.gz] OUT.nii.gz NX NY NZ")
+    args = sys.argv[1:]
+    label = "--label" in args
+    if label:
+        args.remove("--label")
+    if len(args) != 5:
+        fail("usage: resample_nifti.py IN.nii[.gz] OUT.nii.gz NX NY NZ [--label]")
+    sys.argv[1:] = args
     src, dst = sys.argv[1], sys.argv[2]
     try:
         size = [int(v) for v in sys.argv[3:6]]
@@ -78,6 +87,8 @@ def main():
     out = resample_axis(vol, 2, size[0])
     out = resample_axis(out, 1, size[1])
     out = resample_axis(out, 0, size[2]).astype(np.float32)
+    if label:
+        out = (out >= 0.5).astype(np.float32)
     pixdim = list(struct.unpack(endian + "8f", header[76:108]))
     for axis, (old, new) in enumerate(zip((nx, ny, nz), size)):
         # The same extent between the end voxels' centres.
