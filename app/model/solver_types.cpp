@@ -30,4 +30,14 @@ const char* stopReasonName(StopReason reason) {
     return "unknown";
 }
 
+const char* leakSignName(LeakSign sign) {
+    switch (sign) {
+    case LeakSign::GrowthJump:
+        return "growth_jump";
+    case LeakSign::RunawayFill:
+        return "runaway_fill";
+    }
+    return "unknown";
+}
+
 } // namespace steerseg::model

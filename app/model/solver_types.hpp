@@ -60,12 +60,23 @@ enum class StopReason {
 // "iteration_limit", "time_reached", "converged", "leak" (the segment report's stop_reason).
 const char* stopReasonName(StopReason reason);
 
+// Which watch saw the leak: the growth jumped after a slowdown (solver::LeakWatch), or the fill
+// went on at full rate past what its slowed front could bound (solver::RunawayWatch).
+enum class LeakSign {
+    GrowthJump,
+    RunawayFill,
+};
+// "growth_jump", "runaway_fill" (the segment report's leak.watch).
+const char* leakSignName(LeakSign sign);
+
 // Where the front broke through: the box of the voxels that came inside while the growth
-// jumped (voxel indices, inclusive), and the iteration at which the jump was confirmed.
+// jumped or ran on (voxel indices, inclusive), the iteration at which the watch was sure, and
+// which watch it was.
 struct LeakSite {
     glm::ivec3 lo{0};
     glm::ivec3 hi{0};
     int iteration = 0;
+    LeakSign sign = LeakSign::GrowthJump;
     [[nodiscard]] glm::vec3 centre() const { return 0.5F * glm::vec3(lo + hi); }
 };
 

@@ -74,6 +74,7 @@ std::string segmentReport(const Session& session, const RunOutcome& run,
         const glm::dvec3 mm = geometry.indexToWorld(glm::dvec3(c));
         j["leak"] = {
             {"iteration", leak->iteration},
+            {"watch", model::leakSignName(leak->sign)},
             {"centre_ijk", {c.x, c.y, c.z}},
             {"box_ijk", {leak->lo.x, leak->lo.y, leak->lo.z, leak->hi.x, leak->hi.y, leak->hi.z}},
             {"centre_lps_mm", {mm.x, mm.y, mm.z}}};

@@ -51,7 +51,7 @@ std::optional<model::LeakSite> LeakWatch::observe(const GrowthSample& sample) {
     }
     // Once said, the same leak is not said again until the operator acts (reset).
     said_ = true;
-    return model::LeakSite{boxLo_, boxHi_, sample.iteration};
+    return model::LeakSite{boxLo_, boxHi_, sample.iteration, model::LeakSign::GrowthJump};
 }
 
 } // namespace steerseg::solver

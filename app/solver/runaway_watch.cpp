@@ -54,7 +54,7 @@ std::optional<model::LeakSite> RunawayWatch::observe(const FrontCheck& check) {
     }
     // Said once, as LeakWatch does, until the operator acts (reset).
     said_ = true;
-    return model::LeakSite{boxLo_, boxHi_, check.iteration};
+    return model::LeakSite{boxLo_, boxHi_, check.iteration, model::LeakSign::RunawayFill};
 }
 
 } // namespace steerseg::solver

@@ -43,9 +43,14 @@ model::StepResult Workflow::evolve(int iterations) {
         enter(model::State::Paused, "the surface vanished: add a seed, or widen eps");
     } else if (r.stopReason == model::StopReason::Leak && r.leak) {
         const glm::ivec3 c(r.leak->centre());
+        // Which watch saw it, so that an operator (and the audit log) can tell a jump through a
+        // gap from a fill that never slowed (issue 51: the second calls some slow creeps).
+        const char* how = r.leak->sign == model::LeakSign::RunawayFill
+                              ? "filling on after it had slowed"
+                              : "its growth jumping after a slowdown";
         enter(model::State::Paused, "the front broke out near (" + std::to_string(c.x) + ", " +
-                                        std::to_string(c.y) + ", " + std::to_string(c.z) +
-                                        "): erase there, or narrow eps, then run");
+                                        std::to_string(c.y) + ", " + std::to_string(c.z) + "), " +
+                                        how + ": erase there, or narrow eps, then run");
     } else if (r.converged) {
         enter(model::State::Paused,
               "converged after " + std::to_string(status_.iterations) + " iterations");

@@ -55,6 +55,7 @@ TEST(LeakWatch, GrowthThatJumpsAfterASlowdownIsALeakAtTheJump) {
     EXPECT_EQ(site->lo.x, 9);
     EXPECT_EQ(site->hi.x, 10);
     EXPECT_EQ(site->iteration, 16 * 11);
+    EXPECT_EQ(site->sign, model::LeakSign::GrowthJump);
 }
 
 TEST(LeakWatch, OneNoisyCheckIsNoLeak) {

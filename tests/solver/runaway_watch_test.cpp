@@ -113,6 +113,7 @@ TEST(RunawayWatch, TheSiteIsWhereTheFrontGrewSinceTheSlowdown) {
     }
     ASSERT_TRUE(site.has_value());
     EXPECT_GT(site->lo.x, 2); // not the structure's own fill
+    EXPECT_EQ(site->sign, model::LeakSign::RunawayFill);
     // Said once until the operator acts.
     FrontCheck more = s.checks.back();
     more.iteration += 10 * kCheck;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
+#include <utility>
 
 namespace steerseg::test {
 
@@ -287,6 +288,10 @@ model::StepResult FakeEngine::step(int iterations) {
     r.evolvedTime = time_;
     r.converged = sinceChange_ >= convergeAfter;
     r.stopReason = model::StopReason::IterationLimit;
+    if (stepLeaks) {
+        r.stopReason = model::StopReason::Leak;
+        r.leak = std::exchange(stepLeaks, std::nullopt);
+    }
     return r;
 }
 

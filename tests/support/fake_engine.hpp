@@ -38,6 +38,8 @@ class FakeEngine : public workflow::Engine {
     int convergeAfter = 40;    // iterations without an edit or new parameters until converged
     // Set: every step paints this sphere inside, as a front creeping there would (reach or not).
     std::optional<model::Sphere> stepGrows;
+    // Set: the next step stops as the solver's leak watch stops it, there (once).
+    std::optional<model::LeakSite> stepLeaks;
     bool writeExports = false; // exportMask writes a small file at the path
 
     // --- what happened ----------------------------------------------------------------------

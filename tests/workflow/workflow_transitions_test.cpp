@@ -224,6 +224,22 @@ TEST(WorkflowTransitions, ConvergencePausesWithANotice) {
     EXPECT_EQ(rig.wf->evolve(8).iterations, 0); // not evolving: nothing happens
 }
 
+// The pause names the place and the watch that saw the leak, for the operator and the audit log.
+TEST(WorkflowTransitions, ALeakPausesNamingThePlaceAndTheWatchThatSawIt) {
+    using model::LeakSign;
+    for (const auto& [sign, how] :
+         {std::pair{LeakSign::GrowthJump, "its growth jumping after a slowdown"},
+          std::pair{LeakSign::RunawayFill, "filling on after it had slowed"}}) {
+        Rig rig;
+        rig.driveTo(State::Evolving);
+        rig.engine.stepLeaks = model::LeakSite{{10, 4, 2}, {14, 8, 4}, 24, sign};
+        rig.wf->evolve(8);
+        EXPECT_EQ(rig.state(), State::Paused);
+        EXPECT_EQ(rig.status().message, std::string("the front broke out near (12, 6, 3), ") + how +
+                                            ": erase there, or narrow eps, then run");
+    }
+}
+
 TEST(WorkflowTransitions, StepFailureIsAnErrorThatDismissReturnsFrom) {
     Rig rig;
     rig.driveTo(State::Error);
