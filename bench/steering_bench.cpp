@@ -285,6 +285,9 @@ int run(const Options& o) {
                 // GPU memory undo holds after the click (its snapshots' copies).
                 extra["undo_gpu_bytes"] = session.engine().undoGpuBytes();
                 extra["stop_reason"] = r.stopReason;
+                if (!r.leakWatch.empty()) {
+                    extra["leak_watch"] = r.leakWatch;
+                }
                 extra["iterations"] = r.iterations;
                 extra["T"] = r.T;
                 extra["eps"] = r.eps;

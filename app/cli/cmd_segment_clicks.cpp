@@ -198,6 +198,9 @@ int runSegmentClicks(const Args& args) {
             j["box"] = {box->lo.x, box->lo.y, box->lo.z, box->hi.x, box->hi.y, box->hi.z};
         }
         j["stop_reason"] = r.stopReason;
+        if (!r.leakWatch.empty()) {
+            j["leak_watch"] = r.leakWatch;
+        }
         j["iterations"] = r.iterations;
         j["seconds"] = r.seconds;
         j["first_change_seconds"] = r.firstChangeSeconds;

@@ -81,6 +81,7 @@ ClickOutcome ClickSession::apply(const model::Action& prompt, int maxIterations)
         r.stopReason = "emptied";
     } else if (last.stopReason == model::StopReason::Leak) {
         r.stopReason = "leak";
+        r.leakWatch = last.leak ? model::leakSignName(last.leak->sign) : "";
     } else if (flow_.status().converged) {
         r.stopReason = "converged";
     } else if (flow_.state() == model::State::Error) {

@@ -22,6 +22,8 @@ namespace steerseg::engine {
 // left no surface).
 struct ClickOutcome {
     std::string stopReason;
+    // A leak's: model::leakSignName of the watch that saw it; empty otherwise.
+    std::string leakWatch;
     int iterations = 0;              // the solver's, after this click
     double seconds = 0.0;            // from the click to the stop, GPU work included
     double firstChangeSeconds = 0.0; // from the click to its edit on the GPU (what the next

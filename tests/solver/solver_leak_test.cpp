@@ -76,6 +76,7 @@ TEST_F(SolverLeakTest, StopsWhenTheFrontBreaksThroughTheNeckAndSaysWhere) {
     const StepResult r = solver.runUntilConverged(3000);
     ASSERT_EQ(r.stopReason, StopReason::Leak) << stopReasonName(r.stopReason);
     ASSERT_TRUE(r.leak.has_value());
+    EXPECT_EQ(r.leak->sign, model::LeakSign::GrowthJump) << "the jump through the neck";
     // The site is where the front grew after the slowdown: beyond ball A, on the neck's axis.
     const glm::vec3 c = r.leak->centre();
     EXPECT_GT(c.x, kBallA.x + kBallRadius - 2.0F) << c.x;

@@ -93,6 +93,7 @@ TEST_F(SolverStopTest, ASpillAlongAWideContactIsStoppedByTheRunawayWatch) {
     ASSERT_EQ(r.stopReason, StopReason::Leak) << stopReasonName(r.stopReason);
     ASSERT_TRUE(r.leak.has_value());
     EXPECT_GT(r.leak->centre().x, kBall.x + kBallRadius - 2.0F);
+    EXPECT_EQ(r.leak->sign, model::LeakSign::RunawayFill) << "a fill going on at its rate, no jump";
     const std::vector<std::uint8_t> mask = solver.readMask();
     const std::size_t slab = static_cast<std::size_t>(kDims.x - kSlabStart) * 32 * 32;
     EXPECT_LT(insideSlab(mask), slab / 4) << insideCount(mask);
