@@ -23,6 +23,7 @@
 #include "platform/egl/offscreen_context.hpp"
 #include "solver/level_set_solver.hpp"
 #include "speed/classifier_features.hpp"
+#include "speed/classifier_features_cpu.hpp"
 #include "speed/classifier_speed.hpp"
 #include "speed/example_voxels.hpp"
 #include "speed/random_forest.hpp"
@@ -174,7 +175,8 @@ struct ClassifierBound {
 
 ClassifierBound classifierBound(const Grid& g, GLuint intensity, const Volume& label,
                                 int labelValue, const std::vector<std::uint8_t>& inLabel,
-                                const std::vector<glm::ivec3>& seedVoxels, int ring) {
+                                const std::vector<glm::ivec3>& seedVoxels, int ring,
+                                glm::ivec3 stride) {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<std::uint8_t> near = dilated(g, inLabel, ring);
     // Every label voxel and every ring voxel, then the product's own cap and reservoir.
@@ -214,7 +216,7 @@ ClassifierBound classifierBound(const Grid& g, GLuint intensity, const Volume& l
     forestParams.maxDepth = defaults.maxDepth;
     forestParams.seed = defaults.seed;
     const speed::RandomForest forest =
-        speed::RandomForest::train(speed::gatherClassifierFeatures(intensity, g.d, samples),
+        speed::RandomForest::train(speed::gatherClassifierFeatures(intensity, g.d, samples, stride),
                                    classes, speed::kClassifierFeatureCount, forestParams);
 
     // The sign at every voxel of the neighbourhood, in pieces so the feature rows stay small.
@@ -225,7 +227,7 @@ ClassifierBound classifierBound(const Grid& g, GLuint intensity, const Volume& l
     for (std::size_t first = 0; first < all.size(); first += kPiece) {
         const std::size_t n = std::min(kPiece, all.size() - first);
         const std::span<const glm::ivec3> piece(all.data() + first, n);
-        const std::vector<float> f = speed::gatherClassifierFeatures(intensity, g.d, piece);
+        const std::vector<float> f = speed::gatherClassifierFeatures(intensity, g.d, piece, stride);
         for (std::size_t i = 0; i < n; ++i) {
             const std::span<const float> row(f.data() + i * speed::kClassifierFeatureCount,
                                              speed::kClassifierFeatureCount);
@@ -315,7 +317,8 @@ int main(int argc, char** argv) {
         auto context = platform::createOffscreenContext();
         const gpu::ScanTexture texture(scan);
         const ClassifierBound cb =
-            classifierBound(g, texture.exact(), label, o.labelValue, inLabel, seedVoxels, o.ring);
+            classifierBound(g, texture.exact(), label, o.labelValue, inLabel, seedVoxels, o.ring,
+                            speed::classifierFeatureStride(scan.geometry().spacing));
 
         const LevelSetBound ls = levelSetBound(texture, label, o.labelValue, cb.speed, cb.connected,
                                                o.alpha, o.maxIterations);
