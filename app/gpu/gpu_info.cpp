@@ -2,6 +2,7 @@
 
 #include "gpu/gl.hpp"
 
+#include <cctype>
 #include <cstring>
 
 namespace steerseg::gpu {
@@ -54,6 +55,21 @@ GpuInfo queryGpuInfo() {
     info.maxAtomicCounterBuffers = glInt(GL_MAX_COMPUTE_ATOMIC_COUNTER_BUFFERS);
     info.floatLinearFiltering = hasExtension("GL_OES_texture_float_linear");
     return info;
+}
+
+int cpuRasterizerLanes(const std::string& renderer) {
+    if (renderer.rfind("llvmpipe", 0) != 0) {
+        return 0;
+    }
+    const std::size_t bits = renderer.find(" bits)");
+    std::size_t start = bits;
+    while (start > 0 && std::isdigit(static_cast<unsigned char>(renderer[start - 1])) != 0) {
+        --start;
+    }
+    if (bits == std::string::npos || start == bits || bits - start > 5) {
+        return 0;
+    }
+    return std::stoi(renderer.substr(start, bits - start)) / 32;
 }
 
 } // namespace steerseg::gpu

@@ -29,4 +29,9 @@ struct GpuInfo {
 // Reads the limits of the current context.
 GpuInfo queryGpuInfo();
 
+// The 32-bit SIMD lanes of a CPU rasterizer that names its vector width in its renderer string
+// (Mesa's llvmpipe: "llvmpipe (LLVM 15.0.6, 256 bits)" -> 8); 0 for any other renderer, every
+// GPU's among them.
+int cpuRasterizerLanes(const std::string& renderer);
+
 } // namespace steerseg::gpu

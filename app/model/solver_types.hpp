@@ -17,6 +17,9 @@ struct SolverOptions {
     int brickSize = 0;      // 0: defaultBrickSize(); 4, 8 or 16
     bool dense = false;     // every brick active, never retired (benchmark baseline)
     int checkInterval = 16; // iterations between reads of the GPU's counters
+    // Invocations per work group of the passes that take one group a brick; 0: the device's
+    // (solver::detail::brickGroupSize). The numbers do not depend on it.
+    int groupSize = 0;
     // Converged: no voxel changed side for convergeIterations iterations spanning at least
     // convergeTime of evolution, or for 10 * convergeIterations iterations (a front held by a
     // strongly negative speed elsewhere takes tiny steps).

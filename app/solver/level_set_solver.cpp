@@ -4,6 +4,7 @@
 #include "gpu/gl_counts.hpp"
 #include "gpu/gl_error.hpp"
 #include "gpu/gl_state_guard.hpp"
+#include "gpu/gpu_info.hpp"
 #include "gpu/gpu_limits.hpp"
 #include "solver/gpu_brick_pool.hpp"
 #include "solver/solver_programs.hpp"
@@ -59,6 +60,13 @@ LevelSetSolver::LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own,
         throw std::invalid_argument("brick size must be 4, 8 or 16 (got " + std::to_string(b) +
                                     ")");
     }
+    const gpu::GpuInfo device = gpu::queryGpuInfo();
+    if (options_.groupSize < 0 || options_.groupSize > b * b * b ||
+        options_.groupSize > device.maxComputeWorkGroupInvocations) {
+        throw std::invalid_argument("groupSize must be 0 (the device's) or 1.." +
+                                    std::to_string(b * b * b) +
+                                    " and within the device's work-group invocations");
+    }
     if (options_.checkInterval < 1) {
         throw std::invalid_argument("checkInterval must be >= 1");
     }
@@ -73,8 +81,8 @@ LevelSetSolver::LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own,
     }
     const std::size_t voxels = static_cast<std::size_t>(dims.x) * static_cast<std::size_t>(dims.y) *
                                static_cast<std::size_t>(dims.z);
-    const int localSize = std::min(b * b * b, 64);
-    programs_ = std::make_unique<detail::SolverPrograms>(b, localSize);
+    programs_ = std::make_unique<detail::SolverPrograms>(
+        b, detail::brickGroupSize(b, options_.groupSize, device.renderer));
     pool_ = std::make_unique<detail::GpuBrickPool>(dims, b, gpu::gpuLimits());
     const glm::ivec3 grid = pool_->brickGrid();
     programs_->forEach([&](gpu::Program& p) {

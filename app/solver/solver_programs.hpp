@@ -3,7 +3,14 @@
 #include "gpu/gl_handle.hpp"
 #include "gpu/program.hpp"
 
+#include <string>
+
 namespace steerseg::solver::detail {
+
+// Invocations per group of the passes that take one group a brick, for bricks of `brickSize`:
+// `requested` if not 0, else the one for the device named `renderer` (GL_RENDERER; why:
+// solver_programs.cpp).
+int brickGroupSize(int brickSize, int requested, const std::string& renderer);
 
 // The constants every solver pass is compiled with (brick size, work-group size, PHI_FAR...).
 gpu::Defines solverDefines(int brickSize, int localSize);

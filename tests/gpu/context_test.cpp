@@ -38,6 +38,18 @@ TEST_F(ContextTest, ReportsEs31OrNewerWithComputeLimits) {
     EXPECT_GE(info.max3dTextureSize, 256);
 }
 
+TEST(CpuRasterizerLanes, ReadsLlvmpipesVectorWidthAndNothingElsesRenderer) {
+    EXPECT_EQ(gpu::cpuRasterizerLanes("llvmpipe (LLVM 15.0.6, 256 bits)"), 8);
+    EXPECT_EQ(gpu::cpuRasterizerLanes("llvmpipe (LLVM 12.0.0, 128 bits)"), 4);
+    EXPECT_EQ(gpu::cpuRasterizerLanes("llvmpipe (LLVM 17.0.6, 512 bits)"), 16);
+    EXPECT_EQ(gpu::cpuRasterizerLanes("llvmpipe"), 0);
+    EXPECT_EQ(gpu::cpuRasterizerLanes("llvmpipe (LLVM 15.0.6,  bits)"), 0);
+    EXPECT_EQ(gpu::cpuRasterizerLanes("llvmpipe (LLVM 15.0.6, 99999999999 bits)"), 0);
+    EXPECT_EQ(gpu::cpuRasterizerLanes("NVIDIA H200/PCIe/SSE2"), 0);
+    EXPECT_EQ(gpu::cpuRasterizerLanes("Mali-G52 (256 bits)"), 0);
+    EXPECT_EQ(gpu::cpuRasterizerLanes(""), 0);
+}
+
 TEST_F(ContextTest, RunsComputeShaderAndReadsResultBack) {
     constexpr GLuint kCount = 1000; // not a multiple of the work-group size on purpose
     std::vector<float> input(kCount);
