@@ -74,10 +74,9 @@ def main():
         args.remove("--label")
     if len(args) != 5:
         fail("usage: resample_nifti.py IN.nii[.gz] OUT.nii.gz NX NY NZ [--label]")
-    sys.argv[1:] = args
-    src, dst = sys.argv[1], sys.argv[2]
+    src, dst = args[0], args[1]
     try:
-        size = [int(v) for v in sys.argv[3:6]]
+        size = [int(v) for v in args[2:5]]
     except ValueError:
         fail("NX NY NZ must be whole numbers")
     if any(not 1 <= v <= 4096 for v in size):
