@@ -20,6 +20,10 @@ struct SolverOptions {
     // Invocations per work group of the passes that take one group a brick; 0: the device's
     // (solver::detail::brickGroupSize). The numbers do not depend on it.
     int groupSize = 0;
+    // measure_speed finds the front from the sign rows update_phi keeps (solver/front_signs.glsl);
+    // false: from the bricks' phi every time, as it does after an edit. The numbers do not
+    // depend on it (a test compares the two).
+    bool frontFromSignRows = true;
     // Converged: no voxel changed side for convergeIterations iterations spanning at least
     // convergeTime of evolution, or for 10 * convergeIterations iterations (a front held by a
     // strongly negative speed elsewhere takes tiny steps).

@@ -81,7 +81,8 @@ class GpuBrickPool {
     // Every slot's speeds (solver/speed_cache.glsl) no longer hold: the speed, its parameters or
     // a barrier changed. The next pass over a brick computes them and its front again.
     void forgetSpeed();
-    // Every slot's front must be measured again: the level set changed outside a step.
+    // Every slot's front must be measured again, from its phi (its sign rows no longer hold):
+    // the level set changed outside a step.
     void forgetMeasures();
 
     [[nodiscard]] ControlBlock readControl() const;
@@ -105,8 +106,8 @@ class GpuBrickPool {
     [[nodiscard]] std::size_t levelSetBytes() const;
     // Slot map, free, active, measure and band lists, states, fronts, requests and epochs.
     [[nodiscard]] std::size_t bookkeepingBytes() const;
-    // What measure_speed keeps per slot (solver/speed_cache.glsl): a brick of speeds and a
-    // header (the tag, the last side change, the last measure).
+    // What measure_speed keeps per slot (solver/speed_cache.glsl): a brick of speeds, a header
+    // (the tag, the last side change, the last measure, the sign rows' validity) and the rows.
     [[nodiscard]] std::size_t speedBytes() const;
     [[nodiscard]] BrickPoolView view() const;
     [[nodiscard]] const glm::ivec3& brickGrid() const { return grid_; }
@@ -116,7 +117,7 @@ class GpuBrickPool {
     void allocateSlotBuffers(std::uint32_t capacity);
     void copySpeeds(const gpu::Buffer& old, std::uint32_t oldCapacity);
     [[nodiscard]] std::size_t speedSlotBytes() const;
-    static constexpr std::uint32_t kSpeedHeaderWords = 3; // gpu_brick_pool_speed.cpp's runs
+    static constexpr std::uint32_t kSpeedHeaderWords = 4; // gpu_brick_pool_speed.cpp's runs
     // The control block of a pool just filled: nothing requested or active, `freeCount` free.
     void resetControl(std::uint32_t freeCount);
     [[nodiscard]] glm::ivec3 brickOrigin(std::uint32_t brick) const;
@@ -145,7 +146,7 @@ class GpuBrickPool {
     gpu::Buffer slotState_;
     gpu::Buffer bandList_;
     gpu::Buffer slotFront_;  // two words per slot
-    gpu::Buffer speedCache_; // the header's three runs of a word a slot, then each slot's speeds
+    gpu::Buffer speedCache_; // the header's four runs of a word a slot, the speeds, the sign rows
 };
 
 } // namespace steerseg::solver::detail

@@ -100,6 +100,9 @@ LevelSetSolver::LevelSetSolver(std::unique_ptr<gpu::ScanTexture> own,
                             ? static_cast<GLuint>(options_.sleepAfter)
                             : 256U); // dense: the every-brick baseline
     setUniform(programs_->updatePhi.id(), "sleepTolerance", options_.sleepTolerance);
+    glProgramUniform1i(programs_->measureSpeed.id(),
+                       glGetUniformLocation(programs_->measureSpeed.id(), "signRows"),
+                       options_.frontFromSignRows ? 1 : 0);
     uploadBarriers();
     uploadReach();
     stats_.totalBricks = pool_->brickCount();

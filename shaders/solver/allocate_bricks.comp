@@ -1,7 +1,8 @@
 #version 310 es
 // One group per requested brick: pops a free slot, fills it with the brick's constant value
-// (in the current phi buffer) and points the page table at it. Without a free slot the request
-// stays unserved and `stalled` pauses the iterations until the host grows the pool.
+// (in the current phi buffer) and its sign rows (solver/speed_cache.glsl), and points the page
+// table at it. Without a free slot the request stays unserved and `stalled` pauses the
+// iterations until the host grows the pool.
 // With EVALUATE_SPEED (the classify speed evaluated where the front goes, solver/speed_on_demand)
 // it also stores the classifier's speed at the new brick's voxels, as evaluate_speed.comp does
 // for the active list, unless the brick holds it already: a brick the band reaches next
@@ -59,6 +60,9 @@ void main() {
     for (uint v = gl_LocalInvocationIndex; fill && v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
         phiPool[slot * BRICK_VOXELS + v] = value;
     }
+    for (uint r = gl_LocalInvocationIndex; fill && r < SIGN_ROWS; r += uint(LOCAL_SIZE)) {
+        storeSignRow(slot, r, value < 0.0 ? ROW_BITS : 0u);
+    }
 #ifdef EVALUATE_SPEED
     ivec3 origin = brickCoord(brick) * BRICK_SIZE;
     for (uint v = gl_LocalInvocationIndex; evaluate && v < BRICK_VOXELS; v += uint(LOCAL_SIZE)) {
@@ -77,5 +81,6 @@ void main() {
         slotState[slot] = old == BRICK_INSIDE ? STATE_INSIDE : STATE_OUTSIDE;
         pageTable[brick] = slot;
         forgetMeasured(slot); // what measure_speed kept is another brick's
+        noteSignsKept(slot, true);
     }
 }

@@ -4,8 +4,10 @@
 // largest data speed |alpha * D| on the front, which sets the next time step, and the front's
 // voxels; both kept per slot for the iterations the brick sleeps or its front stays (slotFront).
 // The first pass of an iteration over the bricks, so it fills the speeds of a brick whose slot
-// has none. The last group to finish chooses the time step from every group's maximum and those
-// the list added (it was choose_time_step's one thread).
+// has none. It finds the front from the sign rows the brick and its face neighbours keep
+// (solver/front_signs.glsl), or, where one of them keeps none (after an edit or a shrink), from
+// the brick's phi and its apron. The last group to finish chooses the time step from every
+// group's maximum and those the list added (it was choose_time_step's one thread).
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
 #define DATA_SPEED_INTENSITY_UNIT SOLVER_SCAN_UNIT
@@ -16,16 +18,19 @@
 #include "solver/phi_stencil.glsl"
 #include "solver/phi_tile.glsl"
 #include "solver/speed_cache.glsl"
+#include "solver/front_signs.glsl"
 layout(local_size_x = LOCAL_SIZE) in;
 
 uniform float alpha;
 uniform float courant;
 uniform float fixedRate;
 uniform float timeLimit;
+uniform bool signRows; // false: always from phi (SolverOptions::frontFromSignRows)
 shared uint groupMax;
 shared uint groupFront;
 shared bool fillSpeed;
 shared bool measureFront;
+shared bool fromSigns;
 
 // dt = 1 / (max |alpha * D| / courant + fixedRate), fixedRate = the rescaling term's speed /
 // courant + the curvature term's diffusion rate (the bound it obeys: TimeStepRule in
@@ -57,15 +62,44 @@ void main() {
         groupFront = 0u;
         fillSpeed = hasWork && !speedCached(slot, brick);
         measureFront = hasWork;
+        fromSigns = hasWork && signRows && findFaceSlots(slot, brickCoord(brick));
     }
     barrier();
-    if (measureFront) {
+    if (measureFront && !fromSigns) {
         loadTile(origin, slot);
     }
     barrier();
     float localMax = 0.0;
     uint localFront = 0u;
-    for (uint v = gl_LocalInvocationIndex; measureFront && v < BRICK_VOXELS;
+    const int ROWS = BRICK_SIZE * BRICK_SIZE;
+    for (int row = int(gl_LocalInvocationIndex); fromSigns && row < ROWS; row += LOCAL_SIZE) {
+        int y = row % BRICK_SIZE;
+        int z = row / BRICK_SIZE;
+        ivec3 g = origin + ivec3(0, y, z);
+        if (g.y >= volumeDims.y || g.z >= volumeDims.z) {
+            continue;
+        }
+        uint front = frontRow(slot, origin, y, z);
+        uint v0 = uint(BRICK_SIZE * row);
+        if (fillSpeed) {
+            int width = min(BRICK_SIZE, volumeDims.x - origin.x);
+            for (int x = 0; x < width; ++x) {
+                ivec3 gx = g + ivec3(x, 0, 0);
+                float speed = storeSpeed(slot, v0 + uint(x), barrierSpeed(gx, dataSpeed(gx)));
+                if (((front >> uint(x)) & 1u) != 0u) {
+                    ++localFront;
+                    localMax = max(localMax, abs(alpha * speed));
+                }
+            }
+        } else {
+            for (uint bits = front; bits != 0u; bits &= bits - 1u) {
+                ++localFront;
+                uint v = v0 + uint(findLSB(bits));
+                localMax = max(localMax, abs(alpha * cachedSpeed(slot, v)));
+            }
+        }
+    }
+    for (uint v = gl_LocalInvocationIndex; measureFront && !fromSigns && v < BRICK_VOXELS;
          v += uint(LOCAL_SIZE)) {
         ivec3 l = localVoxel(v);
         ivec3 g = origin + l;

@@ -11,22 +11,34 @@
 //   brick again only when it or a face neighbour did since it last measured it (or its speeds
 //   were forgotten); otherwise it adds the slot's last measure, as build_active_list does for a
 //   sleeping brick.
+// - Which of its voxels are inside (phi < 0), a row of bits a row of voxels: the front is where a
+//   voxel's bit differs from a face neighbour's, so measure_speed finds it from these words and
+//   its neighbours' instead of loading the brick's phi and its apron (on llvmpipe that load was
+//   most of the pass). update_phi writes them with the values it stores, allocate_bricks a new
+//   slot's constant ones; they stand until the host changes the level set outside a step.
 // Layout (host: app/solver/gpu_brick_pool_speed.cpp), C = the slots: [0, C) tags, 1 + the brick
 // whose speeds the slot holds (0: none); [C, 2C) the step count after which a voxel last changed
 // side in the slot (update_phi); [2C, 3C) 1 + the step count at which measure_speed last
-// measured it (0: never; the host clears them when the level set changes outside a step, and
-// allocate_bricks when a slot changes hands); then slot s's speeds at 3C + s * BRICK_VOXELS, as
-// float bits. A tag names the brick, not only the slot, so slots that move (a shrink) or change
-// hands (retired, then allocated) never read another brick's speeds.
+// measured it (0: never); [3C, 4C) non-zero while the slot's sign rows hold its phi's signs (the
+// host clears these two runs when the level set changes outside a step, and allocate_bricks when
+// a slot changes hands); then slot s's speeds at 4C + s * BRICK_VOXELS, as float bits; then its
+// sign rows at 4C + C * BRICK_VOXELS + s * SIGN_ROWS, row y + BRICK_SIZE * z holding bit x for
+// voxel (x, y, z). A tag names the brick, not only the slot, so slots that move (a shrink) or
+// change hands (retired, then allocated) never read another brick's speeds.
 // Include after common/brick_pool.glsl.
 layout(std430, binding = SPEED_CACHE_BINDING) buffer SpeedCache { uint speedCache[]; };
 
 // The header's runs (one word a slot each) in order, as the host names them.
 const uint SIDE_CHANGE_RUN = 1u;
 const uint MEASURE_RUN = 2u;
-const uint HEADER_RUNS = 3u;
+const uint SIGNS_RUN = 3u;
+const uint HEADER_RUNS = 4u;
+const uint SIGN_ROWS = uint(BRICK_SIZE * BRICK_SIZE);
+const uint ROW_BITS = (1u << uint(BRICK_SIZE)) - 1u; // a row of voxels all inside
 
-uint speedCapacity() { return uint(speedCache.length()) / (BRICK_VOXELS + HEADER_RUNS); }
+uint speedCapacity() {
+    return uint(speedCache.length()) / (BRICK_VOXELS + HEADER_RUNS + SIGN_ROWS);
+}
 
 // Slot `slot`'s word in header run `run`.
 uint headerIndex(uint run, uint slot) { return run * speedCapacity() + slot; }
@@ -79,4 +91,15 @@ bool frontMayHaveChanged(uint slot, ivec3 brick) {
         }
     }
     return false;
+}
+
+uint signRowIndex(uint slot, uint row) {
+    return (HEADER_RUNS + BRICK_VOXELS) * speedCapacity() + slot * SIGN_ROWS + row;
+}
+// Row `row` of the slot: bit x set where voxel x of the row is inside.
+uint signRow(uint slot, uint row) { return speedCache[signRowIndex(slot, row)]; }
+void storeSignRow(uint slot, uint row, uint bits) { speedCache[signRowIndex(slot, row)] = bits; }
+bool signsKept(uint slot) { return speedCache[headerIndex(SIGNS_RUN, slot)] != 0u; }
+void noteSignsKept(uint slot, bool kept) {
+    speedCache[headerIndex(SIGNS_RUN, slot)] = kept ? 1u : 0u;
 }

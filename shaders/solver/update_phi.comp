@@ -4,8 +4,10 @@
 // records the brick's new state and whether any voxel changed side (convergence), and counts
 // the voxels that changed side with the box of those that came inside (the leak watch:
 // app/solver/leak_watch.hpp), and whether the brick and its faces moved by more than the sleep
-// tolerance (solver_common.glsl's QUIET_SHIFT). phi is stored once: the interior is updated in
-// place, the shell goes to shellNext until settle_bricks commits it (solver/brick_shell.glsl).
+// tolerance (solver_common.glsl's QUIET_SHIFT), and which voxels are inside (the sign rows
+// measure_speed finds the next front from: speed_cache.glsl). phi is stored once: the interior
+// is updated in place, the shell goes to shellNext until settle_bricks commits it
+// (solver/brick_shell.glsl).
 #define PHI_POOL_ACCESS
 #include "common/brick_pool.glsl"
 #include "solver/solver_common.glsl"
@@ -85,6 +87,7 @@ void main() {
         float zm1 = tileAt(ivec3(0, y, z - 1));
         float zp0 = tileAt(ivec3(-1, y, z + 1));
         float zp1 = tileAt(ivec3(0, y, z + 1));
+        uint signs = 0u;
         for (int x = 0; x < BRICK_SIZE; ++x) {
             float c2 = tileAt(ivec3(x + 1, y, z));
             float ym2 = tileAt(ivec3(x + 1, y - 1, z));
@@ -133,6 +136,7 @@ void main() {
                     }
                 }
             }
+            signs |= uint(out_ < 0.0) << uint(x);
             if (onShell(l)) {
                 shellNext[slot * SHELL_VOXELS + shellIndex(l)] = out_;
             } else {
@@ -149,6 +153,7 @@ void main() {
             zp0 = zp1;
             zp1 = zp2;
         }
+        storeSignRow(slot, uint(row), signs);
     }
     noteBrickState(state);
     if (movedMine) {
@@ -174,6 +179,7 @@ void main() {
             quiet = movedAny != 0u ? 0u : min(quiet + 1u, 255u);
         }
         slotState[slot] = brickState() | (quiet << QUIET_SHIFT) | (movedFaces << MOVED_SHIFT);
+        noteSignsKept(slot, true);
         if (changedSide != 0u) {
             noteSideChanged(slot, ctrl.iteration); // measure_speed measures it and its neighbours
             atomicMax(ctrl.lastChange, ctrl.iteration);
