@@ -7,7 +7,6 @@
 #include "support/gpu_fixture.hpp"
 #include "support/solver_test_support.hpp"
 
-#include <cmath>
 #include <gtest/gtest.h>
 
 namespace steerseg::test {
@@ -30,16 +29,7 @@ struct SignsRun {
 // reach, then run to its stop.
 SignsRun run(int brickSize, bool fromSignRows) {
     const glm::ivec3 d(45, 48, 26);
-    std::vector<float> volume = ballVolume(d, 0.0F, 1.0F, glm::vec3(30.0F, 34.0F, 12.0F), 15.0F);
-    for (int k = 0; k < d.z; ++k) {
-        for (int j = 0; j < d.y; ++j) {
-            for (int i = 0; i < d.x; ++i) {
-                volume[voxelIndex(d, i, j, k)] +=
-                    0.15F * std::sin(0.9F * static_cast<float>(i) + 1.7F * static_cast<float>(j) +
-                                     0.6F * static_cast<float>(k));
-            }
-        }
-    }
+    const std::vector<float> volume = rippledBallVolume(d, glm::vec3(30.0F, 34.0F, 12.0F), 15.0F);
     SolverOptions options;
     options.brickSize = brickSize;
     options.frontFromSignRows = fromSignRows;

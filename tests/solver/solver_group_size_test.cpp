@@ -6,7 +6,6 @@
 #include "support/gpu_fixture.hpp"
 #include "support/solver_test_support.hpp"
 
-#include <cmath>
 #include <gtest/gtest.h>
 #include <stdexcept>
 #include <string>
@@ -24,21 +23,11 @@ struct GroupRun {
     SolverStats stats;
 };
 
-// A ball of 1 in 0 with a deterministic ripple, so that the front's speed varies voxel by voxel
-// and its parts stop at different times: seeded, stepped with sleeping bricks, then an erase and a
+// A rippled ball (rippledBallVolume): seeded, stepped with sleeping bricks, then an erase and a
 // correction's reach, then run to its stop.
 GroupRun run(int groupSize) {
     const glm::ivec3 d(48, 40, 36);
-    std::vector<float> volume = ballVolume(d, 0.0F, 1.0F, glm::vec3(24.0F, 20.0F, 18.0F), 13.0F);
-    for (int k = 0; k < d.z; ++k) {
-        for (int j = 0; j < d.y; ++j) {
-            for (int i = 0; i < d.x; ++i) {
-                volume[voxelIndex(d, i, j, k)] +=
-                    0.15F * std::sin(0.9F * static_cast<float>(i) + 1.7F * static_cast<float>(j) +
-                                     0.6F * static_cast<float>(k));
-            }
-        }
-    }
+    const std::vector<float> volume = rippledBallVolume(d, glm::vec3(24.0F, 20.0F, 18.0F), 13.0F);
     SolverOptions options;
     options.groupSize = groupSize;
     LevelSetSolver s(volume, d, options);

@@ -42,6 +42,22 @@ inline std::vector<float> ballVolume(const glm::ivec3& d, float background, floa
     return v;
 }
 
+// ballVolume's ball of 1 in 0 with a deterministic ripple of +-0.15, so that a front's speed
+// varies voxel by voxel and its parts stop at different times.
+inline std::vector<float> rippledBallVolume(const glm::ivec3& d, glm::vec3 centre, float radius) {
+    std::vector<float> v = ballVolume(d, 0.0F, 1.0F, centre, radius);
+    for (int k = 0; k < d.z; ++k) {
+        for (int j = 0; j < d.y; ++j) {
+            for (int i = 0; i < d.x; ++i) {
+                v[voxelIndex(d, i, j, k)] +=
+                    0.15F * std::sin(0.9F * static_cast<float>(i) + 1.7F * static_cast<float>(j) +
+                                     0.6F * static_cast<float>(k));
+            }
+        }
+    }
+    return v;
+}
+
 inline std::size_t insideCount(std::span<const std::uint8_t> mask) {
     std::size_t n = 0;
     for (std::uint8_t m : mask) {
