@@ -3,6 +3,7 @@
 // differs from a face neighbour's, the same test as onFront (phi_stencil.glsl) on the values
 // the rows were taken from. A face neighbour past the volume's end is the voxel itself, as
 // phiAt repeats the border voxel. Include after solver/speed_cache.glsl.
+
 // The brick's face neighbours in FACE_NEIGHBOURS order: a slot, or BRICK_INSIDE / BRICK_OUTSIDE
 // (also past the grid, where no voxel is read). Filled by findFaceSlots.
 shared uint faceSlot[6];
