@@ -54,7 +54,7 @@ uint frontRow(uint slot, ivec3 origin, int y, int z) {
     ivec3 g = origin + ivec3(0, y, z);
     int width = min(BRICK_SIZE, volumeDims.x - origin.x);
     uint c = signRowAround(slot, y, z);
-    uint before = origin.x == 0 ? c & 1u : signRowOf(faceSlot[0], y, z) >> uint(L);
+    uint before = origin.x == 0 ? c : signRowOf(faceSlot[0], y, z) >> uint(L);
     uint xm = (c << 1) | (before & 1u);
     uint xp = c >> 1;
     if (origin.x + BRICK_SIZE < volumeDims.x) {
