@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -90,6 +91,10 @@ Options parse(int argc, char** argv) {
     }
     if (o.clicks < 0 || o.clicks > 100 || o.maxIterations < 1) {
         throw std::invalid_argument("--clicks 0..100, --max-iterations >= 1");
+    }
+    // Checked before the runs, which take minutes, rather than at the first mask written.
+    if (!o.masks.empty() && !std::filesystem::is_directory(o.masks)) {
+        throw std::invalid_argument("--masks " + o.masks + ": no such folder");
     }
     return o;
 }

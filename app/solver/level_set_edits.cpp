@@ -131,6 +131,7 @@ void LevelSetSolver::noteChange() {
     leakWatch_.reset();
     settleWatch_.reset();
     runawayWatch_.reset();
+    checkOrigin_.reset();
 }
 
 void LevelSetSolver::holdBarrier(const model::Barrier& barrier) {

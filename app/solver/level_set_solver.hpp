@@ -190,6 +190,10 @@ class LevelSetSolver {
     int lastIteration_ = 0;
     std::uint32_t lastUsed_ = 0;                // used slots at the last pool check
     std::optional<detail::ControlBlock> known_; // the GPU's control block, when known
+    // The iteration the watches' checks count from: the first step after the last change
+    // (noteChange), so a check falls every checkInterval iterations of the run however its calls
+    // split it (a frame's few iterations) and the watches see the same intervals every time.
+    std::optional<std::uint32_t> checkOrigin_;
     bool converged_ = false;
     bool settled_ = false; // SettleWatch at the last check
     bool wakePending_ = true;

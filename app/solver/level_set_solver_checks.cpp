@@ -34,10 +34,19 @@ model::StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bo
         ctrl = pool_->readControl();
     }
     const std::uint32_t start = ctrl.iteration;
+    if (!checkOrigin_) {
+        checkOrigin_ = start;
+    }
+    const auto interval = static_cast<std::uint32_t>(options_.checkInterval);
     int remaining = maxIterations;
     std::optional<model::LeakSite> leak;
     while (remaining > 0) {
-        const int chunk = std::min(remaining, options_.checkInterval);
+        // Up to the run's next check. A call that ends before it (a frame's share) reads the
+        // block for its figures but leaves the growth counters to the check, whose interval
+        // the watches then see whole: when a check falls cannot depend on the frame rate.
+        const auto toCheck =
+            static_cast<int>(interval - (ctrl.iteration - *checkOrigin_) % interval);
+        const int chunk = std::min(remaining, toCheck);
         for (int n = 0; n < chunk; ++n) {
             iterate(timeLimit);
         }
@@ -67,7 +76,11 @@ model::StepResult LevelSetSolver::advance(int maxIterations, float timeLimit, bo
             continue;
         }
         takeVisits(ctrl);
-        leak = watchGrowth(ctrl);
+        if ((ctrl.iteration - *checkOrigin_) % interval == 0) {
+            leak = watchGrowth(ctrl);
+        } else {
+            pool_->writeControl(ctrl); // the visits taken, the growth left to the check
+        }
         converged_ = converged_ || settled_;
         if ((untilConverged && converged_) || done < chunk || leak) {
             break; // converged, the time limit stopped the steps, or a leak

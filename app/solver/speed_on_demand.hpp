@@ -9,7 +9,7 @@
 namespace steerseg::solver::detail {
 
 // The solver's half of the classifier speed evaluated where the front goes (docs/speed.md,
-// "Evaluation where the front goes"): which bricks already hold their speed in the factor
+// "Evaluation", "Where the front goes"): which bricks already hold their speed in the factor
 // texture, and the pass that fills the others (shaders/solver/evaluate_speed.comp). Built when
 // a speed that needs it arrives, so a solver that never classifies compiles nothing more.
 class SpeedOnDemand {

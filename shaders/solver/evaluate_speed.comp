@@ -1,7 +1,7 @@
 #version 310 es
-// The classifier speed evaluated where the front goes (docs/speed.md, "Evaluation where the
-// front goes"): one group per brick, which stores speed/classifier_forest.glsl's value at each of
-// its voxels into the solver's factor texture the first time the brick is asked for, and marks
+// The classifier speed evaluated where the front goes (docs/speed.md, "Evaluation", "Where
+// the front goes"): one group per brick, which stores speed/classifier_forest.glsl's value at each
+// of its voxels into the solver's factor texture the first time the brick is asked for, and marks
 // it ready. The solver runs it over the active list before the passes that read the data speed
 // (measure_speed, update_phi read it only at their own brick's voxels), so a brick's speed is
 // there before its first read; the host's fill-in (LevelSetSolver::evaluateSpeedAhead) runs it

@@ -109,5 +109,58 @@ TEST_F(SolverStopTest, ASpillAlongAWideContactIsStoppedByTheRunawayWatch) {
     EXPECT_GT(insideSlab(jumpOnly.readMask()), slab * 9 / 10);
 }
 
+// A kiosk steps a few iterations a frame, as many as its frame's share allows. The watches'
+// checks still fall every checkInterval iterations of the run, counted from the step after the
+// last change, so they see the same intervals and stop the same fill at the same check as one
+// call does (before, a call's last iterations made a short interval of their own: the kiosk's
+// stops depended on its frame rate).
+TEST_F(SolverStopTest, ChecksFallAtTheSameIterationsHoweverTheCallsSplitTheRun) {
+    const std::vector<float> volume = ballBesideSlab();
+    SolverOptions o;
+    o.stopOnLeak = true;
+    o.checkInterval = 4; // the runaway test's: its fill stops within 3000 iterations
+    std::vector<FrontCheck> checks;
+    const auto run = [&](LevelSetSolver& solver, const std::vector<int>& calls, int limit) {
+        checks.clear();
+        StepResult r;
+        int done = 0;
+        for (std::size_t n = 0; r.stopReason != StopReason::Leak && done < limit; ++n) {
+            r = solver.step(std::min(calls[n % calls.size()], limit - done));
+            done += r.iterations;
+        }
+        return r.stopReason;
+    };
+    LevelSetSolver whole(volume, kDims, o);
+    whole.setCheckObserver([&checks](const FrontCheck& c) { checks.push_back(c); });
+    whole.setParams(kParams);
+    whole.addSphere({kBall, 3.0F});
+    ASSERT_EQ(run(whole, {3000}, 3000), StopReason::Leak);
+    const std::vector<FrontCheck> wholeChecks = checks;
+
+    LevelSetSolver frames(volume, kDims, o);
+    frames.setCheckObserver([&checks](const FrontCheck& c) { checks.push_back(c); });
+    frames.setParams(kParams);
+    frames.addSphere({kBall, 3.0F});
+    EXPECT_EQ(run(frames, {1, 7, 3, 4, 9, 2, 5}, 3000), StopReason::Leak);
+    ASSERT_EQ(checks.size(), wholeChecks.size());
+    for (std::size_t n = 0; n < checks.size(); ++n) {
+        EXPECT_EQ(checks[n].iteration, wholeChecks[n].iteration) << "check " << n;
+        EXPECT_EQ(checks[n].gained, wholeChecks[n].gained) << "check " << n;
+        EXPECT_EQ(checks[n].lost, wholeChecks[n].lost) << "check " << n;
+        EXPECT_EQ(checks[n].front, wholeChecks[n].front) << "check " << n;
+    }
+    EXPECT_EQ(frames.readMask(), whole.readMask());
+
+    // After a change the checks count from the next step, not from the solver's first.
+    frames.step(3);
+    const int changedAt = frames.stats().iterations;
+    frames.setParams(kParams);
+    run(frames, {3, 2}, 12);
+    ASSERT_EQ(checks.size(), 3U);
+    for (std::size_t n = 0; n < checks.size(); ++n) {
+        EXPECT_EQ(checks[n].iteration, changedAt + 4 * static_cast<int>(n + 1));
+    }
+}
+
 } // namespace
 } // namespace steerseg::test
