@@ -60,6 +60,16 @@ float timeStepRate(float speed) {
     return alpha * (speedKind == 2 ? min(abs(speed), 1.0) : abs(speed));
 }
 
+// Voxel v of the slot, at grid voxel g: its speed stored where the slot keeps none, and, on the
+// front, counted with the rate it sets the time step by.
+void measureVoxel(uint slot, uint v, ivec3 g, bool front, inout uint count, inout float rate) {
+    float speed = fillSpeed ? storeSpeed(slot, v, barrierSpeed(g, dataSpeed(g))) : 0.0;
+    if (front) {
+        ++count;
+        rate = max(rate, timeStepRate(fillSpeed ? speed : cachedSpeed(slot, v)));
+    }
+}
+
 // Every invocation reaches every barrier (GLSL ES 3.10): groups past the list only skip work.
 void main() {
     uint n = gl_WorkGroupID.x + gl_WorkGroupID.y * GROUPS_PER_ROW;
@@ -91,21 +101,16 @@ void main() {
         }
         uint front = frontRow(slot, origin, y, z);
         uint v0 = uint(BRICK_SIZE * row);
-        if (fillSpeed) {
+        if (fillSpeed) { // every voxel of the row
             int width = min(BRICK_SIZE, volumeDims.x - origin.x);
             for (int x = 0; x < width; ++x) {
-                ivec3 gx = g + ivec3(x, 0, 0);
-                float speed = storeSpeed(slot, v0 + uint(x), barrierSpeed(gx, dataSpeed(gx)));
-                if (((front >> uint(x)) & 1u) != 0u) {
-                    ++localFront;
-                    localMax = max(localMax, timeStepRate(speed));
-                }
+                bool onIt = ((front >> uint(x)) & 1u) != 0u;
+                measureVoxel(slot, v0 + uint(x), g + ivec3(x, 0, 0), onIt, localFront, localMax);
             }
-        } else {
+        } else { // the front's voxels only
             for (uint bits = front; bits != 0u; bits &= bits - 1u) {
-                ++localFront;
-                uint v = v0 + uint(findLSB(bits));
-                localMax = max(localMax, timeStepRate(cachedSpeed(slot, v)));
+                int x = findLSB(bits);
+                measureVoxel(slot, v0 + uint(x), g + ivec3(x, 0, 0), true, localFront, localMax);
             }
         }
     }
@@ -116,11 +121,7 @@ void main() {
         if (any(greaterThanEqual(g, volumeDims))) {
             continue;
         }
-        float speed = fillSpeed ? storeSpeed(slot, v, barrierSpeed(g, dataSpeed(g))) : 0.0;
-        if (onFront(tileFaces(l))) {
-            ++localFront;
-            localMax = max(localMax, timeStepRate(fillSpeed ? speed : cachedSpeed(slot, v)));
-        }
+        measureVoxel(slot, v, g, onFront(tileFaces(l)), localFront, localMax);
     }
     atomicMax(groupMax, floatBitsToUint(localMax));
     atomicAdd(groupFront, localFront);

@@ -37,11 +37,7 @@ SignsRun run(int brickSize, bool fromSignRows) {
     LevelSetSolver s(volume, d, options);
     s.addSphere({glm::vec3(36.0F, 40.0F, 14.0F), 3.0F});
     s.addSphere({glm::vec3(24.0F, 30.0F, 10.0F), 2.0F});
-    LevelSetParams p;
-    p.T = 1.0F;
-    p.eps = 0.6F;
-    p.alpha = 0.7F;
-    s.setParams(p);
+    s.setParams(rippledBallParams());
     SignsRun r;
     const auto steps = [&](int n) {
         for (int i = 0; i < n && !s.converged(); ++i) {

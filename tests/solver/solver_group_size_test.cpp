@@ -33,11 +33,7 @@ GroupRun run(int groupSize) {
     LevelSetSolver s(volume, d, options);
     s.addSphere({glm::vec3(20.0F, 20.0F, 18.0F), 3.0F});
     s.addSphere({glm::vec3(30.0F, 18.0F, 16.0F), 2.0F});
-    LevelSetParams p;
-    p.T = 1.0F;
-    p.eps = 0.6F;
-    p.alpha = 0.7F;
-    s.setParams(p);
+    s.setParams(rippledBallParams());
     s.step(120);
     s.removeSphere({glm::vec3(24.0F, 30.0F, 18.0F), 4.0F});
     s.setReach(Reach{Sphere{glm::vec3(24.0F, 30.0F, 18.0F), 10.0F}, false});

@@ -58,6 +58,16 @@ inline std::vector<float> rippledBallVolume(const glm::ivec3& d, glm::vec3 centr
     return v;
 }
 
+// The window the rippled ball's tests grow it with: the ball's 1 +- 0.6, so the ripple changes
+// the speed voxel by voxel but not its sign.
+inline model::LevelSetParams rippledBallParams() {
+    model::LevelSetParams p;
+    p.T = 1.0F;
+    p.eps = 0.6F;
+    p.alpha = 0.7F;
+    return p;
+}
+
 inline std::size_t insideCount(std::span<const std::uint8_t> mask) {
     std::size_t n = 0;
     for (std::uint8_t m : mask) {
