@@ -210,6 +210,9 @@ void readBrush(TableReader& t, BrushConfig& b) {
     if (auto v = t.number("erase_run_growth", {0.0, 100.0})) {
         b.eraseRunGrowth = *v;
     }
+    if (auto v = t.number("erase_withdraw_mm", {0.0, 1000.0})) {
+        b.eraseWithdrawMm = *v;
+    }
 }
 
 void readExport(TableReader& t, ExportConfig& e) {

@@ -62,6 +62,7 @@ struct BrushConfig {
     double radius = 3.0;          // voxels
     double correctionReach = 3.0; // brush radii around a correction its run may move (0: all)
     double eraseRunGrowth = 0.25; // an erase's global run's growth before it is taken back
+    double eraseWithdrawMm = 4.0; // how far an erase's run takes the surface back beyond reach
     bool operator==(const BrushConfig&) const = default;
 };
 

@@ -1,5 +1,7 @@
 #include "core/mask_field.hpp"
 
+#include "core/mask_box.hpp"
+
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -41,25 +43,13 @@ std::vector<float> maskToField(const Geometry& geometry, std::span<const std::ui
     const glm::ivec3 dims = geometry.dims;
     // Farther than the blur's reach from every inside voxel the field is exactly +0.5, so only
     // the mask's box grown by that reach is blurred.
-    glm::ivec3 lo(std::numeric_limits<int>::max());
-    glm::ivec3 hi(-1);
-    for (int k = 0; k < dims.z; ++k) {
-        for (int j = 0; j < dims.y; ++j) {
-            const std::uint8_t* row = mask.data() + linearIndex(dims, 0, j, k);
-            for (int i = 0; i < dims.x; ++i) {
-                if (row[i] != 0) {
-                    lo = glm::min(lo, glm::ivec3(i, j, k));
-                    hi = glm::max(hi, glm::ivec3(i, j, k));
-                }
-            }
-        }
-    }
+    const std::optional<MaskBox> inside = maskBox(dims, mask);
     std::vector<float> field(mask.size(), 0.5f);
-    if (hi.x < 0) {
+    if (!inside) {
         return field;
     }
-    lo = glm::max(lo - kBlurRadius, glm::ivec3(0));
-    hi = glm::min(hi + kBlurRadius, dims - 1);
+    const glm::ivec3 lo = glm::max(inside->lo - kBlurRadius, glm::ivec3(0));
+    const glm::ivec3 hi = glm::min(inside->hi + kBlurRadius, dims - 1);
     const glm::ivec3 box = hi - lo + 1;
     std::vector<float> a(static_cast<std::size_t>(box.x) * static_cast<std::size_t>(box.y) *
                          static_cast<std::size_t>(box.z));

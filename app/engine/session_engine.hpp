@@ -61,6 +61,7 @@ class SessionEngine final : public workflow::Engine {
     [[nodiscard]] int barriers() const override { return static_cast<int>(barriers_.size()); }
     [[nodiscard]] const std::vector<model::Barrier>& barrierList() const { return barriers_; }
     void setReach(const std::optional<model::Reach>& reach) override;
+    void limitWithdrawal(const std::optional<model::WithdrawLimit>& limit) override;
     void clearLevelSet() override;
     [[nodiscard]] bool hasLevelSet() const override;
     void setParams(const model::LevelSetParams& params) override;
@@ -142,6 +143,9 @@ class SessionEngine final : public workflow::Engine {
     int untidyCopies_ = 0;
     std::map<workflow::SnapshotId, Snapshot> snapshots_;
     std::vector<model::Barrier> barriers_; // as the solver holds them
+    // limitWithdrawal's, until the next step keeps the voxels beyond it (keepBeyondLimit).
+    std::optional<model::WithdrawLimit> pendingLimit_;
+    void keepBeyondLimit(const model::WithdrawLimit& limit);
     workflow::SnapshotId nextSnapshot_ = 1;
     std::uint64_t version_ = 0;
     std::uint64_t attached_ = 0;

@@ -44,6 +44,7 @@ workflow::Settings workflowSettings(const config::KioskConfig& config,
     s.defaultRadius = config.brush.radius;
     s.correctionReach = config.brush.correctionReach;
     s.eraseRunGrowth = config.brush.eraseRunGrowth;
+    s.eraseWithdrawMm = config.brush.eraseWithdrawMm;
     s.defaultSpeed = config.speed.kind;
     s.classifyWithinWindow = config.speed.classifyWithinWindow;
     s.classifyPlaceReach = config.speed.classifyPlaceReach;

@@ -70,6 +70,15 @@ struct Reach {
     bool operator==(const Reach&) const = default;
 };
 
+// How far an erase's run may take the surface back away from the erase (workflow::Engine::
+// limitWithdrawal, docs/steering.md): beyond `around` it withdraws at most `depthMm` from where
+// it stood when the limit was set; the surface's voxels deeper than that stay inside.
+struct WithdrawLimit {
+    Sphere around;
+    double depthMm = 0.0;
+    bool operator==(const WithdrawLimit&) const = default;
+};
+
 // Throws std::invalid_argument unless the radius is positive, finite and at most the volume's
 // diagonal (dims, in voxels) and the centre lies inside the volume. Every sphere edit (the GPU
 // and reference solvers' addSphere/removeSphere, the command line's --seed/--erase) goes through

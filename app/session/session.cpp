@@ -78,6 +78,10 @@ void Session::setClaimed(std::span<const std::uint8_t> claimed) {
     gpu_->solver.setClaimed(claimed);
 }
 
+void Session::setKept(std::span<const std::uint8_t> kept) {
+    gpu_->solver.setKept(kept);
+}
+
 bool Session::hasClaimed() const {
     return gpu_->solver.hasClaimed();
 }

@@ -90,6 +90,9 @@ class Session {
     // span clears it. std::invalid_argument for a span of another size. Stays until set again.
     void setClaimed(std::span<const std::uint8_t> claimed);
     [[nodiscard]] bool hasClaimed() const;
+    // Voxels the surface never leaves (solver::LevelSetSolver::setKept), the same way; an empty
+    // span clears them.
+    void setKept(std::span<const std::uint8_t> kept);
     // A mask on the scan's grid (inside where > 0.5) replaces the level set. Throws
     // std::runtime_error naming the file when it cannot be read or its grid differs.
     void startFromMask(const std::filesystem::path& mask);

@@ -100,6 +100,13 @@ class LevelSetSolver {
     // restores, parameters and speeds leave it as it is until it is set again.
     void setClaimed(std::span<const std::uint8_t> claimed);
     [[nodiscard]] bool hasClaimed() const { return static_cast<bool>(claimed_); }
+    // Voxels the surface never leaves (non-zero = kept, as setClaimed's): the speed keeps there
+    // as a keeping barrier's sphere does. What an erase's run may not take back (the workflow
+    // sets the deep part of the surface it starts from: docs/steering.md); an empty span, or one
+    // with no voxel kept, clears it. std::invalid_argument for a span of another size. Not part
+    // of the level set, as the claimed voxels are not.
+    void setKept(std::span<const std::uint8_t> kept);
+    [[nodiscard]] bool hasKept() const { return static_cast<bool>(kept_); }
     // Where the surface may move (shaders/solver/update_phi.comp): a sphere, for a correction's
     // run, which should change the surface around the correction and leave the rest as the
     // operator accepted it (or only withdraw there: model::Reach); nullopt: everywhere.
@@ -199,7 +206,8 @@ class LevelSetSolver {
     bool wakePending_ = true;
     std::vector<model::Barrier> barriers_;
     std::optional<model::Box> box_;
-    gpu::Texture claimed_; // R32UI, bit i % 32 of texel (i / 32, j, k); empty: none claimed
+    gpu::Texture claimed_; // solver/voxel_bits.hpp; empty: none claimed
+    gpu::Texture kept_;    // the same; empty: none kept
     std::optional<model::Reach> reach_;
     LeakWatch leakWatch_;
     SettleWatch settleWatch_;

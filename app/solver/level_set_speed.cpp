@@ -7,6 +7,7 @@
 #include "solver/level_set_solver.hpp"
 #include "solver/solver_programs.hpp"
 #include "solver/speed_on_demand.hpp"
+#include "solver/voxel_bits.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -40,52 +41,22 @@ bool LevelSetSolver::speedOnDemand() const {
     return speedInputs_.onDemand.nodes != 0;
 }
 
-// One bit a voxel, 32 along i to a texel: an eighth of an R8UI texture's memory (33 MiB rather
-// than 262 MiB at 512x512x1000, on llvmpipe host memory beside the scan's), for one shift and
-// mask more in the pass that fills a brick's speeds once.
 void LevelSetSolver::setClaimed(std::span<const std::uint8_t> claimed) {
-    const std::size_t voxels = static_cast<std::size_t>(dims_.x) *
-                               static_cast<std::size_t>(dims_.y) *
-                               static_cast<std::size_t>(dims_.z);
-    if (!claimed.empty() && claimed.size() != voxels) {
-        throw std::invalid_argument("claimed mask has " + std::to_string(claimed.size()) +
-                                    " voxels but the scan " + std::to_string(voxels));
-    }
     gpu::GlStateGuard guard;
-    const bool any =
-        std::any_of(claimed.begin(), claimed.end(), [](std::uint8_t v) { return v != 0; });
-    claimed_.reset();
-    if (any) {
-        const glm::ivec3 packed((dims_.x + 31) / 32, dims_.y, dims_.z);
-        std::vector<std::uint32_t> bits(static_cast<std::size_t>(packed.x) *
-                                        static_cast<std::size_t>(packed.y) *
-                                        static_cast<std::size_t>(packed.z));
-        std::size_t v = 0;
-        for (std::size_t row = 0; row < voxels / static_cast<std::size_t>(dims_.x); ++row) {
-            std::uint32_t* words = bits.data() + row * static_cast<std::size_t>(packed.x);
-            for (int i = 0; i < dims_.x; ++i, ++v) {
-                if (claimed[v] != 0) {
-                    words[i / 32] |= 1U << (i % 32);
-                }
-            }
-        }
-        claimed_ = gpu::createTexture();
-        glActiveTexture(GL_TEXTURE0 + SOLVER_CLAIMED_UNIT);
-        glBindTexture(GL_TEXTURE_3D, claimed_.id());
-        glTexStorage3D(GL_TEXTURE_3D, 1, GL_R32UI, packed.x, packed.y, packed.z);
-        // An integer texture filtered other than NEAREST is incomplete, even for texelFetch.
-        glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, packed.x, packed.y, packed.z, GL_RED_INTEGER,
-                        GL_UNSIGNED_INT, bits.data());
-        gpu::checkGl("uploading the claimed voxels");
-    }
+    claimed_ = detail::uploadVoxelBits(claimed, dims_, SOLVER_CLAIMED_UNIT, "claimed");
     const GLuint p = programs_->measureSpeed.id(); // the one pass that evaluates the speed
-    glProgramUniform1i(p, glGetUniformLocation(p, "hasClaimed"), any ? 1 : 0);
+    glProgramUniform1i(p, glGetUniformLocation(p, "hasClaimed"), claimed_ ? 1 : 0);
     pool_->forgetSpeed();
     noteChange(); // a surface over newly claimed voxels recedes from every brick
+}
+
+void LevelSetSolver::setKept(std::span<const std::uint8_t> kept) {
+    gpu::GlStateGuard guard;
+    kept_ = detail::uploadVoxelBits(kept, dims_, SOLVER_KEPT_UNIT, "kept");
+    const GLuint p = programs_->measureSpeed.id();
+    glProgramUniform1i(p, glGetUniformLocation(p, "hasKept"), kept_ ? 1 : 0);
+    pool_->forgetSpeed();
+    noteChange(); // released, the voxels' speeds are the data's again
 }
 
 // The textures and buffers the data speed's passes read, before a run of them.
@@ -94,6 +65,10 @@ void LevelSetSolver::bindSpeed() const {
     if (claimed_) {
         glActiveTexture(GL_TEXTURE0 + SOLVER_CLAIMED_UNIT);
         glBindTexture(GL_TEXTURE_3D, claimed_.id());
+    }
+    if (kept_) {
+        glActiveTexture(GL_TEXTURE0 + SOLVER_KEPT_UNIT);
+        glBindTexture(GL_TEXTURE_3D, kept_.id());
     }
     if (speedOnDemand()) {
         onDemand_->bind(speedInputs_);

@@ -121,6 +121,11 @@ class Engine {
     // run and clears it when the run stops. std::invalid_argument for a sphere the scan
     // cannot hold.
     virtual void setReach(const std::optional<model::Reach>& reach) = 0;
+    // How far the next steps may take the surface back beyond a sphere (model::WithdrawLimit),
+    // measured from the surface the next step starts from; nullopt: as far as the speed says.
+    // Not part of the level set's state, as the reach is not. std::invalid_argument for a
+    // sphere the scan cannot hold or a depth that is negative or not finite.
+    virtual void limitWithdrawal(const std::optional<model::WithdrawLimit>& limit) = 0;
     virtual void clearLevelSet() = 0;
     [[nodiscard]] virtual bool hasLevelSet() const = 0;
 

@@ -41,6 +41,9 @@ void validateSettings(const Settings& s) {
     require(std::isfinite(s.eraseRunGrowth) && s.eraseRunGrowth >= 0.0,
             "erase run growth must be a finite fraction >= 0 (got " + number(s.eraseRunGrowth) +
                 ")");
+    require(std::isfinite(s.eraseWithdrawMm) && s.eraseWithdrawMm >= 0.0,
+            "erase withdraw depth must be a finite number of mm >= 0 (got " +
+                number(s.eraseWithdrawMm) + ")");
     require(std::isfinite(s.classifyPlaceReach) && s.classifyPlaceReach >= 0.0,
             "classify place reach must be a finite number of example radii >= 0 (got " +
                 number(s.classifyPlaceReach) + ")");

@@ -53,6 +53,11 @@ struct Settings {
     // later erases' runs do so from the start until T, eps, alpha or the kind of speed change.
     // 0: no limit.
     double eraseRunGrowth = 0.25;
+    // Beyond its reach an erase's run takes the surface back at most this far (mm) from where
+    // it stood after the erase: appearance cannot tell an erased leak from the structure's own
+    // tissue, and a leak lies at the surface where the structure's tissue lies deep
+    // (docs/steering.md). 0: as far as the speed says.
+    double eraseWithdrawMm = 4.0;
     // Default exports: <folder>/<scan>_<UTC time>.<format>.
     std::filesystem::path exportFolder = ".";
     // A default export writes one file per format, in this order ("nii.gz", "nii", "nrrd": the

@@ -156,6 +156,11 @@ class Workflow {
     // The sphere a correction's run may move the surface in; nullopt: everywhere.
     [[nodiscard]] std::optional<model::Sphere> reachOf(const model::Sphere& brush) const;
     void endReach();
+    // An erase's run takes the surface back beyond the correction's reach at most
+    // Settings::eraseWithdrawMm (model::WithdrawLimit) from the surface it left; endReach lifts
+    // it, and so does any other change of the level set (an undo, an edit).
+    void limitWithdrawal(const model::Sphere& brush);
+    void liftWithdrawLimit();
     // An erase's run over the whole surface is watched (Settings::eraseRunGrowth): grown past
     // its limit, it is taken back to the erase and goes on withdrawing only beyond the reach,
     // and so do later erases' runs until T, eps, alpha or the kind of speed change.
@@ -293,6 +298,7 @@ class Workflow {
         SnapshotId start = 0; // the surface the erase left (its undo entry's)
     };
     std::optional<EraseRunWatch> eraseWatch_; // an erase's global run's, while it lasts
+    bool withdrawLimited_ = false;            // the engine holds a WithdrawLimit
     bool erasesCreep_ = false; // an erase's run went back under the speed now in force
     // Transitions made while handling one action, audited after the action's own record.
     struct PendingTransition {

@@ -49,6 +49,7 @@ Workflow::Outcome Workflow::on(const model::Correct& a) {
         // An earlier erase's run crept under the same T, eps, alpha and kind of speed: this
         // one's would spend its steps up to the limit first, and go back all the same.
         reachAround(brush, true);
+        limitWithdrawal(brush);
         ++status_.erasesWithdrawOnly;
         if (status_.message == messageBefore) { // the edit's own notice comes first
             status_.message = "erased; an earlier erase's run crept under this speed: away from "
@@ -56,6 +57,7 @@ Workflow::Outcome Workflow::on(const model::Correct& a) {
         }
     } else {
         watchEraseRun(brush, volumeBeforeMl);
+        limitWithdrawal(brush);
     }
     return out;
 }
@@ -84,8 +86,37 @@ void Workflow::reachAround(const model::Sphere& brush, bool recedeOutside) {
     }
 }
 
+// What the erase names may look like the structure's own tissue, which then leaves the surface
+// wherever it lies; a leak lies at the surface, the structure's tissue deep in it: beyond the
+// reach the run takes back no more than the surface's outer eraseWithdrawMm.
+void Workflow::limitWithdrawal(const model::Sphere& brush) {
+    const std::optional<model::Sphere> around = reachOf(brush);
+    if (settings_.eraseWithdrawMm <= 0.0 || !around) {
+        return;
+    }
+    try {
+        engine_.limitWithdrawal(model::WithdrawLimit{*around, settings_.eraseWithdrawMm});
+        withdrawLimited_ = true;
+    } catch (const std::exception&) {
+        // The erase stands; its run then takes back as much as the speed says, as before.
+    }
+}
+
+void Workflow::liftWithdrawLimit() {
+    if (!withdrawLimited_) {
+        return;
+    }
+    withdrawLimited_ = false;
+    try {
+        engine_.limitWithdrawal(std::nullopt);
+    } catch (const std::exception&) {
+        // An engine that fails here fails the next step too, which says so.
+    }
+}
+
 void Workflow::endReach() {
     eraseWatch_.reset();
+    liftWithdrawLimit();
     if (!reach_) {
         return;
     }

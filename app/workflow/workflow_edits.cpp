@@ -36,6 +36,7 @@ void Workflow::refreshUndoFlags() {
 
 void Workflow::afterLevelSetChange() {
     eraseWatch_.reset(); // the surface it would go back to is not this one's
+    liftWithdrawLimit(); // nor is the one it keeps the depth of
     dirty_ = true;
     status_.converged = false;
     refreshEngineStatus();

@@ -1,5 +1,7 @@
 #include "steering/click_robot.hpp"
 
+#include "core/mask_box.hpp"
+#include "core/mask_depth.hpp"
 #include "model/level_set_params.hpp"
 
 #include <algorithm>
@@ -19,101 +21,7 @@ std::size_t at(const glm::ivec3& d, int i, int j, int k) {
                 static_cast<std::size_t>(d.y) * static_cast<std::size_t>(k));
 }
 
-// Felzenszwalb and Huttenlocher's squared distance along one line, in units of the line's
-// voxel: d(p) = min over sites q of f(q) + (p - q)^2, with sites at -1 and n when `pad`.
-// Sites with f = infinity are no sites at all.
-void distanceAlongLine(std::vector<double>& line, bool pad, std::vector<double>& site,
-                       std::vector<double>& value, std::vector<double>& from) {
-    const int n = static_cast<int>(line.size());
-    site.clear();
-    value.clear();
-    from.clear();
-    const auto add = [&](double q, double fq) {
-        while (!site.empty()) {
-            const double v = site.back();
-            const double s = ((fq + q * q) - (value.back() + v * v)) / (2.0 * (q - v));
-            if (s <= from.back()) {
-                site.pop_back();
-                value.pop_back();
-                from.pop_back();
-            } else {
-                from.push_back(s);
-                break;
-            }
-        }
-        if (site.empty()) {
-            from.push_back(-kFar);
-        }
-        site.push_back(q);
-        value.push_back(fq);
-    };
-    if (pad) {
-        add(-1.0, 0.0);
-    }
-    for (int q = 0; q < n; ++q) {
-        if (line[static_cast<std::size_t>(q)] < kFar) {
-            add(q, line[static_cast<std::size_t>(q)]);
-        }
-    }
-    if (pad) {
-        add(n, 0.0);
-    }
-    if (site.empty()) {
-        return; // no site on this line: every value stays infinite
-    }
-    std::size_t k = 0;
-    for (int p = 0; p < n; ++p) {
-        while (k + 1 < site.size() && from[k + 1] < p) {
-            ++k;
-        }
-        const double dp = p - site[k];
-        line[static_cast<std::size_t>(p)] = dp * dp + value[k];
-    }
-}
-
 } // namespace
-
-std::vector<float> distanceToSitesMm(const MaskGrid& grid, const std::vector<std::uint8_t>& sites,
-                                     bool beyondIsSite) {
-    const glm::ivec3 d = grid.dims;
-    std::vector<double> sq(grid.count());
-    for (std::size_t v = 0; v < sq.size(); ++v) {
-        sq[v] = sites[v] != 0 ? 0.0 : kFar;
-    }
-    std::vector<double> line;
-    std::vector<double> site;
-    std::vector<double> value;
-    std::vector<double> from;
-    // One pass per axis, in squared mm: each line's values scaled to its voxel and back.
-    for (int axis = 0; axis < 3; ++axis) {
-        const double s2 = grid.spacing[axis] * grid.spacing[axis];
-        const int n = d[axis];
-        const int a = (axis + 1) % 3;
-        const int b = (axis + 2) % 3;
-        line.resize(static_cast<std::size_t>(n));
-        for (int u = 0; u < d[b]; ++u) {
-            for (int w = 0; w < d[a]; ++w) {
-                glm::ivec3 p(0);
-                p[a] = w;
-                p[b] = u;
-                for (int q = 0; q < n; ++q) {
-                    p[axis] = q;
-                    line[static_cast<std::size_t>(q)] = sq[at(d, p.x, p.y, p.z)] / s2;
-                }
-                distanceAlongLine(line, beyondIsSite, site, value, from);
-                for (int q = 0; q < n; ++q) {
-                    p[axis] = q;
-                    sq[at(d, p.x, p.y, p.z)] = line[static_cast<std::size_t>(q)] * s2;
-                }
-            }
-        }
-    }
-    std::vector<float> out(sq.size());
-    for (std::size_t v = 0; v < sq.size(); ++v) {
-        out[v] = static_cast<float>(std::sqrt(sq[v]));
-    }
-    return out;
-}
 
 std::vector<std::uint8_t> largestComponent(const MaskGrid& grid,
                                            const std::vector<std::uint8_t>& region) {
@@ -185,7 +93,7 @@ std::optional<RobotClick> deepestClick(const MaskGrid& grid,
     if (voxels == 0) {
         return std::nullopt;
     }
-    const std::vector<float> depth = distanceToSitesMm(grid, outside, true);
+    const std::vector<float> depth = distanceToSitesMm(grid.dims, grid.spacing, outside, true);
     std::size_t best = 0;
     float bestDepth = -1.0F;
     for (std::size_t v = 0; v < component.size(); ++v) {
@@ -207,24 +115,10 @@ std::optional<RobotClick> deepestClick(const MaskGrid& grid,
 }
 
 std::optional<VoxelBox> labelBox(const MaskGrid& grid, const std::vector<std::uint8_t>& label) {
-    std::optional<VoxelBox> box;
-    std::size_t v = 0;
-    for (int k = 0; k < grid.dims.z; ++k) {
-        for (int j = 0; j < grid.dims.y; ++j) {
-            for (int i = 0; i < grid.dims.x; ++i, ++v) {
-                if (label[v] == 0) {
-                    continue;
-                }
-                const glm::ivec3 p(i, j, k);
-                if (!box) {
-                    box = VoxelBox{p, p};
-                }
-                box->lo = glm::min(box->lo, p);
-                box->hi = glm::max(box->hi, p);
-            }
-        }
+    if (const std::optional<MaskBox> box = maskBox(grid.dims, label)) {
+        return VoxelBox{box->lo, box->hi};
     }
-    return box;
+    return std::nullopt;
 }
 
 std::optional<RobotClick> initialClick(const MaskGrid& grid,
@@ -298,8 +192,8 @@ double surfaceDice(const MaskGrid& grid, const std::vector<std::uint8_t>& a,
     if (na == 0 || nb == 0) {
         return 0.0;
     }
-    const std::vector<float> toB = distanceToSitesMm(grid, sb, false);
-    const std::vector<float> toA = distanceToSitesMm(grid, sa, false);
+    const std::vector<float> toB = distanceToSitesMm(grid.dims, grid.spacing, sb, false);
+    const std::vector<float> toA = distanceToSitesMm(grid.dims, grid.spacing, sa, false);
     std::size_t close = 0;
     for (std::size_t v = 0; v < sa.size(); ++v) {
         close += sa[v] != 0 && static_cast<double>(toB[v]) <= toleranceMm ? 1 : 0;

@@ -21,13 +21,6 @@ struct MaskGrid {
     }
 };
 
-// Exact Euclidean distance in mm from every voxel to the nearest voxel where `sites` is
-// non-zero (0 on a site). With `beyondIsSite` the voxels just outside the grid count as sites
-// too (a region's distance to its boundary, the grid's edge included); without, a grid with no
-// site gives +infinity everywhere.
-std::vector<float> distanceToSitesMm(const MaskGrid& grid, const std::vector<std::uint8_t>& sites,
-                                     bool beyondIsSite);
-
 // The largest 26-connected component of `region`'s non-zero voxels (1 in it, else 0); of
 // components of equal size, the one whose first voxel comes first in storage order. All zero
 // when the region is empty.

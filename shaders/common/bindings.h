@@ -45,6 +45,7 @@
 #define SOLVER_SCAN_UNIT 0    // speed/data_speed.glsl, solver: I (scan or smoothed copy)
 #define SOLVER_FACTOR_UNIT 1  // speed/data_speed.glsl, solver: edge g or classifier output
 #define SOLVER_CLAIMED_UNIT 3 // solver/barrier_speed.glsl: voxels other structures hold
+#define SOLVER_KEPT_UNIT 4    // solver/barrier_speed.glsl: voxels the surface keeps
 #define SPEED_SOURCE_UNIT 0   // speed/*.comp (each runs alone): the texture it reads
 #define READ_VOLUME_UNIT 0    // gpu/read_volume.comp (runs alone): the texture it reads
 #define VIEW_SCAN_UNIT 0      // render/view_common.glsl: the scan, linear filtering

@@ -11,7 +11,9 @@
 // instead; bounded by the window (classifyWithinWindow), its bound widens there as the
 // threshold's does. Outside the operator's box (model::Box; without one it holds the whole scan)
 // every voxel blocks as a blocking sphere does: the surface never leaves the box. So does every
-// voxel another structure holds (LevelSetSolver::setClaimed): the surface never enters it.
+// voxel another structure holds (LevelSetSolver::setClaimed): the surface never enters it. A
+// kept voxel (LevelSetSolver::setKept) keeps as a keeping sphere does: the surface never
+// leaves it.
 // The host side: LevelSetSolver::uploadBarriers (app/solver/level_set_edits.cpp).
 // Include after speed/data_speed.glsl and solver/sphere_metric.glsl.
 #ifndef MAX_BARRIERS
@@ -23,20 +25,24 @@ uniform vec2 barrierLevels[MAX_BARRIERS]; // tissue level (real units), reach (a
 uniform float barrierHold;
 uniform ivec3 boxLo;
 uniform ivec3 boxHi;
-// One bit a voxel, 32 along i to a texel (bit i % 32 of texel (i / 32, j, k)); bound only while
-// hasClaimed, so a run without claimed voxels reads no texture here.
+// One bit a voxel, 32 along i to a texel (bit i % 32 of texel (i / 32, j, k):
+// solver/voxel_bits.hpp); each bound only while its flag is set, so a run without such voxels
+// reads no texture here. Claimed: another structure's, blocking. Kept: the part of the surface an
+// erase's run may not take back (the workflow's: docs/steering.md), keeping.
 precision highp usampler3D;
 layout(binding = SOLVER_CLAIMED_UNIT) uniform highp usampler3D claimedBits;
 uniform bool hasClaimed;
+layout(binding = SOLVER_KEPT_UNIT) uniform highp usampler3D keptBits;
+uniform bool hasKept;
 
-bool claimedVoxel(ivec3 voxel) {
-    uint word = texelFetch(claimedBits, ivec3(voxel.x >> 5, voxel.yz), 0).r;
+bool voxelBit(highp usampler3D bits, ivec3 voxel) {
+    uint word = texelFetch(bits, ivec3(voxel.x >> 5, voxel.yz), 0).r;
     return ((word >> uint(voxel.x & 31)) & 1u) != 0u;
 }
 
 float barrierSpeed(ivec3 voxel, float dataSpeed) {
     if (any(lessThan(voxel, boxLo)) || any(greaterThan(voxel, boxHi)) ||
-        (hasClaimed && claimedVoxel(voxel))) {
+        (hasClaimed && voxelBit(claimedBits, voxel))) {
         return -max(abs(dataSpeed), barrierHold);
     }
     vec3 p = vec3(voxel);
@@ -57,6 +63,10 @@ float barrierSpeed(ivec3 voxel, float dataSpeed) {
                                               : classifyWithin(texelFetch(speedFactor, voxel, 0).r,
                                                                w, halfWidth));
         }
+    }
+    // After the spheres: a tap's erase in the kept part, the operator's newer word, blocks.
+    if (hasKept && voxelBit(keptBits, voxel)) {
+        return max(abs(dataSpeed), barrierHold);
     }
     return speed;
 }

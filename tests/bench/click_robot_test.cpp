@@ -23,35 +23,6 @@ std::vector<std::uint8_t> box(const MaskGrid& g, glm::ivec3 lo, glm::ivec3 hi) {
     return m;
 }
 
-TEST(ClickRobot, DistancesAreExactOnAnAnisotropicGrid) {
-    // Against brute force: every voxel's nearest site, in mm, on random sites.
-    const MaskGrid g{{9, 7, 5}, {0.8, 1.3, 2.5}};
-    std::mt19937 rng(7);
-    std::vector<std::uint8_t> sites(g.count(), 0);
-    for (auto& s : sites) {
-        s = rng() % 17 == 0 ? 1 : 0;
-    }
-    const std::vector<float> d = distanceToSitesMm(g, sites, false);
-    for (int k = 0; k < g.dims.z; ++k) {
-        for (int j = 0; j < g.dims.y; ++j) {
-            for (int i = 0; i < g.dims.x; ++i) {
-                double best = INFINITY;
-                for (int c = 0; c < g.dims.z; ++c) {
-                    for (int b = 0; b < g.dims.y; ++b) {
-                        for (int a = 0; a < g.dims.x; ++a) {
-                            if (sites[at(g, a, b, c)] != 0) {
-                                best = std::min(
-                                    best, glm::length(glm::dvec3(i - a, j - b, k - c) * g.spacing));
-                            }
-                        }
-                    }
-                }
-                EXPECT_NEAR(d[at(g, i, j, k)], best, 1e-4) << i << "," << j << "," << k;
-            }
-        }
-    }
-}
-
 TEST(ClickRobot, TheLargestComponentIs26Connected) {
     const MaskGrid g{{8, 8, 8}, {1, 1, 1}};
     std::vector<std::uint8_t> m(g.count(), 0);

@@ -81,6 +81,7 @@ std::vector<std::string> differences(const KioskConfig& a, const KioskConfig& b)
     field("brush.radius", a.brush.radius == b.brush.radius);
     field("brush.correction_reach", a.brush.correctionReach == b.brush.correctionReach);
     field("brush.erase_run_growth", a.brush.eraseRunGrowth == b.brush.eraseRunGrowth);
+    field("brush.erase_withdraw_mm", a.brush.eraseWithdrawMm == b.brush.eraseWithdrawMm);
     field("speed.kind", a.speed.kind == b.speed.kind);
     field("speed.classify_within_window",
           a.speed.classifyWithinWindow == b.speed.classifyWithinWindow);
@@ -376,6 +377,7 @@ TEST_F(ConfigTest, Speed) {
     expectRejected("[speed]\nclassify_place_reach = -1\n", 2, "speed.classify_place_reach",
                    "at least 0");
     expectRejected("[brush]\nerase_run_growth = -0.1\n", 2, "brush.erase_run_growth", "at least 0");
+    expectRejected("[brush]\nerase_withdraw_mm = -1\n", 2, "brush.erase_withdraw_mm", "at least 0");
     expectRejected("[speed]\nsmooth_iterations = 1001\n", 2, "speed.smooth_iterations",
                    "at most 1000");
     expectRejected("[speed]\nsmooth_iterations = -1\n", 2, "speed.smooth_iterations", "at least 0");

@@ -1,7 +1,9 @@
 // The kiosk's engine on the real session: scans read off the calling thread, sphere edits,
 // steps, undo snapshots (GPU copies within a budget, masks beyond), export; and the screen
 // compositor's placement and rotation.
+#include "core/mask_depth.hpp"
 #include "core/sample_phantom.hpp"
+#include "core/volume.hpp"
 #include "engine/session_engine.hpp"
 #include "kiosk/screen_compositor.hpp"
 #include "model/speed_kind.hpp"
@@ -134,6 +136,59 @@ TEST_F(KioskEngine, TheVolumeWhileTheFrontMovesFollowsTheStepsCounts) {
     const double counted =
         static_cast<double>(engine.session()->insideVoxels()) * s.x * s.y * s.z / 1000.0;
     EXPECT_NEAR(afterEdits, counted, 1e-9);
+}
+
+// An erase's run's limit (model::WithdrawLimit) on the real session: where the speed takes the
+// whole surface back, the voxels deeper than the depth stay, but not within the sphere, where
+// the surface withdraws as the speed says; lifted, the surface withdraws on.
+TEST_F(KioskEngine, AWithdrawLimitKeepsTheSurfacesDeepVoxelsBeyondItsSphere) {
+    SessionEngine engine;
+    engine.beginLoad("builtin:sample");
+    ASSERT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
+    const PhantomLesion lesion = kPhantomLesion;
+    const glm::vec3 centre(lesion.i, lesion.j, lesion.k);
+    engine.addSeed({centre, 8.0F});
+    const session::Session& s = *engine.session();
+    const glm::ivec3 dims = s.scan().dims();
+    const std::vector<std::uint8_t> before = s.mask();
+    const double depthMm = 2.0 * s.scan().geometry().spacing.x;
+    const std::vector<std::uint8_t> deep =
+        deeperThan(dims, s.scan().geometry().spacing, before, depthMm);
+    const model::Sphere around{centre + glm::vec3(6.0F, 0.0F, 0.0F), 3.0F};
+    engine.limitWithdrawal(model::WithdrawLimit{around, depthMm});
+    // A window far above every value of the scan: the speed takes back every voxel.
+    engine.setParams({static_cast<float>(lesion.intensity) + 1e4F, 10.0F, 0.8F});
+    engine.step(300);
+    const std::vector<std::uint8_t> held = s.mask();
+    const glm::vec3 scale = model::sphereScale(s.scan().geometry().spacing);
+    std::size_t deepKept = 0;
+    std::size_t deepLost = 0;
+    std::size_t aroundHeld = 0;
+    std::size_t shallowHeld = 0;
+    for (int k = 0; k < dims.z; ++k) {
+        for (int j = 0; j < dims.y; ++j) {
+            for (int i = 0; i < dims.x; ++i) {
+                const std::size_t v = linearIndex(dims, i, j, k);
+                if (model::sphereHolds(around, glm::dvec3(i, j, k), scale)) {
+                    aroundHeld += held[v] != 0 ? 1 : 0;
+                } else if (deep[v] != 0) {
+                    (held[v] != 0 ? deepKept : deepLost) += 1;
+                } else {
+                    shallowHeld += held[v] != 0 ? 1 : 0;
+                }
+            }
+        }
+    }
+    EXPECT_GT(deepKept, 0U);
+    EXPECT_EQ(deepLost, 0U);
+    EXPECT_EQ(aroundHeld, 0U) << "within the sphere the surface withdraws";
+    // The surface rests against the kept voxels: of the rim only what its smoothing holds.
+    EXPECT_LT(shallowHeld, deepKept / 4) << shallowHeld << " of the rim held, " << deepKept;
+
+    engine.limitWithdrawal(std::nullopt);
+    engine.step(300);
+    EXPECT_EQ(s.insideVoxels(), 0U) << "lifted, the surface withdraws on";
+    EXPECT_THROW(engine.limitWithdrawal(model::WithdrawLimit{around, -1.0}), std::invalid_argument);
 }
 
 TEST_F(KioskEngine, LoadsSeedsStepsUndoesAndExports) {

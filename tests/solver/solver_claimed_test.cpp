@@ -1,11 +1,14 @@
 // Voxels other structures hold (LevelSetSolver::setClaimed, shaders/solver/barrier_speed.glsl):
 // the speed blocks there, so a front in a uniform region grows up to a claimed slab and never
 // into it, a seed over claimed voxels recedes from them, and without the mask the front grows
-// through. The mask is the solver's, not the level set's: copies and parameters leave it.
+// through. The mask is the solver's, not the level set's: copies and parameters leave it. Kept
+// voxels (LevelSetSolver::setKept, what an erase's run may not take back) are their mirror: a
+// surface the speed takes back everywhere withdraws to them and no further.
 #include "solver/level_set_solver.hpp"
 #include "support/gpu_fixture.hpp"
 #include "support/solver_test_support.hpp"
 
+#include <algorithm>
 #include <gtest/gtest.h>
 
 namespace steerseg::test {
@@ -125,6 +128,53 @@ TEST_F(SolverClaimedTest, RefusesAMaskOfAnotherSizeAndTakesNoneForAnEmptyOne) {
     EXPECT_THROW(solver.setClaimed(std::vector<std::uint8_t>(countOf(kDims) + 1, 0)),
                  std::invalid_argument);
     EXPECT_TRUE(solver.hasClaimed()) << "a refused mask leaves the one in force";
+}
+
+// The region reads far outside the window: without kept voxels the surface withdraws to nothing;
+// with a ball of them it withdraws to the ball, holds every voxel of it and nothing two voxels
+// beyond; released, it withdraws on.
+TEST_F(SolverClaimedTest, ASurfaceTheSpeedTakesBackWithdrawsToKeptVoxelsAndNoFurther) {
+    LevelSetSolver solver(uniformRegion(), kDims);
+    solver.setParams({300.0F, 40.0F, 0.9F});
+    const glm::vec3 centre{25.0F, 18.0F, 14.0F};
+    std::vector<std::uint8_t> ball(countOf(kDims), 0);
+    for (int k = 0; k < kDims.z; ++k) {
+        for (int j = 0; j < kDims.y; ++j) {
+            for (int i = 0; i < kDims.x; ++i) {
+                if (glm::length(glm::vec3(i, j, k) - centre) <= 4.0F) {
+                    ball[voxelIndex(kDims, i, j, k)] = 1;
+                }
+            }
+        }
+    }
+    solver.addSphere({centre, 10.0F});
+    solver.setKept(ball);
+    EXPECT_TRUE(solver.hasKept());
+    EXPECT_EQ(solver.runUntilConverged(3000).stopReason, StopReason::Converged);
+    const std::vector<std::uint8_t> held = solver.readMask();
+    std::size_t keptOutside = 0;
+    std::size_t beyond = 0;
+    for (int k = 0; k < kDims.z; ++k) {
+        for (int j = 0; j < kDims.y; ++j) {
+            for (int i = 0; i < kDims.x; ++i) {
+                const std::size_t v = voxelIndex(kDims, i, j, k);
+                keptOutside += ball[v] != 0 && held[v] == 0 ? 1 : 0;
+                beyond += held[v] != 0 && glm::length(glm::vec3(i, j, k) - centre) > 6.0F ? 1 : 0;
+            }
+        }
+    }
+    EXPECT_EQ(keptOutside, 0U);
+    EXPECT_EQ(beyond, 0U);
+
+    solver.setKept({});
+    EXPECT_FALSE(solver.hasKept());
+    solver.step(300);
+    const std::vector<std::uint8_t> released = solver.readMask();
+    EXPECT_EQ(
+        std::count_if(released.begin(), released.end(), [](std::uint8_t v) { return v != 0; }), 0)
+        << "released, the surface withdraws on";
+    EXPECT_THROW(solver.setKept(std::vector<std::uint8_t>(countOf(kDims) - 1, 1)),
+                 std::invalid_argument);
 }
 
 } // namespace

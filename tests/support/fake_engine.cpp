@@ -204,6 +204,16 @@ void FakeEngine::setReach(const std::optional<model::Reach>& reach) {
     reach_ = reach;
 }
 
+void FakeEngine::limitWithdrawal(const std::optional<model::WithdrawLimit>& limit) {
+    if (limit) {
+        requireScan("limitWithdrawal");
+        if (!(limit->depthMm >= 0.0) || !std::isfinite(limit->depthMm)) {
+            misused("limitWithdrawal with a depth that is negative or not finite");
+        }
+    }
+    withdrawLimit_ = limit;
+}
+
 bool FakeEngine::addBarrier(const model::Barrier& barrier) {
     requireScan("addBarrier");
     if (barriers_.size() >= model::kMaxBarriers) {

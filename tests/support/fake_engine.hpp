@@ -74,6 +74,10 @@ class FakeEngine : public workflow::Engine {
     [[nodiscard]] const std::vector<model::Barrier>& barrierList() const { return barriers_; }
     void setReach(const std::optional<model::Reach>& reach) override;
     [[nodiscard]] const std::optional<model::Reach>& reach() const { return reach_; }
+    void limitWithdrawal(const std::optional<model::WithdrawLimit>& limit) override;
+    [[nodiscard]] const std::optional<model::WithdrawLimit>& withdrawLimit() const {
+        return withdrawLimit_;
+    }
     void clearLevelSet() override;
     [[nodiscard]] bool hasLevelSet() const override { return inside_ > 0; }
     void setParams(const model::LevelSetParams& params) override;
@@ -131,6 +135,7 @@ class FakeEngine : public workflow::Engine {
     workflow::SpeedChoice speed_;
     std::vector<model::Barrier> barriers_;
     std::optional<model::Reach> reach_;
+    std::optional<model::WithdrawLimit> withdrawLimit_;
     std::map<workflow::SnapshotId, LevelSet> snapshots_;
     workflow::SnapshotId nextId_ = 1;
     mutable int misuse_ = 0;

@@ -273,6 +273,7 @@ TEST(WorkflowCorrect, AnEraseRunThatGrowsTooFarIsTakenBackToTheErase) {
             << r.status().message;
         EXPECT_TRUE(r.status().canUndo) << "the erase is still one undo step";
         EXPECT_EQ(r.status().eraseRunsTakenBack, 1);
+        EXPECT_TRUE(r.engine.withdrawLimit().has_value()) << "from the same surface";
         // Once: the run goes on from there, whatever it grows to (this fake ignores the reach).
         r.wf->evolve(10);
         EXPECT_TRUE(r.engine.inside({3, 6, 4}));
@@ -287,6 +288,7 @@ TEST(WorkflowCorrect, AnEraseRunThatGrowsTooFarIsTakenBackToTheErase) {
         EXPECT_TRUE(r.engine.reach()->recedeOutside);
         EXPECT_EQ(r.engine.reach()->sphere.centre, glm::vec3(4.0F, 6.0F, 4.0F));
         EXPECT_EQ(r.status().erasesWithdrawOnly, 1);
+        EXPECT_TRUE(r.engine.withdrawLimit().has_value());
         EXPECT_NE(r.status().message.find("only withdraws"), std::string::npos)
             << r.status().message;
         ASSERT_TRUE(r.act(model::NudgeParam{model::Param::T, 1.0}).accepted);
@@ -294,6 +296,44 @@ TEST(WorkflowCorrect, AnEraseRunThatGrowsTooFarIsTakenBackToTheErase) {
         ASSERT_TRUE(r.act(model::Correct{{5.0, 6.0, 4.0}, false, 1.0}).accepted);
         EXPECT_FALSE(r.engine.reach().has_value()) << "a new T: watched again, run everywhere";
         EXPECT_EQ(r.status().erasesWithdrawOnly, 1);
+    }
+}
+
+// Beyond its reach an erase's run takes the surface back at most Settings::eraseWithdrawMm
+// (model::WithdrawLimit): the engine holds the limit for the run, from the surface the erase
+// left, and lets it go when the run stops or the level set changes. A positive correction's run
+// sets none.
+TEST(WorkflowCorrect, AnErasesRunTakesTheSurfaceBackAtMostTheWithdrawDepthBeyondItsReach) {
+    for (const double depth : {4.0, 0.0}) {
+        workflow::Settings learning = testSettings();
+        learning.defaultSpeed = model::SpeedKind::Classify;
+        learning.eraseWithdrawMm = depth;
+        Rig r(learning);
+        r.load();
+        ASSERT_TRUE(r.act(model::Correct{{8.0, 6.0, 4.0}, true, 2.0}).accepted);
+        EXPECT_FALSE(r.engine.withdrawLimit().has_value()) << "the first run's";
+        ASSERT_TRUE(r.act(model::Pause{}).accepted);
+        ASSERT_TRUE(r.act(model::Correct{{10.0, 6.0, 4.0}, false, 1.0}).accepted);
+        ASSERT_EQ(r.state(), State::Evolving);
+        ASSERT_FALSE(r.engine.reach().has_value()) << "its run is the whole surface's";
+        if (depth == 0.0) {
+            EXPECT_FALSE(r.engine.withdrawLimit().has_value()) << "0: no limit";
+            continue;
+        }
+        ASSERT_TRUE(r.engine.withdrawLimit().has_value());
+        EXPECT_EQ(r.engine.withdrawLimit()->around.centre, glm::vec3(10.0F, 6.0F, 4.0F));
+        EXPECT_FLOAT_EQ(r.engine.withdrawLimit()->around.radius, 3.0F); // the reach: 3 x brush
+        EXPECT_DOUBLE_EQ(r.engine.withdrawLimit()->depthMm, 4.0);
+        ASSERT_TRUE(r.act(model::Pause{}).accepted);
+        EXPECT_FALSE(r.engine.withdrawLimit().has_value()) << "the run stopped";
+        ASSERT_TRUE(r.act(model::Correct{{6.0, 6.0, 4.0}, true, 1.0}).accepted);
+        EXPECT_FALSE(r.engine.withdrawLimit().has_value()) << "an added part's run";
+        // Another change of the level set while the erase's run lasts: not the surface it kept.
+        ASSERT_TRUE(r.act(model::Pause{}).accepted);
+        ASSERT_TRUE(r.act(model::Correct{{11.0, 6.0, 4.0}, false, 1.0}).accepted);
+        ASSERT_TRUE(r.engine.withdrawLimit().has_value());
+        ASSERT_TRUE(r.act(model::Undo{}).accepted);
+        EXPECT_FALSE(r.engine.withdrawLimit().has_value()) << "undone";
     }
 }
 
