@@ -33,4 +33,8 @@ std::optional<MaskBox> maskBox(const glm::ivec3& dims, std::span<const std::uint
     return MaskBox{lo, hi};
 }
 
+MaskBox grownWithin(const MaskBox& box, int margin, const glm::ivec3& dims) {
+    return {glm::max(box.lo - margin, glm::ivec3(0)), glm::min(box.hi + margin, dims - 1)};
+}
+
 } // namespace steerseg

@@ -133,20 +133,12 @@ std::vector<std::uint8_t> deeperThan(const glm::ivec3& dims, const glm::dvec3& s
         return deep;
     }
     // One voxel of outside around the box, where the grid has it: the sites of the distance.
-    const glm::ivec3 lo = glm::max(box->lo - 1, glm::ivec3(0));
-    const glm::ivec3 hi = glm::min(box->hi + 1, dims - 1);
-    const glm::ivec3 sub = hi - lo + 1;
+    const MaskBox around = grownWithin(*box, 1, dims);
+    const glm::ivec3 lo = around.lo;
+    const glm::ivec3 sub = boxDims(around);
     // Squared distances to the outside, the box's voxels only, compared in squared mm.
-    std::vector<float> sq(static_cast<std::size_t>(sub.x) * static_cast<std::size_t>(sub.y) *
-                          static_cast<std::size_t>(sub.z));
-    for (int k = 0; k < sub.z; ++k) {
-        for (int j = 0; j < sub.y; ++j) {
-            for (int i = 0; i < sub.x; ++i) {
-                const bool in = mask[linearIndex(dims, lo.x + i, lo.y + j, lo.z + k)] != 0;
-                sq[linearIndex(sub, i, j, k)] = in ? std::numeric_limits<float>::infinity() : 0.0F;
-            }
-        }
-    }
+    std::vector<float> sq =
+        cropMask(dims, mask, around, std::numeric_limits<float>::infinity(), 0.0F);
     squaredDistancesMm(sq, sub, spacingMm, false);
     const double limit = depthMm * depthMm;
     for (int k = 0; k < sub.z; ++k) {

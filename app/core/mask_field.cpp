@@ -48,19 +48,10 @@ std::vector<float> maskToField(const Geometry& geometry, std::span<const std::ui
     if (!inside) {
         return field;
     }
-    const glm::ivec3 lo = glm::max(inside->lo - kBlurRadius, glm::ivec3(0));
-    const glm::ivec3 hi = glm::min(inside->hi + kBlurRadius, dims - 1);
-    const glm::ivec3 box = hi - lo + 1;
-    std::vector<float> a(static_cast<std::size_t>(box.x) * static_cast<std::size_t>(box.y) *
-                         static_cast<std::size_t>(box.z));
-    for (int k = 0; k < box.z; ++k) {
-        for (int j = 0; j < box.y; ++j) {
-            for (int i = 0; i < box.x; ++i) {
-                a[linearIndex(box, i, j, k)] =
-                    mask[linearIndex(dims, lo.x + i, lo.y + j, lo.z + k)] != 0 ? -0.5f : 0.5f;
-            }
-        }
-    }
+    const MaskBox blurred = grownWithin(*inside, kBlurRadius, dims);
+    const glm::ivec3 lo = blurred.lo;
+    const glm::ivec3 box = boxDims(blurred);
+    std::vector<float> a = cropMask(dims, mask, blurred, -0.5f, 0.5f);
     // One axis at a time; beyond the box (in the grid or past it) every pass sees +0.5.
     const auto weights = blurWeights();
     std::vector<float> b(a.size());
