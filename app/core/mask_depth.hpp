@@ -2,7 +2,7 @@
 
 // How deep a voxel lies in a mask, in mm on the scan's grid: the click robot's deepest voxel
 // (bench/steering) and the part of a surface an erase's run may not take back
-// (workflow: docs/steering.md, "What an erase's run may take back").
+// (workflow: docs/steering.md, "An erase's run, watched and taken back").
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <span>
