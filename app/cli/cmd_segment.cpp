@@ -12,6 +12,7 @@
 #include "session/segment_report.hpp"
 #include "session/session.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 #include <span>
@@ -73,6 +74,12 @@ int runSegment(std::span<const std::string> words) {
     const session::RunOutcome run = session.run(request.mode);
 
     const std::vector<std::uint8_t> mask = session.mask();
+    if (std::none_of(mask.begin(), mask.end(), [](std::uint8_t m) { return m != 0; })) {
+        std::fprintf(stderr,
+                     "steerseg: note: the surface vanished after %d iterations: nothing is inside "
+                     "(a larger seed, a wider eps or a smaller alpha)\n",
+                     session.stats().iterations);
+    }
     // Surfaces come from the level set's zero crossing (Session::exportAs), not the mask.
     const exports::ExportSummary written = session.exportAs(output, format);
     if (!written.note.empty()) {

@@ -66,8 +66,11 @@ std::string segmentReport(const Session& session, const RunOutcome& run,
     j["barriers_per_iteration"] = static_cast<double>(calls.barriers) * perIteration;
     j["host_syncs_per_iteration"] =
         static_cast<double>(calls.readBacks + calls.finishes) * perIteration;
-    j["converged"] = session.converged();
-    j["stop_reason"] = model::stopReasonName(run.result.stopReason);
+    // A surface that vanished stops the solver as a converged one would (nothing moves), but it
+    // answered nothing: the report says so rather than "converged" with no voxel inside.
+    const bool vanished = inside == 0;
+    j["converged"] = session.converged() && !vanished;
+    j["stop_reason"] = vanished ? "vanished" : model::stopReasonName(run.result.stopReason);
     if (const auto& leak = run.result.leak) {
         // Where the surface broke through: voxel indices and the scanner's millimetres.
         const glm::vec3 c = leak->centre();

@@ -182,6 +182,24 @@ TEST(SolverCli, BarriersAndTheLeakWatch) {
     EXPECT_GT(j["inside_voxels"].get<double>(), 3000.0);
 }
 
+// A seed in tissue the window refuses shrinks away: the solver stops as if converged (nothing
+// moves), but the report and the note say the surface vanished, not that it converged.
+TEST(SolverCli, ASurfaceThatVanishedIsReportedSoNotAsConverged) {
+    const auto dir = tempDir("solver_cli_vanished");
+    const auto report = dir / "report.json";
+    // The lesion's 800 is far from the background around (60, 30, 40): every voxel is outside.
+    const RunResult r = runSegment("--input builtin:sample --seed 60,30,40,2 --T 800 --eps 20 "
+                                   "--alpha 0.5 --converge --max-iterations 400 --output " +
+                                   (dir / "m.nii.gz").string() + " --report " + report.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("the surface vanished after"), std::string::npos) << r.output;
+    std::ifstream in(report);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["inside_voxels"], 0);
+    EXPECT_EQ(j["stop_reason"], "vanished");
+    EXPECT_FALSE(j["converged"].get<bool>());
+}
+
 // The output's extension (or --format) picks the format; a surface comes from the level set
 // itself. Converged, its enclosed volume is within 2% of the mask's (measured: 0.5%); while
 // the front still moves fast it is steep and the two differ more (8% at time 0.1).
