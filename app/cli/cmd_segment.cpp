@@ -12,7 +12,6 @@
 #include "session/segment_report.hpp"
 #include "session/session.hpp"
 
-#include <algorithm>
 #include <cstdio>
 #include <optional>
 #include <span>
@@ -74,7 +73,7 @@ int runSegment(std::span<const std::string> words) {
     const session::RunOutcome run = session.run(request.mode);
 
     const std::vector<std::uint8_t> mask = session.mask();
-    if (std::none_of(mask.begin(), mask.end(), [](std::uint8_t m) { return m != 0; })) {
+    if (session::surfaceVanished(mask)) {
         std::fprintf(stderr,
                      "steerseg: note: the surface vanished after %d iterations: nothing is inside "
                      "(a larger seed, a wider eps or a smaller alpha)\n",

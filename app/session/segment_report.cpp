@@ -1,8 +1,13 @@
 #include "session/segment_report.hpp"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 namespace steerseg::session {
+
+bool surfaceVanished(std::span<const std::uint8_t> mask) {
+    return std::none_of(mask.begin(), mask.end(), [](std::uint8_t m) { return m != 0; });
+}
 
 std::string segmentReport(const Session& session, const RunOutcome& run,
                           std::span<const std::uint8_t> mask, const ReportContext& context) {
@@ -66,9 +71,8 @@ std::string segmentReport(const Session& session, const RunOutcome& run,
     j["barriers_per_iteration"] = static_cast<double>(calls.barriers) * perIteration;
     j["host_syncs_per_iteration"] =
         static_cast<double>(calls.readBacks + calls.finishes) * perIteration;
-    // A surface that vanished stops the solver as a converged one would (nothing moves), but it
-    // answered nothing: the report says so rather than "converged" with no voxel inside.
-    const bool vanished = inside == 0;
+    // It answered nothing: the report says so rather than "converged" with no voxel inside.
+    const bool vanished = surfaceVanished(mask);
     j["converged"] = session.converged() && !vanished;
     j["stop_reason"] = vanished ? "vanished" : model::stopReasonName(run.result.stopReason);
     if (const auto& leak = run.result.leak) {

@@ -28,6 +28,10 @@ struct ReportContext {
     model::LevelSetParams params;
     std::optional<ReferenceOverlap> reference;
 };
+// No voxel of `mask` inside: the surface vanished, which the solver stops as it stops a converged
+// front (nothing moves). The report's stop_reason is then "vanished" and the command says so.
+bool surfaceVanished(std::span<const std::uint8_t> mask);
+
 // `mask`: session.mask() as exported (read back once by the caller).
 std::string segmentReport(const Session& session, const RunOutcome& run,
                           std::span<const std::uint8_t> mask, const ReportContext& context);
