@@ -1,6 +1,7 @@
 // DICOM reader on hostile and awkward folders built from real slices: each is refused with a
 // ScanError naming the file or folder and the problem (with its numbers), or read correctly.
 #include "dicom_test_support.hpp"
+#include "support/write_faults.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -285,6 +286,34 @@ TEST(IoDicomCorpusHostile, DecoderAbortIsContainedAndReported) {
     EXPECT_NE(msg.find("the compressed pixel data is malformed: the decoder crashed on it"),
               std::string::npos)
         << msg;
+}
+
+// Found by fuzz_dicom: a deflated file cut at the end of its meta header. GDCM reads one more tag
+// to find that end and asserts where the file ends first, which aborted the process. The same file
+// with 3 bytes of its stream, and with a whole deflate stream of nothing, is refused too.
+TEST(IoDicomCorpusHostile, DeflatedFileWithoutADataSetIsRefused) {
+    const fs::path source = fs::path(STEERSEG_DICOM_CORPUS) / "ct_deflated.dcm";
+    const std::string bytes = readText(source);
+    ASSERT_GT(bytes.size(), 144u);
+    // (0002,0000)'s value, at byte 140, counts the meta header's bytes after it.
+    const auto u8 = [&](std::size_t i) { return static_cast<std::size_t>(bytes[i] & 0xff); };
+    const std::size_t metaEnd = 144 + (u8(140) | u8(141) << 8 | u8(142) << 16 | u8(143) << 24);
+    ASSERT_LT(metaEnd + 3, bytes.size());
+    const fs::path file = fs::temp_directory_path() / "steerseg-deflated-no-data-set.dcm";
+    const std::pair<std::string, const char*> cases[] = {
+        {bytes.substr(0, metaEnd), "the deflated data set is missing or cut short"},
+        {bytes.substr(0, metaEnd + 3), "the deflated data set is missing or cut short"},
+        // A final stored block of no bytes, then eight bytes of padding after the stream.
+        {bytes.substr(0, metaEnd) + std::string("\x01\x00\x00\xff\xff", 5) + std::string(8, '\0'),
+         "the data set is empty"},
+    };
+    for (const auto& [content, problem] : cases) {
+        std::ofstream(file, std::ios::binary | std::ios::trunc) << content;
+        const std::string msg = scanErrorOf([&] { (void)readDicom(file, {}); });
+        EXPECT_NE(msg.find(problem), std::string::npos) << content.size() << " bytes: " << msg;
+        EXPECT_NE(msg.find(file.filename().string()), std::string::npos) << msg;
+    }
+    fs::remove(file);
 }
 
 TEST_F(IoDicomHostile, SeriesWithoutPositionsIsRefused) {

@@ -355,10 +355,21 @@ std::uint64_t checkDicomStructure(const std::filesystem::path& path) {
     if (hasPreamble && syntaxUid.empty()) {
         w.fail("the meta header has no Transfer Syntax UID (0002,0010)");
     }
+    const auto emptyDataSet = [&path] {
+        return ScanError(path, "not a well-formed DICOM file: the data set is empty");
+    };
     Syntax syntax = Syntax::ExplicitLittle;
     if (syntaxUid == "1.2.840.10008.1.2.1.99") {
+        // GDCM reads one more tag from the raw bytes to find the meta header's end, and asserts
+        // where the file ends before it: no deflated stream is that short.
+        if (size - w.pos < 8) {
+            w.fail("the deflated data set is missing or cut short");
+        }
         std::istringstream inflated(inflateDataSet(path, w.pos));
         const auto inflatedSize = static_cast<std::uint64_t>(inflated.str().size());
+        if (inflatedSize == 0) {
+            throw emptyDataSet();
+        }
         Walker data(path, inflated, inflatedSize);
         data.elements(inflatedSize, Syntax::ExplicitLittle, 0, 0, false);
         return size;
@@ -381,7 +392,7 @@ std::uint64_t checkDicomStructure(const std::filesystem::path& path) {
     w.elements(size, syntax, 0, 0, true);
     const std::uint64_t end = w.paddingStart != 0 ? w.paddingStart : size;
     if (end <= dataSetStart) {
-        throw ScanError(path, "not a well-formed DICOM file: the data set is empty");
+        throw emptyDataSet();
     }
     return end;
 }
