@@ -78,7 +78,7 @@ ClickOutcome ClickSession::apply(const model::Action& prompt, int maxIterations)
     engine_.session()->finishGpuWork();
     r.seconds = since(start);
     if (!flow_.status().hasLevelSet) {
-        r.stopReason = "emptied";
+        r.stopReason = "vanished";
     } else if (last.stopReason == model::StopReason::Leak) {
         r.stopReason = "leak";
         r.leakWatch = last.leak ? model::leakSignName(last.leak->sign) : "";

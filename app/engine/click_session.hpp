@@ -18,8 +18,8 @@
 
 namespace steerseg::engine {
 
-// Why a click's run ended: "converged", "leak", "iteration_limit", or "emptied" (an erase
-// left no surface).
+// Why a click's run ended: "converged", "leak", "iteration_limit", or "vanished" (nothing left
+// inside: an erase took it all or the run shrank away; `segment` without clicks says the same).
 struct ClickOutcome {
     std::string stopReason;
     // A leak's: model::leakSignName of the watch that saw it; empty otherwise.

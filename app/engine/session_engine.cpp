@@ -251,7 +251,12 @@ void SessionEngine::clearLevelSet() {
 }
 
 bool SessionEngine::hasLevelSet() const {
-    return session_ && session_->hasLevelSet();
+    // Once seeded, a level set stays on the GPU when an erase or a run takes every voxel out:
+    // then there is no surface, as the exact count (after an edit or a stop) knows for free.
+    if (!session_ || !session_->hasLevelSet()) {
+        return false;
+    }
+    return !(insideCounted_ && volumeVersion_ == version_ && *insideCounted_ <= 0);
 }
 
 void SessionEngine::setParams(const model::LevelSetParams& params) {

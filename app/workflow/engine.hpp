@@ -127,6 +127,8 @@ class Engine {
     // sphere the scan cannot hold or a depth that is negative or not finite.
     virtual void limitWithdrawal(const std::optional<model::WithdrawLimit>& limit) = 0;
     virtual void clearLevelSet() = 0;
+    // A level set with a voxel inside, as far as known without counting: after an edit or an
+    // exact count of a stop, an empty one is none; while a run moves, that is its stop's to say.
     [[nodiscard]] virtual bool hasLevelSet() const = 0;
 
     virtual void setParams(const model::LevelSetParams& params) = 0;

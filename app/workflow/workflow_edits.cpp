@@ -240,8 +240,13 @@ Workflow::Outcome Workflow::sphereEdit(const glm::dvec3& voxel, double radius, b
     if (!notice.empty()) {
         status_.message = notice;
     }
-    if (status_.state == model::State::Evolving && !status_.hasLevelSet) {
-        enter(model::State::Paused, "the level set is empty: add a seed");
+    if (correcting && !status_.hasLevelSet) {
+        const std::string empty = "the level set is empty: add a seed";
+        if (status_.state == model::State::Evolving) {
+            enter(model::State::Paused, empty);
+        } else {
+            status_.message = empty; // not the stop's message of the surface now gone
+        }
     }
     return ok();
 }

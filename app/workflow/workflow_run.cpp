@@ -16,6 +16,7 @@ model::StepResult Workflow::evolve(int iterations) {
     }
     cause_ = "evolve";
     model::StepResult r;
+    bool vanished = false;
     try {
         r = engine_.step(iterations);
         dirty_ = true;
@@ -28,6 +29,9 @@ model::StepResult Workflow::evolve(int iterations) {
             r.leak.reset();
             status_.converged = false;
         }
+        // A run that shrank away converges on nothing: the exact count at its stop tells.
+        vanished = !status_.hasLevelSet || (r.converged && engine_.exactVolumeMl() <= 0.0);
+        status_.hasLevelSet = status_.hasLevelSet && !vanished;
     } catch (const std::exception& e) {
         enter(model::State::Error, oneLine(e.what()));
         noteAuditError();
@@ -39,7 +43,8 @@ model::StepResult Workflow::evolve(int iterations) {
         refreshAllowed();
         return {};
     }
-    if (!status_.hasLevelSet) {
+    if (vanished) {
+        status_.converged = false; // on nothing
         enter(model::State::Paused, "the surface vanished: add a seed, or widen eps");
     } else if (r.stopReason == model::StopReason::Leak && r.leak) {
         const glm::ivec3 c(r.leak->centre());

@@ -93,6 +93,21 @@ TEST_F(ClickSessionTest, ABoxRunsFromItsCentreAndHoldsTheLeak) {
     std::filesystem::remove(scan);
 }
 
+// A negative click over the whole structure leaves nothing inside: reported as "vanished", as
+// `segment` reports a run that shrank away, and never as converged.
+TEST_F(ClickSessionTest, AnEraseOfTheWholeSurfaceIsReportedAsVanished) {
+    const auto scan = dumbbell();
+    engine::ClickSession s(scan.string(), settings());
+    ASSERT_EQ(s.apply(model::SetBox{model::Box{{4, 8, 8}, {21, 24, 24}}}, 3000).stopReason,
+              "converged");
+    const engine::ClickOutcome r = s.apply(model::Correct{{12.0, 16.0, 16.0}, false, 10.0}, 3000);
+    EXPECT_EQ(r.stopReason, "vanished");
+    EXPECT_FALSE(inside(s, {12, 16, 16}));
+    EXPECT_NE(s.workflow().status().message.find("the level set is empty"), std::string::npos)
+        << "message: " << s.workflow().status().message;
+    std::filesystem::remove(scan);
+}
+
 TEST_F(ClickSessionTest, AFirstNegativeClickIsRefusedWithTheWorkflowsReason) {
     const auto scan = dumbbell();
     engine::ClickSession s(scan.string(), settings());

@@ -138,6 +138,38 @@ TEST_F(KioskEngine, TheVolumeWhileTheFrontMovesFollowsTheStepsCounts) {
     EXPECT_NEAR(afterEdits, counted, 1e-9);
 }
 
+// A level set seeded once stays on the GPU when nothing is left inside it; the engine then says
+// it has none (what the workflow reads as "vanished"), after an erase at once and after a run
+// that shrank away once its stop was counted.
+TEST_F(KioskEngine, HasNoLevelSetOnceNothingIsLeftInside) {
+    SessionEngine engine;
+    engine.beginLoad("builtin:sample");
+    ASSERT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
+    const PhantomLesion lesion = kPhantomLesion;
+    const glm::vec3 centre(lesion.i, lesion.j, lesion.k);
+    engine.setParams({static_cast<float>(lesion.intensity), 190.0F, 0.8F});
+    engine.addSeed({centre, 3.0F});
+    ASSERT_GT(engine.exactVolumeMl(), 0.0);
+    EXPECT_TRUE(engine.hasLevelSet());
+    engine.erase({centre, 6.0F});
+    EXPECT_FALSE(engine.hasLevelSet()) << "the erase took every voxel";
+    engine.addSeed({centre, 3.0F});
+    EXPECT_TRUE(engine.hasLevelSet());
+
+    // A seed in the background, far from the lesion's T, shrinks away (as in SolverCli's
+    // vanished run): unknown while it runs, counted at its stop.
+    engine.clearLevelSet();
+    engine.setParams({static_cast<float>(lesion.intensity), 20.0F, 0.5F});
+    engine.addSeed({glm::vec3(60.0F, 30.0F, 40.0F), 2.0F});
+    model::StepResult r;
+    for (int n = 0; n < 50 && !r.converged; ++n) {
+        r = engine.step(40);
+    }
+    ASSERT_TRUE(r.converged);
+    EXPECT_EQ(engine.exactVolumeMl(), 0.0);
+    EXPECT_FALSE(engine.hasLevelSet());
+}
+
 // An erase's run's limit (model::WithdrawLimit) on the real session: where the speed takes the
 // whole surface back, the voxels deeper than the depth stay, but not within the sphere, where
 // the surface withdraws as the speed says; lifted, the surface withdraws on.
