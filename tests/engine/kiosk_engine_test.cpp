@@ -36,13 +36,18 @@ LoadPoll waitForLoad(SessionEngine& engine) {
     }
 }
 
+// The built-in sample, read off the calling thread as the kiosk reads it.
+bool loadsSample(SessionEngine& engine) {
+    engine.beginLoad("builtin:sample");
+    return waitForLoad(engine).kind == LoadPoll::Ready;
+}
+
 class KioskEngine : public GpuTest {};
 
 // The edge speed takes its smoothing and kappa from the last probe's noise, as segment --probe.
 TEST_F(KioskEngine, TheEdgeSpeedNeedsAProbeAndFollowsItsNoise) {
     SessionEngine engine(model::SolverOptions{}, {2, 3.0, 1.0});
-    engine.beginLoad("builtin:sample");
-    ASSERT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
+    ASSERT_TRUE(loadsSample(engine));
     workflow::SpeedChoice edge;
     edge.kind = model::SpeedKind::Edge;
     try {
@@ -104,8 +109,7 @@ TEST_F(KioskEngine, FillsTheClassifySpeedAheadInPieces) {
 
 TEST_F(KioskEngine, TheVolumeWhileTheFrontMovesFollowsTheStepsCounts) {
     SessionEngine engine;
-    engine.beginLoad("builtin:sample");
-    ASSERT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
+    ASSERT_TRUE(loadsSample(engine));
     const PhantomLesion lesion = kPhantomLesion;
     const glm::vec3 centre(lesion.i, lesion.j, lesion.k);
     engine.addSeed({centre, 3.0F});
@@ -143,8 +147,7 @@ TEST_F(KioskEngine, TheVolumeWhileTheFrontMovesFollowsTheStepsCounts) {
 // that shrank away once its stop was counted.
 TEST_F(KioskEngine, HasNoLevelSetOnceNothingIsLeftInside) {
     SessionEngine engine;
-    engine.beginLoad("builtin:sample");
-    ASSERT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
+    ASSERT_TRUE(loadsSample(engine));
     const PhantomLesion lesion = kPhantomLesion;
     const glm::vec3 centre(lesion.i, lesion.j, lesion.k);
     engine.setParams({static_cast<float>(lesion.intensity), 190.0F, 0.8F});
@@ -175,8 +178,7 @@ TEST_F(KioskEngine, HasNoLevelSetOnceNothingIsLeftInside) {
 // the surface withdraws as the speed says; lifted, the surface withdraws on.
 TEST_F(KioskEngine, AWithdrawLimitKeepsTheSurfacesDeepVoxelsBeyondItsSphere) {
     SessionEngine engine;
-    engine.beginLoad("builtin:sample");
-    ASSERT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
+    ASSERT_TRUE(loadsSample(engine));
     const PhantomLesion lesion = kPhantomLesion;
     const glm::vec3 centre(lesion.i, lesion.j, lesion.k);
     engine.addSeed({centre, 8.0F});
@@ -225,8 +227,7 @@ TEST_F(KioskEngine, AWithdrawLimitKeepsTheSurfacesDeepVoxelsBeyondItsSphere) {
 
 TEST_F(KioskEngine, LoadsSeedsStepsUndoesAndExports) {
     SessionEngine engine;
-    engine.beginLoad("builtin:sample");
-    ASSERT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
+    ASSERT_TRUE(loadsSample(engine));
     const workflow::ScanInfo info = engine.scanInfo();
     EXPECT_EQ(info.name, "sample");
     EXPECT_EQ(info.dims, makeSamplePhantom().dims());
@@ -283,8 +284,7 @@ TEST_F(KioskEngine, LoadsSeedsStepsUndoesAndExports) {
 // in host memory. A copy restores the very phi it copied, after a run too; a mask its voxels.
 TEST_F(KioskEngine, UndoCopiesStayWithinTheirGpuBudgetAndRestoreWhatTheyTook) {
     const auto seeded = [](SessionEngine& engine) {
-        engine.beginLoad("builtin:sample");
-        ASSERT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
+        ASSERT_TRUE(loadsSample(engine));
         const glm::vec3 centre = glm::vec3(engine.scanInfo().dims) * 0.5F;
         const workflow::ProbeResult probe = engine.probe(glm::dvec3(centre), 4.0);
         engine.addSeed({centre, 4.0F});
@@ -360,8 +360,7 @@ TEST_F(KioskEngine, UndoCopiesStayWithinTheirGpuBudgetAndRestoreWhatTheyTook) {
 TEST_F(KioskEngine, AFailedLoadSaysWhyAndKeepsTheScanItHad) {
     SessionEngine engine;
     EXPECT_EQ(engine.pollLoad().kind, LoadPoll::Failed); // nothing asked for
-    engine.beginLoad("builtin:sample");
-    ASSERT_EQ(waitForLoad(engine).kind, LoadPoll::Ready);
+    ASSERT_TRUE(loadsSample(engine));
     engine.beginLoad("/nonexistent/scan.nii.gz");
     const LoadPoll failed = waitForLoad(engine);
     ASSERT_EQ(failed.kind, LoadPoll::Failed);
