@@ -31,7 +31,7 @@ model::StepResult Workflow::evolve(int iterations) {
         }
         // A run that shrank away converges on nothing: the exact count at its stop tells.
         vanished = !status_.hasLevelSet || (r.converged && engine_.exactVolumeMl() <= 0.0);
-        status_.hasLevelSet = status_.hasLevelSet && !vanished;
+        status_.hasLevelSet = !vanished;
     } catch (const std::exception& e) {
         enter(model::State::Error, oneLine(e.what()));
         noteAuditError();
