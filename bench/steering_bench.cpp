@@ -2,9 +2,11 @@
 // of one scan towards its expert label, through the kiosk's own workflow and engine
 // (engine::ClickSession, the code `segment --click` runs), and in the same run the paint-only
 // baseline: the same robot with each click painted as a sphere of the same radius, no solver.
-//   steering_bench --input SCAN --reference LABEL [--reference-label N] [--clicks N]
+//   steering_bench --input SCAN --reference LABEL [--reference-label N] [--clicks N] [--box]
 //                  [--paint-only] [--max-iterations N] [--config FILE] [--nsd-mm T]
 //                  [--masks DIR] --report R.json
+// --box: the challenge's protocol, the label's box first and each correction where the
+// challenge's evaluation clicks (the error's centre in voxel steps: bench::DepthMeasure).
 // The report: {"clicks": [...], "baseline": {"clicks": [...]}, "summary": {...}}, one entry a
 // click (0: the initial prompt) with its kind, voxel, radius, Dice, normalised surface Dice,
 // seconds from the click to the solver's stop and to its first visible change (and where the
@@ -204,7 +206,10 @@ Json robot(const bench::MaskGrid& grid, const std::vector<std::uint8_t>& label, 
         clicks.push_back(std::move(j));
         dices.push_back(d);
         nsds.push_back(nsd);
-        c = bench::correctionClick(grid, mask, label);
+        // The challenge's protocol clicks where the challenge's evaluation would.
+        c = bench::correctionClick(grid, mask, label,
+                                   box ? bench::DepthMeasure::VoxelSteps
+                                       : bench::DepthMeasure::Millimetres);
     }
     Json out;
     out["clicks"] = std::move(clicks);

@@ -9,7 +9,8 @@
 #                           [--box] [--paint-only] --report R.json
 #
 # --box: the interactive challenge's protocol, each case started from its label's bounding box
-# (no click), then the corrections; without it the first prompt is a click.
+# (no click), then the corrections where the challenge's evaluation clicks (the error's centre
+# in voxel steps); without it the first prompt is a click and the centres are in mm.
 #
 # Builds build/release's steering_bench (Release) if it is missing; STEERSEG_STEERING_BENCH
 # names another one instead (build/default's, RelWithDebInfo). Scans come from

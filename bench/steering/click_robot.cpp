@@ -82,7 +82,8 @@ std::vector<std::uint8_t> largestComponent(const MaskGrid& grid,
 
 std::optional<RobotClick> deepestClick(const MaskGrid& grid,
                                        const std::vector<std::uint8_t>& region,
-                                       const std::vector<std::uint8_t>& label) {
+                                       const std::vector<std::uint8_t>& label,
+                                       DepthMeasure measure) {
     const std::vector<std::uint8_t> component = largestComponent(grid, region);
     std::vector<std::uint8_t> outside(component.size());
     std::size_t voxels = 0;
@@ -93,7 +94,9 @@ std::optional<RobotClick> deepestClick(const MaskGrid& grid,
     if (voxels == 0) {
         return std::nullopt;
     }
-    const std::vector<float> depth = distanceToSitesMm(grid.dims, grid.spacing, outside, true);
+    const bool inMm = measure == DepthMeasure::Millimetres;
+    const std::vector<float> depth =
+        distanceToSitesMm(grid.dims, inMm ? grid.spacing : glm::dvec3(1.0), outside, true);
     std::size_t best = 0;
     float bestDepth = -1.0F;
     for (std::size_t v = 0; v < component.size(); ++v) {
@@ -109,7 +112,10 @@ std::optional<RobotClick> deepestClick(const MaskGrid& grid,
         static_cast<int>((best / static_cast<std::size_t>(d.x)) % static_cast<std::size_t>(d.y)),
         static_cast<int>(best / (static_cast<std::size_t>(d.x) * static_cast<std::size_t>(d.y)))};
     c.positive = label[best] != 0;
-    c.depthMm = static_cast<double>(bestDepth);
+    // The brush is sized in mm whichever measure chose the voxel.
+    const float depthMm =
+        inMm ? bestDepth : distanceToSitesMm(grid.dims, grid.spacing, outside, true)[best];
+    c.depthMm = static_cast<double>(depthMm);
     c.componentVoxels = voxels;
     return c;
 }
@@ -128,12 +134,13 @@ std::optional<RobotClick> initialClick(const MaskGrid& grid,
 
 std::optional<RobotClick> correctionClick(const MaskGrid& grid,
                                           const std::vector<std::uint8_t>& mask,
-                                          const std::vector<std::uint8_t>& label) {
+                                          const std::vector<std::uint8_t>& label,
+                                          DepthMeasure measure) {
     std::vector<std::uint8_t> error(mask.size());
     for (std::size_t v = 0; v < mask.size(); ++v) {
         error[v] = (mask[v] != 0) != (label[v] != 0) ? 1 : 0;
     }
-    return deepestClick(grid, error, label);
+    return deepestClick(grid, error, label, measure);
 }
 
 double brushRadius(const MaskGrid& grid, const RobotClick& click, double maxRadius) {

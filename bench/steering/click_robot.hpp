@@ -34,12 +34,19 @@ struct RobotClick {
     std::size_t componentVoxels = 0;
 };
 
-// The voxel of the largest component of `region` farthest from that component's boundary (mm;
-// ties: the first in storage order), positive where `label` is non-zero. nullopt for an empty
-// region.
+// How far from a component's boundary a voxel lies, for choosing the click: in mm, as an
+// operator sees the scan (the clicks protocol), or in voxel steps whatever the spacing, as the
+// challenge's evaluation measures it (CVPR25_iter_eval.py: scipy's distance_transform_edt
+// without a spacing; on 3 mm slices a step through them counts as much as one across them).
+enum class DepthMeasure { Millimetres, VoxelSteps };
+
+// The voxel of the largest component of `region` farthest from that component's boundary by
+// `measure` (ties: the first in storage order; the challenge draws one at random), positive
+// where `label` is non-zero; its depthMm is in mm either way. nullopt for an empty region.
 std::optional<RobotClick> deepestClick(const MaskGrid& grid,
                                        const std::vector<std::uint8_t>& region,
-                                       const std::vector<std::uint8_t>& label);
+                                       const std::vector<std::uint8_t>& label,
+                                       DepthMeasure measure = DepthMeasure::Millimetres);
 // The challenge's first prompt (issue 51): the label's bounding box, both corners inclusive
 // voxel indices, over all its voxels (every component, as the challenge takes the label's
 // extent). nullopt for an empty label.
@@ -55,7 +62,8 @@ std::optional<RobotClick> initialClick(const MaskGrid& grid,
 // mask is the label.
 std::optional<RobotClick> correctionClick(const MaskGrid& grid,
                                           const std::vector<std::uint8_t>& mask,
-                                          const std::vector<std::uint8_t>& label);
+                                          const std::vector<std::uint8_t>& label,
+                                          DepthMeasure measure = DepthMeasure::Millimetres);
 
 // The brush an operator would choose for a click: the largest sphere that stays inside the
 // component in mm, its radius in voxels along the finest axis as the product's spheres are

@@ -203,7 +203,8 @@ def main():
     ap.add_argument("--clicks", type=int, default=10)
     ap.add_argument("--max-iterations", type=int, default=3000)
     ap.add_argument("--box", action="store_true",
-                    help="the challenge's protocol: start from the label's bounding box")
+                    help="the challenge's protocol: start from the label's bounding box, "
+                    "then click where the challenge's evaluation does (voxel steps)")
     ap.add_argument("--no-peer", action="store_true",
                     help="skip the random walker on the level set's prompts")
     args = ap.parse_args()

@@ -78,6 +78,25 @@ TEST(ClickRobot, TheInitialClickIsTheDeepestVoxelInMillimetres) {
     EXPECT_NEAR(brushRadius(g, *c, 2.0), 2.0, 1e-6);
 }
 
+// The challenge's evaluation takes the error's centre in voxel steps: on slices three times as
+// thick as the pixels, an error 11 voxels on each side has one centre, its middle voxel, where
+// in mm the whole middle column 6 mm from the sides ties and the first of it wins. The brush is
+// sized in mm either way.
+TEST(ClickRobot, TheChallengesCentreCountsVoxelStepsWhateverTheSpacing) {
+    const MaskGrid g{{15, 15, 15}, {1.0, 1.0, 3.0}};
+    const auto label = box(g, {2, 2, 2}, {12, 12, 12});
+    const std::vector<std::uint8_t> empty(g.count(), 0);
+    const auto steps = correctionClick(g, empty, label, DepthMeasure::VoxelSteps);
+    ASSERT_TRUE(steps);
+    EXPECT_EQ(steps->voxel, glm::ivec3(7, 7, 7));
+    EXPECT_TRUE(steps->positive);
+    EXPECT_NEAR(steps->depthMm, 6.0, 1e-6);
+    const auto mm = correctionClick(g, empty, label, DepthMeasure::Millimetres);
+    ASSERT_TRUE(mm);
+    EXPECT_EQ(mm->voxel, glm::ivec3(7, 7, 3));
+    EXPECT_NEAR(mm->depthMm, 6.0, 1e-6);
+}
+
 TEST(ClickRobot, TiesGoToTheFirstVoxelInStorageOrderAndTheGridEdgeIsABoundary) {
     // The whole grid, 4 x 5 x 5: the voxels beyond its edge are the boundary, so the deepest
     // are 2 voxels in from every face, (1..2, 1..3, 1..3), and the first of them wins.
