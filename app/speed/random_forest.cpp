@@ -1,9 +1,11 @@
 #include "speed/random_forest.hpp"
 
+#include "core/parallel_for.hpp"
 #include "speed/split_mix.hpp"
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -224,52 +226,86 @@ RandomForest RandomForest::train(std::span<const float> features,
         unitWeight[s] = 0.5 / static_cast<double>(labels[s] != 0 ? inside : count - inside);
     }
 
+    // Each tree draws from its own seed, so the trees are built apart, on every core (a
+    // correction's retraining is in the frame before its edit shows), and laid out in tree order
+    // as one thread would: the same forest for any number of workers.
+    const auto trees = static_cast<std::size_t>(params.trees);
+    std::vector<std::vector<ForestNode>> treeNodes(trees);
+    std::vector<std::vector<bool>> outOfBag(trees);
+    std::atomic<std::size_t> nextTree{0};
+    const unsigned workers = parallelWorkers(trees, params.workers);
+    parallelFor(
+        workers,
+        [&](std::size_t) {
+            std::vector<std::uint32_t> drawn(count);
+            std::vector<double> weights(count);
+            std::vector<std::uint32_t> samples;
+            for (std::size_t t = nextTree++; t < trees; t = nextTree++) {
+                SplitMix rng(static_cast<std::uint64_t>(params.seed) * 0x100000001B3ULL +
+                             static_cast<std::uint64_t>(t));
+                std::fill(drawn.begin(), drawn.end(), 0U);
+                for (std::size_t n = 0; n < count; ++n) {
+                    ++drawn[rng.below(count)];
+                }
+                // A sample drawn k times weighs k times: the bootstrap without duplicate rows.
+                samples.clear();
+                std::vector<bool>& unused = outOfBag[t];
+                unused.assign(count, false);
+                for (std::size_t s = 0; s < count; ++s) {
+                    weights[s] = unitWeight[s] * drawn[s];
+                    if (drawn[s] > 0) {
+                        samples.push_back(static_cast<std::uint32_t>(s));
+                    } else {
+                        unused[s] = true;
+                    }
+                }
+                std::vector<ForestNode>& nodes = treeNodes[t];
+                nodes.emplace_back();
+                const bool bothClasses =
+                    std::any_of(samples.begin(), samples.end(),
+                                [&](std::uint32_t s) { return labels[s] != 0; }) &&
+                    std::any_of(samples.begin(), samples.end(),
+                                [&](std::uint32_t s) { return labels[s] == 0; });
+                if (bothClasses) {
+                    TreeBuilder builder(features, weights, labels, featureCount, params, rng,
+                                        nodes);
+                    builder.build(0, samples, 0, samples.size(), 0);
+                }
+                // else a bootstrap of one class (tiny sets only) says nothing: a neutral leaf.
+            }
+        },
+        workers);
+
     RandomForest forest;
     forest.featureCount_ = featureCount;
-    std::vector<float> oobSum(count, 0.0F);
-    std::vector<int> oobTrees(count, 0);
-    std::vector<std::uint32_t> drawn(count);
-    std::vector<double> weights(count);
-    std::vector<std::uint32_t> samples;
-    for (int t = 0; t < params.trees; ++t) {
-        SplitMix rng(static_cast<std::uint64_t>(params.seed) * 0x100000001B3ULL +
-                     static_cast<std::uint64_t>(t));
-        std::fill(drawn.begin(), drawn.end(), 0U);
-        for (std::size_t n = 0; n < count; ++n) {
-            ++drawn[rng.below(count)];
-        }
-        // A sample drawn k times weighs k times: the bootstrap without duplicate rows.
-        samples.clear();
-        for (std::size_t s = 0; s < count; ++s) {
-            weights[s] = unitWeight[s] * drawn[s];
-            if (drawn[s] > 0) {
-                samples.push_back(static_cast<std::uint32_t>(s));
-            }
-        }
+    for (const std::vector<ForestNode>& nodes : treeNodes) {
         const auto root = static_cast<std::int32_t>(forest.nodes_.size());
         forest.roots_.push_back(root);
-        forest.nodes_.emplace_back();
-        const bool bothClasses = std::any_of(samples.begin(), samples.end(),
-                                             [&](std::uint32_t s) { return labels[s] != 0; }) &&
-                                 std::any_of(samples.begin(), samples.end(),
-                                             [&](std::uint32_t s) { return labels[s] == 0; });
-        if (bothClasses) {
-            TreeBuilder builder(features, weights, labels, featureCount, params, rng,
-                                forest.nodes_);
-            builder.build(static_cast<std::size_t>(root), samples, 0, samples.size(), 0);
-        } else {
-            // A bootstrap of one class (tiny sets only) says nothing: a neutral leaf.
-            forest.nodes_[static_cast<std::size_t>(root)] = ForestNode{};
-        }
-        for (std::size_t s = 0; s < count; ++s) {
-            if (drawn[s] == 0) {
-                oobSum[s] += walk(forest.nodes_, root,
-                                  features.subspan(s * static_cast<std::size_t>(featureCount),
-                                                   static_cast<std::size_t>(featureCount)));
-                ++oobTrees[s];
-            }
+        for (ForestNode node : nodes) {
+            node.left += node.feature >= 0 ? root : 0;
+            forest.nodes_.push_back(node);
         }
     }
+    // Each sample's out-of-bag votes summed in tree order, as the trees were built one by one.
+    std::vector<float> oobSum(count, 0.0F);
+    std::vector<int> oobTrees(count, 0);
+    constexpr std::size_t kOobChunk = 4096;
+    parallelFor((count + kOobChunk - 1) / kOobChunk,
+                [&](std::size_t chunk) {
+                    const std::size_t end = std::min(count, (chunk + 1) * kOobChunk);
+                    for (std::size_t s = chunk * kOobChunk; s < end; ++s) {
+                        for (std::size_t t = 0; t < trees; ++t) {
+                            if (outOfBag[t][s]) {
+                                oobSum[s] += walk(
+                                    forest.nodes_, forest.roots_[t],
+                                    features.subspan(s * static_cast<std::size_t>(featureCount),
+                                                     static_cast<std::size_t>(featureCount)));
+                                ++oobTrees[s];
+                            }
+                        }
+                    }
+                },
+                params.workers);
 
     std::array<std::size_t, 2> seen{};
     std::array<std::size_t, 2> right{};

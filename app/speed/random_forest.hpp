@@ -16,6 +16,7 @@ struct ForestParams {
     int featuresPerSplit = 0; // 0: the square root of the feature count, rounded up
     int thresholdBins = 32;   // candidate thresholds per feature and node: bin edges over its range
     std::uint32_t seed = 1;
+    unsigned workers = 0; // threads that build the trees; 0: every core (the forest is the same)
 };
 
 // One node, 16 bytes in std430 order. A split sends sample[feature] < threshold to `left`, the

@@ -130,6 +130,33 @@ TEST(SpeedForest, SameSeedSameForest) {
     EXPECT_TRUE(differs);
 }
 
+TEST(SpeedForest, TheSameForestOnAnyNumberOfWorkers) {
+    SplitMix rng(6);
+    Set set;
+    for (int n = 0; n < 2000; ++n) {
+        const float x = uniform(rng);
+        const float y = uniform(rng);
+        set.add(x, y, x * x + y > 0.7F);
+    }
+    ForestParams params;
+    params.trees = 13; // not a multiple of the workers: some build more trees than others
+    params.workers = 1;
+    const RandomForest one = RandomForest::train(set.features, set.labels, 2, params);
+    for (const unsigned workers : {2U, 5U, 0U}) {
+        params.workers = workers;
+        const RandomForest many = RandomForest::train(set.features, set.labels, 2, params);
+        ASSERT_EQ(one.nodes().size(), many.nodes().size()) << workers << " workers";
+        for (std::size_t n = 0; n < one.nodes().size(); ++n) {
+            EXPECT_EQ(one.nodes()[n].feature, many.nodes()[n].feature);
+            EXPECT_EQ(one.nodes()[n].threshold, many.nodes()[n].threshold);
+            EXPECT_EQ(one.nodes()[n].left, many.nodes()[n].left);
+            EXPECT_EQ(one.nodes()[n].value, many.nodes()[n].value);
+        }
+        EXPECT_EQ(one.roots(), many.roots());
+        EXPECT_EQ(one.outOfBagAccuracy(), many.outOfBagAccuracy());
+    }
+}
+
 TEST(SpeedForest, DepthIsBounded) {
     SplitMix rng(9);
     Set set;
