@@ -29,6 +29,30 @@ float uniform(SplitMix& rng) {
     return static_cast<float>(static_cast<double>(rng.next() >> 11U) * 0x1.0p-53);
 }
 
+// n points uniform over the unit square, inside where the rule says.
+template <typename Rule> Set uniformSet(std::uint64_t seed, int n, Rule inside) {
+    SplitMix rng(seed);
+    Set set;
+    for (int k = 0; k < n; ++k) {
+        const float x = uniform(rng);
+        const float y = uniform(rng);
+        set.add(x, y, inside(x, y));
+    }
+    return set;
+}
+
+void expectSameForest(const RandomForest& a, const RandomForest& b) {
+    ASSERT_EQ(a.nodes().size(), b.nodes().size());
+    for (std::size_t n = 0; n < a.nodes().size(); ++n) {
+        EXPECT_EQ(a.nodes()[n].feature, b.nodes()[n].feature);
+        EXPECT_EQ(a.nodes()[n].threshold, b.nodes()[n].threshold);
+        EXPECT_EQ(a.nodes()[n].left, b.nodes()[n].left);
+        EXPECT_EQ(a.nodes()[n].value, b.nodes()[n].value);
+    }
+    EXPECT_EQ(a.roots(), b.roots());
+    EXPECT_EQ(a.outOfBagAccuracy(), b.outOfBagAccuracy());
+}
+
 float predictAt(const RandomForest& f, float x, float y) {
     const std::vector<float> s{x, y};
     return f.predict(s);
@@ -53,13 +77,7 @@ TEST(SpeedForest, SeparatesTwoClusters) {
 
 TEST(SpeedForest, LearnsXor) {
     // Inside where x and y are on the same side of 0.5: no single threshold separates it.
-    SplitMix rng(11);
-    Set set;
-    for (int n = 0; n < 2000; ++n) {
-        const float x = uniform(rng);
-        const float y = uniform(rng);
-        set.add(x, y, (x < 0.5F) == (y < 0.5F));
-    }
+    const Set set = uniformSet(11, 2000, [](float x, float y) { return (x < 0.5F) == (y < 0.5F); });
     ForestParams params;
     params.featuresPerSplit = 2;
     const RandomForest forest = RandomForest::train(set.features, set.labels, 2, params);
@@ -114,13 +132,7 @@ TEST(SpeedForest, SameSeedSameForest) {
     params.trees = 8;
     const RandomForest a = RandomForest::train(set.features, set.labels, 2, params);
     const RandomForest b = RandomForest::train(set.features, set.labels, 2, params);
-    ASSERT_EQ(a.nodes().size(), b.nodes().size());
-    for (std::size_t n = 0; n < a.nodes().size(); ++n) {
-        EXPECT_EQ(a.nodes()[n].feature, b.nodes()[n].feature);
-        EXPECT_EQ(a.nodes()[n].threshold, b.nodes()[n].threshold);
-        EXPECT_EQ(a.nodes()[n].value, b.nodes()[n].value);
-    }
-    EXPECT_EQ(a.roots(), b.roots());
+    expectSameForest(a, b);
     params.seed = 2;
     const RandomForest c = RandomForest::train(set.features, set.labels, 2, params);
     bool differs = c.nodes().size() != a.nodes().size();
@@ -131,29 +143,15 @@ TEST(SpeedForest, SameSeedSameForest) {
 }
 
 TEST(SpeedForest, TheSameForestOnAnyNumberOfWorkers) {
-    SplitMix rng(6);
-    Set set;
-    for (int n = 0; n < 2000; ++n) {
-        const float x = uniform(rng);
-        const float y = uniform(rng);
-        set.add(x, y, x * x + y > 0.7F);
-    }
+    const Set set = uniformSet(6, 2000, [](float x, float y) { return x * x + y > 0.7F; });
     ForestParams params;
     params.trees = 13; // not a multiple of the workers: some build more trees than others
     params.workers = 1;
     const RandomForest one = RandomForest::train(set.features, set.labels, 2, params);
     for (const unsigned workers : {2U, 5U, 0U}) {
         params.workers = workers;
-        const RandomForest many = RandomForest::train(set.features, set.labels, 2, params);
-        ASSERT_EQ(one.nodes().size(), many.nodes().size()) << workers << " workers";
-        for (std::size_t n = 0; n < one.nodes().size(); ++n) {
-            EXPECT_EQ(one.nodes()[n].feature, many.nodes()[n].feature);
-            EXPECT_EQ(one.nodes()[n].threshold, many.nodes()[n].threshold);
-            EXPECT_EQ(one.nodes()[n].left, many.nodes()[n].left);
-            EXPECT_EQ(one.nodes()[n].value, many.nodes()[n].value);
-        }
-        EXPECT_EQ(one.roots(), many.roots());
-        EXPECT_EQ(one.outOfBagAccuracy(), many.outOfBagAccuracy());
+        SCOPED_TRACE(std::to_string(workers) + " workers");
+        expectSameForest(one, RandomForest::train(set.features, set.labels, 2, params));
     }
 }
 
