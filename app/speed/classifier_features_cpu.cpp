@@ -88,8 +88,8 @@ std::vector<float> featuresOf(const Fetch& fetchLinear, glm::ivec3 dims, glm::iv
             throw std::invalid_argument("classifier speed: a sample voxel lies outside the scan");
         }
     }
-    // A correction's training samples up to a million voxels a class, 250 fetches each: on
-    // every core, each piece writing only its own rows.
+    // A correction's retraining reads 250 voxels for each of its samples (40,000 by default):
+    // on every core, each piece writing only its own rows.
     std::vector<float> out(voxels.size() * kClassifierFeatureCount);
     constexpr std::size_t kPiece = 2048;
     parallelFor((voxels.size() + kPiece - 1) / kPiece, [&](std::size_t piece) {
